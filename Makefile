@@ -1,0 +1,46 @@
+# shitsukan: the two commands are `make demo` and `make test`; each installs what is
+# missing (scripts/deps.sh), builds, and runs. See README.md.
+
+BUILD_DIR ?= build
+ASAN_DIR  ?= build-asan
+OUT_DIR   ?= out
+PREFIX    ?= /usr/local
+JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE_ARGS ?=
+
+.PHONY: all deps build demo test test-asan bench install clean
+
+all: build
+
+deps:
+	@bash scripts/deps.sh
+
+build: deps
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DSK_WERROR=ON $(CMAKE_ARGS) >/dev/null
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# The main job: regenerates the papers' figures and the showcase outputs into out/.
+demo: build
+	@bash scripts/demo.sh $(BUILD_DIR)/shitsukan $(OUT_DIR)
+
+# The whole test suite through ctest.
+test: build
+	@ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+# The same tests built with AddressSanitizer + UndefinedBehaviorSanitizer.
+test-asan: deps
+	@cmake -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-O1 -g" \
+		-DSK_SANITIZE=ON -DSK_WERROR=ON -DSK_BUILD_BENCH=OFF $(CMAKE_ARGS) >/dev/null
+	@cmake --build $(ASAN_DIR) -j $(JOBS)
+	@ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+		SK_TEST_SANITIZED=1 ctest --test-dir $(ASAN_DIR) --output-on-failure -j $(JOBS)
+
+# Benchmarks print their figures (they are not tests).
+bench: build
+	@bash scripts/bench.sh $(BUILD_DIR)
+
+install: build
+	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
+clean:
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(OUT_DIR)

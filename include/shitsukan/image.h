@@ -1,0 +1,127 @@
+/* shitsukan images: float images with 1-4 interleaved channels, PNG (8/16-bit, libpng)
+ * and OpenEXR (32-bit float / 16-bit half, OpenEXR's C API) readers and writers, with
+ * text metadata (PNG tEXt chunks, EXR string attributes).
+ *
+ * Thread-safety: all functions are thread-safe on distinct images. */
+#ifndef SHITSUKAN_IMAGE_H
+#define SHITSUKAN_IMAGE_H
+
+#include "shitsukan/core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Caps on what sk_image_create (and every reader) accepts; larger requests fail with
+ * SK_ERROR_LIMIT before allocating. */
+#define SK_IMAGE_MAX_DIMENSION 65536
+#define SK_IMAGE_MAX_BYTES (8ull << 30) /* 8 GiB of float samples */
+
+/* Row-major, top row first, channels interleaved: pixel (x, y) channel c is
+ * data[((size_t)y * width + x) * channels + c]. Values are linear unless a writer is
+ * told otherwise. 1 channel = grey/value, 2 = grey + alpha, 3 = RGB, 4 = RGBA. */
+typedef struct sk_image {
+    int width, height, channels;
+    float *data;
+} sk_image;
+
+/* Allocates a zero-filled image (1 <= channels <= 4, 1 <= width, height <= 65536). */
+sk_result sk_image_create(sk_image *image, int width, int height, int channels, sk_error *err);
+void sk_image_free(sk_image *image);
+static inline float *sk_image_pixel(const sk_image *image, int x, int y)
+{
+    return image->data + ((size_t)y * (size_t)image->width + (size_t)x) * (size_t)image->channels;
+}
+
+/* Key/value text stored with an image (e.g. "shitsukan:height_scale_mm" = "0.120"). */
+#define SK_IMAGE_MAX_METADATA 32
+typedef struct sk_image_metadata_entry {
+    char key[80];
+    char value[400];
+} sk_image_metadata_entry;
+typedef struct sk_image_metadata {
+    int count;
+    sk_image_metadata_entry entries[SK_IMAGE_MAX_METADATA];
+} sk_image_metadata;
+
+/* Adds or replaces an entry; fails with SK_ERROR_LIMIT when full or too long. */
+sk_result sk_image_metadata_set(sk_image_metadata *meta, const char *key, const char *value,
+                                sk_error *err);
+/* NULL if absent. */
+const char *sk_image_metadata_get(const sk_image_metadata *meta, const char *key);
+
+/* ------------------------------------------------------------------------ PNG */
+typedef enum sk_png_encoding {
+    SK_PNG_ENCODING_DEFAULT = 0, /* = SK_PNG_ENCODING_SRGB */
+    SK_PNG_ENCODING_SRGB,        /* data is linear; written with the sRGB transfer curve
+                                    (alpha stays linear) and an sRGB chunk */
+    SK_PNG_ENCODING_LINEAR       /* data written as is (height maps, normal maps, masks) */
+} sk_png_encoding;
+
+typedef struct sk_png_write_desc {
+    int bit_depth;            /* 8 or 16; 0 = 8 */
+    sk_png_encoding encoding; /* 0 = sRGB */
+    const sk_image_metadata *metadata; /* optional tEXt chunks */
+} sk_png_write_desc;
+
+/* Values are clamped to [0, 1] and rounded to the nearest code. `desc` may be NULL. */
+sk_result sk_image_write_png(const sk_image *image, const char *path,
+                             const sk_png_write_desc *desc, sk_error *err);
+
+typedef struct sk_png_read_desc {
+    sk_png_encoding encoding; /* 0 = sRGB: decode 8/16-bit sRGB codes to linear floats;
+                                 LINEAR: code / max_code */
+} sk_png_read_desc;
+
+/* Reads any PNG (grey, grey+alpha, RGB, RGBA, palette; 1-16 bits) into floats; palette
+ * images become RGB/RGBA. `metadata` (optional) receives the tEXt/zTXt/iTXt chunks,
+ * `bit_depth` (optional) the file's bit depth. `desc` may be NULL. */
+sk_result sk_image_read_png(sk_image *image, const char *path, const sk_png_read_desc *desc,
+                            sk_image_metadata *metadata, int *bit_depth, sk_error *err);
+
+/* ------------------------------------------------------------------------ EXR */
+typedef enum sk_exr_pixel_type {
+    SK_EXR_PIXEL_DEFAULT = 0, /* = FLOAT */
+    SK_EXR_PIXEL_FLOAT,       /* 32-bit float */
+    SK_EXR_PIXEL_HALF         /* 16-bit half float */
+} sk_exr_pixel_type;
+
+typedef enum sk_exr_compression {
+    SK_EXR_COMPRESSION_DEFAULT = 0, /* = ZIP */
+    SK_EXR_COMPRESSION_NONE,
+    SK_EXR_COMPRESSION_ZIP,   /* lossless, 16 scanlines per block */
+    SK_EXR_COMPRESSION_PIZ    /* lossless wavelet, good for noisy renders */
+} sk_exr_compression;
+
+typedef struct sk_exr_write_desc {
+    sk_exr_pixel_type pixel_type;
+    sk_exr_compression compression;
+    /* Channel names; NULL = by channel count: 1 "Y", 2 "Y","A", 3 "R","G","B",
+       4 "R","G","B","A". */
+    const char *const *channel_names;
+    const sk_image_metadata *metadata; /* optional string attributes */
+} sk_exr_write_desc;
+
+/* Linear data is written as is (EXR is linear by convention). `desc` may be NULL. */
+sk_result sk_image_write_exr(const sk_image *image, const char *path,
+                             const sk_exr_write_desc *desc, sk_error *err);
+
+/* Reads a scanline or tiled single-part EXR (half, float or uint channels). Channels are
+ * ordered as the writer names them (Y/R,G,B/A); other names follow alphabetically, up to
+ * 4 channels. `metadata` (optional) receives the string attributes. */
+sk_result sk_image_read_exr(sk_image *image, const char *path, sk_image_metadata *metadata,
+                            sk_error *err);
+
+/* Writes PNG or EXR by the path's extension (".png" -> sRGB 8-bit PNG, ".exr" -> float EXR). */
+sk_result sk_image_write_auto(const sk_image *image, const char *path,
+                              const sk_image_metadata *metadata, sk_error *err);
+
+/* sRGB transfer functions (IEC 61966-2-1). */
+float sk_srgb_from_linear(float linear);
+float sk_linear_from_srgb(float encoded);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SHITSUKAN_IMAGE_H */

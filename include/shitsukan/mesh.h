@@ -1,0 +1,109 @@
+/* shitsukan triangle meshes and point clouds: positions, optional normals, UVs, colours
+ * and named per-vertex attributes; OBJ (+MTL) and PLY (ASCII, binary little/big endian)
+ * readers with strict validation, and OBJ and binary little-endian PLY writers.
+ *
+ * Thread-safety: all functions are thread-safe on distinct meshes. */
+#ifndef SHITSUKAN_MESH_H
+#define SHITSUKAN_MESH_H
+
+#include "shitsukan/core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SK_MESH_MAX_ATTRIBUTES 8
+#define SK_MESH_ATTRIBUTE_NAME_SIZE 32
+
+/* A named per-vertex attribute with 1-4 float components (e.g. "weight", "curvature"). */
+typedef struct sk_mesh_attribute {
+    char name[SK_MESH_ATTRIBUTE_NAME_SIZE];
+    int components;
+    float *data; /* vertex_count * components */
+} sk_mesh_attribute;
+
+/* Indexed triangle mesh; triangle_count = 0 makes it a point cloud. Optional arrays are
+ * NULL when absent. Triangles wind counter-clockwise seen from the front. */
+typedef struct sk_mesh {
+    size_t vertex_count;
+    float *positions; /* 3 per vertex */
+    float *normals;   /* 3 per vertex, unit length, or NULL */
+    float *uvs;       /* 2 per vertex, or NULL */
+    float *colors;    /* 3 per vertex, linear RGB in [0, 1], or NULL */
+    size_t triangle_count;
+    uint32_t *indices; /* 3 per triangle, each < vertex_count */
+    int attribute_count;
+    sk_mesh_attribute attributes[SK_MESH_MAX_ATTRIBUTES];
+} sk_mesh;
+
+/* Which optional arrays sk_mesh_create allocates. */
+typedef enum sk_mesh_flags {
+    SK_MESH_NORMALS = 1 << 0,
+    SK_MESH_UVS = 1 << 1,
+    SK_MESH_COLORS = 1 << 2
+} sk_mesh_flags;
+
+/* Allocates zero-filled arrays. Counts beyond the caps of sk_mesh_read_desc's defaults
+ * fail with SK_ERROR_LIMIT. */
+sk_result sk_mesh_create(sk_mesh *mesh, size_t vertex_count, size_t triangle_count, int flags,
+                         sk_error *err);
+/* Adds a zero-filled attribute; fails if the name exists or all slots are used. */
+sk_result sk_mesh_add_attribute(sk_mesh *mesh, const char *name, int components,
+                                float **out_data, sk_error *err);
+/* NULL if absent. */
+const sk_mesh_attribute *sk_mesh_find_attribute(const sk_mesh *mesh, const char *name);
+void sk_mesh_free(sk_mesh *mesh);
+
+/* Checks the invariants: indices in range, positions/normals/uvs finite. */
+sk_result sk_mesh_validate(const sk_mesh *mesh, sk_error *err);
+/* Computes area-weighted vertex normals (allocating `normals` if absent). */
+sk_result sk_mesh_compute_normals(sk_mesh *mesh, sk_error *err);
+/* Axis-aligned bounds of the positions; false for an empty mesh. */
+bool sk_mesh_bounds(const sk_mesh *mesh, sk_vec3f *lo, sk_vec3f *hi);
+
+/* ------------------------------------------------------------------ reading */
+typedef struct sk_mesh_read_desc {
+    /* Cap on the memory a file may make the reader allocate; a header or count needing
+       more fails with SK_ERROR_LIMIT before allocating. 0 = 2 GiB. */
+    size_t max_bytes;
+} sk_mesh_read_desc;
+
+/* Reads OBJ: v (with optional r g b), vt, vn, f with v, v/vt, v//vn, v/vt/vn and
+ * negative (relative) indices; polygons are triangulated; o/g/s/usemtl/mtllib lines are
+ * accepted and ignored; a file with only v lines is a point cloud. Malformed lines,
+ * indices out of range and non-finite numbers fail with SK_ERROR_PARSE naming the line. */
+sk_result sk_mesh_read_obj(sk_mesh *mesh, const char *path, const sk_mesh_read_desc *desc,
+                           sk_error *err);
+/* Reads PLY 1.0 (ascii, binary_little_endian, binary_big_endian): vertex x y z, optional
+ * nx ny nz, u v (or s t, texture_u texture_v), red green blue (8-bit or float), other
+ * scalar vertex properties as 1-component attributes; face vertex_indices (or
+ * vertex_index) lists, polygons triangulated; other elements skipped. */
+sk_result sk_mesh_read_ply(sk_mesh *mesh, const char *path, const sk_mesh_read_desc *desc,
+                           sk_error *err);
+/* By extension (.obj / .ply). */
+sk_result sk_mesh_read(sk_mesh *mesh, const char *path, const sk_mesh_read_desc *desc,
+                       sk_error *err);
+
+/* ------------------------------------------------------------------ writing */
+typedef struct sk_obj_write_desc {
+    /* When set, an MTL file "<name>.mtl" is written beside the OBJ with one material
+       whose diffuse map (map_Kd) is this path, and the OBJ references it. */
+    const char *texture_path;
+    const char *material_name; /* NULL = "material" */
+} sk_obj_write_desc;
+
+/* Writes v/vt/vn/f (attributes and colours are not representable in OBJ and are
+ * skipped, except vertex colours as the common "v x y z r g b" extension). */
+sk_result sk_mesh_write_obj(const sk_mesh *mesh, const char *path,
+                            const sk_obj_write_desc *desc, sk_error *err);
+/* Writes binary little-endian PLY with every array and attribute as float properties
+ * (colours as uchar red/green/blue) and faces as "list uchar uint vertex_indices". */
+sk_result sk_mesh_write_ply(const sk_mesh *mesh, const char *path, sk_error *err);
+/* By extension (.obj / .ply). */
+sk_result sk_mesh_write(const sk_mesh *mesh, const char *path, sk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SHITSUKAN_MESH_H */

@@ -1,0 +1,99 @@
+/* Shared helpers for the cmocka tests (see test_support.h). */
+#define _POSIX_C_SOURCE 200809L
+#include "test_support.h"
+
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "shitsukan/io.h"
+
+const char *sk_test_path(const char *name)
+{
+    static char slots[8][1024];
+    static int next;
+    char *buf = slots[next++ & 7];
+    snprintf(buf, sizeof slots[0], "%s/%s", SK_TEST_TMP_DIR, name);
+    char *slash = strrchr(buf, '/');
+    if (slash) {
+        *slash = '\0';
+        sk_make_dirs(buf, NULL);
+        *slash = '/';
+    }
+    return buf;
+}
+
+static void read_all(const char *path, char *dst, size_t cap)
+{
+    dst[0] = '\0';
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return;
+    size_t n = fread(dst, 1, cap - 1, fp);
+    dst[n] = '\0';
+    fclose(fp);
+}
+
+int sk_test_cli(sk_test_run *run, const char *args_fmt, ...)
+{
+    char args[8192];
+    va_list ap;
+    va_start(ap, args_fmt);
+    vsnprintf(args, sizeof args, args_fmt, ap);
+    va_end(ap);
+    char out_path[1024], err_path[1024];
+    snprintf(out_path, sizeof out_path, "%s/cli-%d.out", SK_TEST_TMP_DIR, (int)getpid());
+    snprintf(err_path, sizeof err_path, "%s/cli-%d.err", SK_TEST_TMP_DIR, (int)getpid());
+    char cmd[12288];
+    snprintf(cmd, sizeof cmd, "'%s' %s >'%s' 2>'%s' </dev/null", SK_TEST_CLI, args, out_path,
+             err_path);
+    int status = system(cmd);
+    run->status = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+    read_all(out_path, run->out, sizeof run->out);
+    read_all(err_path, run->err, sizeof run->err);
+    unlink(out_path);
+    unlink(err_path);
+    return run->status;
+}
+
+int sk_test_count_lines(const char *text)
+{
+    int n = 0;
+    const char *p = text;
+    while (*p) {
+        n++;
+        const char *nl = strchr(p, '\n');
+        if (!nl) break;
+        p = nl + 1;
+    }
+    return n;
+}
+
+bool sk_test_file_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+void sk_test_write_file(const char *path, const void *data, size_t size)
+{
+    FILE *fp = fopen(path, "wb");
+    assert_non_null(fp);
+    assert_int_equal(fwrite(data, 1, size, fp), size);
+    fclose(fp);
+}
+
+int sk_test_count_files_containing(const char *folder, const char *needle)
+{
+    DIR *dir = opendir(folder);
+    if (!dir) return 0;
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(dir)) != NULL)
+        if (strstr(e->d_name, needle)) n++;
+    closedir(dir);
+    return n;
+}
