@@ -1,0 +1,136 @@
+/* Command-line framework of the `shitsukan` tool: subcommand table, option parsing,
+ * help text, one-line errors with exit codes, and preset loading with --set overrides.
+ * The tool only parses arguments, loads presets and calls the library. */
+#ifndef SK_TOOLS_CLI_H
+#define SK_TOOLS_CLI_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "shitsukan/core.h"
+#include "shitsukan/image.h"
+#include "shitsukan/preset.h"
+
+/* Exit status: 0 success, 1 runtime failure (e.g. a write failed), 2 bad usage or input. */
+enum { CLI_EXIT_OK = 0, CLI_EXIT_RUNTIME = 1, CLI_EXIT_USAGE = 2 };
+
+#define CLI_MAX_OPTIONS 48
+#define CLI_MAX_SETS 128
+#define CLI_MAX_POSITIONAL 16
+
+/* A subcommand-specific option. */
+typedef struct cli_option {
+    const char *name;     /* long name without dashes, e.g. "size" */
+    char short_name;      /* e.g. 'o', or 0 */
+    const char *arg_name; /* e.g. "N" or "WxH"; NULL for a flag without value */
+    const char *help;     /* one line, including the default */
+    bool repeatable;      /* may be given several times (values kept in order) */
+} cli_option;
+
+/* Common options; a command lists which it takes (bit mask). */
+enum {
+    CLI_COMMON_OUTPUT = 1 << 0,  /* -o, --output PATH */
+    CLI_COMMON_PRESET = 1 << 1,  /* --preset NAME|FILE */
+    CLI_COMMON_SET = 1 << 2,     /* --set key.path=value (repeatable) */
+    CLI_COMMON_SEED = 1 << 3,    /* --seed N */
+    CLI_COMMON_THREADS = 1 << 4, /* --threads N */
+    CLI_COMMON_QUIET = 1 << 5,   /* -q, --quiet */
+    CLI_COMMON_ALL = 0x3f
+};
+
+typedef struct cli_common {
+    const char *output;
+    const char *preset;
+    const char *sets[CLI_MAX_SETS];
+    int set_count;
+    uint64_t seed;
+    bool has_seed;
+    int threads; /* 0 = all cores */
+    bool quiet;
+} cli_common;
+
+#define CLI_MAX_VALUES 64
+typedef struct cli_args {
+    cli_common common;
+    /* For option i of the command: how often it was given and its values. */
+    int count[CLI_MAX_OPTIONS];
+    const char *value[CLI_MAX_OPTIONS]; /* last value (or "" for a flag) */
+    const char *values[CLI_MAX_VALUES]; /* all values of repeatable options, in order */
+    int values_option[CLI_MAX_VALUES];  /* which option each of `values` belongs to */
+    int values_count;
+    const char *positional[CLI_MAX_POSITIONAL];
+    int positional_count;
+} cli_args;
+
+struct cli_command;
+typedef int (*cli_run_fn)(const struct cli_command *command, const cli_args *args);
+
+typedef struct cli_command {
+    const char *name;        /* "skin" or a two-word "skin maps" */
+    const char *summary;     /* one line for the tool's --help */
+    const char *usage;       /* e.g. "shitsukan skin [options]" */
+    const char *description; /* paragraph(s) for the command's --help */
+    const char *examples;    /* example lines for --help, or NULL */
+    const cli_option *options;
+    int option_count;
+    unsigned common;         /* CLI_COMMON_* mask */
+    int min_positional, max_positional;
+    const char *preset_module; /* folder under presets/ for --preset NAME, or NULL */
+    const sk_schema *schema;   /* preset schema (for --help-keys), or NULL */
+    cli_run_fn run;
+} cli_command;
+
+/* All commands, NULL-terminated (tools/commands.c). */
+extern const cli_command *const cli_commands[];
+
+/* Prints "shitsukan: error: <message>" (one line) and returns `status`. */
+int cli_fail(int status, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+/* Exit status for a library result: 2 for bad input (invalid argument, parse, limit,
+ * unsupported, not found), 1 for runtime failures (I/O, memory, numeric). */
+int cli_exit_status(sk_result result);
+/* Prints the error's message as one line and returns its exit status. */
+int cli_fail_error(const sk_error *err);
+
+/* Parses argv (after the command words) into args. On --help prints help and returns -1
+ * (exit 0); on bad usage prints one line and returns 2; otherwise 0. */
+int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args);
+void cli_print_help(const cli_command *command, FILE *out);
+
+/* Option access by long name (the name must be one of the command's options). */
+const char *cli_get(const cli_command *command, const cli_args *args, const char *name);
+bool cli_has(const cli_command *command, const cli_args *args, const char *name);
+/* Values of a repeatable option, in order; returns how many were written (<= max). */
+int cli_get_all(const cli_command *command, const cli_args *args, const char *name,
+                const char **out, int max);
+
+/* Typed option values with range checks; absent options give `fallback`. On a bad value
+ * they print the one-line error and return 2, else 0. */
+int cli_get_int(const cli_command *command, const cli_args *args, const char *name,
+                long long fallback, long long lo, long long hi, long long *out);
+int cli_get_double(const cli_command *command, const cli_args *args, const char *name,
+                   double fallback, double lo, double hi, double *out);
+/* "N" (square) or "WxH", each in [1, max]. */
+int cli_get_size(const cli_command *command, const cli_args *args, const char *name,
+                 int fallback_w, int fallback_h, int max, int *w, int *h);
+/* Parses "x,y,w,h" (a sub-rectangle of a width x height image). */
+int cli_parse_region(const char *text, int width, int height, int region[4]);
+
+/* Resolves --preset (a file path, or NAME looked up as presets/<module>/NAME.json in
+ * $SHITSUKAN_PRESET_DIR, the installed share folder, then the source tree), applies
+ * every --set, and returns the tree (or an empty one without --preset). Errors print
+ * and return their exit status. */
+int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset **out);
+/* Finds a shipped preset file: writes its path and returns true. */
+bool cli_find_preset(const char *module, const char *name, char *path, size_t size);
+/* The preset folders searched, in order; returns how many were written (<= max). */
+int cli_preset_dirs(const char **out, int max);
+
+/* Applies --threads and returns a progress bar sink (enabled unless --quiet). */
+void cli_apply_threads(const cli_args *args);
+
+#endif /* SK_TOOLS_CLI_H */
