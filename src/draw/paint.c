@@ -1,0 +1,99 @@
+/* Colour compositing for the draw module: a colour prepared for an image's channel
+ * layout, and the straight-alpha "over" operator (Porter & Duff 1984) applied per pixel
+ * with the rasterizer's coverage as an extra weight. */
+#include "draw/draw_internal.h"
+
+bool sk__image_valid(const sk_image *img)
+{
+    return img && img->data && img->channels >= 1 && img->channels <= 4 && img->width > 0 &&
+           img->height > 0;
+}
+
+sk__clip sk__clip_image(const sk_image *img)
+{
+    sk__clip c = {0, 0, img->width, img->height};
+    return c;
+}
+
+sk__clip sk__clip_bounds(sk__clip clip, double x0, double y0, double x1, double y1)
+{
+    sk__clip out = clip;
+    /* Pixels touched by [x0, x1]: columns floor(x0) .. ceil(x1) - 1, compared in double
+       before any conversion so that huge coordinates cannot overflow an int. */
+    double fx0 = floor(x0), fy0 = floor(y0), cx1 = ceil(x1), cy1 = ceil(y1);
+    if (!(fx0 < (double)clip.x1 && cx1 > (double)clip.x0 && fy0 < (double)clip.y1 &&
+          cy1 > (double)clip.y0)) {
+        out.x1 = out.x0;
+        out.y1 = out.y0;
+        return out;
+    }
+    if (fx0 > (double)clip.x0) out.x0 = (int)fx0;
+    if (fy0 > (double)clip.y0) out.y0 = (int)fy0;
+    if (cx1 < (double)clip.x1) out.x1 = (int)cx1;
+    if (cy1 < (double)clip.y1) out.y1 = (int)cy1;
+    return out;
+}
+
+bool sk__paint_init(sk__paint *paint, sk_image *img, sk_color c)
+{
+    if (!sk__image_valid(img) || !sk__color_finite(c) || !(c.a > 0.0f)) return false;
+    paint->img = img;
+    paint->channels = img->channels;
+    paint->alpha = c.a > 1.0f ? 1.0f : c.a;
+    float lum = sk__luminance(c);
+    switch (img->channels) {
+    case 1:
+    case 2:
+        paint->value[0] = lum;
+        paint->value[1] = paint->alpha;
+        paint->value[2] = paint->value[3] = 0.0f;
+        break;
+    default:
+        paint->value[0] = c.r;
+        paint->value[1] = c.g;
+        paint->value[2] = c.b;
+        paint->value[3] = paint->alpha;
+        break;
+    }
+    return true;
+}
+
+void sk__composite_over(float *px, int channels, const float *src, float a)
+{
+    if (channels == 1 || channels == 3) {
+        float keep = 1.0f - a;
+        for (int k = 0; k < channels; k++) px[k] = src[k] * a + px[k] * keep;
+        return;
+    }
+    /* Straight alpha: colour_out = (c_s a + c_d a_d (1 - a)) / a_out. */
+    int colors = channels - 1;
+    float dst_a = px[colors];
+    float dst_w = dst_a * (1.0f - a);
+    float out_a = a + dst_w;
+    if (out_a <= 0.0f) return;
+    float inv = 1.0f / out_a;
+    for (int k = 0; k < colors; k++) px[k] = (src[k] * a + px[k] * dst_w) * inv;
+    px[colors] = out_a;
+}
+
+void sk__paint_pixel(const sk__paint *paint, int x, int y, float w)
+{
+    if (!(w > 0.0f)) return;
+    float a = paint->alpha * (w < 1.0f ? w : 1.0f);
+    sk__composite_over(sk_image_pixel(paint->img, x, y), paint->channels, paint->value, a);
+}
+
+void sk__paint_span(const sk__paint *paint, int x, int y, int n, const float *coverage)
+{
+    int ch = paint->channels;
+    float *px = sk_image_pixel(paint->img, x, y);
+    for (int i = 0; i < n; i++, px += ch) {
+        float w = coverage[i];
+        if (w > 0.0f) sk__composite_over(px, ch, paint->value, paint->alpha * (w < 1.0f ? w : 1.0f));
+    }
+}
+
+void sk__paint_span_fn(void *user, int x, int y, int n, const float *coverage)
+{
+    sk__paint_span((const sk__paint *)user, x, y, n, coverage);
+}
