@@ -772,6 +772,16 @@ static void test_nice_ticks(void **state)
     assert_string_equal(buf, "-0.3");
     sk_ticks_format(&t, 3, buf, sizeof buf);
     assert_string_equal(buf, "0.0");
+    t = sk_nice_ticks(1.5e7, 2.5e7, 3);
+    assert_true(t.count == 3 && t.step == 5e6);
+    const char *expect[3] = {"1.5e7", "2.0e7", "2.5e7"};
+    for (int i = 0; i < 3; i++) {
+        sk_ticks_format(&t, i, buf, sizeof buf);
+        assert_string_equal(buf, expect[i]);
+    }
+    t = sk_nice_ticks(-2e-7, 2e-7, 5);
+    sk_ticks_format(&t, 0, buf, sizeof buf);
+    assert_string_equal(buf, "-2e-7");
     assert_int_equal(sk_nice_ticks(1.0, 1.0, 5).count, 0);
     assert_int_equal(sk_nice_ticks(NAN, 1.0, 5).count, 0);
 }

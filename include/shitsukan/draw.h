@@ -210,7 +210,8 @@ static inline double sk_ticks_value(const sk_ticks *t, int i)
 {
     return (double)(t->first_index + i) * t->step;
 }
-/* Formats tick value i into buf ("-0" never appears; huge or tiny values use %g). */
+/* Formats tick value i into buf with `decimals` digits ("-0" never appears); axes with
+ * values of 1e7 or more, or steps below 1e-6, share one exponent: "1.5e7", "2.0e7". */
 void sk_ticks_format(const sk_ticks *t, int i, char *buf, size_t size);
 
 /* One data series. x may be NULL (x = 0, 1, 2, ...). A NaN (or infinite) x or y breaks

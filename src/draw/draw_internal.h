@@ -55,9 +55,24 @@ bool sk__paint_init(sk__paint *paint, sk_image *img, sk_color c);
 void sk__paint_span(const sk__paint *paint, int x, int y, int n, const float *coverage);
 /* Composites the paint over one pixel with coverage `w`. */
 void sk__paint_pixel(const sk__paint *paint, int x, int y, float w);
-/* "Over" of a straight-alpha source value with alpha `a` into one pixel of `channels`
- * channels whose last channel is alpha if channels is 2 or 4. */
-void sk__composite_over(float *px, int channels, const float *src, float a);
+/* "Over" (Porter & Duff 1984) of a straight-alpha source value with alpha `a` into one
+ * pixel of `channels` channels whose last channel is alpha if channels is 2 or 4:
+ * alpha_out = a + alpha_dst (1 - a), colour_out = (c a + c_dst alpha_dst (1 - a)) / alpha_out. */
+static inline void sk__composite_over(float *px, int channels, const float *src, float a)
+{
+    if (channels == 1 || channels == 3) {
+        float keep = 1.0f - a;
+        for (int k = 0; k < channels; k++) px[k] = src[k] * a + px[k] * keep;
+        return;
+    }
+    int colors = channels - 1;
+    float dst_w = px[colors] * (1.0f - a);
+    float out_a = a + dst_w;
+    if (out_a <= 0.0f) return;
+    float inv = 1.0f / out_a;
+    for (int k = 0; k < colors; k++) px[k] = (src[k] * a + px[k] * dst_w) * inv;
+    px[colors] = out_a;
+}
 
 /* Receiver of rasterized coverage rows. */
 typedef void (*sk__span_fn)(void *user, int x, int y, int n, const float *coverage);
@@ -97,11 +112,6 @@ int sk__circle_segments(double radius);
 /* Radius of a regular n-gon with the same area as a circle of `radius`: flattened curves
  * keep the curve's exact area. */
 double sk__area_preserving_radius(double radius, int segments);
-/* Appends an arc around (cx, cy) from angle a0 to a1 (radians, y down) to the current
- * contour with the segment density of a full circle of `segments`; the first point is
- * joined by a line from the current point (or starts the contour if none is open). */
-void sk__path_arc(sk__path *path, double cx, double cy, double radius, double a0, double a1,
-                  int segments);
 /* Appends a closed circle contour; `clockwise` on screen (y down) or counter-clockwise. */
 void sk__path_circle(sk__path *path, double cx, double cy, double radius, bool clockwise);
 /* Appends the outline of a stroked segment (a closed convex contour). Returns false if
@@ -124,13 +134,18 @@ void sk__draw_polyline_clip(sk_image *img, sk__clip clip, const sk_vec2f *pts, i
                             bool closed, float width, sk_color c);
 
 /* ---------------------------------------------------------- coverage mask */
-/* A sparse coverage mask over a clip rectangle, stored in lazily allocated 64 x 64
- * tiles. Shapes rasterized into it combine by max, so overlapping pieces of one stroke
- * are composited once. */
+/* A sparse coverage mask over a clip rectangle, stored in lazily allocated 32 x 32
+ * tiles that remember the part of them written to. Shapes rasterized into it combine by
+ * max, so overlapping pieces of one stroke are composited once. */
+typedef struct sk__mask_tile {
+    float *coverage;            /* NULL until written */
+    short x0, y0, x1, y1;       /* written part, half-open, tile-local */
+} sk__mask_tile;
+
 typedef struct sk__mask {
     sk__clip bounds;
     int tiles_x, tiles_y;
-    float **tiles;
+    sk__mask_tile *tiles;
     bool failed; /* an allocation failed: the mask is incomplete */
 } sk__mask;
 

@@ -58,24 +58,6 @@ bool sk__paint_init(sk__paint *paint, sk_image *img, sk_color c)
     return true;
 }
 
-void sk__composite_over(float *px, int channels, const float *src, float a)
-{
-    if (channels == 1 || channels == 3) {
-        float keep = 1.0f - a;
-        for (int k = 0; k < channels; k++) px[k] = src[k] * a + px[k] * keep;
-        return;
-    }
-    /* Straight alpha: colour_out = (c_s a + c_d a_d (1 - a)) / a_out. */
-    int colors = channels - 1;
-    float dst_a = px[colors];
-    float dst_w = dst_a * (1.0f - a);
-    float out_a = a + dst_w;
-    if (out_a <= 0.0f) return;
-    float inv = 1.0f / out_a;
-    for (int k = 0; k < colors; k++) px[k] = (src[k] * a + px[k] * dst_w) * inv;
-    px[colors] = out_a;
-}
-
 void sk__paint_pixel(const sk__paint *paint, int x, int y, float w)
 {
     if (!(w > 0.0f)) return;
@@ -83,13 +65,22 @@ void sk__paint_pixel(const sk__paint *paint, int x, int y, float w)
     sk__composite_over(sk_image_pixel(paint->img, x, y), paint->channels, paint->value, a);
 }
 
+/* The span loop for a fixed channel count, so the compiler unrolls the channels. */
+#define SK__PAINT_SPAN_LOOP(CH)                                                              \
+    for (int i = 0; i < n; i++, px += (CH)) {                                              \
+        float w = coverage[i];                                                             \
+        if (w > 0.0f) sk__composite_over(px, (CH), paint->value, alpha * (w < 1.0f ? w : 1.0f)); \
+    }
+
 void sk__paint_span(const sk__paint *paint, int x, int y, int n, const float *coverage)
 {
-    int ch = paint->channels;
     float *px = sk_image_pixel(paint->img, x, y);
-    for (int i = 0; i < n; i++, px += ch) {
-        float w = coverage[i];
-        if (w > 0.0f) sk__composite_over(px, ch, paint->value, paint->alpha * (w < 1.0f ? w : 1.0f));
+    float alpha = paint->alpha;
+    switch (paint->channels) {
+    case 1: SK__PAINT_SPAN_LOOP(1) break;
+    case 2: SK__PAINT_SPAN_LOOP(2) break;
+    case 3: SK__PAINT_SPAN_LOOP(3) break;
+    default: SK__PAINT_SPAN_LOOP(4) break;
     }
 }
 

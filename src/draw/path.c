@@ -111,15 +111,17 @@ double sk__area_preserving_radius(double radius, int segments)
     return radius * sqrt(2.0 * SK_PI / (n * sin(2.0 * SK_PI / n)));
 }
 
-void sk__path_arc(sk__path *path, double cx, double cy, double radius, double a0, double a1,
-                  int segments)
+/* Appends steps + 1 points around (cx, cy) starting at offset (ox, oy), each turned by
+ * `step` radians from the previous (a rotation recurrence: one sin/cos per arc). */
+static void arc_points(sk__path *path, double cx, double cy, double ox, double oy, double step,
+                       int steps)
 {
-    double span = fabs(a1 - a0);
-    int steps = (int)ceil(span / (2.0 * SK_PI) * (double)segments - 1e-9);
-    if (steps < 1) steps = 1;
+    double c = cos(step), s = sin(step);
     for (int i = 0; i <= steps; i++) {
-        double a = a0 + (a1 - a0) * (double)i / (double)steps;
-        sk__path_line_to(path, cx + radius * cos(a), cy + radius * sin(a));
+        sk__path_line_to(path, cx + ox, cy + oy);
+        double nx = ox * c - oy * s;
+        oy = ox * s + oy * c;
+        ox = nx;
     }
 }
 
@@ -127,12 +129,9 @@ void sk__path_circle(sk__path *path, double cx, double cy, double radius, bool c
 {
     int n = sk__circle_segments(radius);
     double r = sk__area_preserving_radius(radius, n);
-    double dir = clockwise ? 1.0 : -1.0; /* y down: increasing angle turns clockwise */
+    double step = (clockwise ? 2.0 : -2.0) * SK_PI / (double)n; /* y down: + is clockwise */
     sk__path_move_to(path, cx + r, cy);
-    for (int i = 1; i < n; i++) {
-        double a = dir * 2.0 * SK_PI * (double)i / (double)n;
-        sk__path_line_to(path, cx + r * cos(a), cy + r * sin(a));
-    }
+    arc_points(path, cx, cy, r, 0.0, step, n - 1);
     sk__path_close(path);
 }
 
@@ -172,13 +171,13 @@ bool sk__path_stroke_segment(sk__path *path, double x0, double y0, double x1, do
     sk__path_line_to(path, x1 + nx, y1 + ny);
     if (cap == SK_CAP_ROUND) {
         int n = sk__circle_segments(h);
-        double r = sk__area_preserving_radius(h, n);
-        double a = atan2(ny, nx);
+        double k = sk__area_preserving_radius(h, n) / h;
+        double step = -2.0 * SK_PI / (double)n;
         /* Half turns from +normal through the direction to -normal, and back at p0. */
-        sk__path_arc(path, x1, y1, r, a, a - SK_PI, n);
+        arc_points(path, x1, y1, nx * k, ny * k, step, n / 2);
         sk__path_line_to(path, x1 - nx, y1 - ny);
         sk__path_line_to(path, x0 - nx, y0 - ny);
-        sk__path_arc(path, x0, y0, r, a - SK_PI, a - 2.0 * SK_PI, n);
+        arc_points(path, x0, y0, -nx * k, -ny * k, step, n / 2);
     } else {
         sk__path_line_to(path, x1 - nx, y1 - ny);
         sk__path_line_to(path, x0 - nx, y0 - ny);

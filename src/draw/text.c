@@ -26,36 +26,83 @@ int sk_draw_text_width(const char *text, int scale)
 
 int sk_draw_text_height(int scale) { return SK__GLYPH_HEIGHT * clamp_scale(scale); }
 
-/* Length of [a, a + 1) inside [lo, hi). */
-static inline double overlap(double a, double lo, double hi)
-{
-    double l = a > lo ? a : lo;
-    double h = a + 1.0 < hi ? a + 1.0 : hi;
-    return h > l ? h - l : 0.0;
-}
+/* The glyph cells (at most two) under one pixel along one axis, with the length of the
+ * pixel inside each. */
+typedef struct cell_taps {
+    int cell[2];
+    float weight[2];
+} cell_taps;
 
-/* Ink area of the glyph under a 1 x 1 footprint whose glyph-space corner is (u, v):
- * u runs along the text, v down the glyph, in pixels of the scaled glyph. */
-static float glyph_coverage(const unsigned char rows[SK__GLYPH_HEIGHT], int scale, double u,
-                            double v)
+#define SK__MAX_GLYPH_EXTENT (SK__GLYPH_HEIGHT * SK__MAX_TEXT_SCALE + 2)
+
+/* Taps for n pixels whose footprints start at glyph-space coordinate a0 + i * step
+ * (step = +1 or -1), for cells of `scale` pixels numbered 0 .. cells - 1. */
+static void build_taps(cell_taps *taps, int n, double a0, double step, int scale, int cells)
 {
     double s = (double)scale;
-    int j0 = (int)floor(u / s), j1 = (int)floor((u + 1.0) / s);
-    int k0 = (int)floor(v / s), k1 = (int)floor((v + 1.0) / s);
-    if (j0 < 0) j0 = 0;
-    if (k0 < 0) k0 = 0;
-    if (j1 > SK__GLYPH_WIDTH - 1) j1 = SK__GLYPH_WIDTH - 1;
-    if (k1 > SK__GLYPH_HEIGHT - 1) k1 = SK__GLYPH_HEIGHT - 1;
-    double sum = 0.0;
-    for (int k = k0; k <= k1; k++) {
-        if (!rows[k]) continue;
-        double oy = overlap(v, k * s, (k + 1) * s);
-        if (oy <= 0.0) continue;
-        for (int j = j0; j <= j1; j++)
-            if (rows[k] & (1u << (SK__GLYPH_WIDTH - 1 - j)))
-                sum += oy * overlap(u, j * s, (j + 1) * s);
+    for (int i = 0; i < n; i++) {
+        double a = a0 + step * (double)i;
+        cell_taps *t = &taps[i];
+        t->cell[0] = t->cell[1] = 0;
+        t->weight[0] = t->weight[1] = 0.0f;
+        int j = (int)floor(a / s);
+        for (int k = 0; k < 2; k++, j++) {
+            if (j < 0 || j >= cells) continue;
+            double lo = a > j * s ? a : j * s;
+            double hi = a + 1.0 < (j + 1) * s ? a + 1.0 : (j + 1) * s;
+            if (hi > lo) {
+                t->cell[k] = j;
+                t->weight[k] = (float)(hi - lo);
+            }
+        }
     }
-    return (float)sum;
+}
+
+static inline int glyph_bit(const unsigned char rows[SK__GLYPH_HEIGHT], int row, int col)
+{
+    return (rows[row] >> (SK__GLYPH_WIDTH - 1 - col)) & 1;
+}
+
+/* Draws one glyph whose screen box is [gx0, gx0 + extent) x [gy0, ...), rotated or not. */
+static void draw_glyph(const sk__paint *paint, sk__clip clip, const unsigned char rows[SK__GLYPH_HEIGHT],
+                       double gx0, double gy0, double gx1, double gy1, int scale, sk__text_dir dir)
+{
+    sk__clip box = sk__clip_bounds(clip, gx0, gy0, gx1, gy1);
+    int nx = box.x1 - box.x0, ny = box.y1 - box.y0;
+    if (nx <= 0 || ny <= 0) return;
+    cell_taps tx[SK__MAX_GLYPH_EXTENT], ty[SK__MAX_GLYPH_EXTENT];
+    float coverage[SK__MAX_GLYPH_EXTENT];
+    bool up = dir == SK__TEXT_UP;
+    /* Screen x runs along the text (u) normally, down the glyph (v) when rotated; screen
+       y runs down the glyph, or backwards along the text. */
+    if (up) {
+        build_taps(tx, nx, (double)box.x0 - gx0, 1.0, scale, SK__GLYPH_HEIGHT);
+        build_taps(ty, ny, gy1 - (double)box.y0 - 1.0, -1.0, scale, SK__GLYPH_WIDTH);
+    } else {
+        build_taps(tx, nx, (double)box.x0 - gx0, 1.0, scale, SK__GLYPH_WIDTH);
+        build_taps(ty, ny, (double)box.y0 - gy0, 1.0, scale, SK__GLYPH_HEIGHT);
+    }
+    for (int j = 0; j < ny; j++) {
+        /* This screen row's ink per glyph cell across x (columns normally, rows when
+           rotated), so each pixel only mixes its two taps. */
+        const cell_taps *b = &ty[j];
+        float profile[SK__GLYPH_HEIGHT];
+        int cells_x = up ? SK__GLYPH_HEIGHT : SK__GLYPH_WIDTH;
+        bool any = false;
+        for (int k = 0; k < cells_x; k++) {
+            float w = 0.0f;
+            for (int q = 0; q < 2; q++) {
+                int bit = up ? glyph_bit(rows, k, b->cell[q]) : glyph_bit(rows, b->cell[q], k);
+                w += bit ? b->weight[q] : 0.0f;
+            }
+            profile[k] = w;
+            any |= w > 0.0f;
+        }
+        if (!any) continue;
+        for (int i = 0; i < nx; i++)
+            coverage[i] = tx[i].weight[0] * profile[tx[i].cell[0]] + tx[i].weight[1] * profile[tx[i].cell[1]];
+        sk__paint_span(paint, box.x0, box.y0 + j, nx, coverage);
+    }
 }
 
 int sk__draw_text_dir(sk_image *img, sk__clip clip, float x, float y, const char *text, int scale,
@@ -87,21 +134,7 @@ int sk__draw_text_dir(sk_image *img, sk__clip clip, float x, float y, const char
         }
         u0 += SK__GLYPH_ADVANCE * s;
         if (dir == SK__TEXT_UP ? gy1 <= clip.y0 : gx0 >= clip.x1) break;
-        sk__clip box = sk__clip_bounds(clip, gx0, gy0, gx1, gy1);
-        for (int py = box.y0; py < box.y1; py++) {
-            for (int px = box.x0; px < box.x1; px++) {
-                double u, v;
-                if (dir == SK__TEXT_UP) {
-                    u = gy1 - (double)py - 1.0;
-                    v = (double)px - gx0;
-                } else {
-                    u = (double)px - gx0;
-                    v = (double)py - gy0;
-                }
-                float w = glyph_coverage(rows, scale, u, v);
-                if (w > 0.0f) sk__paint_pixel(&paint, px, py, w);
-            }
-        }
+        draw_glyph(&paint, clip, rows, gx0, gy0, gx1, gy1, scale, dir);
     }
     return result;
 }

@@ -47,14 +47,19 @@ void sk_ticks_format(const sk_ticks *t, int i, char *buf, size_t size)
 {
     if (!buf || size == 0) return;
     double v = sk_ticks_value(t, i);
-    /* Values that are multiples of the step print exactly with `decimals` digits; very
-       large or small magnitudes switch to exponent notation. */
     double mag = fmax(fabs(sk_ticks_value(t, 0)), fabs(sk_ticks_value(t, t->count - 1)));
     if (mag >= 1e7 || t->decimals > 6) {
-        int digits = (int)ceil(log10(fmax(mag, t->step) / t->step)) + 1;
-        if (digits < 1) digits = 1;
+        /* Exponent notation with one exponent for the axis ("1.5e7", "2.0e7") and as many
+           mantissa digits as the step needs. */
+        int e = (int)floor(log10(mag));
+        int step_e = (int)floor(log10(t->step) + 1e-9);
+        int digits = e - step_e;
+        if (digits < 0) digits = 0;
         if (digits > 15) digits = 15;
-        snprintf(buf, size, "%.*g", digits, v);
+        if (v == 0.0)
+            snprintf(buf, size, "0");
+        else
+            snprintf(buf, size, "%.*fe%d", digits, v / pow(10.0, e), e);
     } else {
         snprintf(buf, size, "%.*f", t->decimals, v);
     }
