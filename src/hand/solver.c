@@ -121,9 +121,11 @@ sk_result sk_hand_solve(sk_hand_solver *s, const sk_hand_input *in, double dofs[
     if (r != SK_OK) return r;
     inf->pins_clamped = pins_clamped;
     for (int i = 0; i < N_DOF; i++) {
-        /* the limits hold exactly in absolute terms despite the round trip through
-           displacements */
-        dofs[i] = sk_clampd(s->relaxed[i] + theta[i], s->min_abs[i], s->max_abs[i]);
+        /* a DOF held at a limit reports the limit exactly (relaxed + (min - relaxed) may
+           differ from min in the last bit) */
+        if (theta[i] <= s->lo[i]) dofs[i] = s->min_abs[i];
+        else if (theta[i] >= s->hi[i]) dofs[i] = s->max_abs[i];
+        else dofs[i] = sk_clampd(s->relaxed[i] + theta[i], s->min_abs[i], s->max_abs[i]);
     }
     return SK_OK;
 }
