@@ -398,53 +398,77 @@ static void curve_samples(double *xs, double *ys, int n)
     }
 }
 
+static double fd_error(const sk_hand_lut *lut, double x, double y, double *gx_out)
+{
+    double gx, gy, e = 1e-7;
+    sk_hand_lut_eval(lut, x, y, &gx, &gy);
+    double fx = (sk_hand_lut_eval(lut, x + e, y, NULL, NULL) - sk_hand_lut_eval(lut, x - e, y, NULL, NULL)) / (2 * e);
+    double fy = (sk_hand_lut_eval(lut, x, y + e, NULL, NULL) - sk_hand_lut_eval(lut, x, y - e, NULL, NULL)) / (2 * e);
+    if (gx_out) *gx_out = gx;
+    return fmax(fabs(gx - fx), fabs(gy - fy));
+}
+
 static void test_lut_gradients_match_finite_differences(void **state)
 {
     (void)state;
     enum { N = 200 };
     double xs[N], ys[N];
     curve_samples(xs, ys, N);
-    sk_hand_lut lut;
+    sk_error err;
     sk_hand_lut_desc d = {0};
     d.weight = 2.0;
-    sk_error err;
+    /* Hermite (default): the gradient is the exact derivative of the interpolated
+       potential, inside and outside the grid */
+    sk_hand_lut lut;
     assert_int_equal(sk_hand_lut_build(&lut, 31, 33, xs, ys, N, &d, &err), SK_OK);
     assert_int_equal(lut.n, 100);
-    /* nodes hold the exact gradient of the squared distance, 2 (p - nearest sample) */
+    assert_int_equal(lut.interp, SK_HAND_LUT_INTERP_HERMITE);
     sk_rng rng = sk_rng_make(4, 0, 0, 0);
+    for (int t = 0; t < 300; t++) {
+        double x = sk_rng_range(&rng, lut.x0 - 0.3, lut.x0 + 99 * lut.h_x + 0.3);
+        double y = sk_rng_range(&rng, lut.y0 - 0.3, lut.y0 + 99 * lut.h_y + 0.3);
+        assert_true(fd_error(&lut, x, y, NULL) < 1e-5);
+    }
+    /* nodes hold the squared distance and its exact gradient 2 (p - nearest sample) */
+    int i = 10, j = 20;
+    double px = lut.x0 + i * lut.h_x, py = lut.y0 + j * lut.h_y, best = INFINITY, bx = 0;
+    for (int k = 0; k < N; k++) {
+        double q = (px - xs[k]) * (px - xs[k]) + (py - ys[k]) * (py - ys[k]);
+        if (q < best) best = q, bx = px - xs[k];
+    }
+    double gx;
+    assert_true(fabs(sk_hand_lut_eval(&lut, px, py, &gx, NULL) - d.weight * best) < 1e-12);
+    assert_true(fabs(gx - d.weight * 2.0 * bx) < 1e-12);
+    /* beyond the border the potential keeps growing as the squared distance: 1 rad left
+       of the first sample it is about 1 */
+    double far = sk_hand_lut_eval(&lut, xs[0] - 1.0, ys[0], NULL, NULL);
+    assert_true(fabs(far - d.weight) < 0.01 * d.weight);
+    sk_hand_lut_free(&lut);
+
+    /* bilinear tables (the thesis's tables as they are) agree with the interpolated
+       potential's slope to O(h): in cells whose corners share their nearest sample the
+       mismatch is at most curvature (2) x h; across a Voronoi edge it grows by the
+       spread of the corner gradients */
+    d.interp = SK_HAND_LUT_INTERP_BILINEAR;
+    assert_int_equal(sk_hand_lut_build(&lut, 31, 33, xs, ys, N, &d, &err), SK_OK);
     double h = fmax(lut.h_x, lut.h_y);
     int regular = 0;
     const int tries = 300;
     for (int t = 0; t < tries; t++) {
         double x = sk_rng_range(&rng, lut.x0 + 0.5 * lut.h_x, lut.x0 + 98.5 * lut.h_x);
         double y = sk_rng_range(&rng, lut.y0 + 0.5 * lut.h_y, lut.y0 + 98.5 * lut.h_y);
-        double gx, gy, e = 1e-7;
-        sk_hand_lut_eval(&lut, x, y, &gx, &gy);
-        double fx = (sk_hand_lut_eval(&lut, x + e, y, NULL, NULL) - sk_hand_lut_eval(&lut, x - e, y, NULL, NULL)) / (2 * e);
-        double fy = (sk_hand_lut_eval(&lut, x, y + e, NULL, NULL) - sk_hand_lut_eval(&lut, x, y - e, NULL, NULL)) / (2 * e);
-        /* bilinear tables agree with the interpolated potential's slope to O(h): where
-           the cell's corners share their nearest sample the squared distance is
-           quadratic and the mismatch is at most curvature (2) x h; across a Voronoi
-           edge the corner gradients differ and the bound grows by their spread */
-        int i = (int)((x - lut.x0) / lut.h_x), j = (int)((y - lut.y0) / lut.h_y);
-        int at[4] = {j * 100 + i, j * 100 + i + 1, (j + 1) * 100 + i, (j + 1) * 100 + i + 1};
+        int ci = (int)((x - lut.x0) / lut.h_x), cj = (int)((y - lut.y0) / lut.h_y);
+        int at[4] = {cj * 100 + ci, cj * 100 + ci + 1, (cj + 1) * 100 + ci, (cj + 1) * 100 + ci + 1};
         double spread = 0.0;
         for (int a = 0; a < 4; a++)
             for (int b = 0; b < 4; b++)
                 spread = fmax(spread, fabs(lut.grad_x[at[a]] - lut.grad_x[at[b]]) +
                                           fabs(lut.grad_y[at[a]] - lut.grad_y[at[b]]));
-        double bound = d.weight * (2.0 * h + spread) + 1e-6;
-        assert_true(fabs(gx - fx) <= bound && fabs(gy - fy) <= bound);
-        regular += fabs(gx - fx) <= 2.0 * h * d.weight && fabs(gy - fy) <= 2.0 * h * d.weight;
+        double e = fd_error(&lut, x, y, NULL);
+        assert_true(e <= d.weight * (2.0 * h + spread) + 1e-6);
+        regular += e <= 2.0 * h * d.weight;
     }
-    /* most of the plane is regular */
     assert_true(regular > tries * 8 / 10);
-    /* at a sample the potential is near zero, far away it grows like the squared distance */
-    assert_true(sk_hand_lut_eval(&lut, xs[50], ys[50], NULL, NULL) < 2.0 * h * h * d.weight);
-    /* outside the grid: the border value plus the squared distance to the border */
-    double far = sk_hand_lut_eval(&lut, xs[0] - 1.0, ys[0], NULL, NULL);
-    double inside = xs[0] - lut.x0, outside = lut.x0 - (xs[0] - 1.0);
-    assert_true(fabs(far - d.weight * (inside * inside + outside * outside)) < 0.02 * d.weight);
     sk_hand_lut_free(&lut);
 }
 

@@ -204,11 +204,27 @@ sk_result sk_hand_constraints_add_pair(sk_hand_constraints *c, const sk_hand_ske
 /* Nonlinear potential of one DOF pair (3.2.3): squared distance (rad^2) from (x, y)
  * (absolute angles) to the nearest measured sample, tabulated on a grid with its x and
  * y gradients, bilinearly interpolated. */
+typedef enum sk_hand_lut_interp {
+    SK_HAND_LUT_INTERP_DEFAULT = 0, /* = HERMITE */
+    SK_HAND_LUT_INTERP_HERMITE,     /* bicubic Hermite from the value and gradient tables
+                                       (zero twist): C1, its gradient is the exact
+                                       derivative of the interpolated potential and it
+                                       reproduces the squared distance exactly where a
+                                       cell's corners share their nearest sample, so the
+                                       iterative solve reaches its tolerance */
+    SK_HAND_LUT_INTERP_BILINEAR     /* value and gradient tables each bilinearly
+                                       interpolated (the thesis's tables as they are):
+                                       the gradient differs from the potential's slope by
+                                       O(grid step), so the solve stops at a residual of
+                                       about weight x grid step */
+} sk_hand_lut_interp;
+
 typedef struct sk_hand_lut_desc {
     int resolution;   /* grid nodes per axis; 0 = 100; range [8, 1024] */
     double margin;    /* grid extends this fraction of the sample range beyond it on
                          every side; 0 = 0.25; range [0, 4] */
     double weight;    /* multiplies the potential; 0 = 1; range (0, 1e6] */
+    sk_hand_lut_interp interp; /* 0 = Hermite */
 } sk_hand_lut_desc;
 
 typedef struct sk_hand_lut {
@@ -216,6 +232,7 @@ typedef struct sk_hand_lut {
     int n;                 /* resolution */
     double x0, y0, h_x, h_y; /* node (i, j) at (x0 + i h_x, y0 + j h_y) */
     double weight;
+    sk_hand_lut_interp interp; /* resolved */
     double *value;          /* n*n, node (i, j) at value[j * n + i] */
     double *grad_x, *grad_y; /* exact gradient of the squared distance at the nodes */
 } sk_hand_lut;
@@ -225,9 +242,11 @@ sk_result sk_hand_lut_build(sk_hand_lut *lut, int dof_x, int dof_y, const double
                             const double *ys, int count, const sk_hand_lut_desc *desc,
                             sk_error *err);
 void sk_hand_lut_free(sk_hand_lut *lut);
-/* Interpolated potential (times the weight) and its tabulated gradient (times the weight)
- * at absolute angles (x, y); outside the grid the squared distance to the grid box is
- * added (continuous, growing quadratically). */
+/* Interpolated potential (times the weight) and its gradient (times the weight) at
+ * absolute angles (x, y). Outside the grid the potential continues from the nearest
+ * border point c with its slope and the squared distance d to the border:
+ * V(c) + V_x dx + V_y dy + V_xy dx dy + |d|^2, whose gradient is returned (continuous
+ * and consistent with the value for Hermite). */
 double sk_hand_lut_eval(const sk_hand_lut *lut, double x, double y, double *gx, double *gy);
 
 /* ------------------------------------------------------------- solver */

@@ -27,6 +27,9 @@ sk_result sk_hand_lut_build(sk_hand_lut *lut, int dof_x, int dof_y, const double
     if (d.resolution == 0) d.resolution = 100;
     if (d.margin == 0.0) d.margin = 0.25;
     if (d.weight == 0.0) d.weight = 1.0;
+    if (d.interp == SK_HAND_LUT_INTERP_DEFAULT) d.interp = SK_HAND_LUT_INTERP_HERMITE;
+    if (d.interp != SK_HAND_LUT_INTERP_HERMITE && d.interp != SK_HAND_LUT_INTERP_BILINEAR)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "interp = %d is not a lookup interpolation", (int)d.interp);
     sk_result r = sk_check_range_i(err, "resolution", d.resolution, 8, 1024);
     if (r == SK_OK) r = sk_check_range_f(err, "margin", d.margin, 0.0, 4.0);
     if (r == SK_OK) r = sk_check_range_f(err, "weight", d.weight, 1e-12, 1e6);
@@ -50,6 +53,7 @@ sk_result sk_hand_lut_build(sk_hand_lut *lut, int dof_x, int dof_y, const double
     lut->dof_y = dof_y;
     lut->n = n;
     lut->weight = d.weight;
+    lut->interp = d.interp;
     lut->x0 = 0.5 * (minx + maxx) - rx * (0.5 + d.margin);
     lut->y0 = 0.5 * (miny + maxy) - ry * (0.5 + d.margin);
     lut->h_x = rx * (1.0 + 2.0 * d.margin) / (n - 1);
@@ -88,32 +92,76 @@ sk_result sk_hand_lut_build(sk_hand_lut *lut, int dof_x, int dof_y, const double
     return SK_OK;
 }
 
-double sk_hand_lut_eval(const sk_hand_lut *lut, double x, double y, double *gx, double *gy)
+/* Cubic Hermite basis on [0, 1]: values at 0 and 1, slopes at 0 and 1, and their
+ * derivatives. */
+static void hermite(double s, double h[4], double dh[4])
+{
+    double s2 = s * s, s3 = s2 * s;
+    h[0] = 2 * s3 - 3 * s2 + 1;
+    h[1] = -2 * s3 + 3 * s2;
+    h[2] = s3 - 2 * s2 + s;
+    h[3] = s3 - s2;
+    dh[0] = 6 * s2 - 6 * s;
+    dh[1] = -6 * s2 + 6 * s;
+    dh[2] = 3 * s2 - 4 * s + 1;
+    dh[3] = 3 * s2 - 2 * s;
+}
+
+/* Value, gradient and cross derivative at a point inside the grid (u, v in nodes). */
+static void eval_inside(const sk_hand_lut *lut, double u, double v, double out[4])
 {
     int n = lut->n;
-    double u = (x - lut->x0) / lut->h_x, v = (y - lut->y0) / lut->h_y;
-    /* outside the grid: the border value plus the squared distance to the border */
-    double ou = 0.0, ov = 0.0;
-    if (u < 0.0) ou = u, u = 0.0;
-    if (u > n - 1) ou = u - (n - 1), u = n - 1;
-    if (v < 0.0) ov = v, v = 0.0;
-    if (v > n - 1) ov = v - (n - 1), v = n - 1;
     int i = (int)u, j = (int)v;
     if (i > n - 2) i = n - 2;
     if (j > n - 2) j = n - 2;
     double s = u - i, t = v - j;
-    size_t a = (size_t)j * n + i, b = a + 1, c = a + n, e = c + 1;
-    double w00 = (1 - s) * (1 - t), w10 = s * (1 - t), w01 = (1 - s) * t, w11 = s * t;
-    double value = w00 * lut->value[a] + w10 * lut->value[b] + w01 * lut->value[c] + w11 * lut->value[e];
-    double ddx = ou * lut->h_x, ddy = ov * lut->h_y;
-    value += ddx * ddx + ddy * ddy;
-    if (gx) {
-        *gx = lut->weight * (w00 * lut->grad_x[a] + w10 * lut->grad_x[b] + w01 * lut->grad_x[c] +
-                             w11 * lut->grad_x[e] + 2.0 * ddx);
+    size_t c[4] = {(size_t)j * n + i, (size_t)j * n + i + 1, (size_t)(j + 1) * n + i,
+                   (size_t)(j + 1) * n + i + 1};
+    if (lut->interp == SK_HAND_LUT_INTERP_BILINEAR) {
+        double w[4] = {(1 - s) * (1 - t), s * (1 - t), (1 - s) * t, s * t};
+        out[0] = out[1] = out[2] = 0.0;
+        for (int k = 0; k < 4; k++) {
+            out[0] += w[k] * lut->value[c[k]];
+            out[1] += w[k] * lut->grad_x[c[k]];
+            out[2] += w[k] * lut->grad_y[c[k]];
+        }
+        out[3] = 0.0;
+        return;
     }
-    if (gy) {
-        *gy = lut->weight * (w00 * lut->grad_y[a] + w10 * lut->grad_y[b] + w01 * lut->grad_y[c] +
-                             w11 * lut->grad_y[e] + 2.0 * ddy);
+    /* bicubic Hermite with zero twist: exact for separable functions such as the
+       squared distance to one sample */
+    double hs[4], dhs[4], ht[4], dht[4];
+    hermite(s, hs, dhs);
+    hermite(t, ht, dht);
+    double hx = lut->h_x, hy = lut->h_y;
+    double f = 0, fs = 0, ft = 0, fst = 0;
+    for (int b = 0; b < 2; b++) {
+        for (int a = 0; a < 2; a++) {
+            size_t k = c[b * 2 + a];
+            double val = lut->value[k], gx = lut->grad_x[k] * hx, gy = lut->grad_y[k] * hy;
+            f += val * hs[a] * ht[b] + gx * hs[2 + a] * ht[b] + gy * hs[a] * ht[2 + b];
+            fs += val * dhs[a] * ht[b] + gx * dhs[2 + a] * ht[b] + gy * dhs[a] * ht[2 + b];
+            ft += val * hs[a] * dht[b] + gx * hs[2 + a] * dht[b] + gy * hs[a] * dht[2 + b];
+            fst += val * dhs[a] * dht[b] + gx * dhs[2 + a] * dht[b] + gy * dhs[a] * dht[2 + b];
+        }
     }
+    out[0] = f;
+    out[1] = fs / hx;
+    out[2] = ft / hy;
+    out[3] = fst / (hx * hy);
+}
+
+double sk_hand_lut_eval(const sk_hand_lut *lut, double x, double y, double *gx, double *gy)
+{
+    int n = lut->n;
+    double u = (x - lut->x0) / lut->h_x, v = (y - lut->y0) / lut->h_y;
+    double cu = sk_clampd(u, 0.0, n - 1), cv = sk_clampd(v, 0.0, n - 1);
+    double f[4];
+    eval_inside(lut, cu, cv, f);
+    /* beyond the border: continue with the slope and add the squared distance */
+    double dx = (u - cu) * lut->h_x, dy = (v - cv) * lut->h_y;
+    double value = f[0] + f[1] * dx + f[2] * dy + f[3] * dx * dy + dx * dx + dy * dy;
+    if (gx) *gx = lut->weight * (f[1] + f[3] * dy + 2.0 * dx);
+    if (gy) *gy = lut->weight * (f[2] + f[3] * dx + 2.0 * dy);
     return lut->weight * value;
 }
