@@ -429,6 +429,10 @@ typedef enum sk_hand_positions_format {
 sk_result sk_hand_positions_write(const sk_hand_skeleton *skeleton, const double *dofs,
                                   int frame_count, sk_hand_positions_format format,
                                   const char *path, sk_error *err);
+/* Joint angles of frames as CSV: "frame,time_s,<DOF names...>", degrees (mm for the
+ * wrist translations); the data of joint-angle plots. */
+sk_result sk_hand_angles_write_csv(const double *dofs, int frame_count, double frame_time,
+                                   const char *path, sk_error *err);
 /* A pose as JSON: {"side": ..., "dofs_deg": {name: value...}, "points_mm": {...}}. */
 sk_result sk_hand_pose_write_json(const sk_hand_skeleton *skeleton,
                                   const double dofs[SK_HAND_DOF_COUNT],

@@ -54,6 +54,29 @@ sk_result sk_hand_positions_write(const sk_hand_skeleton *s, const double *dofs,
     return sk_atomic_file_commit(&file, err);
 }
 
+sk_result sk_hand_angles_write_csv(const double *dofs, int frames, double frame_time,
+                                   const char *path, sk_error *err)
+{
+    if (frames < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no frames to write");
+    sk_atomic_file file;
+    sk_result r = sk_atomic_file_open(&file, path, err);
+    if (r != SK_OK) return r;
+    fputs("frame,time_s", file.fp);
+    for (int i = 0; i < SK_HAND_DOF_COUNT; i++) fprintf(file.fp, ",%s", sk_hand_dof(i)->name);
+    fputc('\n', file.fp);
+    for (int f = 0; f < frames; f++) {
+        fprintf(file.fp, "%d,%.6f", f, f * frame_time);
+        for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
+            fprintf(file.fp, ",%.6f", sk_hand__to_file_units(i, dofs[(size_t)f * SK_HAND_DOF_COUNT + i]));
+        fputc('\n', file.fp);
+    }
+    if (ferror(file.fp)) {
+        sk_atomic_file_abort(&file);
+        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+    }
+    return sk_atomic_file_commit(&file, err);
+}
+
 sk_result sk_hand_pose_write_json(const sk_hand_skeleton *s, const double dofs[SK_HAND_DOF_COUNT],
                                   const sk_hand_solve_info *info, const char *path, sk_error *err)
 {
