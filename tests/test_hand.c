@@ -758,6 +758,59 @@ static void test_positions_export(void **state)
     free(text);
 }
 
+/* ------------------------------------------------------------ command line */
+static void test_cli(void **state)
+{
+    (void)state;
+    sk_test_run *run = malloc(sizeof *run);
+    const char *pose = sk_test_path("hand/cli-pose.json");
+    assert_int_equal(sk_test_cli(run, "hand pose --pin L.MCP.flex=60 -o '%s'", pose), 0);
+    char *text;
+    size_t size;
+    sk_error err;
+    assert_int_equal(sk_read_file(pose, 0, &text, &size, &err), SK_OK);
+    assert_non_null(strstr(text, "\"L.MCP.flex\":\t60"));
+    free(text);
+    /* bad input: one line, exit 2, no output file */
+    const char *none = sk_test_path("hand/cli-none.json");
+    assert_int_equal(sk_test_cli(run, "hand pose --pin L.MPC.flex=60 -o '%s'", none), 2);
+    assert_int_equal(sk_test_count_lines(run->err), 1);
+    assert_non_null(strstr(run->err, "unknown DOF \"L.MPC.flex\""));
+    assert_false(sk_test_file_exists(none));
+    assert_int_equal(sk_test_cli(run, "hand pose --torque I.PIP.flex=abc"), 2);
+    assert_int_equal(sk_test_cli(run, "hand pose --constraints nosuchset"), 2);
+    /* calibrate: a CSV with a bad field names its line and column */
+    const char *csv = sk_test_path("hand/cli-bad.csv");
+    const char *bad = "R.MCP.flex,L.MCP.flex\n10,12\n20,2x\n";
+    sk_test_write_file(csv, bad, strlen(bad));
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --pairs R.MCP.flex:L.MCP.flex -o '%s'", csv, none), 2);
+    assert_int_equal(sk_test_count_lines(run->err), 1);
+    assert_non_null(strstr(run->err, "line 3, column 2 (L.MCP.flex)"));
+    const char *good = "R.MCP.flex,L.MCP.flex\n10,12\n20,25\n30,35\n40,49\n";
+    sk_test_write_file(csv, good, strlen(good));
+    const char *rows = sk_test_path("hand/cli-rows.json");
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --pairs R.MCP.flex:L.MCP.flex -o '%s'", csv, rows), 0);
+    /* the fitted rows drive a pose */
+    assert_int_equal(sk_test_cli(run, "hand pose --constraints '%s' --pin R.MCP.flex=50", rows), 0);
+    assert_non_null(strstr(run->out, "L.MCP.flex"));
+    /* lookup-table potentials from the same samples */
+    assert_int_equal(sk_test_cli(run, "hand pose --samples '%s' --pairs R.MCP.flex:L.MCP.flex --pin R.MCP.flex=30", csv), 0);
+    /* animate the shipped demonstration into BVH and positions */
+    const char *bvh = sk_test_path("hand/cli-little.bvh");
+    const char *pos = sk_test_path("hand/cli-little.csv");
+    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-mcp.json' --bvh '%s' --positions '%s' -q",
+                                 SK_TEST_PRESET_DIR, bvh, pos), 0);
+    sk_bvh *b = malloc(sizeof *b);
+    assert_int_equal(sk_bvh_load_file(bvh, b, &err), SK_OK);
+    assert_int_equal(b->frame_count, 49);
+    sk_bvh_free(b);
+    free(b);
+    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-mcp.json'", SK_TEST_PRESET_DIR), 2);
+    assert_int_equal(sk_test_cli(run, "hand pose --help"), 0);
+    assert_non_null(strstr(run->out, "--pin"));
+    free(run);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -779,6 +832,7 @@ int main(void)
         cmocka_unit_test(test_keyframe_interpolation),
         cmocka_unit_test(test_bvh_round_trip),
         cmocka_unit_test(test_positions_export),
+        cmocka_unit_test(test_cli),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
