@@ -15,20 +15,11 @@ static inline void to_rgba(const float *px, int channels, float rgba[4])
     }
 }
 
-/* Straight RGBA into a layout's colour values (value[0..colors-1]) and alpha. */
+/* Straight RGBA into a layout's values; a grey source keeps its exact grey. */
 static inline void from_rgba(const float rgba[4], bool src_grey, int channels, float value[4])
 {
-    if (channels <= 2) {
-        /* A grey source keeps its exact value; colour becomes its luminance. */
-        value[0] = src_grey ? rgba[0]
-                            : sk__luminance(sk_rgba(rgba[0], rgba[1], rgba[2], rgba[3]));
-        value[1] = rgba[3];
-    } else {
-        value[0] = rgba[0];
-        value[1] = rgba[1];
-        value[2] = rgba[2];
-        value[3] = rgba[3];
-    }
+    sk__color_to_layout(sk_rgba(rgba[0], rgba[1], rgba[2], rgba[3]), channels, value);
+    if (src_grey && channels <= 2) value[0] = rgba[0];
 }
 
 void sk_draw_blit_mode(sk_image *dst, const sk_image *src, int x, int y, sk_blit_mode mode)
@@ -56,9 +47,8 @@ void sk_draw_blit_mode(sk_image *dst, const sk_image *src, int x, int y, sk_blit
             float rgba[4], value[4];
             to_rgba(sp, sch, rgba);
             from_rgba(rgba, src_grey, dch, value);
-            float a = rgba[3];
+            float a = value[3]; /* clamped to [0, 1] */
             if (mode == SK_BLIT_OVER) {
-                a = a < 0.0f ? 0.0f : (a > 1.0f ? 1.0f : a);
                 if (a > 0.0f) sk__composite_over(dp, dch, value, a);
             } else {
                 for (int k = 0; k < colors; k++) dp[k] = value[k];

@@ -43,10 +43,13 @@ static inline float sk__luminance(sk_color c)
 typedef struct sk__paint {
     sk_image *img;
     int channels;
-    float value[4]; /* the colour in the image's layout (grey / grey+a / rgb / rgba) */
+    float value[4]; /* the colour in the image's layout (sk__color_to_layout) */
     float alpha;    /* the colour's alpha, clamped to [0, 1] */
 } sk__paint;
 
+/* The colour in a channel layout: v[0..2] = grey, alpha, 0 (1-2 channels) or r, g, b
+ * (3-4 channels); v[3] = alpha clamped to [0, 1]. A 2-channel pixel is v[0], v[1]. */
+void sk__color_to_layout(sk_color c, int channels, float v[4]);
 /* False (and nothing to draw) if the colour is not finite, fully transparent or the
  * image is invalid. */
 bool sk__paint_init(sk__paint *paint, sk_image *img, sk_color c);

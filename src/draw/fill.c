@@ -1,45 +1,39 @@
 /* Whole-image fill and clear, and axis-aligned rectangles (exact separable coverage). */
 #include "draw/draw_internal.h"
 
-/* Rows per parallel chunk when filling large images. */
+/* Images at least this large are filled by several threads. */
 #define SK__FILL_PARALLEL_PIXELS (1 << 18)
 
-void sk_draw_fill(sk_image *img, sk_color c)
+/* Sets (or composites, if `blend`) the colour value v with alpha a over every pixel. */
+static void whole_image(sk_image *img, const float v[4], float a, bool blend)
 {
-    sk__paint paint;
-    if (!sk__paint_init(&paint, img, c)) return;
     size_t pixels = (size_t)img->width * (size_t)img->height;
     long long rows = img->height;
     int ch = img->channels;
 #pragma omp parallel for schedule(static) if (pixels >= SK__FILL_PARALLEL_PIXELS)
     for (long long y = 0; y < rows; y++) {
         float *px = sk_image_pixel(img, 0, (int)y);
-        for (int x = 0; x < img->width; x++, px += ch)
-            sk__composite_over(px, ch, paint.value, paint.alpha);
+        for (int x = 0; x < img->width; x++, px += ch) {
+            if (blend)
+                sk__composite_over(px, ch, v, a);
+            else
+                for (int k = 0; k < ch; k++) px[k] = v[k];
+        }
     }
+}
+
+void sk_draw_fill(sk_image *img, sk_color c)
+{
+    sk__paint paint;
+    if (sk__paint_init(&paint, img, c)) whole_image(img, paint.value, paint.alpha, true);
 }
 
 void sk_draw_clear(sk_image *img, sk_color c)
 {
     if (!sk__image_valid(img) || !sk__color_finite(c)) return;
-    float a = c.a < 0.0f ? 0.0f : (c.a > 1.0f ? 1.0f : c.a);
-    float lum = sk__luminance(c);
     float v[4];
-    switch (img->channels) {
-    case 1: v[0] = lum; break;
-    case 2: v[0] = lum; v[1] = a; break;
-    case 3: v[0] = c.r; v[1] = c.g; v[2] = c.b; break;
-    default: v[0] = c.r; v[1] = c.g; v[2] = c.b; v[3] = a; break;
-    }
-    size_t pixels = (size_t)img->width * (size_t)img->height;
-    long long rows = img->height;
-    int ch = img->channels;
-#pragma omp parallel for schedule(static) if (pixels >= SK__FILL_PARALLEL_PIXELS)
-    for (long long y = 0; y < rows; y++) {
-        float *px = sk_image_pixel(img, 0, (int)y);
-        for (int x = 0; x < img->width; x++, px += ch)
-            for (int k = 0; k < ch; k++) px[k] = v[k];
-    }
+    sk__color_to_layout(c, img->channels, v);
+    whole_image(img, v, v[3], false);
 }
 
 /* Length of [p, p + 1) inside [lo, hi). */

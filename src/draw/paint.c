@@ -34,27 +34,28 @@ sk__clip sk__clip_bounds(sk__clip clip, double x0, double y0, double x1, double 
     return out;
 }
 
+void sk__color_to_layout(sk_color c, int channels, float v[4])
+{
+    float a = c.a < 0.0f ? 0.0f : (c.a > 1.0f ? 1.0f : c.a);
+    if (channels <= 2) {
+        v[0] = sk__luminance(c);
+        v[1] = a;
+        v[2] = 0.0f;
+    } else {
+        v[0] = c.r;
+        v[1] = c.g;
+        v[2] = c.b;
+    }
+    v[3] = a;
+}
+
 bool sk__paint_init(sk__paint *paint, sk_image *img, sk_color c)
 {
     if (!sk__image_valid(img) || !sk__color_finite(c) || !(c.a > 0.0f)) return false;
     paint->img = img;
     paint->channels = img->channels;
-    paint->alpha = c.a > 1.0f ? 1.0f : c.a;
-    float lum = sk__luminance(c);
-    switch (img->channels) {
-    case 1:
-    case 2:
-        paint->value[0] = lum;
-        paint->value[1] = paint->alpha;
-        paint->value[2] = paint->value[3] = 0.0f;
-        break;
-    default:
-        paint->value[0] = c.r;
-        paint->value[1] = c.g;
-        paint->value[2] = c.b;
-        paint->value[3] = paint->alpha;
-        break;
-    }
+    sk__color_to_layout(c, img->channels, paint->value);
+    paint->alpha = paint->value[3];
     return true;
 }
 
