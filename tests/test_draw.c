@@ -698,6 +698,22 @@ static void test_contact_sheet_layout(void **state)
     assert_near(p[3], 1.0, 1e-6, "opaque");
     assert_near(sk_image_pixel(&sheet, 8 + 40 + 16 - 6, 8 + 35 + 16)[0], 1.0, 1e-6, "white beside");
     free(sheet.data);
+
+    /* NEAREST scaling keeps hard pixels: a 2 x 2 checker tile shown 16 x 16. */
+    sk_image checker = img_new(2, 2, 1);
+    checker.data[0] = checker.data[3] = 1.0f;
+    const sk_image *one[1] = {&checker};
+    sk_contact_sheet_desc d3 = {0};
+    d3.tile_size = 16;
+    d3.tile_filter = SK_RESIZE_NEAREST;
+    d3.padding = 4;
+    assert_int_equal(sk_contact_sheet(one, NULL, 1, &d3, &sheet, &err), SK_OK);
+    assert_int_equal(sheet.width, 24);
+    for (int y = 0; y < 16; y++)
+        for (int x = 0; x < 16; x++)
+            assert_true(sk_image_pixel(&sheet, 4 + x, 4 + y)[0] == (((x < 8) == (y < 8)) ? 1.0f : 0.0f));
+    free(sheet.data);
+    img_free(&checker);
     for (int i = 0; i < 5; i++) img_free(&t[i]);
 }
 
@@ -726,7 +742,11 @@ static void test_contact_sheet_errors(void **state)
     assert_int_equal(sk_contact_sheet(tiles, NULL, 1, &d, &out, &err), SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "background"));
     d.background = sk_rgba(0, 0, 0, 0);
-    /* 4096 columns of 16384-pixel tiles: far over the size limit. */
+    d.tile_filter = (sk_resize_filter)7;
+    assert_int_equal(sk_contact_sheet(tiles, NULL, 1, &d, &out, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "tile_filter"));
+    d.tile_filter = SK_RESIZE_DEFAULT;
+    /* 8 columns of 16384-pixel tiles: far over the size limit. */
     const sk_image *many[8] = {&t, &t, &t, &t, &t, &t, &t, &t};
     d.tile_size = 16384;
     d.columns = 8;

@@ -79,7 +79,9 @@ void sk_draw_line_capped(sk_image *img, float x0, float y0, float x1, float y1, 
  * is composited once: where its segments overlap (at joins, or where it crosses itself)
  * each pixel takes the largest coverage of any segment, never the sum, so a translucent
  * polyline has no darker knots. `closed` joins the last point back to the first.
- * A single point draws a disc of diameter `width`. */
+ * A single point draws a disc of diameter `width`. A point with a NaN or infinite
+ * coordinate breaks the line (its segments are left out; a finite point left without
+ * neighbours shows as a disc). */
 void sk_draw_polyline(sk_image *img, const sk_vec2f *pts, int n, bool closed, float width,
                       sk_color c);
 
@@ -157,7 +159,7 @@ typedef enum sk_label_position {
 } sk_label_position;
 
 typedef struct sk_contact_sheet_desc {
-    int columns;      /* 0 = ceil(sqrt(count)); range 0..4096 */
+    int columns;      /* 0 = ceil(sqrt(count)); range 0..4096 (at most count are used) */
     int tile_size;    /* 0 = each tile at its own size, cells sized to the largest tile;
                          > 0 = each tile scaled (aspect kept) to fit tile_size x tile_size;
                          range 0..16384 */
@@ -170,6 +172,9 @@ typedef struct sk_contact_sheet_desc {
     sk_color text_color; /* all zero = black {0, 0, 0, 1} */
     int channels;        /* output channels 1..4; 0 = 3 */
     sk_label_position label_position; /* 0 = labels below the tiles */
+    sk_resize_filter tile_filter; /* how tiles are scaled to tile_size; 0 = box when
+                                     shrinking, bilinear when enlarging; NEAREST keeps
+                                     hard pixels (masks, cell maps) */
 } sk_contact_sheet_desc;
 
 /* The desc with every zero field replaced by its default (columns needs `count`). */

@@ -53,6 +53,8 @@ static sk_result validate(const sk_image *const *tiles, int count, const sk_cont
     if ((r = sk_check_range_i(err, "label_position", (int)d->label_position, 0, SK_LABEL_ABOVE)) !=
         SK_OK)
         return r;
+    if ((r = sk_check_range_i(err, "tile_filter", (int)d->tile_filter, 0, SK_RESIZE_BOX)) != SK_OK)
+        return r;
     if ((r = check_color(err, "background", d->background)) != SK_OK) return r;
     if ((r = check_color(err, "text_color", d->text_color)) != SK_OK) return r;
     for (int i = 0; i < count; i++) {
@@ -143,7 +145,7 @@ sk_result sk_contact_sheet(const sk_image *const *tiles, const char *const *labe
             sk_draw_blit(&sheet, tiles[i], tx, ty);
         } else {
             sk_image scaled;
-            r = sk_image_resize(tiles[i], w, h, &scaled, err);
+            r = sk_image_resize_filter(tiles[i], w, h, d.tile_filter, &scaled, err);
             if (r != SK_OK) {
                 free(sheet.data);
                 return sk_error_prefix(err, "tiles[%d]", i);
