@@ -13,7 +13,9 @@
  *   (x + 0.5, y + 0.5); y grows downwards (top row first).
  * - Anti-aliasing is exact area coverage (a box filter over each pixel), computed
  *   analytically from the shape's outline; curves are flattened to polygons with at most
- *   0.01 px deviation and with the exact area of the curve. Results are deterministic.
+ *   0.01 px deviation (for radii up to 30000 px) and with the exact area of the curve.
+ *   Where one outline overlaps itself the coverage is clamped (see sk_draw_polygon).
+ *   Results are deterministic.
  * - Everything clips to the image; work is bounded by the primitive's clipped bounding
  *   box. A primitive with a NaN or infinite coordinate, size or colour component is
  *   skipped, as is an image with a NULL pointer or invalid size.

@@ -38,56 +38,58 @@ static void stroke_into(double x0, double y0, double x1, double y1, double width
     sk__path_free(&path);
 }
 
-void sk__draw_polyline_clip(sk_image *img, sk__clip clip, const sk_vec2f *pts, int n,
-                            bool closed, float width, sk_color c)
+/* Rasterizes every segment of the polyline (and dots for isolated points) into `emit`. */
+static void stroke_all(const sk_vec2f *pts, int n, bool closed, double width, sk__clip bounds,
+                       sk__span_fn emit, void *user)
 {
-    sk__paint paint;
-    if (!pts || n <= 0 || !isfinite(width) || !(width > 0.0f)) return;
-    if (!sk__paint_init(&paint, img, c)) return;
-    clip = sk__clip_bounds(clip, clip.x0, clip.y0, clip.x1, clip.y1);
-    double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
-    int finite = 0;
-    for (int i = 0; i < n; i++) {
-        if (!point_finite(pts[i])) continue;
-        finite++;
-        min_x = fmin(min_x, pts[i].x);
-        max_x = fmax(max_x, pts[i].x);
-        min_y = fmin(min_y, pts[i].y);
-        max_y = fmax(max_y, pts[i].y);
-    }
-    if (finite == 0) return;
-    double h = 0.5 * (double)width + 1.0;
-    sk__clip bounds = sk__clip_bounds(clip, min_x - h, min_y - h, max_x + h, max_y + h);
-    if (sk__clip_empty(bounds)) return;
-
     int segments = closed && n > 2 ? n : n - 1;
-    sk__mask mask;
-    bool use_mask = segments > 1 && sk__mask_init(&mask, bounds);
-    sk__span_fn emit = use_mask ? sk__mask_span_fn : sk__paint_span_fn;
-    void *user = use_mask ? (void *)&mask : (void *)&paint;
-    /* Without a mask (one segment, or no memory for one) segments composite directly. */
-
-    if (n == 1 || segments == 0) {
-        if (point_finite(pts[0]))
-            stroke_into(pts[0].x, pts[0].y, pts[0].x, pts[0].y, width, bounds, emit, user);
-    }
     for (int i = 0; i < segments; i++) {
         sk_vec2f a = pts[i], b = pts[(i + 1) % n];
         /* A segment touching a non-finite point is left out (the line breaks there). */
         if (!point_finite(a) || !point_finite(b)) continue;
         stroke_into(a.x, a.y, b.x, b.y, width, bounds, emit, user);
     }
-    /* An isolated finite point between two breaks still shows as a dot. */
-    for (int i = 0; i < n && segments > 0; i++) {
+    /* A finite point without finite neighbours (or a single point) shows as a dot. */
+    for (int i = 0; i < n; i++) {
         if (!point_finite(pts[i])) continue;
-        bool prev = (i > 0 || closed) && point_finite(pts[(i + n - 1) % n]);
-        bool next = (i + 1 < n || closed) && point_finite(pts[(i + 1) % n]);
+        bool prev = (i > 0 || closed) && n > 1 && point_finite(pts[(i + n - 1) % n]);
+        bool next = (i + 1 < n || closed) && n > 1 && point_finite(pts[(i + 1) % n]);
         if (!prev && !next) stroke_into(pts[i].x, pts[i].y, pts[i].x, pts[i].y, width, bounds, emit, user);
     }
-    if (use_mask) {
-        sk__mask_paint(&mask, &paint);
-        sk__mask_free(&mask);
+}
+
+void sk__draw_polyline_clip(sk_image *img, sk__clip clip, const sk_vec2f *pts, int n,
+                            bool closed, float width, sk_color c)
+{
+    sk__paint paint;
+    if (!pts || n <= 0 || !isfinite(width) || !(width > 0.0f)) return;
+    if (!sk__paint_init(&paint, img, c)) return;
+    clip = sk__clip_bounds(sk__clip_image(img), clip.x0, clip.y0, clip.x1, clip.y1);
+    double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
+    for (int i = 0; i < n; i++) {
+        if (!point_finite(pts[i])) continue;
+        min_x = fmin(min_x, pts[i].x);
+        max_x = fmax(max_x, pts[i].x);
+        min_y = fmin(min_y, pts[i].y);
+        max_y = fmax(max_y, pts[i].y);
     }
+    if (!(min_x <= max_x)) return; /* no finite point */
+    double h = 0.5 * (double)width + 1.0;
+    sk__clip bounds = sk__clip_bounds(clip, min_x - h, min_y - h, max_x + h, max_y + h);
+    if (sk__clip_empty(bounds)) return;
+
+    /* Two or more pieces combine in a mask and composite once. Should the mask run out
+       of memory, the stroke is drawn piece by piece instead (complete, though joins then
+       blend twice). */
+    sk__mask mask;
+    if (n > 2 && sk__mask_init(&mask, bounds)) {
+        stroke_all(pts, n, closed, width, bounds, sk__mask_span_fn, &mask);
+        bool complete = !mask.failed;
+        if (complete) sk__mask_paint(&mask, &paint);
+        sk__mask_free(&mask);
+        if (complete) return;
+    }
+    stroke_all(pts, n, closed, width, bounds, sk__paint_span_fn, &paint);
 }
 
 void sk_draw_polyline(sk_image *img, const sk_vec2f *pts, int n, bool closed, float width,
