@@ -56,8 +56,6 @@ bool sk__paint_init(sk__paint *paint, sk_image *img, sk_color c);
 /* Composites the paint over pixels (x .. x+n-1, y) weighted by coverage[i] in [0, 1];
  * zero coverage leaves a pixel untouched. */
 void sk__paint_span(const sk__paint *paint, int x, int y, int n, const float *coverage);
-/* Composites the paint over one pixel with coverage `w`. */
-void sk__paint_pixel(const sk__paint *paint, int x, int y, float w);
 /* "Over" (Porter & Duff 1984) of a straight-alpha source value with alpha `a` into one
  * pixel of `channels` channels whose last channel is alpha if channels is 2 or 4:
  * alpha_out = a + alpha_dst (1 - a), colour_out = (c a + c_dst alpha_dst (1 - a)) / alpha_out. */

@@ -59,13 +59,6 @@ bool sk__paint_init(sk__paint *paint, sk_image *img, sk_color c)
     return true;
 }
 
-void sk__paint_pixel(const sk__paint *paint, int x, int y, float w)
-{
-    if (!(w > 0.0f)) return;
-    float a = paint->alpha * (w < 1.0f ? w : 1.0f);
-    sk__composite_over(sk_image_pixel(paint->img, x, y), paint->channels, paint->value, a);
-}
-
 /* The span loop for a fixed channel count, so the compiler unrolls the channels. */
 #define SK__PAINT_SPAN_LOOP(CH)                                                              \
     for (int i = 0; i < n; i++, px += (CH)) {                                              \
