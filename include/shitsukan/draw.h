@@ -117,7 +117,8 @@ void sk_draw_contours(sk_image *img, const sk_vec2f *pts, const int *counts, int
  * which is sk_draw_text_width(text, scale) wide and sk_draw_text_height(scale) high: the
  * tops of capitals touch its top edge, descenders its bottom edge, and no ink falls
  * outside it. Any other byte (a UTF-8 sequence counts as one) draws a hollow box.
- * Fractional positions are anti-aliased. Returns the width (0 for NULL or ""). */
+ * Fractional positions are anti-aliased. Returns the width of the box (0 for NULL or "");
+ * text that continues on the same line starts one gap later, at x + width + scale. */
 int sk_draw_text(sk_image *img, float x, float y, const char *text, int scale, sk_color c);
 /* Width of the text's box: 6 * scale per character minus the trailing 1 * scale gap. */
 int sk_draw_text_width(const char *text, int scale);
