@@ -100,9 +100,15 @@ typedef struct sk_exr_write_desc {
        4 "R","G","B","A". */
     const char *const *channel_names;
     const sk_image_metadata *metadata; /* optional string attributes */
+    /* 0 = scanline image; otherwise a tiled image (one level) with square tiles of this
+       many pixels, range 8..4096 (texture caches read tiles faster). */
+    int tile_size;
 } sk_exr_write_desc;
 
-/* Linear data is written as is (EXR is linear by convention). `desc` may be NULL. */
+/* Linear data is written as is (EXR is linear by convention); HALF rounds each float to
+ * the nearest half (ties to even), values beyond +-65504 become +-infinity. Channel names
+ * must be unique and 1-255 bytes; metadata keys must not be EXR's own attribute names
+ * (channels, compression, dataWindow, ...). `desc` may be NULL. */
 sk_result sk_image_write_exr(const sk_image *image, const char *path,
                              const sk_exr_write_desc *desc, sk_error *err);
 
