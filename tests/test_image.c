@@ -19,11 +19,11 @@
 
 /* ------------------------------------------------------------------ helpers */
 
-#define ASSERT_OK(call)                                                                        \
-    do {                                                                                       \
-        sk_error e_ = {0};                                                                     \
-        sk_result r_ = (call);                                                                 \
-        if (r_ != SK_OK) fail_msg("%s -> %s: %s", #call, sk_result_string(r_), e_.message);    \
+#define ASSERT_OK(call)                                                                            \
+    do {                                                                                           \
+        sk_error e_ = {0};                                                                         \
+        sk_result r_ = (call);                                                                     \
+        if (r_ != SK_OK) fail_msg("%s -> %s: %s", #call, sk_result_string(r_), e_.message);        \
     } while (0)
 
 /* Calls `call` (which must use `err`) and checks both the result and that the message
@@ -41,7 +41,8 @@ static void expect_failure(sk_result got, const sk_error *err, sk_result want, c
 static void fill_random(sk_image *im, uint64_t seed, float lo, float hi)
 {
     size_t n = (size_t)im->width * im->height * im->channels;
-    for (size_t i = 0; i < n; i++) im->data[i] = (float)sk_rand_uniform(seed, i, 0, 0) * (hi - lo) + lo;
+    for (size_t i = 0; i < n; i++)
+        im->data[i] = (float)sk_rand_uniform(seed, i, 0, 0) * (hi - lo) + lo;
 }
 
 static long file_size(const char *path)
@@ -205,7 +206,8 @@ static void test_png_16bit_gradient_exact(void **state)
     sk_png_read_desc rd = {.encoding = SK_PNG_ENCODING_LINEAR};
     ASSERT_OK(sk_image_read_png(&back, path, &rd, NULL, NULL, &e_));
     for (int i = 0; i < 65536; i++)
-        if (back.data[i] != im.data[i]) fail_msg("code %d came back as %.9g", i, back.data[i] * 65535.0);
+        if (back.data[i] != im.data[i])
+            fail_msg("code %d came back as %.9g", i, back.data[i] * 65535.0);
     sk_image_free(&im);
     sk_image_free(&back);
 }
@@ -345,8 +347,8 @@ static void test_png_malformed_files(void **state)
 
     const char *truncated = sk_test_path("image/truncated.png");
     sk_test_write_file(truncated, bytes, size / 2);
-    expect_failure(sk_image_read_png(&im, truncated, NULL, NULL, NULL, &err), &err,
-                   SK_ERROR_PARSE, "truncated.png");
+    expect_failure(sk_image_read_png(&im, truncated, NULL, NULL, NULL, &err), &err, SK_ERROR_PARSE,
+                   "truncated.png");
     assert_null(im.data);
 
     const char *header_only = sk_test_path("image/header_only.png");
@@ -358,8 +360,8 @@ static void test_png_malformed_files(void **state)
     const char *flipped = sk_test_path("image/flipped.png");
     bytes[size / 2] ^= 0x10;
     sk_test_write_file(flipped, bytes, size);
-    expect_failure(sk_image_read_png(&im, flipped, NULL, NULL, NULL, &err), &err,
-                   SK_ERROR_PARSE, NULL);
+    expect_failure(sk_image_read_png(&im, flipped, NULL, NULL, NULL, &err), &err, SK_ERROR_PARSE,
+                   NULL);
     free(bytes);
 
     const char *garbage = sk_test_path("image/garbage.png");
@@ -368,15 +370,15 @@ static void test_png_malformed_files(void **state)
                    "signature");
 
     /* Missing files are SK_ERROR_NOT_FOUND (other open failures are SK_ERROR_IO). */
-    expect_failure(sk_image_read_png(&im, sk_test_path("image/does_not_exist.png"), NULL, NULL,
-                                     NULL, &err),
-                   &err, SK_ERROR_NOT_FOUND, "does_not_exist.png");
+    expect_failure(
+        sk_image_read_png(&im, sk_test_path("image/does_not_exist.png"), NULL, NULL, NULL, &err),
+        &err, SK_ERROR_NOT_FOUND, "does_not_exist.png");
 }
 
 /* Writes a PNG with libpng directly, for layouts our writer never makes. */
-static void write_raw_png(const char *path, int w, int h, int depth, int color_type,
-                          int interlace, const png_color *palette, int palette_size,
-                          const unsigned char *trns, int trns_count, const png_color_16 *trns_grey,
+static void write_raw_png(const char *path, int w, int h, int depth, int color_type, int interlace,
+                          const png_color *palette, int palette_size, const unsigned char *trns,
+                          int trns_count, const png_color_16 *trns_grey,
                           const unsigned char *pixels)
 {
     FILE *fp = fopen(path, "wb");
@@ -448,8 +450,8 @@ static void test_png_foreign_layouts(void **state)
     }
     png_color_16 key = {.gray = 5000};
     const char *inter_path = sk_test_path("image/interlaced16.png");
-    write_raw_png(inter_path, W, H, 16, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_ADAM7, NULL, 0, NULL,
-                  0, &key, g16);
+    write_raw_png(inter_path, W, H, 16, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_ADAM7, NULL, 0, NULL, 0,
+                  &key, g16);
     ASSERT_OK(sk_image_read_png(&im, inter_path, &raw, NULL, &depth, &e_));
     assert_int_equal(depth, 16);
     assert_int_equal(im.channels, 2);
@@ -499,7 +501,7 @@ static void test_exr_half_roundtrip(void **state)
     /* Values a half holds exactly, the largest half, a half denormal, and a tie. */
     const float exact[6] = {0.5f, -2.0f, 1024.0f, 65504.0f, 0x1p-24f, 0.333251953125f};
     for (int i = 0; i < 6; i++) im.data[i] = exact[i];
-    im.data[6] = 1.0f + 0x1p-11f; /* halfway between 1 and 1 + 2^-10: ties to even = 1 */
+    im.data[6] = 1.0f + 0x1p-11f;     /* halfway between 1 and 1 + 2^-10: ties to even = 1 */
     im.data[7] = 1.0f + 3 * 0x1p-11f; /* halfway, ties to even = 1 + 2^-9 */
     im.data[8] = 1e6f;                /* beyond the half range */
     sk_exr_write_desc wd = {.pixel_type = SK_EXR_PIXEL_HALF, .compression = SK_EXR_COMPRESSION_PIZ};
@@ -632,9 +634,8 @@ static void write_foreign_exr(const char *path, int w, int h, const uint32_t *r_
     exr_attr_v2f_t center;
     center.x = 0.0f;
     center.y = 0.0f;
-    assert_int_equal(exr_initialize_required_attr(ctxt, part, &display, &data, 1.0f, &center,
-                                                  1.0f, EXR_LINEORDER_INCREASING_Y,
-                                                  EXR_COMPRESSION_NONE),
+    assert_int_equal(exr_initialize_required_attr(ctxt, part, &display, &data, 1.0f, &center, 1.0f,
+                                                  EXR_LINEORDER_INCREASING_Y, EXR_COMPRESSION_NONE),
                      0);
     assert_int_equal(exr_add_channel(ctxt, part, "R", EXR_PIXEL_UINT, 1, 1, 1), 0);
     assert_int_equal(exr_add_channel(ctxt, part, "G", EXR_PIXEL_HALF, 1, 1, 1), 0);
@@ -651,8 +652,9 @@ static void write_foreign_exr(const char *path, int w, int h, const uint32_t *r_
         for (int c = 0; c < enc.channel_count; c++) {
             exr_coding_channel_info_t *ch = &enc.channels[c];
             bool is_r = strcmp(ch->channel_name, "R") == 0;
-            const void *src = is_r ? (const void *)(r_uint + y * w)
-                                   : (const void *)((strcmp(ch->channel_name, "G") == 0 ? g : z) + y * w);
+            const void *src =
+                is_r ? (const void *)(r_uint + y * w)
+                     : (const void *)((strcmp(ch->channel_name, "G") == 0 ? g : z) + y * w);
             ch->user_data_type = is_r ? EXR_PIXEL_UINT : EXR_PIXEL_FLOAT;
             ch->user_bytes_per_element = 4;
             ch->user_pixel_stride = 4;

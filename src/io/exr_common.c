@@ -24,8 +24,8 @@ static int64_t io_read(exr_const_context_t ctxt, void *user, void *buffer, uint6
     sk__exr_io *io = user;
     uint64_t done = 0;
     while (done < size) {
-        ssize_t n = pread(io->fd, (char *)buffer + done, (size_t)(size - done),
-                          (off_t)(offset + done));
+        ssize_t n =
+            pread(io->fd, (char *)buffer + done, (size_t)(size - done), (off_t)(offset + done));
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) {
             io->io_errno = errno;

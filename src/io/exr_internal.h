@@ -11,8 +11,8 @@
  * first error message the library reported (it would print to stderr otherwise). */
 typedef struct sk__exr_io {
     int fd;
-    int64_t size;     /* file size for reading */
-    int io_errno;     /* errno of a failed pread/pwrite, 0 if none */
+    int64_t size; /* file size for reading */
+    int io_errno; /* errno of a failed pread/pwrite, 0 if none */
     char message[256];
 } sk__exr_io;
 

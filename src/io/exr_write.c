@@ -11,10 +11,20 @@
 
 /* Names of the attributes EXR itself defines for a single-part image; metadata must not
  * take them over. */
-static const char *const reserved_names[] = {
-    "channels", "compression", "dataWindow", "displayWindow", "lineOrder", "pixelAspectRatio",
-    "screenWindowCenter", "screenWindowWidth", "tiles", "name", "type", "version",
-    "chunkCount", "maxSamplesPerPixel"};
+static const char *const reserved_names[] = {"channels",
+                                             "compression",
+                                             "dataWindow",
+                                             "displayWindow",
+                                             "lineOrder",
+                                             "pixelAspectRatio",
+                                             "screenWindowCenter",
+                                             "screenWindowWidth",
+                                             "tiles",
+                                             "name",
+                                             "type",
+                                             "version",
+                                             "chunkCount",
+                                             "maxSamplesPerPixel"};
 
 static const char *const default_names[5][4] = {
     {NULL}, {"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
@@ -110,9 +120,8 @@ static void bind_channels(const exr_writer *w, exr_encode_pipeline_t *enc, int x
 }
 
 /* Encodes and writes one chunk; `first` initialises the pipeline. */
-static exr_result_t write_chunk(const exr_writer *w, exr_context_t ctxt,
-                                exr_encode_pipeline_t *enc, const exr_chunk_info_t *cinfo,
-                                bool *first, int x0, int y0)
+static exr_result_t write_chunk(const exr_writer *w, exr_context_t ctxt, exr_encode_pipeline_t *enc,
+                                const exr_chunk_info_t *cinfo, bool *first, int x0, int y0)
 {
     exr_result_t rv = *first ? exr_encoding_initialize(ctxt, 0, cinfo, enc)
                              : exr_encoding_update(ctxt, 0, cinfo, enc);
@@ -159,12 +168,11 @@ static exr_result_t define_part(const exr_writer *w, exr_context_t ctxt, const c
     int part = 0;
     const sk_image *im = w->image;
     *step = "cannot define the image";
-    exr_result_t rv = exr_add_part(ctxt, NULL,
-                                   w->tile_size ? EXR_STORAGE_TILED : EXR_STORAGE_SCANLINE, &part);
+    exr_result_t rv =
+        exr_add_part(ctxt, NULL, w->tile_size ? EXR_STORAGE_TILED : EXR_STORAGE_SCANLINE, &part);
     if (rv == EXR_ERR_SUCCESS && w->long_names) rv = exr_set_longname_support(ctxt, 1);
     if (rv == EXR_ERR_SUCCESS)
-        rv = exr_initialize_required_attr_simple(ctxt, part, im->width, im->height,
-                                                 w->compression);
+        rv = exr_initialize_required_attr_simple(ctxt, part, im->width, im->height, w->compression);
     if (rv == EXR_ERR_SUCCESS && w->tile_size)
         rv = exr_set_tile_descriptor(ctxt, part, (uint32_t)w->tile_size, (uint32_t)w->tile_size,
                                      EXR_TILE_ONE_LEVEL, EXR_TILE_ROUND_DOWN);
@@ -181,8 +189,8 @@ static exr_result_t define_part(const exr_writer *w, exr_context_t ctxt, const c
     return exr_write_header(ctxt);
 }
 
-sk_result sk_image_write_exr(const sk_image *image, const char *path,
-                             const sk_exr_write_desc *desc, sk_error *err)
+sk_result sk_image_write_exr(const sk_image *image, const char *path, const sk_exr_write_desc *desc,
+                             sk_error *err)
 {
     sk_result r = sk__image_validate(image, err);
     if (r != SK_OK) return r;

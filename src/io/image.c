@@ -41,8 +41,8 @@ sk_result sk_image_create(sk_image *image, int width, int height, int channels, 
     size_t count = (size_t)width * (size_t)height * (size_t)channels;
     float *data = calloc(count, sizeof(float));
     if (!data)
-        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a %d x %d x %d image",
-                       width, height, channels);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a %d x %d x %d image", width,
+                       height, channels);
     image->width = width;
     image->height = height;
     image->channels = channels;
@@ -82,8 +82,9 @@ sk_result sk_image_metadata_set(sk_image_metadata *meta, const char *key, const 
         return sk_fail(err, SK_ERROR_LIMIT, "metadata value of \"%s\" is %zu bytes, at most %zu",
                        key, value_len, sizeof meta->entries[0].value - 1);
     if (meta->count < 0 || meta->count > SK_IMAGE_MAX_METADATA)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "metadata count = %d is out of range [0, %d]",
-                       meta->count, SK_IMAGE_MAX_METADATA);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "metadata count = %d is out of range [0, %d]", meta->count,
+                       SK_IMAGE_MAX_METADATA);
     int slot = meta->count;
     for (int i = 0; i < meta->count; i++)
         if (strcmp(meta->entries[i].key, key) == 0) slot = i;

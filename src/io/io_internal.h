@@ -24,8 +24,8 @@ void sk__c_locale_push(sk__c_locale *state);
 void sk__c_locale_pop(sk__c_locale *state);
 
 /* Parses a whole token of `len` bytes as a decimal (or hexadecimal) number. Returns false
- * for an empty token, trailing characters or overflow; the value may be non-finite only
- * if the token spells "nan" or "inf" (callers reject those). */
+ * for an empty token or trailing characters. The value is non-finite for "nan", "inf" or
+ * a number beyond the double range; callers check finiteness. */
 bool sk__parse_double(const char *token, size_t len, double *out);
 /* Parses a whole token as a signed decimal integer in [INT64_MIN, INT64_MAX]. */
 bool sk__parse_int64(const char *token, size_t len, long long *out);

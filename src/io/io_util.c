@@ -43,11 +43,10 @@ bool sk__parse_double(const char *token, size_t len, double *out)
     memcpy(buf, token, len);
     buf[len] = '\0';
     char *end;
-    errno = 0;
     double v = strtod(buf, &end);
     if (end != buf + len) return false;
-    /* ERANGE with a huge result is overflow; with a tiny one it is harmless underflow. */
-    if (errno == ERANGE && (v > 1.0 || v < -1.0)) return false;
+    /* Overflow gives +-HUGE_VAL (infinity), which callers reject as non-finite; underflow
+       gives a tiny or zero value, which is harmless. */
     *out = v;
     return true;
 }

@@ -120,8 +120,7 @@ static bool read_body(png_reader *r)
 
     png_uint_32 width, height;
     int bit_depth, color_type, interlace;
-    png_get_IHDR(r->png, r->info, &width, &height, &bit_depth, &color_type, &interlace, NULL,
-                 NULL);
+    png_get_IHDR(r->png, r->info, &width, &height, &bit_depth, &color_type, &interlace, NULL, NULL);
     r->file_bit_depth = bit_depth;
     int channels = expanded_channels(r->png, r->info, color_type);
     if (channels == 0) return fail_own(r, SK_ERROR_PARSE, "unknown PNG colour type");
@@ -134,8 +133,7 @@ static bool read_body(png_reader *r)
     }
 
     if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(r->png);
-    if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8)
-        png_set_expand_gray_1_2_4_to_8(r->png);
+    if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8) png_set_expand_gray_1_2_4_to_8(r->png);
     if (png_get_valid(r->png, r->info, PNG_INFO_tRNS)) png_set_tRNS_to_alpha(r->png);
     int passes = png_set_interlace_handling(r->png);
     png_read_update_info(r->png, r->info);
@@ -160,7 +158,7 @@ static bool read_body(png_reader *r)
         return fail_own(r, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     for (int c = 0; c < 256; c++)
         r->lut8[c] = r->encoding == SK_PNG_ENCODING_SRGB ? (float)sk__srgb_decode(c / 255.0)
-                                                          : (float)c / 255.0f;
+                                                         : (float)c / 255.0f;
     if (r->lut16)
         for (int c = 0; c < 65536; c++) r->lut16[c] = (float)sk__srgb_decode(c / 65535.0);
 

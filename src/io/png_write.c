@@ -119,10 +119,21 @@ static bool is_valid_utf8(const unsigned char *s)
         int extra;
         unsigned min;
         if (c < 0x80) continue;
-        if ((c & 0xe0) == 0xc0) { extra = 1; min = 0x80; c &= 0x1f; }
-        else if ((c & 0xf0) == 0xe0) { extra = 2; min = 0x800; c &= 0x0f; }
-        else if ((c & 0xf8) == 0xf0) { extra = 3; min = 0x10000; c &= 0x07; }
-        else return false;
+        if ((c & 0xe0) == 0xc0) {
+            extra = 1;
+            min = 0x80;
+            c &= 0x1f;
+        } else if ((c & 0xf0) == 0xe0) {
+            extra = 2;
+            min = 0x800;
+            c &= 0x0f;
+        } else if ((c & 0xf8) == 0xf0) {
+            extra = 3;
+            min = 0x10000;
+            c &= 0x07;
+        } else {
+            return false;
+        }
         for (int k = 0; k < extra; k++, s++) {
             if ((*s & 0xc0) != 0x80) return false;
             c = (c << 6) | (*s & 0x3f);
@@ -157,8 +168,9 @@ static sk_result prepare_texts(png_writer *w, const sk_image_metadata *meta, sk_
 {
     if (!meta) return SK_OK;
     if (meta->count < 0 || meta->count > SK_IMAGE_MAX_METADATA)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "metadata count = %d is out of range [0, %d]",
-                       meta->count, SK_IMAGE_MAX_METADATA);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "metadata count = %d is out of range [0, %d]", meta->count,
+                       SK_IMAGE_MAX_METADATA);
     w->text_store = *meta;
     for (int i = 0; i < meta->count; i++) {
         sk_image_metadata_entry *e = &w->text_store.entries[i];
@@ -186,8 +198,8 @@ static sk_result prepare_texts(png_writer *w, const sk_image_metadata *meta, sk_
     return SK_OK;
 }
 
-sk_result sk_image_write_png(const sk_image *image, const char *path,
-                             const sk_png_write_desc *desc, sk_error *err)
+sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_png_write_desc *desc,
+                             sk_error *err)
 {
     sk_result r = sk__image_validate(image, err);
     if (r != SK_OK) return r;
