@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/image_internal.h"
 #include "shitsukan/image.h"
 #include "shitsukan/io.h"
 
@@ -212,6 +213,26 @@ static void test_png_16bit_gradient_exact(void **state)
     sk_image_free(&back);
 }
 
+/* A 16-bit sRGB image large enough for the reader's lookup table decodes every code
+ * exactly as the curve does. */
+static void test_png_16bit_srgb_table(void **state)
+{
+    (void)state;
+    const char *path = sk_test_path("image/gradient16_srgb.png");
+    sk_image im, back;
+    ASSERT_OK(sk_image_create(&im, 512, 256, 1, &e_));
+    for (int i = 0; i < 512 * 256; i++)
+        im.data[i] = (float)sk__srgb_decode((double)(i % 65536) / 65535.0);
+    sk_png_write_desc wd = {.bit_depth = 16};
+    ASSERT_OK(sk_image_write_png(&im, path, &wd, &e_));
+    ASSERT_OK(sk_image_read_png(&back, path, NULL, NULL, NULL, &e_));
+    for (int i = 0; i < 512 * 256; i++)
+        if (back.data[i] != im.data[i])
+            fail_msg("code %d: %.9g, want %.9g", i % 65536, back.data[i], im.data[i]);
+    sk_image_free(&im);
+    sk_image_free(&back);
+}
+
 static void test_png_srgb_encoding_known_code(void **state)
 {
     (void)state;
@@ -329,6 +350,17 @@ static void test_png_dimension_cap(void **state)
     sk_error err = {0};
     expect_failure(sk_image_read_png(&im, path, NULL, NULL, NULL, &err), &err, SK_ERROR_LIMIT,
                    "70000");
+    assert_null(im.data);
+
+    /* 40000 x 40000 grey is within the caps (6.4 GB of floats), but 45 bytes cannot hold
+       its 1.6 GB of pixels even at deflate's best ratio: rejected before allocating. */
+    unsigned char grey[13] = {0, 0, 0x9c, 0x40, 0, 0, 0x9c, 0x40, 8, 0, 0, 0, 0};
+    n = 8;
+    n += put_chunk(file + n, "IHDR", grey, 13);
+    n += put_chunk(file + n, "IDAT", NULL, 0);
+    sk_test_write_file(path, file, n);
+    expect_failure(sk_image_read_png(&im, path, NULL, NULL, NULL, &err), &err, SK_ERROR_PARSE,
+                   "more pixel data than the file can hold");
     assert_null(im.data);
 }
 
@@ -724,6 +756,24 @@ static void test_exr_malformed_files(void **state)
     expect_failure(sk_image_read_exr(&im, scrambled, NULL, &err), &err, SK_ERROR_PARSE, NULL);
     free(bytes);
 
+    /* A data window of 20000 x 20000 patched into a 40 x 40 file: within the caps, but
+       the file cannot hold those pixels; rejected before the image is allocated. */
+    bytes = slurp(good, &size);
+    const char *dw = "dataWindow";
+    unsigned char *at = NULL;
+    for (size_t i = 0; i + 30 < size && !at; i++)
+        if (memcmp(bytes + i, dw, strlen(dw) + 1) == 0) at = bytes + i;
+    assert_non_null(at);
+    at += strlen(dw) + 1 + strlen("box2i") + 1 + 4; /* name, type, size: then xmin ymin xmax ymax */
+    int32_t big = 19999;
+    memcpy(at + 8, &big, 4);
+    memcpy(at + 12, &big, 4);
+    const char *huge = sk_test_path("image/huge_window.exr");
+    sk_test_write_file(huge, bytes, size);
+    free(bytes);
+    expect_failure(sk_image_read_exr(&im, huge, NULL, &err), &err, SK_ERROR_PARSE, NULL);
+    assert_null(im.data);
+
     const char *garbage = sk_test_path("image/garbage.exr");
     sk_test_write_file(garbage, "v/1\x01 not really an exr file", 27);
     expect_failure(sk_image_read_exr(&im, garbage, NULL, &err), &err, SK_ERROR_PARSE, NULL);
@@ -851,6 +901,7 @@ int main(void)
         cmocka_unit_test(test_srgb_curve),
         cmocka_unit_test(test_png_roundtrip_all_layouts),
         cmocka_unit_test(test_png_16bit_gradient_exact),
+        cmocka_unit_test(test_png_16bit_srgb_table),
         cmocka_unit_test(test_png_srgb_encoding_known_code),
         cmocka_unit_test(test_png_metadata_roundtrip),
         cmocka_unit_test(test_png_dimension_cap),

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -158,6 +159,47 @@ static void collect_metadata(exr_reader *r, sk_image_metadata *meta)
     }
 }
 
+/* The best compression ratio each method can reach (deflate 1032:1, EXR's RLE 64:1 on
+ * 128-byte runs, B44A 32 bytes to 3); DWA stacks RLE and deflate, so it gets a loose
+ * bound. A file smaller than its pixel data divided by this is not a valid file. */
+static double max_ratio(exr_compression_t c)
+{
+    switch (c) {
+    case EXR_COMPRESSION_NONE: return 1.0;
+    case EXR_COMPRESSION_RLE: return 64.0;
+    case EXR_COMPRESSION_B44:
+    case EXR_COMPRESSION_B44A: return 16.0;
+    case EXR_COMPRESSION_DWAA:
+    case EXR_COMPRESSION_DWAB: return 65536.0;
+    default: return 1032.0;
+    }
+}
+
+/* Rejects a header whose pixel data the file cannot hold, before the image is allocated
+ * (a few hundred bytes must not make the reader reserve gigabytes). */
+static sk_result check_file_holds_pixels(exr_reader *r, int64_t w, int64_t h)
+{
+    const exr_attr_chlist_t *list = NULL;
+    exr_compression_t compression = EXR_COMPRESSION_NONE;
+    if (exr_get_channels(r->ctxt, 0, &list) != EXR_ERR_SUCCESS ||
+        exr_get_compression(r->ctxt, 0, &compression) != EXR_ERR_SUCCESS)
+        return sk_fail(r->err, SK_ERROR_PARSE, "%s: bad header", r->path);
+    double raw = 0.0;
+    for (int i = 0; i < list->num_channels; i++) {
+        const exr_attr_chlist_entry_t *e = &list->entries[i];
+        double xs = e->x_sampling > 0 ? e->x_sampling : 1,
+               ys = e->y_sampling > 0 ? e->y_sampling : 1;
+        raw += ceil((double)w / xs) * ceil((double)h / ys) *
+               (e->pixel_type == EXR_PIXEL_HALF ? 2.0 : 4.0);
+    }
+    if (raw > max_ratio(compression) * (double)r->io.size + 65536.0)
+        return sk_fail(r->err, SK_ERROR_PARSE,
+                       "%s: the header claims %.0f bytes of pixels, more than the %lld-byte "
+                       "file can hold",
+                       r->path, raw, (long long)r->io.size);
+    return SK_OK;
+}
+
 static sk_result read_image(exr_reader *r, sk_image_metadata *meta)
 {
     const char *p = r->path;
@@ -190,6 +232,8 @@ static sk_result read_image(exr_reader *r, sk_image_metadata *meta)
         sk_error_prefix(r->err, "%s: data window", p);
         return res;
     }
+    res = check_file_holds_pixels(r, w, h);
+    if (res != SK_OK) return res;
     r->width = (int)w;
     r->height = (int)h;
     res = sk_image_create(r->image, r->width, r->height, r->channels, r->err);

@@ -2,9 +2,11 @@
  * low-bit grey expanded, text chunks into metadata, size caps checked before allocating. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <math.h>
 #include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "io/image_internal.h"
 #include "io/png_internal.h"
@@ -18,6 +20,7 @@ typedef struct png_reader {
     sk_error *err;
     sk_result result; /* set when the reader itself (not libpng) rejects the file */
     FILE *fp;
+    long long file_size;
     png_structp png;
     png_infop info;
     sk_png_encoding encoding;
@@ -54,7 +57,10 @@ static void convert_row(png_reader *r, const unsigned char *src, int y)
         bool is_alpha = (int)(i % (size_t)im->channels) == alpha;
         if (r->sample_depth == 16) {
             unsigned code = ((unsigned)src[2 * i] << 8) | src[2 * i + 1]; /* big-endian */
-            dst[i] = (is_alpha || !r->lut16) ? (float)code / 65535.0f : r->lut16[code];
+            if (is_alpha || r->encoding == SK_PNG_ENCODING_LINEAR)
+                dst[i] = (float)code / 65535.0f;
+            else
+                dst[i] = r->lut16 ? r->lut16[code] : (float)sk__srgb_decode(code / 65535.0);
         } else {
             dst[i] = is_alpha ? (float)src[i] / 255.0f : r->lut8[src[i]];
         }
@@ -131,6 +137,17 @@ static bool read_body(png_reader *r)
         sk_error_prefix(r->err, "%s", r->path);
         return false;
     }
+    /* Deflate cannot compress better than 1032:1, so the file must hold at least its
+       pixel bytes / 1032: a tiny file claiming a huge image is rejected here instead of
+       making the reader allocate gigabytes before it runs out of data. */
+    int file_channels = color_type == PNG_COLOR_TYPE_GRAY_ALPHA  ? 2
+                        : color_type == PNG_COLOR_TYPE_RGB       ? 3
+                        : color_type == PNG_COLOR_TYPE_RGB_ALPHA ? 4
+                                                                 : 1;
+    double raw_bytes = (double)height * ceil((double)width * file_channels * bit_depth / 8.0);
+    if (raw_bytes > 1032.0 * (double)r->file_size + 4096.0)
+        return fail_own(r, SK_ERROR_PARSE,
+                        "the header claims more pixel data than the file can hold");
 
     if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(r->png);
     if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8) png_set_expand_gray_1_2_4_to_8(r->png);
@@ -152,7 +169,10 @@ static bool read_body(png_reader *r)
     }
     size_t buffer_rows = passes > 1 ? (size_t)height : 1;
     r->rows = malloc(buffer_rows * row_bytes);
-    bool need_lut16 = r->sample_depth == 16 && r->encoding == SK_PNG_ENCODING_SRGB;
+    /* Building the table costs as much as decoding 65536 samples: small images decode
+       each sample directly. */
+    bool need_lut16 = r->sample_depth == 16 && r->encoding == SK_PNG_ENCODING_SRGB &&
+                      (size_t)width * height * (size_t)channels > 65536;
     if (need_lut16) r->lut16 = malloc(65536 * sizeof(float));
     if (!r->rows || (need_lut16 && !r->lut16))
         return fail_own(r, SK_ERROR_OUT_OF_MEMORY, "out of memory");
@@ -213,9 +233,11 @@ sk_result sk_image_read_png(sk_image *image, const char *path, const sk_png_read
         fclose(fp);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     }
+    struct stat st;
     r->path = path;
     r->err = err;
     r->fp = fp;
+    r->file_size = fstat(fileno(fp), &st) == 0 ? (long long)st.st_size : 0;
     r->encoding = encoding;
     r->image = image;
     r->metadata = metadata;
