@@ -1,6 +1,7 @@
 /* Tests of the mesh module: allocation caps, attributes, validation, normals, polygon
  * triangulation, OBJ and PLY round trips, hand-written and malformed files. */
 #define _POSIX_C_SOURCE 200809L
+#include "test_result.h"
 #include "test_support.h"
 
 #include <math.h>
@@ -14,23 +15,6 @@
 
 /* ------------------------------------------------------------------ helpers */
 
-#define ASSERT_OK(call)                                                                            \
-    do {                                                                                           \
-        sk_error e_ = {0};                                                                         \
-        sk_result r_ = (call);                                                                     \
-        if (r_ != SK_OK) fail_msg("%s -> %s: %s", #call, sk_result_string(r_), e_.message);        \
-    } while (0)
-
-static void expect_failure(sk_result got, const sk_error *err, sk_result want, const char *needle)
-{
-    if (got != want)
-        fail_msg("expected %s, got %s (%s)", sk_result_string(want), sk_result_string(got),
-                 err->message);
-    if (needle && !strstr(err->message, needle))
-        fail_msg("message \"%s\" does not mention \"%s\"", err->message, needle);
-    if (getenv("SK_TEST_VERBOSE")) print_message("%s\n", err->message);
-}
-
 static const char *write_text(const char *name, const char *text)
 {
     const char *path = sk_test_path(name);
@@ -43,7 +27,8 @@ static void expect_bad_obj(const char *name, const char *text, sk_result want, c
 {
     sk_mesh m;
     sk_error err = {0};
-    expect_failure(sk_mesh_read_obj(&m, write_text(name, text), NULL, &err), &err, want, needle);
+    sk_test_expect_failure(sk_mesh_read_obj(&m, write_text(name, text), NULL, &err), &err, want,
+                           needle);
     assert_int_equal(m.vertex_count, 0);
     assert_null(m.positions);
 }
@@ -55,7 +40,7 @@ static void expect_bad_ply(const char *name, const void *data, size_t size, sk_r
     sk_test_write_file(path, data, size);
     sk_mesh m;
     sk_error err = {0};
-    expect_failure(sk_mesh_read_ply(&m, path, NULL, &err), &err, want, needle);
+    sk_test_expect_failure(sk_mesh_read_ply(&m, path, NULL, &err), &err, want, needle);
     assert_null(m.positions);
 }
 
@@ -88,7 +73,7 @@ static double mesh_area(const sk_mesh *m, const double normal[3], bool *all_faci
 /* A test mesh: a 3 x 2 grid of quads split into triangles, with every optional array. */
 static void make_grid(sk_mesh *m, bool attributes)
 {
-    ASSERT_OK(sk_mesh_create(m, 12, 12, SK_MESH_NORMALS | SK_MESH_UVS | SK_MESH_COLORS, &e_));
+    SK_ASSERT_OK(sk_mesh_create(m, 12, 12, SK_MESH_NORMALS | SK_MESH_UVS | SK_MESH_COLORS, &e_));
     for (int y = 0; y < 3; y++)
         for (int x = 0; x < 4; x++) {
             size_t i = (size_t)(y * 4 + x);
@@ -114,8 +99,8 @@ static void make_grid(sk_mesh *m, bool attributes)
         }
     if (!attributes) return;
     float *w, *dir;
-    ASSERT_OK(sk_mesh_add_attribute(m, "weight", 1, &w, &e_));
-    ASSERT_OK(sk_mesh_add_attribute(m, "direction", 3, &dir, &e_));
+    SK_ASSERT_OK(sk_mesh_add_attribute(m, "weight", 1, &w, &e_));
+    SK_ASSERT_OK(sk_mesh_add_attribute(m, "direction", 3, &dir, &e_));
     for (size_t i = 0; i < 12; i++) {
         w[i] = (float)i * 0.37f - 1.0f;
         for (int k = 0; k < 3; k++) dir[3 * i + (size_t)k] = (float)(i * 3 + (size_t)k) / 7.0f;
@@ -149,31 +134,32 @@ static void test_mesh_create_and_attributes(void **state)
     (void)state;
     sk_mesh m;
     sk_error err = {0};
-    expect_failure(sk_mesh_create(&m, (size_t)1 << 40, 0, 0, &err), &err, SK_ERROR_LIMIT, "cap");
+    sk_test_expect_failure(sk_mesh_create(&m, (size_t)1 << 40, 0, 0, &err), &err, SK_ERROR_LIMIT,
+                           "cap");
     assert_null(m.positions);
-    expect_failure(sk_mesh_create(&m, 3, 1, 1 << 7, &err), &err, SK_ERROR_INVALID_ARGUMENT,
-                   "flags");
-    ASSERT_OK(sk_mesh_create(&m, 4, 2, SK_MESH_UVS, &e_));
+    sk_test_expect_failure(sk_mesh_create(&m, 3, 1, 1 << 7, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "flags");
+    SK_ASSERT_OK(sk_mesh_create(&m, 4, 2, SK_MESH_UVS, &e_));
     assert_non_null(m.positions);
     assert_non_null(m.uvs);
     assert_null(m.normals);
     assert_null(m.colors);
     assert_int_equal(m.indices[5], 0);
     float *data;
-    ASSERT_OK(sk_mesh_add_attribute(&m, "curvature", 2, &data, &e_));
+    SK_ASSERT_OK(sk_mesh_add_attribute(&m, "curvature", 2, &data, &e_));
     assert_ptr_equal(sk_mesh_find_attribute(&m, "curvature")->data, data);
     assert_null(sk_mesh_find_attribute(&m, "missing"));
-    expect_failure(sk_mesh_add_attribute(&m, "curvature", 1, NULL, &err), &err,
-                   SK_ERROR_INVALID_ARGUMENT, "exists");
-    expect_failure(sk_mesh_add_attribute(&m, "c5", 5, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
-                   "components");
+    sk_test_expect_failure(sk_mesh_add_attribute(&m, "curvature", 1, NULL, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "exists");
+    sk_test_expect_failure(sk_mesh_add_attribute(&m, "c5", 5, NULL, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "components");
     for (int i = 1; i < SK_MESH_MAX_ATTRIBUTES; i++) {
         char name[16];
         snprintf(name, sizeof name, "a%d", i);
-        ASSERT_OK(sk_mesh_add_attribute(&m, name, 1, NULL, &e_));
+        SK_ASSERT_OK(sk_mesh_add_attribute(&m, name, 1, NULL, &e_));
     }
-    expect_failure(sk_mesh_add_attribute(&m, "one_more", 1, NULL, &err), &err, SK_ERROR_LIMIT,
-                   "slots");
+    sk_test_expect_failure(sk_mesh_add_attribute(&m, "one_more", 1, NULL, &err), &err,
+                           SK_ERROR_LIMIT, "slots");
     sk_mesh_free(&m);
     assert_null(m.positions);
     assert_int_equal(m.attribute_count, 0);
@@ -185,17 +171,19 @@ static void test_mesh_validate_and_bounds(void **state)
     sk_mesh m;
     sk_error err = {0};
     make_grid(&m, false);
-    ASSERT_OK(sk_mesh_validate(&m, &e_));
+    SK_ASSERT_OK(sk_mesh_validate(&m, &e_));
     sk_vec3f lo, hi;
     assert_true(sk_mesh_bounds(&m, &lo, &hi));
     assert_float_equal(lo.x, 0.0123f, 1e-7);
     assert_float_equal(hi.x, 0.3123f, 1e-6);
     assert_float_equal(hi.y, 2.0f / 3.0f, 1e-7);
     m.indices[7] = 12;
-    expect_failure(sk_mesh_validate(&m, &err), &err, SK_ERROR_INVALID_ARGUMENT, "triangle 2");
+    sk_test_expect_failure(sk_mesh_validate(&m, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "triangle 2");
     m.indices[7] = 0;
     m.uvs[5] = NAN;
-    expect_failure(sk_mesh_validate(&m, &err), &err, SK_ERROR_INVALID_ARGUMENT, "uv of vertex 2");
+    sk_test_expect_failure(sk_mesh_validate(&m, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "uv of vertex 2");
     sk_mesh_free(&m);
     sk_mesh empty = {0};
     assert_false(sk_mesh_bounds(&empty, &lo, &hi));
@@ -204,7 +192,7 @@ static void test_mesh_validate_and_bounds(void **state)
 /* A unit cube centred on the origin, 8 shared corners, outward winding. */
 static void make_cube(sk_mesh *m)
 {
-    ASSERT_OK(sk_mesh_create(m, 8, 12, 0, &e_));
+    SK_ASSERT_OK(sk_mesh_create(m, 8, 12, 0, &e_));
     for (int i = 0; i < 8; i++) {
         m->positions[3 * i] = (i & 1) ? 0.5f : -0.5f;
         m->positions[3 * i + 1] = (i & 2) ? 0.5f : -0.5f;
@@ -227,7 +215,7 @@ static void test_compute_normals_cube(void **state)
     bool facing;
     double none[3] = {0, 0, 0};
     assert_float_equal(mesh_area(&m, none, &facing), 6.0, 1e-9);
-    ASSERT_OK(sk_mesh_compute_normals(&m, &e_));
+    SK_ASSERT_OK(sk_mesh_compute_normals(&m, &e_));
     assert_non_null(m.normals);
     for (int i = 0; i < 8; i++) {
         const float *n = m.normals + 3 * i, *p = m.positions + 3 * i;
@@ -250,7 +238,7 @@ static void test_compute_normals_sphere(void **state)
     sk_mesh m;
     size_t vcount = (size_t)SLICES * (STACKS - 1) + 2;
     size_t tcount = (size_t)SLICES * 2 * (STACKS - 1);
-    ASSERT_OK(sk_mesh_create(&m, vcount, tcount, 0, &e_));
+    SK_ASSERT_OK(sk_mesh_create(&m, vcount, tcount, 0, &e_));
     float *p = m.positions;
     for (int j = 1; j < STACKS; j++)
         for (int i = 0; i < SLICES; i++) {
@@ -276,7 +264,7 @@ static void test_compute_normals_sphere(void **state)
         }
     }
     assert_int_equal((size_t)(t - m.indices), 3 * tcount);
-    ASSERT_OK(sk_mesh_compute_normals(&m, &e_));
+    SK_ASSERT_OK(sk_mesh_compute_normals(&m, &e_));
     for (size_t v = 0; v < vcount; v++) {
         const float *n = m.normals + 3 * v, *q = m.positions + 3 * v;
         double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -313,7 +301,7 @@ static void test_triangulate_concave_and_degenerate(void **state)
     l_shape(pts, normal);
     sk__triangulator t = {0};
     uint32_t corners[6] = {0, 1, 2, 3, 4, 5}, out[12];
-    ASSERT_OK(sk__triangulate(&t, &pts[0][0], corners, 6, out));
+    SK_ASSERT_OK(sk__triangulate(&t, &pts[0][0], corners, 6, out));
     double area = 0.0;
     for (int k = 0; k < 4; k++) {
         double n[3];
@@ -325,10 +313,10 @@ static void test_triangulate_concave_and_degenerate(void **state)
     /* Collinear corners and a repeated corner still give n - 2 triangles. */
     float line[5][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {1, 0, 0}};
     uint32_t c5[5] = {0, 1, 2, 3, 4}, out5[9];
-    ASSERT_OK(sk__triangulate(&t, &line[0][0], c5, 5, out5));
+    SK_ASSERT_OK(sk__triangulate(&t, &line[0][0], c5, 5, out5));
     for (int k = 0; k < 9; k++) assert_true(out5[k] < 5);
     float dup[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-    ASSERT_OK(sk__triangulate(&t, &dup[0][0], c5, 5, out5));
+    SK_ASSERT_OK(sk__triangulate(&t, &dup[0][0], c5, 5, out5));
     double dup_area = 0.0;
     for (int k = 0; k < 3; k++)
         dup_area += tri_area(dup[out5[3 * k]], dup[out5[3 * k + 1]], dup[out5[3 * k + 2]], NULL);
@@ -344,8 +332,8 @@ static void test_obj_roundtrip(void **state)
     sk_mesh m, back;
     make_grid(&m, true);
     const char *path = sk_test_path("mesh/grid.obj");
-    ASSERT_OK(sk_mesh_write_obj(&m, path, NULL, &e_));
-    ASSERT_OK(sk_mesh_read_obj(&back, path, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_write_obj(&m, path, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_obj(&back, path, NULL, &e_));
     assert_int_equal(back.vertex_count, 12);
     assert_int_equal(back.attribute_count, 0); /* OBJ has no attributes */
     assert_same_triangles(&m, &back, 0.0);     /* %.9g: bit-exact floats */
@@ -355,21 +343,21 @@ static void test_obj_roundtrip(void **state)
     free(m.normals);
     free(m.uvs);
     m.normals = m.uvs = NULL;
-    ASSERT_OK(sk_mesh_write_obj(&m, path, NULL, &e_));
-    ASSERT_OK(sk_mesh_read_obj(&back, path, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_write_obj(&m, path, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_obj(&back, path, NULL, &e_));
     assert_same_triangles(&m, &back, 0.0);
     sk_mesh_free(&back);
 
     /* A point cloud keeps every vertex in order. */
     sk_mesh cloud;
-    ASSERT_OK(sk_mesh_create(&cloud, 5, 0, SK_MESH_COLORS, &e_));
+    SK_ASSERT_OK(sk_mesh_create(&cloud, 5, 0, SK_MESH_COLORS, &e_));
     for (int i = 0; i < 15; i++) {
         cloud.positions[i] = (float)i * 1.5f - 3.0f;
         cloud.colors[i] = (float)i / 15.0f;
     }
     const char *cloud_path = sk_test_path("mesh/cloud.obj");
-    ASSERT_OK(sk_mesh_write_obj(&cloud, cloud_path, NULL, &e_));
-    ASSERT_OK(sk_mesh_read_obj(&back, cloud_path, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_write_obj(&cloud, cloud_path, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_obj(&back, cloud_path, NULL, &e_));
     assert_int_equal(back.vertex_count, 5);
     assert_int_equal(back.triangle_count, 0);
     assert_memory_equal(back.positions, cloud.positions, 15 * sizeof(float));
@@ -397,7 +385,7 @@ static void test_obj_forms_and_negative_indices(void **state)
                        "f -4/-3/-1 -2/-1/-1 -1/-3/-1\n" /* 1/1/1 3/3/1 4/1/1 */
                        "l 1 2\n";
     sk_mesh m;
-    ASSERT_OK(sk_mesh_read_obj(&m, write_text("mesh/forms.obj", text), NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_obj(&m, write_text("mesh/forms.obj", text), NULL, &e_));
     assert_int_equal(m.triangle_count, 2);
     assert_int_equal(m.vertex_count, 4); /* 1/1/1, 2/2/1, 3/3/1, 4/1/1 */
     assert_non_null(m.uvs);
@@ -413,7 +401,7 @@ static void test_obj_forms_and_negative_indices(void **state)
     /* v//vn on some faces, plain v on others: the missing normals are computed. */
     const char *mixed = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\n"
                         "f 1//1 2//1 3//1\nf 2 4 3\n";
-    ASSERT_OK(sk_mesh_read_obj(&m, write_text("mesh/mixed.obj", mixed), NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_obj(&m, write_text("mesh/mixed.obj", mixed), NULL, &e_));
     assert_int_equal(m.vertex_count, 6);
     for (size_t v = 0; v < m.vertex_count; v++)
         assert_float_equal(m.normals[3 * v + 2], 1.0f, 1e-6);
@@ -434,7 +422,7 @@ static void test_obj_polygons(void **state)
     snprintf(text + n, sizeof text - (size_t)n,
              "v 10 0 0\nv 11 0 0\nv 11 1 0\nv 10 1 0\nf 1 2 3 4 5 6\nf 7 8 9 10\n");
     sk_mesh m;
-    ASSERT_OK(sk_mesh_read_obj(&m, write_text("mesh/polygons.obj", text), NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_obj(&m, write_text("mesh/polygons.obj", text), NULL, &e_));
     assert_int_equal(m.triangle_count, 4 + 2);
     bool facing;
     sk_mesh l = m;
@@ -459,7 +447,7 @@ static void test_obj_polygons(void **state)
     n += snprintf(big + n, cap - (size_t)n, "f");
     for (int i = 1; i <= N; i++) n += snprintf(big + n, cap - (size_t)n, " %d", i);
     snprintf(big + n, cap - (size_t)n, "\n");
-    ASSERT_OK(sk_mesh_read_obj(&m, write_text("mesh/circle.obj", big), NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_obj(&m, write_text("mesh/circle.obj", big), NULL, &e_));
     free(big);
     assert_int_equal(m.triangle_count, N - 2);
     assert_float_equal(mesh_area(&m, up, &facing), 0.5 * N * sin(2 * SK_PI / N), 1e-4);
@@ -497,10 +485,10 @@ static void test_obj_malformed(void **state)
     sk_error err = {0};
     sk_mesh_read_desc small = {.max_bytes = 64};
     snprintf(text, sizeof text, "%sf 1 2 3\n", tri);
-    expect_failure(sk_mesh_read_obj(&m, write_text("mesh/capped.obj", text), &small, &err), &err,
-                   SK_ERROR_LIMIT, NULL);
-    expect_failure(sk_mesh_read_obj(&m, sk_test_path("mesh/none.obj"), NULL, &err), &err,
-                   SK_ERROR_NOT_FOUND, "none.obj");
+    sk_test_expect_failure(sk_mesh_read_obj(&m, write_text("mesh/capped.obj", text), &small, &err),
+                           &err, SK_ERROR_LIMIT, NULL);
+    sk_test_expect_failure(sk_mesh_read_obj(&m, sk_test_path("mesh/none.obj"), NULL, &err), &err,
+                           SK_ERROR_NOT_FOUND, "none.obj");
 }
 
 static void test_obj_material(void **state)
@@ -511,19 +499,19 @@ static void test_obj_material(void **state)
     const char *path = sk_test_path("mesh/textured.obj");
     const char *mtl = sk_test_path("mesh/textured.mtl");
     sk_obj_write_desc desc = {.texture_path = "textures/skin albedo.png", .material_name = "skin"};
-    ASSERT_OK(sk_mesh_write_obj(&m, path, &desc, &e_));
+    SK_ASSERT_OK(sk_mesh_write_obj(&m, path, &desc, &e_));
     char *text;
-    ASSERT_OK(sk_read_file(path, 0, &text, NULL, &e_));
+    SK_ASSERT_OK(sk_read_file(path, 0, &text, NULL, &e_));
     assert_non_null(strstr(text, "mtllib textured.mtl\nusemtl skin\n"));
     free(text);
-    ASSERT_OK(sk_read_file(mtl, 0, &text, NULL, &e_));
+    SK_ASSERT_OK(sk_read_file(mtl, 0, &text, NULL, &e_));
     assert_non_null(strstr(text, "newmtl skin\n"));
     assert_non_null(strstr(text, "map_Kd textures/skin albedo.png\n"));
     free(text);
     sk_error err = {0};
     sk_obj_write_desc bad = {.texture_path = "t.png", .material_name = "two words"};
-    expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_mtl.obj"), &bad, &err), &err,
-                   SK_ERROR_INVALID_ARGUMENT, "material_name");
+    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_mtl.obj"), &bad, &err),
+                           &err, SK_ERROR_INVALID_ARGUMENT, "material_name");
     assert_false(sk_test_file_exists(sk_test_path("mesh/bad_mtl.obj")));
     sk_mesh_free(&m);
 }
@@ -536,8 +524,8 @@ static void test_ply_roundtrip(void **state)
     sk_mesh m, back;
     make_grid(&m, true);
     const char *path = sk_test_path("mesh/grid.ply");
-    ASSERT_OK(sk_mesh_write_ply(&m, path, &e_));
-    ASSERT_OK(sk_mesh_read_ply(&back, path, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_write_ply(&m, path, &e_));
+    SK_ASSERT_OK(sk_mesh_read_ply(&back, path, NULL, &e_));
     assert_int_equal(back.vertex_count, 12);
     assert_memory_equal(back.indices, m.indices, 36 * sizeof(uint32_t));
     assert_same_triangles(&m, &back, 0.5 / 255.0 + 1e-7);
@@ -552,8 +540,8 @@ static void test_ply_roundtrip(void **state)
     sk_mesh_free(&back);
     /* Writing through sk_mesh_write by extension gives the same file content. */
     const char *upper = sk_test_path("mesh/grid_upper.PLY");
-    ASSERT_OK(sk_mesh_write(&m, upper, &e_));
-    ASSERT_OK(sk_mesh_read(&back, upper, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_write(&m, upper, &e_));
+    SK_ASSERT_OK(sk_mesh_read(&back, upper, NULL, &e_));
     assert_same_triangles(&m, &back, 0.5 / 255.0 + 1e-7);
     sk_mesh_free(&back);
     sk_mesh_free(&m);
@@ -588,7 +576,7 @@ static void test_ply_ascii(void **state)
                        "3 1 4 2 0\n"
                        "2 0 1\n";
     sk_mesh m;
-    ASSERT_OK(sk_mesh_read_ply(&m, write_text("mesh/ascii.ply", text), NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_ply(&m, write_text("mesh/ascii.ply", text), NULL, &e_));
     assert_int_equal(m.vertex_count, 5);
     assert_int_equal(m.triangle_count, 3);
     assert_non_null(m.normals);
@@ -685,7 +673,7 @@ static void test_ply_binary_both_endians(void **state)
         const char *path = sk_test_path(big ? "mesh/be.ply" : "mesh/le.ply");
         sk_test_write_file(path, b.data, b.n);
         sk_mesh m;
-        ASSERT_OK(sk_mesh_read_ply(&m, path, NULL, &e_));
+        SK_ASSERT_OK(sk_mesh_read_ply(&m, path, NULL, &e_));
         assert_int_equal(m.vertex_count, 4);
         assert_int_equal(m.triangle_count, 2);
         assert_float_equal(m.positions[3 * 3], 1.0f, 0.0);
@@ -716,7 +704,7 @@ static void test_ply_point_cloud(void **state)
                        "property float opacity\nend_header\n"
                        "1 2 3 0.1 0.2 0.3 1\n4 5 6 0 0 0 0\n7 8 9 1 1 1 0.5\n";
     sk_mesh m;
-    ASSERT_OK(sk_mesh_read_ply(&m, write_text("mesh/cloud.ply", text), NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_read_ply(&m, write_text("mesh/cloud.ply", text), NULL, &e_));
     assert_int_equal(m.vertex_count, 3);
     assert_int_equal(m.triangle_count, 0);
     assert_null(m.indices);
@@ -797,27 +785,28 @@ static void test_mesh_dispatch_and_writer_checks(void **state)
     sk_mesh m;
     sk_error err = {0};
     make_grid(&m, false);
-    expect_failure(sk_mesh_write(&m, sk_test_path("mesh/x.stl"), &err), &err, SK_ERROR_UNSUPPORTED,
-                   ".obj, .ply");
+    sk_test_expect_failure(sk_mesh_write(&m, sk_test_path("mesh/x.stl"), &err), &err,
+                           SK_ERROR_UNSUPPORTED, ".obj, .ply");
     sk_mesh back;
-    expect_failure(sk_mesh_read(&back, sk_test_path("mesh/x.stl"), NULL, &err), &err,
-                   SK_ERROR_UNSUPPORTED, ".obj, .ply");
+    sk_test_expect_failure(sk_mesh_read(&back, sk_test_path("mesh/x.stl"), NULL, &err), &err,
+                           SK_ERROR_UNSUPPORTED, ".obj, .ply");
     const char *obj = sk_test_path("mesh/upper.OBJ");
-    ASSERT_OK(sk_mesh_write(&m, obj, &e_));
-    ASSERT_OK(sk_mesh_read(&back, obj, NULL, &e_));
+    SK_ASSERT_OK(sk_mesh_write(&m, obj, &e_));
+    SK_ASSERT_OK(sk_mesh_read(&back, obj, NULL, &e_));
     assert_same_triangles(&m, &back, 0.0);
     sk_mesh_free(&back);
     /* Attribute names must survive as PLY property names. */
-    ASSERT_OK(sk_mesh_add_attribute(&m, "red", 1, NULL, &e_));
-    expect_failure(sk_mesh_write_ply(&m, sk_test_path("mesh/red.ply"), &err), &err,
-                   SK_ERROR_INVALID_ARGUMENT, "red");
+    SK_ASSERT_OK(sk_mesh_add_attribute(&m, "red", 1, NULL, &e_));
+    sk_test_expect_failure(sk_mesh_write_ply(&m, sk_test_path("mesh/red.ply"), &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "red");
     /* An invalid mesh is refused and no file is made. */
     m.attribute_count = 0;
     free(m.attributes[0].data);
     m.attributes[0].data = NULL;
     m.positions[4] = INFINITY;
     const char *bad = sk_test_path("mesh/invalid.ply");
-    expect_failure(sk_mesh_write_ply(&m, bad, &err), &err, SK_ERROR_INVALID_ARGUMENT, "vertex 1");
+    sk_test_expect_failure(sk_mesh_write_ply(&m, bad, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "vertex 1");
     assert_false(sk_test_file_exists(bad));
     sk_mesh_free(&m);
 }

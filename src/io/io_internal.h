@@ -5,10 +5,16 @@
 
 /* Needs _POSIX_C_SOURCE >= 200809L (locale_t) defined before any system header. */
 #include <locale.h>
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stddef.h>
 
 #include "shitsukan/core.h"
+
+/* Records "<path>:<line>: <what>" (or "<path>: <what>" when line is 0) in `err` and
+ * returns `result`: the form every text-format reader uses for its messages. */
+sk_result sk__fail_at(sk_error *err, sk_result result, const char *path, size_t line,
+                      const char *fmt, va_list args);
 
 /* The extension of the last path component including its dot (".png"), or "" if none. */
 const char *sk__path_extension(const char *path);

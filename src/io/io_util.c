@@ -3,8 +3,18 @@
 #include "io/io_internal.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+sk_result sk__fail_at(sk_error *err, sk_result result, const char *path, size_t line,
+                      const char *fmt, va_list args)
+{
+    char what[SK_ERROR_MESSAGE_SIZE];
+    vsnprintf(what, sizeof what, fmt, args);
+    if (line > 0) return sk_fail(err, result, "%s:%zu: %s", path, line, what);
+    return sk_fail(err, result, "%s: %s", path, what);
+}
 
 const char *sk__path_extension(const char *path)
 {

@@ -48,12 +48,11 @@ static sk_result fail_line(obj_reader *r, sk_result result, const char *fmt, ...
     ;
 static sk_result fail_line(obj_reader *r, sk_result result, const char *fmt, ...)
 {
-    char what[SK_ERROR_MESSAGE_SIZE];
     va_list args;
     va_start(args, fmt);
-    vsnprintf(what, sizeof what, fmt, args);
+    sk__fail_at(r->err, result, r->path, r->line, fmt, args);
     va_end(args);
-    return sk_fail(r->err, result, "%s:%zu: %s", r->path, r->line, what);
+    return result;
 }
 
 static sk_result fail_alloc(obj_reader *r, sk_result result)

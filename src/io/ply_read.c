@@ -125,14 +125,13 @@ static sk_result fail(ply_reader *r, sk_result result, const char *fmt, ...)
     ;
 static sk_result fail(ply_reader *r, sk_result result, const char *fmt, ...)
 {
-    char what[SK_ERROR_MESSAGE_SIZE];
+    /* Binary bodies have no lines to point at; the element and record name the place. */
+    size_t line = (r->in_header || r->format == F_ASCII) ? r->line : 0;
     va_list args;
     va_start(args, fmt);
-    vsnprintf(what, sizeof what, fmt, args);
+    sk__fail_at(r->err, result, r->path, line, fmt, args);
     va_end(args);
-    if ((r->in_header || r->format == F_ASCII) && r->line > 0)
-        return sk_fail(r->err, result, "%s:%zu: %s", r->path, r->line, what);
-    return sk_fail(r->err, result, "%s: %s", r->path, what);
+    return result;
 }
 
 /* Failure inside a record: names the element and the record index. */

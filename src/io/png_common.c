@@ -1,5 +1,6 @@
-/* libpng error and warning callbacks shared by the PNG reader and writer. */
+/* libpng error, warning and allocation callbacks shared by the PNG reader and writer. */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "io/png_internal.h"
 
@@ -14,4 +15,16 @@ void sk__png_on_warning(png_structp png, png_const_charp message)
 {
     (void)png;
     (void)message;
+}
+
+png_voidp sk__png_malloc(png_structp png, png_alloc_size_t size)
+{
+    (void)png;
+    return size <= SK__PNG_MAX_ALLOCATION ? malloc(size) : NULL;
+}
+
+void sk__png_free(png_structp png, png_voidp ptr)
+{
+    (void)png;
+    free(ptr);
 }

@@ -16,4 +16,12 @@ void sk__png_on_error(png_structp png, png_const_charp message);
  * printed: a library does not write to stderr. */
 void sk__png_on_warning(png_structp png, png_const_charp message);
 
+/* libpng's own allocations (row buffers, zlib state, chunk data) go through these. A
+ * corrupt chunk length makes libpng 1.6 allocate the claimed size before it reads a byte;
+ * refusing single allocations above SK__PNG_MAX_ALLOCATION turns that into an error
+ * instead of gigabytes of memory. libpng never allocates the whole image. */
+#define SK__PNG_MAX_ALLOCATION ((png_alloc_size_t)16 << 20)
+png_voidp sk__png_malloc(png_structp png, png_alloc_size_t size);
+void sk__png_free(png_structp png, png_voidp ptr);
+
 #endif

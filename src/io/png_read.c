@@ -241,8 +241,8 @@ sk_result sk_image_read_png(sk_image *image, const char *path, const sk_png_read
     r->encoding = encoding;
     r->image = image;
     r->metadata = metadata;
-    r->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r->error, sk__png_on_error,
-                                    sk__png_on_warning);
+    r->png = png_create_read_struct_2(PNG_LIBPNG_VER_STRING, &r->error, sk__png_on_error,
+                                      sk__png_on_warning, NULL, sk__png_malloc, sk__png_free);
     if (r->png) r->info = png_create_info_struct(r->png);
     sk_result result = SK_OK;
     if (!r->png || !r->info) {
