@@ -1055,7 +1055,8 @@ static void test_cli_pictures(void **state)
     assert_int_equal(img.height, 160);
     sk_image_free(&img);
     assert_int_equal(sk_image_read_png(&img, plot, NULL, NULL, NULL, &err), SK_OK);
-    assert_int_equal(img.width, 900);
+    assert_int_equal(img.width, 800);
+    assert_int_equal(img.height, 560);
     sk_image_free(&img);
     /* a bad --png path: status 1, one line, neither the picture nor the pose file */
     const char *json = sk_test_path("hand/cli-not-written.json");

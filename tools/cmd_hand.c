@@ -357,6 +357,7 @@ static const cli_option animate_options[] = {
     {"plot", 0, "FILE", "joint-angle plot (PNG) of the driven DOFs and those that follow them", false},
     {"plot-dofs", 0, "LIST", "DOFs to plot, comma-separated (default: the driven ones, then the most moving)", false},
     {"plot-title", 0, "TEXT", "title of the plot (default: the animation file's name)", false},
+    {"plot-size", 0, "WxH", "plot size in pixels (default 800x560)", false},
 };
 
 /* --plot: the listed DOFs (or the driven ones and those that move most) over the frames. */
@@ -390,7 +391,11 @@ static int write_angle_plot(const cli_command *cmd, const cli_args *args, const 
     const char *given_title = cli_get(cmd, args, "plot-title");
     const char *base = strrchr(args->positional[0], '/');
     snprintf(title, sizeof title, "%s", given_title ? given_title : base ? base + 1 : args->positional[0]);
-    sk_plot_desc pd = {.width = 900, .height = 640, .title = title[0] ? title : NULL};
+    sk_plot_desc pd = {.title = title[0] ? title : NULL};
+    int rc = cli_get_size(cmd, args, "plot-size", 800, 560, 16384, &pd.width, &pd.height);
+    if (rc) return rc;
+    if (pd.width < 64 || pd.height < 64)
+        return cli_fail(CLI_EXIT_USAGE, "--plot-size %dx%d: each side must be at least 64 pixels", pd.width, pd.height);
     sk_error err = {0};
     sk_image img;
     if (sk_hand_plot_angles(dofs, frames, list, n, driven, &pd, &img, &err) != SK_OK) return cli_fail_error(&err);

@@ -27,7 +27,7 @@ strip() {
   local work="$out/.strip-$demo" args=() view key
   rm -rf "$work"
   for view in dorsal radial; do
-    "$SK" hand animate "$presets/$demo.json" -q --bare --views "$view" --png-size 300x340 \
+    "$SK" hand animate "$presets/$demo.json" -q --bare --views "$view" --png-size 240x280 \
       --frames-dir "$work/$view"
     for key in "$@"; do
       args+=(--label "${key#*:}" "$work/$view/frame_$(printf %04d "${key%%:*}").png")
@@ -51,15 +51,15 @@ for demo in little-mcp little-dip piano-key; do
 done
 
 # joint-angle plots: the driven DOF and the DOFs that follow it
-"$SK" hand animate "$presets/little-mcp.json" -q --plot "$out/little-mcp-plot.png" \
-  --plot-title "Fig. 4.19: only the little finger's MCP is driven" \
-  --plot-dofs L.MCP.flex,R.MCP.flex,M.MCP.flex,I.MCP.flex,L.PIP.flex,L.DIP.flex
-"$SK" hand animate "$presets/little-dip.json" -q --plot "$out/little-dip-plot.png" \
-  --plot-title "Fig. 4.20: only the little finger's DIP is driven" \
-  --plot-dofs L.DIP.flex,L.PIP.flex,L.MCP.flex,R.MCP.flex,R.PIP.flex,M.MCP.flex
-"$SK" hand animate "$presets/piano-key.json" -q --plot "$out/piano-key-plot.png" \
-  --plot-title "Piano key presses (Fig. 4.21): MCP and PIP of one finger per key" \
-  --plot-dofs I.MCP.flex,I.PIP.flex,M.MCP.flex,M.PIP.flex,R.MCP.flex,R.PIP.flex,I.DIP.flex
+"$SK" hand animate "$presets/little-mcp.json" -q --plot "$out/little-mcp-plot.png" --plot-size 720x540 \
+  --plot-title "Fig. 4.19: little-finger MCP driven" \
+  --plot-dofs L.MCP.flex,R.MCP.flex,M.MCP.flex,L.PIP.flex,L.DIP.flex
+"$SK" hand animate "$presets/little-dip.json" -q --plot "$out/little-dip-plot.png" --plot-size 720x540 \
+  --plot-title "Fig. 4.20: little-finger DIP driven" \
+  --plot-dofs L.DIP.flex,L.PIP.flex,L.MCP.flex,R.MCP.flex,M.MCP.flex
+"$SK" hand animate "$presets/piano-key.json" -q --plot "$out/piano-key-plot.png" --plot-size 720x540 \
+  --plot-title "Piano key presses (Fig. 4.21)" \
+  --plot-dofs I.MCP.flex,I.PIP.flex,I.DIP.flex,M.MCP.flex,R.MCP.flex
 
 # key frames from rest to the peak (and the three key presses)
 mapfile -t keys < <(keys_with_angle "$out/little-mcp-angles.csv" L.MCP.flex 0 6 12 18 24)
@@ -72,7 +72,7 @@ strip piano-key "Piano key presses (top: dorsal view, bottom: radial view)" \
 # the same input with the thesis's own Table 3.2 rows, and for a left hand
 "$SK" hand animate "$presets/little-mcp.json" -q --constraints yasumuro-table-3.2 \
   --bvh "$out/little-mcp-table-3.2.bvh" --angles "$out/little-mcp-table-3.2-angles.csv" \
-  --plot "$out/little-mcp-table-3.2-plot.png" --plot-title "Fig. 4.19 input with the rows of Table 3.2"
+  --plot "$out/little-mcp-table-3.2-plot.png" --plot-size 720x540 --plot-title "Fig. 4.19 input, Table 3.2 rows"
 "$SK" hand animate "$presets/piano-key.json" -q --side left --bvh "$out/piano-key-left.bvh"
 
 # calibration (sec. 3.2.2): sample the demonstration's own motion and fit rows again

@@ -65,7 +65,7 @@ static bool box_hits_data(const sk_plot_series *series, int count, const sk_plot
 }
 
 /* When every inside corner of the plot would put the legend over a line, the y range
- * grows upward by the legend's share of the plot area (rounded out to round ticks) and
+ * grows upward by the legend's share of the plot area (rounded out to half ticks) and
  * the legend goes top right, above the data. */
 static void make_legend_room(const sk_plot_series *series, int count, sk_plot_desc *pd)
 {
@@ -90,9 +90,9 @@ static void make_legend_room(const sk_plot_series *series, int count, sk_plot_de
     double pad = fmax(0.03 * (hi - lo), 0.5);
     double y_min = lo - pad, y_max = y_min + (hi + pad - y_min) / (1.0 - share);
     sk_ticks t = sk_nice_ticks(y_min, y_max, 8);
-    if (t.count > 0) {
+    if (t.count > 0) { /* the bottom on a tick, the top on a half tick */
         y_min = floor(y_min / t.step) * t.step;
-        y_max = ceil(y_max / t.step) * t.step;
+        y_max = ceil(y_max / (0.5 * t.step)) * 0.5 * t.step;
     }
     pd->fixed_y = true;
     pd->y_min = (float)y_min;
