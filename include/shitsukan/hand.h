@@ -538,7 +538,9 @@ sk_result sk_hand_frames_write_png(const sk_hand_skeleton *skeleton, const doubl
 /* Joint-angle plot: the angle of each listed DOF over the frames (degrees; mm for
  * translations), one line per DOF with its name in the legend. DOFs marked in `driven`
  * (may be NULL) are drawn thicker and labelled "(driven)". `plot` may be NULL (800 x 500,
- * "frame" and "angle (deg)" axis labels); its x/y labels and title are used if set. */
+ * "frame" and "angle (deg)" axis labels); its size, labels, title and ranges are used if
+ * set. With an automatic y range and legend, when every corner of the plot would put the
+ * legend over a line, the y range grows upward to leave it room above the data. */
 sk_result sk_hand_plot_angles(const double *dofs, int frame_count, const int *dof_list,
                               int dof_count, const bool driven[SK_HAND_DOF_COUNT],
                               const sk_plot_desc *plot, sk_image *out, sk_error *err);

@@ -363,7 +363,9 @@ static sk_result draw_panel(const sk_hand_draw_layout *layout, int v, const sk_h
     if (!d->hide_panel_titles)
         draw_centred_line(&img, 0, pn->width, (float)c.bands.margin, sk_hand__view_title(pn->view),
                           layout->text_scale, k_ink);
-    sk_draw_blit(out, &img, pn->x0, pn->y0);
+    /* both are RGB: the panel's rows go in as they are (cheaper than a converting blit) */
+    for (int y = 0; y < pn->height; y++)
+        memcpy(sk_image_pixel(out, pn->x0, pn->y0 + y), sk_image_pixel(&img, 0, y), sizeof(float) * 3 * (size_t)pn->width);
     sk_image_free(&img);
     return SK_OK;
 }
@@ -387,7 +389,9 @@ sk_result sk_hand_draw(const sk_hand_skeleton *skeleton, const double dofs[SK_HA
     sk_hand_forward(skeleton, dofs, &frames);
     sk_result r = sk_image_create(out, layout->width, layout->height, 3, err);
     if (r != SK_OK) return r;
-    sk_draw_clear(out, k_background);
+    /* the panels cover the rest (drawn apart, so that nothing crosses into a neighbour) */
+    int caption_top = layout->panel[0].height;
+    sk_draw_rect(out, 0.0f, (float)caption_top, (float)out->width, (float)(out->height - caption_top), k_background);
     for (int v = 0; v < layout->view_count && r == SK_OK; v++)
         r = draw_panel(layout, v, &d, skeleton, &frames, out, err);
     for (int v = 1; v < layout->view_count && r == SK_OK; v++) {
