@@ -1070,6 +1070,8 @@ static void test_cli_pictures(void **state)
     assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-dip.json' --plot '%s' --plot-dofs L.DIP.flx",
                                  SK_TEST_PRESET_DIR, plot), 2);
     assert_non_null(strstr(run->err, "L.DIP.flx"));
+    assert_int_equal(sk_test_cli(run, "hand pose --labels"), 2);
+    assert_non_null(strstr(run->err, "--labels needs --png"));
     free(run);
 }
 

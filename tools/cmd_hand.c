@@ -99,6 +99,16 @@ static int write_positions(const sk_hand_skeleton *skel, const double *dofs, int
     return 0;
 }
 
+/* Fails when one of `options` (NULL-terminated) is given without `needed`. */
+static int require_option(const cli_command *cmd, const cli_args *args, const char *needed,
+                          const char *const *options)
+{
+    if (cli_has(cmd, args, needed)) return 0;
+    for (int i = 0; options[i]; i++)
+        if (cli_has(cmd, args, options[i])) return cli_fail(CLI_EXIT_USAGE, "--%s needs --%s", options[i], needed);
+    return 0;
+}
+
 /* --views, --png-size and --labels into a picture desc. */
 static int parse_draw_options(const cli_command *cmd, const cli_args *args, sk_hand_draw_desc *d)
 {
@@ -245,8 +255,11 @@ static const cli_option pose_options[] = {
 
 static int run_pose(const cli_command *cmd, const cli_args *args)
 {
+    static const char *const picture_options[] = {"views", "png-size", "labels", "bare", "caption", NULL};
+    int rc = require_option(cmd, args, "png", picture_options);
+    if (rc) return rc;
     sk_hand_skeleton skel;
-    int rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
     const char *set = cli_get(cmd, args, "constraints");
     sk_hand_constraints *c = malloc(sizeof *c);
@@ -440,8 +453,12 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     const char *frames_dir = cli_get(cmd, args, "frames-dir"), *plot = cli_get(cmd, args, "plot");
     if (!bvh && !positions && !angles && !frames_dir && !plot)
         return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions, --angles, --plot or --frames-dir");
+    static const char *const frame_options[] = {"views", "png-size", "labels", "bare", NULL};
+    static const char *const plot_options[] = {"plot-dofs", "plot-title", "plot-size", NULL};
     sk_hand_draw_desc draw;
-    int draw_rc = parse_draw_options(cmd, args, &draw);
+    int draw_rc = require_option(cmd, args, "frames-dir", frame_options);
+    if (!draw_rc) draw_rc = require_option(cmd, args, "plot", plot_options);
+    if (!draw_rc) draw_rc = parse_draw_options(cmd, args, &draw);
     if (draw_rc) return draw_rc;
     sk_error err = {0};
     sk_hand_animation *anim = malloc(sizeof *anim);

@@ -1,7 +1,7 @@
 /* shitsukan hand: the skeleton of Yasumuro's thesis (2000, ch. 3) posed from few inputs
  * by the equilibrium of joint springs and a potential of natural joint coupling, with
  * calibration from measured angle pairs, lookup-table potentials, keyframe animation,
- * and BVH / joint-position export.
+ * BVH / joint-position export, and stick-figure pictures and joint-angle plots.
  *
  * Conventions (docs/hand.md has the table of every DOF):
  * - Units: millimetres and radians in the API; files say degrees where a key says so.
@@ -16,7 +16,8 @@
  *
  * Thread-safety: skeletons, constraint sets and lookup tables are immutable after
  * creation and may be shared between threads; a solver (it caches factorisations)
- * belongs to one thread at a time. */
+ * belongs to one thread at a time. The picture and plot functions keep no state and are
+ * thread-safe. */
 #ifndef SHITSUKAN_HAND_H
 #define SHITSUKAN_HAND_H
 
