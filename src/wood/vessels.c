@@ -1,0 +1,248 @@
+/* Vessels (Kawai 2000 sec. 5): diffuse-porous (5.3) uniform over the end grain with
+ * n = rho x area: one vessel uniformly placed in each cell of a square grid of cell area
+ * 1 / rho (stratified, so vessels are spread like real ones rather than clumped, radius
+ * ~ Normal); ring-porous (5.4) in rows after
+ * every ring boundary, ring j holding round(P R(j)) vessels per row (R(j) = j d for round
+ * rings) at theta_k = 2 pi k / N_j, jittered, placed in space through R(t, theta). A query
+ * visits only the cells and (ring, angle) buckets a vessel of the largest radius could
+ * reach, never a list of all vessels. */
+#include "wood/vessels.h"
+
+#include "wood/numeric.h"
+
+#include <math.h>
+#include <string.h>
+
+static sk__vessel_size make_size(double mean, double sd)
+{
+    sk__vessel_size s;
+    s.mean = mean;
+    s.sd = sd;
+    s.lo = fmax(mean - 3.0 * sd, 0.1 * mean);
+    s.hi = mean + 3.0 * sd;
+    return s;
+}
+
+static inline double unit_hi(uint64_t h) { return (double)(h >> 32) * 0x1.0p-32; }
+static inline double unit_lo(uint64_t h) { return (double)(h & 0xffffffffu) * 0x1.0p-32; }
+
+/* Standard normal quantile cut to [-3, 3] by Newton's method on the CDF (set-up only). */
+static double normal_cdf(double z) { return 0.5 * erfc(-z / sqrt(2.0)); }
+static double normal_quantile(double u)
+{
+    if (u <= normal_cdf(-3.0)) return -3.0;
+    if (u >= normal_cdf(3.0)) return 3.0;
+    double z = 0.0;
+    for (int i = 0; i < 40; i++) {
+        double step = (normal_cdf(z) - u) / (exp(-0.5 * z * z) / sqrt(2.0 * SK_PI));
+        z -= step;
+        z = sk_clampd(z, -3.0, 3.0);
+        if (fabs(step) < 1e-13) break;
+    }
+    return z;
+}
+
+/* Radius ~ Normal(mean, sd) cut at 3 sd (and at least size->lo), by the tabulated
+ * quantile of the uniform u. */
+static inline double draw_radius(const sk__vessels *v, const sk__vessel_size *s, double u)
+{
+    if (s->sd == 0.0) return s->mean;
+    double x = u * SK__NORMAL_TABLE;
+    int i = (int)x;
+    if (i >= SK__NORMAL_TABLE) i = SK__NORMAL_TABLE - 1;
+    double z = v->normal_quantile[i] + (x - i) * (v->normal_quantile[i + 1] - v->normal_quantile[i]);
+    double r = s->mean + s->sd * z;
+    return r > s->lo ? r : s->lo;
+}
+
+void sk__vessels_init(sk__vessels *v, const sk_wood_desc *desc)
+{
+    memset(v, 0, sizeof *v);
+    if (desc->vessels.diffuse.radius_sd_mm > 0.0f || desc->vessels.ring.radius_sd_mm > 0.0f)
+        for (int k = 0; k <= SK__NORMAL_TABLE; k++)
+            v->normal_quantile[k] = (float)normal_quantile((double)k / SK__NORMAL_TABLE);
+    const sk_wood_diffuse_vessels *dd = &desc->vessels.diffuse;
+    sk__diffuse_index *di = &v->diffuse;
+    if (dd->density_per_mm2 > 0.0f) {
+        di->on = true;
+        di->seed = sk_hash(desc->seed, 0x76657373ULL /* "vess" */, 1, 0);
+        di->size = make_size(dd->radius_mm, dd->radius_sd_mm);
+        di->cell = 1.0 / sqrt(dd->density_per_mm2);
+        di->inv_cell = 1.0 / di->cell;
+    }
+    const sk_wood_ring_vessels *rd = &desc->vessels.ring;
+    sk__ring_index *ri = &v->ring;
+    if (rd->linear_density > 0.0f) {
+        ri->on = true;
+        ri->seed = sk_hash(desc->seed, 0x76657373ULL, 2, 0);
+        ri->size = make_size(rd->radius_mm, rd->radius_sd_mm);
+        ri->density = rd->linear_density;
+        ri->jitter = rd->jitter;
+        ri->rows = rd->rows;
+        ri->pitch = 2.2 * rd->radius_mm; /* a vessel diameter and a thin wall between rows */
+        ri->offset_min = ri->pitch * 0.5 - ri->jitter * ri->pitch * 0.25;
+        ri->offset_max = ri->pitch * (ri->rows - 0.5) + ri->jitter * ri->pitch * 0.25;
+    }
+}
+
+/* ------------------------------------------------------------ diffuse-porous */
+
+/* Centre and radius of the vessel of cell (cx, cz). */
+static inline void cell_vessel(const sk__vessels *v, int64_t cx, int64_t cz, double *x, double *z,
+                               uint64_t *h)
+{
+    const sk__diffuse_index *di = &v->diffuse;
+    *h = sk__wood_hash(di->seed, cx, cz, 0);
+    *x = ((double)cx + unit_hi(*h)) * di->cell;
+    *z = ((double)cz + unit_lo(*h)) * di->cell;
+}
+
+static inline double cell_radius(const sk__vessels *v, uint64_t h)
+{
+    return draw_radius(v, &v->diffuse.size, sk_u64_to_unit_d(sk_mix64(h ^ 0x5851f42d4c957f2dULL)));
+}
+
+bool sk__diffuse_cell_vessel(const sk__vessels *v, int64_t cx, int64_t cz, sk__vessel *out)
+{
+    if (!v->diffuse.on) return false;
+    uint64_t h;
+    cell_vessel(v, cx, cz, &out->x, &out->z, &h);
+    out->radius = cell_radius(v, h);
+    return true;
+}
+
+static double diffuse_coverage(const sk__vessels *v, double x0, double z0, double fw)
+{
+    const sk__diffuse_index *di = &v->diffuse;
+    double reach = sk__vessel_reach(di->size.hi, fw), best = 0.0;
+    int64_t cx0 = sk__floor_i64((x0 - reach) * di->inv_cell);
+    int64_t cx1 = sk__floor_i64((x0 + reach) * di->inv_cell);
+    int64_t cz0 = sk__floor_i64((z0 - reach) * di->inv_cell);
+    int64_t cz1 = sk__floor_i64((z0 + reach) * di->inv_cell);
+    double reach2 = reach * reach;
+    for (int64_t cx = cx0; cx <= cx1; cx++) {
+        /* distance from x0 to the cell column, 0 inside it */
+        double left = (double)cx * di->cell, gx = x0 < left ? left - x0 : x0 - (left + di->cell);
+        gx = gx > 0.0 ? gx * gx : 0.0;
+        for (int64_t cz = cz0; cz <= cz1; cz++) {
+            double bottom = (double)cz * di->cell;
+            double gz = z0 < bottom ? bottom - z0 : z0 - (bottom + di->cell);
+            if (gx + (gz > 0.0 ? gz * gz : 0.0) >= reach2) continue; /* cell out of reach */
+            double x, z;
+            uint64_t h;
+            cell_vessel(v, cx, cz, &x, &z, &h);
+            double d2 = (x - x0) * (x - x0) + (z - z0) * (z - z0);
+            if (d2 >= reach2) continue;
+            double c = sk__vessel_cover(sqrt(d2), cell_radius(v, h), fw);
+            if (c > best) best = c;
+        }
+    }
+    return best;
+}
+
+/* ------------------------------------------------------------- ring-porous */
+
+int sk__ring_vessel_count(const sk__ring_index *ri, const sk__rings *rings, int j)
+{
+    if (!ri->on || j <= 0) return 0;
+    return (int)lround(ri->density * sk__rings_mean(rings, j));
+}
+
+void sk__ring_vessel(const sk__vessels *v, const sk__rings *rings, int j, int row, int k,
+                     sk__vessel *out)
+{
+    const sk__ring_index *ri = &v->ring;
+    int n = sk__ring_vessel_count(ri, rings, j);
+    uint64_t h = sk__wood_hash(ri->seed, j, row, k);
+    double theta = 2.0 * SK_PI * ((double)k + ri->jitter * (unit_hi(h) - 0.5)) / n;
+    double offset = ri->pitch * (row + 0.5) + ri->jitter * (unit_lo(h) - 0.5) * ri->pitch * 0.5;
+    double radial = sk__rings_R(rings, (double)j, theta) + offset;
+    out->x = radial * cos(theta);
+    out->z = radial * sin(theta);
+    out->radius = draw_radius(v, &ri->size, sk_u64_to_unit_d(sk_mix64(h ^ 0x5851f42d4c957f2dULL)));
+}
+
+/* Coverage from ring j's rows for vessels within `window` radians of theta0. */
+static double ring_coverage(const sk__vessels *v, const sk__rings *rings, int j, double x0,
+                            double z0, double theta0, double window, double reach, double fw)
+{
+    const sk__ring_index *ri = &v->ring;
+    int n = sk__ring_vessel_count(ri, rings, j);
+    if (n == 0) return 0.0;
+    double per = n / (2.0 * SK_PI), half = 0.5 * ri->jitter;
+    double klo = ceil((theta0 - window) * per - half), khi = floor((theta0 + window) * per + half);
+    long long first = (long long)klo, last = (long long)khi;
+    if (khi - klo + 1.0 >= n) {
+        first = 0;
+        last = n - 1;
+    }
+    double best = 0.0;
+    for (int row = 0; row < ri->rows; row++)
+        for (long long kk = first; kk <= last; kk++) {
+            int k = (int)(((kk % n) + n) % n);
+            sk__vessel vs;
+            sk__ring_vessel(v, rings, j, row, k, &vs);
+            double d2 = (vs.x - x0) * (vs.x - x0) + (vs.z - z0) * (vs.z - z0);
+            if (d2 >= reach * reach) continue;
+            double c = sk__vessel_cover(sqrt(d2), vs.radius, fw);
+            if (c > best) best = c;
+        }
+    return best;
+}
+
+/* Bounds on R(j, theta) for |theta - theta0| <= window: the Lipschitz bound around
+ * R(j, theta0), never wider than the ring's own extent. */
+static void ring_reach(const sk__rings *rings, int j, double theta0, double window, double *lo,
+                       double *hi)
+{
+    double Rj = sk__rings_R(rings, (double)j, theta0);
+    double slack = sk__rings_lipschitz(rings, j) * window, ymin, ymax;
+    sk__rings_year_bounds(rings, j, &ymin, &ymax);
+    *lo = Rj - slack > ymin ? Rj - slack : ymin;
+    *hi = Rj + slack < ymax ? Rj + slack : ymax;
+}
+
+static double ring_porous_coverage(const sk__vessels *v, const sk__rings *rings, double x0,
+                                   double z0, double r0, double theta0, double t, double fw)
+{
+    const sk__ring_index *ri = &v->ring;
+    double reach = sk__vessel_reach(ri->size.hi, fw);
+    /* every point within `reach` of p0 lies within `window` of its angle */
+    double window = r0 > reach ? asin(reach / r0) * (1.0 + 1e-9) + 1e-12 : SK_PI;
+    double best = 0.0;
+    int j0 = (int)floor(t);
+    if (j0 < 1) j0 = 1;
+    /* Downwards: R(j', theta) <= R(j, theta) for j' <= j, so once ring j's centres fall
+       short of r0 - reach no lower ring can reach p0. */
+    for (int j = j0; j >= 1; j--) {
+        double lo, hi;
+        ring_reach(rings, j, theta0, window, &lo, &hi);
+        if (hi + ri->offset_max < r0 - reach) break;
+        if (lo + ri->offset_min > r0 + reach) continue;
+        double c = ring_coverage(v, rings, j, x0, z0, theta0, window, reach, fw);
+        if (c > best) best = c;
+        if (best >= 1.0) return 1.0;
+    }
+    /* Upwards: likewise centres of rings j' >= j lie beyond ring j's lower bound. */
+    for (int j = j0 + 1;; j++) {
+        double lo, hi;
+        ring_reach(rings, j, theta0, window, &lo, &hi);
+        if (lo + ri->offset_min > r0 + reach) break;
+        double c = ring_coverage(v, rings, j, x0, z0, theta0, window, reach, fw);
+        if (c > best) best = c;
+        if (best >= 1.0) return 1.0;
+    }
+    return best;
+}
+
+double sk__vessels_coverage(const sk__vessels *v, const sk__rings *rings, double x0, double z0,
+                            double r0, double theta0, double t, double fw)
+{
+    double c = 0.0;
+    if (v->ring.on) c = ring_porous_coverage(v, rings, x0, z0, r0, theta0, t, fw);
+    if (c < 1.0 && v->diffuse.on) {
+        double d = diffuse_coverage(v, x0, z0, fw);
+        if (d > c) c = d;
+    }
+    return c;
+}
