@@ -130,7 +130,7 @@ bool cli_find_preset(const char *module, const char *name, char *path, size_t si
 /* The preset folders searched, in order; returns how many were written (<= max). */
 int cli_preset_dirs(const char **out, int max);
 
-/* Applies --threads and returns a progress bar sink (enabled unless --quiet). */
+/* Applies --threads (0 = all cores) to the library's parallel loops. */
 void cli_apply_threads(const cli_args *args);
 
 #endif /* SK_TOOLS_CLI_H */
