@@ -6,6 +6,9 @@ extern const cli_command cmd_noise;
 extern const cli_command cmd_hand_pose;
 extern const cli_command cmd_hand_animate;
 extern const cli_command cmd_hand_calibrate;
+extern const cli_command cmd_sheet;
+extern const cli_command cmd_wood_cut;
+extern const cli_command cmd_wood_sweep;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -13,5 +16,8 @@ const cli_command *const cli_commands[] = {
     &cmd_hand_pose,
     &cmd_hand_animate,
     &cmd_hand_calibrate,
+    &cmd_sheet,
+    &cmd_wood_cut,
+    &cmd_wood_sweep,
     NULL,
 };

@@ -104,11 +104,16 @@ typedef struct sk_wood_vessels_desc {
     float color_srgb[3]; /* colour of an open vessel (pore); all 0 = (0.20, 0.13, 0.08) */
 } sk_wood_vessels_desc;
 
-/* Shifting brightness (sec. 6): every cell of the end-grain array is darkened by an
- * independent random fraction, then seen through the grain transform as fibre streaks. */
+/* Shifting brightness (sec. 6): every cell of the end-grain array C'(t, theta) is darkened
+ * by an independent random fraction, then seen through the grain transform as fibre
+ * streaks. Cells follow the rings: rows of cell_mm in t (at the mean ring width), each row
+ * cut into cells of about cell_mm around the tree, like the radial files of wood cells. */
 typedef struct sk_wood_fibre_desc {
     float brightness_shift; /* largest darkening of a cell (Fig. 7: 0.4); default 0; [0, 1] */
     float cell_mm;          /* cell size of the end-grain array; 0 = 0.08; [0.005, 10] */
+    float length_mm;        /* length of a fibre: along the fibre the cell's shift is drawn
+                               anew every length_mm (ends staggered); default 0 = endless,
+                               the paper's projection; [0, 10000] */
 } sk_wood_fibre_desc;
 
 typedef enum sk_wood_shading_model {

@@ -3,24 +3,20 @@
  * the latewood band of `latewood_fraction`, then the abrupt return to earlywood at the
  * next ring boundary; it can be box-filtered exactly through its antiderivative. The
  * brightness-shift part (sec. 6.2, Momoi's method through the grain transform) darkens
- * every cell of a square grid over the end grain by an independent uniform fraction of
- * up to `brightness_shift`, from a hash of the cell, so the array is unbounded and costs
- * no memory. */
+ * every cell of the (t, theta) array by an independent uniform fraction of up to
+ * `brightness_shift`, from a hash of the cell, so the array is unbounded and costs no
+ * memory. An optional fibre length redraws the shift along the fibre (beyond the paper,
+ * whose projection is endless). */
 #include "wood/attributes.h"
 
 #include <math.h>
 
+#include "shitsukan/image.h"
 #include "wood/numeric.h"
-
-/* sRGB decoding (IEC 61966-2-1). */
-static float srgb_to_linear(float v)
-{
-    return v <= 0.04045f ? v / 12.92f : powf((v + 0.055f) / 1.055f, 2.4f);
-}
 
 sk_vec3f sk__linear_from_srgb3(const float c[3])
 {
-    return sk_v3f(srgb_to_linear(c[0]), srgb_to_linear(c[1]), srgb_to_linear(c[2]));
+    return sk_v3f(sk_linear_from_srgb(c[0]), sk_linear_from_srgb(c[1]), sk_linear_from_srgb(c[2]));
 }
 
 void sk__attributes_init(sk__attributes *attr, const sk_wood_desc *desc)
@@ -34,7 +30,8 @@ void sk__attributes_init(sk__attributes *attr, const sk_wood_desc *desc)
     attr->early_end = attr->late_start - tr;
     attr->per_year = 0.5 * tr + lw;
     attr->shift = desc->fibre.brightness_shift;
-    attr->cell = desc->fibre.cell_mm;
-    attr->inv_cell = 1.0 / attr->cell;
+    attr->rows_per_year = desc->rings.width_mm / desc->fibre.cell_mm;
+    attr->length = desc->fibre.length_mm;
+    attr->inv_length = attr->length > 0.0 ? 1.0 / attr->length : 0.0;
     attr->seed = sk_hash(desc->seed, 0x73686674ULL /* "shft" */, 0, 0);
 }

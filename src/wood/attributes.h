@@ -16,7 +16,8 @@ typedef struct sk__attributes {
        to 1 at late_start, 1 until the ring's end */
     double early_end, late_start, per_year; /* per_year = integral over one ring */
     double shift;                           /* largest darkening of a cell */
-    double cell, inv_cell;
+    double rows_per_year;                   /* cell rows per unit of t */
+    double length, inv_length;              /* fibre length (0 = endless) */
     uint64_t seed;
 } sk__attributes;
 
@@ -51,12 +52,25 @@ static inline double sk__attributes_latewood(const sk__attributes *a, double t, 
            (2.0 * half);
 }
 
-/* Brightness factor in [1 - shift, 1] of the end-grain cell holding (x0, z0). */
-static inline double sk__attributes_shift(const sk__attributes *a, double x0, double z0)
+/* Brightness factor in [1 - shift, 1] of the cell of C'(t, theta0) (theta0 in [0, 2 pi))
+ * holding the fibre through height y. Row i of the array has round(2 pi (i + 1/2)) cells
+ * around the tree, so cells are about square at the nominal radius (i + 1/2) cell. */
+static inline double sk__attributes_shift(const sk__attributes *a, double t, double theta0,
+                                          double y)
 {
     if (a->shift == 0.0) return 1.0;
-    int64_t cx = sk__floor_i64(x0 * a->inv_cell), cz = sk__floor_i64(z0 * a->inv_cell);
-    return 1.0 - a->shift * sk_u64_to_unit_d(sk__wood_hash(a->seed, cx, cz, 0));
+    int64_t row = sk__floor_i64(t * a->rows_per_year);
+    int64_t cells = (int64_t)(6.283185307179586 * ((double)row + 0.5) + 0.5);
+    if (cells < 1) cells = 1;
+    int64_t cell = (int64_t)(theta0 * (0.15915494309189535 * (double)cells));
+    if (cell >= cells) cell = cells - 1;
+    int64_t segment = 0;
+    if (a->length > 0.0) {
+        /* fibre ends staggered by a per-cell offset */
+        double offset = sk_u64_to_unit_d(sk__wood_hash(a->seed ^ 0x66696272ULL, row, cell, 0));
+        segment = sk__floor_i64(y * a->inv_length + offset);
+    }
+    return 1.0 - a->shift * sk_u64_to_unit_d(sk__wood_hash(a->seed, row, cell, segment));
 }
 
 #endif

@@ -185,6 +185,7 @@ sk_result sk_wood_desc_validate(const sk_wood_desc *desc_in, sk_error *err)
 
     CHECK(sk_check_range_f(err, "fibre.brightness_shift", d.fibre.brightness_shift, 0.0, 1.0));
     CHECK(sk_check_range_f(err, "fibre.cell_mm", d.fibre.cell_mm, 0.005, 10.0));
+    CHECK(sk_check_range_f(err, "fibre.length_mm", d.fibre.length_mm, 0.0, 10000.0));
 
     const sk_wood_shading_desc *sh = &d.shading;
     CHECK(sk_check_range_i(err, "shading.model", sh->model, 0, SK_WOOD_SHADING_COUNT - 1));

@@ -135,6 +135,9 @@ static const sk_schema_field fibre_fields[] = {
                 "largest darkening of an end-grain cell (Fig. 7: 0.4); default 0"),
     FLOAT_FIELD(sk_wood_fibre_desc, cell_mm, "cell_mm", 0, 10,
                 "cell size of the end-grain array (mm); 0 = 0.08; [0.005, 10]"),
+    FLOAT_FIELD(sk_wood_fibre_desc, length_mm, "length_mm", 0, 10000,
+                "fibre length: the shift is redrawn along the fibre every length_mm; "
+                "default 0 (endless, as in the paper)"),
 };
 static const sk_schema fibre_schema = {"fibre", fibre_fields, COUNT(fibre_fields)};
 

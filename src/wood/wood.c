@@ -81,9 +81,11 @@ void sk_wood_eval_filtered(const sk_wood *w, sk_vec3f point, sk_vec3f normal, fl
     double theta0, r0;
     if (round) {
         r0 = r;
-        theta0 = w->vessels.ring.on ? sk__atan2(dir_z, dir_x) : 0.0;
+        theta0 = w->vessels.ring.on || w->attr.shift > 0.0 ? sk__atan2(dir_z, dir_x) : 0.0;
+        if (theta0 < 0.0) theta0 += 2.0 * SK_PI;
     } else {
         theta0 = theta - phi_mod;
+        theta0 -= 2.0 * SK_PI * sk__floor_d(theta0 * (0.5 / SK_PI));
         r0 = sk__rings_R(&w->rings, t, theta0);
     }
     double x0 = r0 * dir_x, z0 = r0 * dir_z;
@@ -98,7 +100,7 @@ void sk_wood_eval_filtered(const sk_wood *w, sk_vec3f point, sk_vec3f normal, fl
         half = 0.5 * footprint_mm * sqrt(tangential > 0.0 ? tangential : 0.0) / width;
     }
     double late = sk__attributes_latewood(&w->attr, t, half);
-    double shift = sk__attributes_shift(&w->attr, x0, z0);
+    double shift = sk__attributes_shift(&w->attr, t, theta0, y);
     double vessel = sk__vessels_coverage(&w->vessels, &w->rings, x0, z0, r0, theta0, t,
                                          footprint_mm);
     sk_vec3f ring = sk_v3f_lerp(w->attr.earlywood, w->attr.latewood, (float)late);
