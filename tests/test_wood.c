@@ -1,12 +1,17 @@
 /* Tests of the wood solid texture (Kawai 2000): the grain's phase against its closed
  * forms (eqs. 2, 3), T as the inverse of R (sec. 4.4), the vessel index against a scan of
  * every vessel (sec. 5), ring-porous counts, the fibre direction (sec. 4.1), eq. (4),
- * determinism over threads and regions, and the errors of bad parameters. */
+ * determinism over threads and regions, the errors of bad parameters, the shipped
+ * presets and the `wood` commands. */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "shitsukan/image.h"
+#include "shitsukan/io.h"
 #include "shitsukan/wood.h"
 #include "test_support.h"
 #include "wood/wood_internal.h"
@@ -737,6 +742,186 @@ static void test_defaults(void **state)
     sk_wood_destroy(w);
 }
 
+/* ------------------------------------------------------------------ presets */
+
+/* Every shipped preset binds, validates, builds a tree and says where its values are from. */
+static void test_presets_bind_and_build(void **state)
+{
+    (void)state;
+    char dir[1024];
+    snprintf(dir, sizeof dir, "%s/wood", SK_TEST_PRESET_DIR);
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    int count = 0, species = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        if (len < 6 || strcmp(e->d_name + len - 5, ".json") != 0) continue;
+        char path[2048];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        sk_preset *preset = NULL;
+        sk_error err = {0};
+        if (sk_preset_load_file(&preset, path, &err) != SK_OK) fprintf(stderr, "%s\n", err.message);
+        assert_non_null(preset);
+        sk_wood_desc desc;
+        memset(&desc, 0, sizeof desc);
+        sk_result r = sk_preset_bind(preset, &sk_wood_schema, &desc, &err);
+        if (r != SK_OK) fprintf(stderr, "%s: %s\n", e->d_name, err.message);
+        assert_int_equal(r, SK_OK);
+        assert_non_null(sk_preset_get_string(preset, "description"));
+        sk_preset_free(preset);
+        char *text = NULL;
+        size_t size = 0;
+        assert_int_equal(sk_read_file(path, 0, &text, &size, NULL), SK_OK);
+        assert_non_null(strstr(text, "\"source\""));
+        if (strncmp(e->d_name, "fig", 3) != 0) species++;
+        free(text);
+        desc.log.radius_mm = desc.log.radius_mm > 0.0f ? fminf(desc.log.radius_mm, 40.0f) : 40.0f;
+        sk_wood *w = make_wood(&desc);
+        sk_wood_sample s;
+        sk_wood_eval(w, sk_v3f(20, 5, 3), sk_v3f(0, 0, 1), &s);
+        assert_true(s.albedo.x >= 0.0f && s.albedo.x <= 1.0f);
+        sk_wood_destroy(w);
+        count++;
+    }
+    closedir(d);
+    assert_true(count >= 14);  /* Figs. 5a-c, 6a-c, 7, 9 and the species */
+    assert_true(species >= 6); /* oak, ash, maple, birch, cherry and a conifer */
+}
+
+/* The paper's figure parameters are in the presets as the paper states them. */
+static void test_figure_presets_hold_the_paper_values(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *name;
+        float spiral, amplitude, wavelength, fluctuation, shift, specular;
+    } figs[] = {
+        {"fig5a", 0, 0, 0, 0, 0, 0},       {"fig5b", 0.12f, 0, 0, 0.02f, 0, 0},
+        {"fig5c", 0, 0.2f, 40, 0.02f, 0, 0}, {"fig6b", 0.12f, 0, 0, 0.02f, 0, 0},
+        {"fig6c", 0, 0.2f, 40, 0.02f, 0, 0}, {"fig7", 0, 0.15f, 15, 0, 0.4f, 0},
+        {"fig9", 0, 0.15f, 20, 0, 0, 0.3f},
+    };
+    for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/wood/%s.json", SK_TEST_PRESET_DIR, figs[i].name);
+        sk_preset *preset = NULL;
+        assert_int_equal(sk_preset_load_file(&preset, path, NULL), SK_OK);
+        sk_wood_desc d;
+        memset(&d, 0, sizeof d);
+        assert_int_equal(sk_preset_bind(preset, &sk_wood_schema, &d, NULL), SK_OK);
+        sk_preset_free(preset);
+        assert_true(d.grain.spiral_slope == figs[i].spiral);
+        assert_true(d.grain.wavy_amplitude == figs[i].amplitude);
+        assert_true(d.grain.wavy_wavelength_mm == figs[i].wavelength);
+        assert_true(d.grain.fluctuation == figs[i].fluctuation);
+        assert_true(d.fibre.brightness_shift == figs[i].shift);
+        assert_true(d.shading.specular == figs[i].specular);
+    }
+}
+
+/* ------------------------------------------------------------------ commands */
+
+static sk_test_run g_run;
+
+static void test_cli_cut_and_region(void **state)
+{
+    (void)state;
+    const char *full = sk_test_path("wood/full.png"), *part = sk_test_path("wood/part.png");
+    const char *maps = sk_test_path("wood/maps/x");
+    assert_int_equal(sk_test_cli(&g_run, "wood cut --preset oak --size 48x40 --samples 1 -q "
+                                         "--maps '%s' -o '%s'", maps, full), 0);
+    assert_int_equal(sk_test_cli(&g_run, "wood cut --preset oak --size 48x40 --samples 1 -q "
+                                         "--region 7,5,20,11 -o '%s'", part), 0);
+    sk_image a = {0}, b = {0};
+    assert_int_equal(sk_image_read_png(&a, full, NULL, NULL, NULL, NULL), SK_OK);
+    assert_int_equal(sk_image_read_png(&b, part, NULL, NULL, NULL, NULL), SK_OK);
+    assert_int_equal(b.width, 20);
+    assert_int_equal(b.height, 11);
+    for (int y = 0; y < 11; y++)
+        assert_memory_equal(sk_image_pixel(&b, 0, y), sk_image_pixel(&a, 7, 5 + y), 20 * 3 * sizeof(float));
+    sk_image_free(&a);
+    sk_image_free(&b);
+    /* the maps: albedo, fibre directions (unit after decoding), pores */
+    char path[1200];
+    snprintf(path, sizeof path, "%s/fibre.png", maps);
+    sk_png_read_desc linear = {.encoding = SK_PNG_ENCODING_LINEAR};
+    int bits = 0;
+    assert_int_equal(sk_image_read_png(&a, path, &linear, NULL, &bits, NULL), SK_OK);
+    assert_int_equal(bits, 16);
+    for (int i = 0; i < a.width * a.height; i++) {
+        const float *f = a.data + 3 * i;
+        double x = 2 * f[0] - 1, y = 2 * f[1] - 1, z = 2 * f[2] - 1;
+        assert_true(fabs(sqrt(x * x + y * y + z * z) - 1.0) < 1e-3);
+        assert_true(y > 0.9); /* a flat-sawn face: fibres run up the image */
+    }
+    sk_image_free(&a);
+    snprintf(path, sizeof path, "%s/albedo.png", maps);
+    assert_true(sk_test_file_exists(path));
+    snprintf(path, sizeof path, "%s/pores.png", maps);
+    assert_true(sk_test_file_exists(path));
+}
+
+static void expect_cli_error(const char *args, const char *needle)
+{
+    const char *out = sk_test_path("wood/never.png");
+    remove(out);
+    int status = sk_test_cli(&g_run, "%s -q -o '%s'", args, out);
+    if (status != 2 || !strstr(g_run.err, needle)) fprintf(stderr, "%s -> %d: %s", args, status, g_run.err);
+    assert_int_equal(status, 2);
+    assert_non_null(strstr(g_run.err, needle));
+    assert_int_equal(sk_test_count_lines(g_run.err), 1);
+    assert_false(sk_test_file_exists(out));
+}
+
+static void test_cli_errors(void **state)
+{
+    (void)state;
+    expect_cli_error("wood cut --size 8 --set rings.width_mm=-1", "rings.width_mm");
+    expect_cli_error("wood cut --size 8 --set grain.wavy_amplitude=0.2", "grain.wavy_wavelength_mm");
+    expect_cli_error("wood cut --size 8 --set vessels.ring.linear_density=3 "
+                     "--set vessels.ring.radius_mm=1.9", "too large");
+    expect_cli_error("wood cut --size 8 --set rings.fluctuation=nan", "rings.fluctuation");
+    expect_cli_error("wood cut --size 8 --plane diagonal", "--plane");
+    expect_cli_error("wood cut --size 8 --tilt 120", "tilt");
+    expect_cli_error("wood cut --size 8 --point 1,2,3", "--normal");
+    expect_cli_error("wood cut --size 8 --point 0,0,0 --normal 0,0,1 --axis 0,0,3", "axis");
+    expect_cli_error("wood cut --size 8 --region 4,4,8,8", "--region");
+    expect_cli_error("wood sweep --size 8 --frames 1", "frames");
+    expect_cli_error("wood cut --preset no-such-wood", "no-such-wood");
+    assert_int_equal(sk_test_cli(&g_run, "wood cut --help"), 0);
+    assert_non_null(strstr(g_run.out, "--maps"));
+    assert_int_equal(sk_test_cli(&g_run, "wood sweep --help"), 0);
+    assert_non_null(strstr(g_run.out, "--frames"));
+}
+
+static void test_cli_sweep_and_sheet(void **state)
+{
+    (void)state;
+    const char *dir = sk_test_path("wood/sweep/x");
+    assert_int_equal(sk_test_cli(&g_run, "wood sweep --preset fig9 --size 24 --samples 1 --frames 3 "
+                                         "-q -o '%s'", dir), 0);
+    char a[1200], b[1200], c[1200];
+    snprintf(a, sizeof a, "%s/frame_0001.png", dir);
+    snprintf(b, sizeof b, "%s/frame_0002.png", dir);
+    snprintf(c, sizeof c, "%s/frame_0003.png", dir);
+    assert_true(sk_test_file_exists(a) && sk_test_file_exists(b) && sk_test_file_exists(c));
+    /* the sheen moves: the first and last frames differ */
+    sk_image i1 = {0}, i3 = {0};
+    assert_int_equal(sk_image_read_png(&i1, a, NULL, NULL, NULL, NULL), SK_OK);
+    assert_int_equal(sk_image_read_png(&i3, c, NULL, NULL, NULL, NULL), SK_OK);
+    assert_true(memcmp(i1.data, i3.data, (size_t)24 * 24 * 3 * sizeof(float)) != 0);
+    sk_image_free(&i1);
+    sk_image_free(&i3);
+    const char *sheet = sk_test_path("wood/sheet.png");
+    assert_int_equal(sk_test_cli(&g_run, "sheet '%s' '%s' '%s' --label a --label b --columns 3 "
+                                         "--title T -o '%s'", a, b, c, sheet), 0);
+    assert_int_equal(sk_image_read_png(&i1, sheet, NULL, NULL, NULL, NULL), SK_OK);
+    assert_true(i1.width >= 3 * 24 && i1.height > 24);
+    sk_image_free(&i1);
+    assert_int_equal(sk_test_cli(&g_run, "sheet '%s' --label a --label b -o '%s'", a, sheet), 2);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -762,6 +947,11 @@ int main(void)
         cmocka_unit_test(test_bad_parameters),
         cmocka_unit_test(test_bad_cut),
         cmocka_unit_test(test_defaults),
+        cmocka_unit_test(test_presets_bind_and_build),
+        cmocka_unit_test(test_figure_presets_hold_the_paper_values),
+        cmocka_unit_test(test_cli_cut_and_region),
+        cmocka_unit_test(test_cli_errors),
+        cmocka_unit_test(test_cli_sweep_and_sheet),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

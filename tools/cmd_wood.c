@@ -218,8 +218,7 @@ static sk_result write_linear_png(const sk_image *image, const char *path, int b
 static sk_result write_maps(const wood_job *job, const char *dir, const sk_image *albedo,
                             const sk_image *fibre, const sk_image *pores, sk_error *err)
 {
-    sk_result r = sk_make_dirs(dir, err);
-    if (r != SK_OK) return r;
+    sk_result r;
     char path[PATH_MAX];
     sk_image_metadata meta = {0};
     describe(job, "wood cut", &meta);
@@ -247,7 +246,8 @@ static int run_cut(const cli_command *command, const cli_args *args)
     sk_image shaded = {0}, albedo = {0}, fibre = {0}, pores = {0};
     sk_error err = {0};
     int w = job.region[2], h = job.region[3];
-    sk_result r = sk_image_create(&shaded, w, h, 3, &err);
+    sk_result r = maps ? sk_make_dirs(maps, &err) : SK_OK;
+    if (r == SK_OK) r = sk_image_create(&shaded, w, h, 3, &err);
     if (r == SK_OK && maps) r = sk_image_create(&albedo, w, h, 3, &err);
     if (r == SK_OK && maps) r = sk_image_create(&fibre, w, h, 3, &err);
     if (r == SK_OK && maps) r = sk_image_create(&pores, w, h, 1, &err);
