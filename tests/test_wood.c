@@ -291,6 +291,15 @@ static void test_diffuse_index_matches_scan(void **state)
     check_index_against_scan(w, 4.0, 0, 0.0, n);
     check_index_against_scan(w, 4.0, 0, 0.05, n / 3); /* soft outlines reach further */
     sk_wood_destroy(w);
+    /* small pores against their spacing: the query needs only a 2 x 2 block of cells */
+    d.vessels.diffuse.density_per_mm2 = 60.0f;
+    d.vessels.diffuse.radius_mm = 0.035f;
+    d.vessels.diffuse.radius_sd_mm = 0.004f;
+    w = make_wood(&d);
+    assert_true(sk__vessel_reach(w->vessels.diffuse.size.hi, 0.02) <= 0.5 * w->vessels.diffuse.cell);
+    check_index_against_scan(w, 3.0, 0, 0.0, n);
+    check_index_against_scan(w, 3.0, 0, 0.02, n / 3);
+    sk_wood_destroy(w);
 }
 
 static void test_ring_index_matches_scan(void **state)

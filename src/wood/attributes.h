@@ -47,7 +47,11 @@ static inline double sk__attributes_integral(const sk__attributes *a, double t)
 /* Latewood weight at time t averaged over [t - half, t + half] (half in years, >= 0). */
 static inline double sk__attributes_latewood(const sk__attributes *a, double t, double half)
 {
-    if (half < 1e-6) return sk__attributes_weight(a, t - sk__floor_d(t));
+    double whole = sk__floor_d(t), u = t - whole;
+    if (half < 1e-6) return sk__attributes_weight(a, u);
+    /* a box inside the earlywood or the latewood plateau of one ring averages to 0 or 1 */
+    if (u - half >= 0.0 && u + half < a->early_end) return 0.0;
+    if (u - half >= a->late_start && u + half < 1.0) return 1.0;
     return (sk__attributes_integral(a, t + half) - sk__attributes_integral(a, t - half)) /
            (2.0 * half);
 }

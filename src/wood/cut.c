@@ -89,7 +89,7 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
     sk_vec3f light = tilt_towards(n, up, a, desc->light_incidence, desc->light_azimuth);
     sk_vec3f view = tilt_towards(n, up, a, desc->view_incidence, 0.0);
     int S = desc->samples ? desc->samples : 1;
-    double W = desc->width, H = desc->height;
+    double W = desc->width, H = desc->height, inv_W = 1.0 / W, inv_H = 1.0 / H, inv_S = 1.0 / S;
     double width_mm = desc->width_mm, height_mm = width_mm * H / W;
     float footprint = (float)(width_mm / W / S);
     float inv = 1.0f / (float)(S * S);
@@ -99,49 +99,63 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
 #pragma omp parallel for schedule(dynamic, 1)
     for (int yy = 0; yy < rh; yy++) {
         int Y = ry + yy;
-        for (int xx = 0; xx < rw; xx++) {
-            int X = rx + xx;
-            sk_vec3f shaded = {0, 0, 0}, albedo = {0, 0, 0}, fibre = {0, 0, 0};
-            float vessel = 0.0f, dive = 0.0f;
-            for (int sy = 0; sy < S; sy++)
-                for (int sx = 0; sx < S; sx++) {
-                    /* the pixel position depends only on (X, Y): regions match the image */
-                    double fx = (X + (sx + 0.5) / S) / W - 0.5;
-                    double fy = 0.5 - (Y + (sy + 0.5) / S) / H;
-                    sk_vec3f p = sk_v3f_add(desc->point,
-                                            sk_v3f_add(sk_v3f_scale(a, (float)(fx * width_mm)),
-                                                       sk_v3f_scale(up, (float)(fy * height_mm))));
-                    sk_wood_sample s;
-                    sk_wood_eval_filtered(wood, p, n, footprint, &s);
+        /* sample positions of the row, one sub-row at a time, in batches of points */
+        sk_vec3f shaded[SK__WOOD_BATCH], albedo[SK__WOOD_BATCH], fibre[SK__WOOD_BATCH];
+        float vessel[SK__WOOD_BATCH], dive[SK__WOOD_BATCH];
+        sk_vec3f points[SK__WOOD_BATCH];
+        sk_wood_sample s[SK__WOOD_BATCH];
+        for (int x0 = 0; x0 < rw; x0 += SK__WOOD_BATCH / S) {
+            int pixels = rw - x0 < SK__WOOD_BATCH / S ? rw - x0 : SK__WOOD_BATCH / S;
+            for (int k = 0; k < pixels; k++) {
+                shaded[k] = albedo[k] = fibre[k] = sk_v3f(0, 0, 0);
+                vessel[k] = dive[k] = 0.0f;
+            }
+            for (int sy = 0; sy < S; sy++) {
+                /* the pixel position depends only on (X, Y): regions match the image */
+                double fy = 0.5 - (Y + (sy + 0.5) * inv_S) * inv_H;
+                sk_vec3f row = sk_v3f_add(desc->point, sk_v3f_scale(up, (float)(fy * height_mm)));
+                int count = 0;
+                for (int k = 0; k < pixels; k++)
+                    for (int sx = 0; sx < S; sx++) {
+                        double fx = (rx + x0 + k + (sx + 0.5) * inv_S) * inv_W - 0.5;
+                        points[count++] = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * width_mm)));
+                    }
+                sk__wood_eval_batch(wood, count, points, n, footprint, s);
+                for (int j = 0; j < count; j++) {
+                    int k = j / S;
                     if (desc->shaded)
-                        shaded = sk_v3f_add(shaded, sk__shade(&wood->shading, &s, n, light, view));
-                    if (desc->albedo) albedo = sk_v3f_add(albedo, s.albedo);
+                        shaded[k] = sk_v3f_add(shaded[k], sk__shade(&wood->shading, &s[j], n, light, view));
+                    if (desc->albedo) albedo[k] = sk_v3f_add(albedo[k], s[j].albedo);
                     if (desc->fibre)
-                        fibre = sk_v3f_add(fibre, sk_v3f(sk_v3f_dot(s.fibre, a), sk_v3f_dot(s.fibre, up),
-                                                         sk_v3f_dot(s.fibre, n)));
-                    vessel += s.vessel;
-                    dive += s.dive;
+                        fibre[k] = sk_v3f_add(fibre[k], sk_v3f(sk_v3f_dot(s[j].fibre, a),
+                                                               sk_v3f_dot(s[j].fibre, up),
+                                                               sk_v3f_dot(s[j].fibre, n)));
+                    vessel[k] += s[j].vessel;
+                    dive[k] += s[j].dive;
                 }
-            size_t px = (size_t)yy * (size_t)rw + (size_t)xx;
-            if (desc->shaded) {
-                desc->shaded[3 * px + 0] = shaded.x * inv;
-                desc->shaded[3 * px + 1] = shaded.y * inv;
-                desc->shaded[3 * px + 2] = shaded.z * inv;
             }
-            if (desc->albedo) {
-                desc->albedo[3 * px + 0] = albedo.x * inv;
-                desc->albedo[3 * px + 1] = albedo.y * inv;
-                desc->albedo[3 * px + 2] = albedo.z * inv;
+            for (int k = 0; k < pixels; k++) {
+                size_t px = (size_t)yy * (size_t)rw + (size_t)(x0 + k);
+                if (desc->shaded) {
+                    desc->shaded[3 * px + 0] = shaded[k].x * inv;
+                    desc->shaded[3 * px + 1] = shaded[k].y * inv;
+                    desc->shaded[3 * px + 2] = shaded[k].z * inv;
+                }
+                if (desc->albedo) {
+                    desc->albedo[3 * px + 0] = albedo[k].x * inv;
+                    desc->albedo[3 * px + 1] = albedo[k].y * inv;
+                    desc->albedo[3 * px + 2] = albedo[k].z * inv;
+                }
+                if (desc->fibre) {
+                    float len = sk_v3f_length(fibre[k]);
+                    sk_vec3f f = len > 0.0f ? sk_v3f_scale(fibre[k], 1.0f / len) : sk_v3f(0, 1, 0);
+                    desc->fibre[3 * px + 0] = 0.5f + 0.5f * f.x;
+                    desc->fibre[3 * px + 1] = 0.5f + 0.5f * f.y;
+                    desc->fibre[3 * px + 2] = 0.5f + 0.5f * f.z;
+                }
+                if (desc->vessel) desc->vessel[px] = vessel[k] * inv;
+                if (desc->dive) desc->dive[px] = dive[k] * inv;
             }
-            if (desc->fibre) {
-                float len = sk_v3f_length(fibre);
-                sk_vec3f f = len > 0.0f ? sk_v3f_scale(fibre, 1.0f / len) : sk_v3f(0, 1, 0);
-                desc->fibre[3 * px + 0] = 0.5f + 0.5f * f.x;
-                desc->fibre[3 * px + 1] = 0.5f + 0.5f * f.y;
-                desc->fibre[3 * px + 2] = 0.5f + 0.5f * f.z;
-            }
-            if (desc->vessel) desc->vessel[px] = vessel * inv;
-            if (desc->dive) desc->dive[px] = dive * inv;
         }
         sk__loop_progress_tick(&lp);
     }

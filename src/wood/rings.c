@@ -241,33 +241,3 @@ sk_result sk__rings_build(sk__rings *rg, const sk_wood_desc *desc, sk_error *err
     }
     return SK_OK;
 }
-
-double sk__rings_mean(const sk__rings *rg, double t)
-{
-    if (t <= 0.0) return 0.0;
-    double u = t * rg->inv_dt;
-    if (u >= (double)(rg->nt - 1)) return rg->mean[rg->nt - 1] + (t - rg->t_max) * rg->mean_end_slope;
-    int i = (int)u;
-    double a = u - i;
-    return rg->mean[i] + a * ((double)rg->mean[i + 1] - rg->mean[i]);
-}
-
-double sk__rings_lipschitz(const sk__rings *rg, int j)
-{
-    if (j < 0) return 0.0;
-    if (j <= rg->years) return rg->lipschitz[j];
-    return rg->lipschitz[rg->years] + (j - rg->years) * rg->lipschitz_end_slope;
-}
-
-void sk__rings_year_bounds(const sk__rings *rg, int j, double *lo, double *hi)
-{
-    if (j <= 0) {
-        *lo = *hi = 0.0;
-    } else if (j <= rg->years) {
-        *lo = rg->year_min[j];
-        *hi = rg->year_max[j];
-    } else {
-        *lo = rg->year_min[rg->years] + (j - rg->years) * rg->min_end_slope;
-        *hi = rg->year_max[rg->years] + (j - rg->years) * rg->max_end_slope;
-    }
-}

@@ -116,10 +116,36 @@ static inline double sk__rings_T(const sk__rings *rg, double r, double theta, do
 }
 
 /* Mean over theta of R(t, theta). */
-double sk__rings_mean(const sk__rings *rg, double t);
+static inline double sk__rings_mean(const sk__rings *rg, double t)
+{
+    if (t <= 0.0) return 0.0;
+    double u = t * rg->inv_dt;
+    if (u >= (double)(rg->nt - 1)) return rg->mean[rg->nt - 1] + (t - rg->t_max) * rg->mean_end_slope;
+    int i = (int)u;
+    double a = u - i;
+    return rg->mean[i] + a * ((double)rg->mean[i + 1] - rg->mean[i]);
+}
+
 /* Bound on |dR/dtheta| over the whole ring at the whole year j >= 0. */
-double sk__rings_lipschitz(const sk__rings *rg, int j);
+static inline double sk__rings_lipschitz(const sk__rings *rg, int j)
+{
+    if (j < 0) return 0.0;
+    if (j <= rg->years) return rg->lipschitz[j];
+    return rg->lipschitz[rg->years] + (j - rg->years) * rg->lipschitz_end_slope;
+}
+
 /* Smallest and largest R(j, theta) over theta at the whole year j >= 0. */
-void sk__rings_year_bounds(const sk__rings *rg, int j, double *lo, double *hi);
+static inline void sk__rings_year_bounds(const sk__rings *rg, int j, double *lo, double *hi)
+{
+    if (j <= 0) {
+        *lo = *hi = 0.0;
+    } else if (j <= rg->years) {
+        *lo = rg->year_min[j];
+        *hi = rg->year_max[j];
+    } else {
+        *lo = rg->year_min[rg->years] + (j - rg->years) * rg->min_end_slope;
+        *hi = rg->year_max[rg->years] + (j - rg->years) * rg->max_end_slope;
+    }
+}
 
 #endif

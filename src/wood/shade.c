@@ -34,6 +34,8 @@ void sk__shading_init(sk__shading *s, const sk_wood_desc *desc)
     s->kd = d->diffuse;
     s->ks = d->specular;
     s->exponent = d->exponent;
+    /* ks c^n >= 1e-7 needs c >= (1e-7 / ks)^(1 / n); with no specular term, never */
+    s->cos_floor = s->ks > 0.0 ? pow(1e-7 / s->ks, 1.0 / s->exponent) : 2.0;
     s->fibre_strength = d->fibre_strength;
     s->fibre_width = d->fibre_width;
     s->ior = d->finish_ior;

@@ -9,6 +9,7 @@
 typedef struct sk__shading {
     sk_wood_shading_model model;
     double kd, ks, exponent;
+    double cos_floor; /* cos(delta - alpha) below which ks cos^n < 1e-7 (skipped) */
     double fibre_strength, fibre_width, ior, finish_exponent;
     sk_vec3f fibre_color; /* linear */
 } sk__shading;
@@ -32,7 +33,7 @@ static inline sk_vec3f sk__shade_figure(const sk__shading *s, const sk_wood_samp
     sin_a = sin_a < -1.0 ? -1.0 : (sin_a > 1.0 ? 1.0 : sin_a);
     double c = (cos_i * sqrt(1.0 - sin_a * sin_a) + l_up * sin_a) / h;
     double spec = 0.0;
-    if (c > 0.0 && s->ks > 0.0) spec = s->ks * sk__pow(c, s->exponent) * (1.0 - sample->vessel);
+    if (c > s->cos_floor) spec = s->ks * sk__pow(c, s->exponent) * (1.0 - sample->vessel);
     float diffuse = (float)(s->kd * cos_i);
     return sk_v3f(sample->albedo.x * diffuse + (float)spec, sample->albedo.y * diffuse + (float)spec,
                   sample->albedo.z * diffuse + (float)spec);

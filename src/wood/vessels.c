@@ -111,32 +111,43 @@ bool sk__diffuse_cell_vessel(const sk__vessels *v, int64_t cx, int64_t cz, sk__v
     return true;
 }
 
+/* Coverage contribution of the vessel of cell (cx, cz) at (x0, z0). */
+static inline double cell_cover(const sk__vessels *v, int64_t cx, int64_t cz, double x0,
+                                double z0, double reach2, double fw)
+{
+    double x, z;
+    uint64_t h;
+    cell_vessel(v, cx, cz, &x, &z, &h);
+    double d2 = (x - x0) * (x - x0) + (z - z0) * (z - z0);
+    if (d2 >= reach2) return 0.0;
+    return sk__vessel_cover(sqrt(d2), cell_radius(v, h), fw);
+}
+
 static double diffuse_coverage(const sk__vessels *v, double x0, double z0, double fw)
 {
     const sk__diffuse_index *di = &v->diffuse;
-    double reach = sk__vessel_reach(di->size.hi, fw), best = 0.0;
+    double reach = sk__vessel_reach(di->size.hi, fw), reach2 = reach * reach, best = 0.0;
+    double ux = x0 * di->inv_cell, uz = z0 * di->inv_cell;
+    int64_t hx = sk__floor_i64(ux), hz = sk__floor_i64(uz);
+    if (reach <= 0.5 * di->cell) {
+        /* A vessel of the home cell's neighbours can reach the point only from the side of
+           the point's quadrant: the 2 x 2 block of cells around that corner is all. */
+        int64_t nx = hx + (ux - (double)hx < 0.5 ? -1 : 1);
+        int64_t nz = hz + (uz - (double)hz < 0.5 ? -1 : 1);
+        double c[4] = {cell_cover(v, hx, hz, x0, z0, reach2, fw), cell_cover(v, nx, hz, x0, z0, reach2, fw),
+                       cell_cover(v, hx, nz, x0, z0, reach2, fw), cell_cover(v, nx, nz, x0, z0, reach2, fw)};
+        double a = c[0] > c[1] ? c[0] : c[1], b = c[2] > c[3] ? c[2] : c[3];
+        return a > b ? a : b;
+    }
     int64_t cx0 = sk__floor_i64((x0 - reach) * di->inv_cell);
     int64_t cx1 = sk__floor_i64((x0 + reach) * di->inv_cell);
     int64_t cz0 = sk__floor_i64((z0 - reach) * di->inv_cell);
     int64_t cz1 = sk__floor_i64((z0 + reach) * di->inv_cell);
-    double reach2 = reach * reach;
-    for (int64_t cx = cx0; cx <= cx1; cx++) {
-        /* distance from x0 to the cell column, 0 inside it */
-        double left = (double)cx * di->cell, gx = x0 < left ? left - x0 : x0 - (left + di->cell);
-        gx = gx > 0.0 ? gx * gx : 0.0;
+    for (int64_t cx = cx0; cx <= cx1; cx++)
         for (int64_t cz = cz0; cz <= cz1; cz++) {
-            double bottom = (double)cz * di->cell;
-            double gz = z0 < bottom ? bottom - z0 : z0 - (bottom + di->cell);
-            if (gx + (gz > 0.0 ? gz * gz : 0.0) >= reach2) continue; /* cell out of reach */
-            double x, z;
-            uint64_t h;
-            cell_vessel(v, cx, cz, &x, &z, &h);
-            double d2 = (x - x0) * (x - x0) + (z - z0) * (z - z0);
-            if (d2 >= reach2) continue;
-            double c = sk__vessel_cover(sqrt(d2), cell_radius(v, h), fw);
+            double c = cell_cover(v, cx, cz, x0, z0, reach2, fw);
             if (c > best) best = c;
         }
-    }
     return best;
 }
 
@@ -145,7 +156,7 @@ static double diffuse_coverage(const sk__vessels *v, double x0, double z0, doubl
 int sk__ring_vessel_count(const sk__ring_index *ri, const sk__rings *rings, int j)
 {
     if (!ri->on || j <= 0) return 0;
-    return (int)lround(ri->density * sk__rings_mean(rings, j));
+    return (int)(ri->density * sk__rings_mean(rings, j) + 0.5); /* round; both >= 0 */
 }
 
 void sk__ring_vessel(const sk__vessels *v, const sk__rings *rings, int j, int row, int k,
@@ -207,10 +218,12 @@ static double ring_porous_coverage(const sk__vessels *v, const sk__rings *rings,
 {
     const sk__ring_index *ri = &v->ring;
     double reach = sk__vessel_reach(ri->size.hi, fw);
-    /* every point within `reach` of p0 lies within `window` of its angle */
-    double window = r0 > reach ? asin(reach / r0) * (1.0 + 1e-9) + 1e-12 : SK_PI;
+    /* every point within `reach` of p0 lies within asin(reach / r0) of its angle; for
+       reach / r0 <= 1/2 that is below 1.05 reach / r0 */
+    double q = reach / r0;
+    double window = r0 > 2.0 * reach ? 1.05 * q + 1e-12 : SK_PI;
     double best = 0.0;
-    int j0 = (int)floor(t);
+    int j0 = (int)t; /* t >= 0 */
     if (j0 < 1) j0 = 1;
     /* Downwards: R(j', theta) <= R(j, theta) for j' <= j, so once ring j's centres fall
        short of r0 - reach no lower ring can reach p0. */

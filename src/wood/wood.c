@@ -57,72 +57,100 @@ sk_result sk_wood_create(const sk_wood_desc *desc, sk_wood **out, sk_error *err)
     return SK_OK;
 }
 
-void sk_wood_eval_filtered(const sk_wood *w, sk_vec3f point, sk_vec3f normal, float footprint_mm,
-                           sk_wood_sample *s)
+/* Evaluates `count` (<= SK__WOOD_BATCH) points sharing one normal stage by stage: each
+ * stage's loop has no dependence between points, so the processor overlaps them. One
+ * point or many, every point gets the same arithmetic. */
+void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk_vec3f normal,
+                         float footprint_mm, sk_wood_sample *out)
 {
+    double r[SK__WOOD_BATCH], y[SK__WOOD_BATCH], cos_t[SK__WOOD_BATCH], sin_t[SK__WOOD_BATCH];
+    double t[SK__WOOD_BATCH], width[SK__WOOD_BATCH], dR[SK__WOOD_BATCH], theta[SK__WOOD_BATCH];
+    double G[SK__WOOD_BATCH], phi[SK__WOOD_BATCH], theta0[SK__WOOD_BATCH], r0[SK__WOOD_BATCH];
+    double x0[SK__WOOD_BATCH], z0[SK__WOOD_BATCH];
     sk_vec3f n = sk_v3f_normalize(normal);
-    sk_vec3f p = sk__wood_frame_point_to_tree(&w->frame, point);
-    double x = p.x, y = p.y, z = p.z;
-    double r = sqrt(x * x + z * z);
-    double cos_t = r > 0.0 ? x / r : 1.0, sin_t = r > 0.0 ? z / r : 0.0;
+    sk_vec3f nt = sk__wood_frame_dir_to_tree(&w->frame, n);
     /* Round rings (no fluctuation) do not depend on theta: no angle is needed, and the
        end-grain point is the point turned back by phi. */
     bool round = w->rings.ntheta == 1;
-    double theta = round ? 0.0 : sk__atan2(z, x);
-    double width, dR;
-    double t = sk__rings_T(&w->rings, r, theta, &width, &dR);
+    bool need_theta0 = !round || w->vessels.ring.on || w->attr.shift > 0.0;
+
+    /* into the tree frame; t = T(r, theta) (sec. 4.4) */
+    for (int i = 0; i < count; i++) {
+        sk_vec3f p = sk__wood_frame_point_to_tree(&w->frame, points[i]);
+        double x = p.x, z = p.z;
+        y[i] = p.y;
+        r[i] = sqrt(x * x + z * z);
+        cos_t[i] = r[i] > 0.0 ? x / r[i] : 1.0;
+        sin_t[i] = r[i] > 0.0 ? z / r[i] : 0.0;
+        theta[i] = round ? 0.0 : sk__atan2(z, x);
+        t[i] = sk__rings_T(&w->rings, r[i], theta[i], &width[i], &dR[i]);
+    }
     /* eq. (3): the fibre through (r, theta, y) left the end grain at theta0 = theta - phi */
-    double G;
-    double phi = sk__phase_phi(sk__phase_eval(&w->grain, t, y, &G), r);
-    double phi_mod = phi - 2.0 * SK_PI * sk__floor_d(phi * (0.5 / SK_PI));
-    double sin_p, cos_p;
-    sk__sincos(phi_mod, &sin_p, &cos_p);
-    double dir_x = cos_t * cos_p + sin_t * sin_p, dir_z = sin_t * cos_p - cos_t * sin_p;
-    double theta0, r0;
-    if (round) {
-        r0 = r;
-        theta0 = w->vessels.ring.on || w->attr.shift > 0.0 ? sk__atan2(dir_z, dir_x) : 0.0;
-        if (theta0 < 0.0) theta0 += 2.0 * SK_PI;
-    } else {
-        theta0 = theta - phi_mod;
-        theta0 -= 2.0 * SK_PI * sk__floor_d(theta0 * (0.5 / SK_PI));
-        r0 = sk__rings_R(&w->rings, t, theta0);
+    for (int i = 0; i < count; i++) {
+        phi[i] = sk__phase_phi(sk__phase_eval(&w->grain, t[i], y[i], &G[i]), r[i]);
+        double phi_mod = phi[i] - 2.0 * SK_PI * sk__floor_d(phi[i] * (0.5 / SK_PI));
+        double sin_p, cos_p;
+        sk__sincos(phi_mod, &sin_p, &cos_p);
+        double dir_x = cos_t[i] * cos_p + sin_t[i] * sin_p;
+        double dir_z = sin_t[i] * cos_p - cos_t[i] * sin_p;
+        if (round) {
+            r0[i] = r[i];
+            theta0[i] = need_theta0 ? sk__atan2(dir_z, dir_x) : 0.0;
+            if (theta0[i] < 0.0) theta0[i] += 2.0 * SK_PI;
+        } else {
+            double a = theta[i] - phi_mod;
+            theta0[i] = a - 2.0 * SK_PI * sk__floor_d(a * (0.5 / SK_PI));
+            r0[i] = sk__rings_R(&w->rings, t[i], theta0[i]);
+        }
+        x0[i] = r0[i] * dir_x;
+        z0[i] = r0[i] * dir_z;
     }
-    double x0 = r0 * dir_x, z0 = r0 * dir_z;
-
-    /* C'(t, theta0): ring profile, box-filtered over the footprint's span of t along the
-       surface (the radial direction's part in the surface over the ring width) */
-    sk_vec3f nt = sk__wood_frame_dir_to_tree(&w->frame, n);
-    double half = 0.0;
-    if (footprint_mm > 0.0f) {
-        double er_n = cos_t * nt.x + sin_t * nt.z;
-        double tangential = 1.0 - er_n * er_n;
-        half = 0.5 * footprint_mm * sqrt(tangential > 0.0 ? tangential : 0.0) / width;
+    /* C'(t, theta0): the ring profile, box-filtered over the footprint's span of t along
+       the surface (the radial direction's part in the surface over the ring width), and
+       the cell's brightness shift (sec. 6.3) */
+    for (int i = 0; i < count; i++) {
+        double half = 0.0;
+        if (footprint_mm > 0.0f) {
+            double er_n = cos_t[i] * nt.x + sin_t[i] * nt.z;
+            double tangential = 1.0 - er_n * er_n;
+            half = 0.5 * footprint_mm * sqrt(tangential > 0.0 ? tangential : 0.0) / width[i];
+        }
+        double late = sk__attributes_latewood(&w->attr, t[i], half);
+        double shift = sk__attributes_shift(&w->attr, t[i], theta0[i], y[i]);
+        sk_vec3f ring = sk_v3f_lerp(w->attr.earlywood, w->attr.latewood, (float)late);
+        out[i].albedo = sk_v3f_scale(ring, (float)shift);
+        out[i].latewood = (float)late;
     }
-    double late = sk__attributes_latewood(&w->attr, t, half);
-    double shift = sk__attributes_shift(&w->attr, t, theta0, y);
-    double vessel = sk__vessels_coverage(&w->vessels, &w->rings, x0, z0, r0, theta0, t,
-                                         footprint_mm);
-    sk_vec3f ring = sk_v3f_lerp(w->attr.earlywood, w->attr.latewood, (float)late);
-    sk_vec3f wood = sk_v3f_scale(ring, (float)shift);
-    s->albedo = sk_v3f_lerp(wood, w->attr.vessel, (float)vessel);
-    s->vessel = (float)vessel;
-    s->t = (float)t;
-    s->latewood = (float)late;
-    s->phase = (float)phi;
-
+    /* vessels (sec. 5) */
+    for (int i = 0; i < count; i++) {
+        double vessel = sk__vessels_coverage(&w->vessels, &w->rings, x0[i], z0[i], r0[i],
+                                             theta0[i], t[i], footprint_mm);
+        out[i].albedo = sk_v3f_lerp(out[i].albedo, w->attr.vessel, (float)vessel);
+        out[i].vessel = (float)vessel;
+    }
     /* the fibre through the point and its dive under the surface (sec. 7.1) */
-    sk_vec3d f = sk__fibre_direction(G, dR, r, cos_t, sin_t);
-    s->fibre = sk__wood_frame_dir_to_scene(&w->frame, sk_v3d_to_f(f));
-    s->dive = (float)sk__fibre_dive(s->fibre, n);
     sk_vec3f up = sk_v3f_sub(w->axis, sk_v3f_scale(n, sk_v3f_dot(w->axis, n)));
     float len = sk_v3f_length(up);
     if (len > 1e-6f) {
-        s->up = sk_v3f_scale(up, 1.0f / len);
+        up = sk_v3f_scale(up, 1.0f / len);
     } else {
         sk_vec3f b;
-        sk_v3f_basis(n, &s->up, &b);
+        sk_v3f_basis(n, &up, &b);
     }
+    for (int i = 0; i < count; i++) {
+        sk_vec3d f = sk__fibre_direction(G[i], dR[i], r[i], cos_t[i], sin_t[i]);
+        out[i].fibre = sk__wood_frame_dir_to_scene(&w->frame, sk_v3d_to_f(f));
+        out[i].dive = (float)sk__fibre_dive(out[i].fibre, n);
+        out[i].up = up;
+        out[i].t = (float)t[i];
+        out[i].phase = (float)phi[i];
+    }
+}
+
+void sk_wood_eval_filtered(const sk_wood *w, sk_vec3f point, sk_vec3f normal, float footprint_mm,
+                           sk_wood_sample *s)
+{
+    sk__wood_eval_batch(w, 1, &point, normal, footprint_mm, s);
 }
 
 void sk_wood_eval(const sk_wood *wood, sk_vec3f point, sk_vec3f normal, sk_wood_sample *sample)

@@ -22,4 +22,11 @@ struct sk_wood {
     sk_wood_stats stats;
 };
 
+/* Points evaluated together by sk__wood_eval_batch. */
+#define SK__WOOD_BATCH 16
+
+/* sk_wood_eval_filtered for `count` <= SK__WOOD_BATCH points with one normal. */
+void sk__wood_eval_batch(const sk_wood *wood, int count, const sk_vec3f *points, sk_vec3f normal,
+                         float footprint_mm, sk_wood_sample *out);
+
 #endif
