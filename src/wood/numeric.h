@@ -1,8 +1,8 @@
 /* Small numeric helpers for the wood module's per-sample code: floor, hashing and the
- * elementary functions without library calls. At -O2 on x86-64 floor(), atan2(), sin(),
- * exp() are calls the compiler cannot schedule across; these inline versions use classic
- * range reductions and short Taylor series, with errors below 1e-9 (absolute, or
- * relative for exp), far under the single-precision data they feed. */
+ * elementary functions without library calls. At -O2 on x86-64 floor(), atan2() and
+ * sin() are calls the compiler cannot schedule across; these inline versions use classic
+ * range reductions, a small table and short series, with errors below 1e-9, far under the
+ * single-precision data they feed. */
 #ifndef SK_WOOD_NUMERIC_H
 #define SK_WOOD_NUMERIC_H
 
@@ -52,21 +52,22 @@ static inline double sk__atan2(double y, double x)
     return y < 0.0 ? -a : a;
 }
 
-/* sin and cos of x (|x| < 1e6): x = k pi/2 + r with |r| <= pi/4 (pi/2 split in two parts
- * so r keeps its precision), then the Taylor series of sin r and cos r (to r^11, r^12). */
+/* sin and cos of 2 pi k / 256, k = 0 .. 255 (numeric.c). */
+extern const double sk__sin_cos_table[256][2];
+
+/* sin and cos of x (|x| < 1e9): x = k pi/128 + b with |b| <= pi/256 (pi/128 split in two
+ * parts so b keeps its precision), the table at k, and the series of sin b and cos b
+ * (errors below 1e-17) joined by the addition formulas. */
 static inline void sk__sincos(double x, double *s, double *c)
 {
-    double kf = (double)sk__floor_i64(x * 0.63661977236758134 + 0.5);
-    double r = (x - kf * 1.5707963267341256) - kf * 6.0771005065061922e-11;
-    double r2 = r * r;
-    double sr = r * (1.0 + r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880 + r2 * (-1.0 / 39916800))))));
-    double cr = 1.0 + r2 * (-0.5 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800 + r2 * (1.0 / 479001600))))));
-    switch ((int64_t)kf & 3) {
-    case 0: *s = sr; *c = cr; break;
-    case 1: *s = cr; *c = -sr; break;
-    case 2: *s = -sr; *c = -cr; break;
-    default: *s = -cr; *c = sr; break;
-    }
+    int64_t k = sk__floor_i64(x * 40.743665431525208 + 0.5);
+    double kf = (double)k;
+    double b = (x - kf * 0.024543692605220713) - kf * 9.495469541415925e-13, b2 = b * b;
+    double sb = b * (1.0 + b2 * (-1.0 / 6 + b2 * (1.0 / 120)));
+    double cb = 1.0 + b2 * (-0.5 + b2 * (1.0 / 24 + b2 * (-1.0 / 720)));
+    const double *t = sk__sin_cos_table[k & 255];
+    *s = t[0] * cb + t[1] * sb;
+    *c = t[1] * cb - t[0] * sb;
 }
 
 /* asin(x) for |x| <= 1: the Taylor series on |x| <= 1/2 (to x^23, error < 2e-10), and
@@ -81,41 +82,5 @@ static inline double sk__asin(double x)
     if (big) p = 1.5707963267948966 - 2.0 * p;
     return x < 0.0 ? -p : p;
 }
-
-/* exp(x) for x in [-700, 700] (clamped): x = k ln 2 + r with |r| <= ln(2) / 2, the series
- * of e^r to r^9, and 2^k put into the exponent bits. */
-static inline double sk__exp(double x)
-{
-    x = x < -700.0 ? -700.0 : (x > 700.0 ? 700.0 : x);
-    double kf = (double)sk__floor_i64(x * 1.4426950408889634 + 0.5);
-    double r = (x - kf * 0.69314718036912382) - kf * 1.9082149292705877e-10;
-    double e = 1.0 + r * (1.0 + r * (1.0 / 2 + r * (1.0 / 6 + r * (1.0 / 24 + r * (1.0 / 120 + r * (1.0 / 720 + r * (1.0 / 5040 + r * (1.0 / 40320 + r * (1.0 / 362880)))))))));
-    uint64_t bits = (uint64_t)((int64_t)kf + 1023) << 52;
-    double scale;
-    memcpy(&scale, &bits, sizeof scale);
-    return e * scale;
-}
-
-/* log(x) for normal x > 0: x = m 2^e with m in [sqrt(1/2), sqrt(2)), then
- * log m = 2 atanh(s), s = (m - 1) / (m + 1), |s| <= 0.172, by its series to s^13. */
-static inline double sk__log(double x)
-{
-    uint64_t bits;
-    memcpy(&bits, &x, sizeof bits);
-    int64_t e = (int64_t)((bits >> 52) & 0x7ff) - 1023;
-    bits = (bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
-    double m;
-    memcpy(&m, &bits, sizeof m);
-    if (m > 1.4142135623730951) {
-        m *= 0.5;
-        e++;
-    }
-    double s = (m - 1.0) / (m + 1.0), s2 = s * s;
-    double l = 2.0 * s * (1.0 + s2 * (1.0 / 3 + s2 * (1.0 / 5 + s2 * (1.0 / 7 + s2 * (1.0 / 9 + s2 * (1.0 / 11 + s2 * (1.0 / 13)))))));
-    return l + (double)e * 0.69314718055994531;
-}
-
-/* x^n for x > 0. */
-static inline double sk__pow(double x, double n) { return sk__exp(n * sk__log(x)); }
 
 #endif

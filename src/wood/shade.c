@@ -36,6 +36,10 @@ void sk__shading_init(sk__shading *s, const sk_wood_desc *desc)
     s->exponent = d->exponent;
     /* ks c^n >= 1e-7 needs c >= (1e-7 / ks)^(1 / n); with no specular term, never */
     s->cos_floor = s->ks > 0.0 ? pow(1e-7 / s->ks, 1.0 / s->exponent) : 2.0;
+    double step = (1.0 - (s->cos_floor < 1.0 ? s->cos_floor : 0.0)) / SK__POW_TABLE;
+    s->inv_step = 1.0 / step;
+    for (int i = 0; i <= SK__POW_TABLE; i++)
+        s->ks_pow[i] = s->ks > 0.0 ? s->ks * pow(s->cos_floor + i * step, s->exponent) : 0.0;
     s->fibre_strength = d->fibre_strength;
     s->fibre_width = d->fibre_width;
     s->ior = d->finish_ior;
