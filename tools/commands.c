@@ -3,20 +3,20 @@
 
 extern const cli_command cmd_presets;
 extern const cli_command cmd_noise;
+extern const cli_command cmd_sheet;
 extern const cli_command cmd_hand_pose;
 extern const cli_command cmd_hand_animate;
 extern const cli_command cmd_hand_calibrate;
-extern const cli_command cmd_sheet;
 extern const cli_command cmd_wood_cut;
 extern const cli_command cmd_wood_sweep;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
     &cmd_noise,
+    &cmd_sheet,
     &cmd_hand_pose,
     &cmd_hand_animate,
     &cmd_hand_calibrate,
-    &cmd_sheet,
     &cmd_wood_cut,
     &cmd_wood_sweep,
     NULL,
