@@ -79,7 +79,8 @@ typedef struct sk_wood_grain_desc {
     float fluctuation_years;        /* correlation of dg across growth years; 0 = 5; [0.25, 1000] */
 } sk_wood_grain_desc;
 
-/* Diffuse-porous vessels (sec. 5.3): centres uniform over the end grain. */
+/* Diffuse-porous vessels (sec. 5.3): n = rho x area centres uniform over the end grain,
+ * one in each cell of a square grid of cell area 1 / rho (spread like real pores). */
 typedef struct sk_wood_diffuse_vessels {
     float density_per_mm2; /* rho; default 0 = none; [0, 400] */
     float radius_mm;       /* mean radius; 0 = 0.03; [0.002, 2] */
@@ -142,7 +143,8 @@ typedef struct sk_wood_shading_desc {
 
 typedef enum sk_wood_plane {
     SK_WOOD_PLANE_DEFAULT = 0, /* = FLAT */
-    SK_WOOD_PLANE_END,         /* cross-cut: normal along the tree axis, image up = tree z */
+    SK_WOOD_PLANE_END,         /* cross-cut: normal along the tree axis, image x = tree x,
+                                  image up = -tree z */
     SK_WOOD_PLANE_FLAT,        /* flat-sawn (tangential): plane z = distance, image up = tree top */
     SK_WOOD_PLANE_QUARTER,     /* quarter-sawn (radial): plane z = 0, centred at x = distance */
     SK_WOOD_PLANE_COUNT
@@ -196,10 +198,11 @@ extern const sk_schema sk_wood_schema;
 
 typedef struct sk_wood sk_wood;
 
-/* Sets up the tree: ring tables R and T, the phase table Phi(t, y), the per-ring vessel
- * index and the Poisson table of the diffuse vessel grid. Fails with the validation
- * message on a bad desc, SK_ERROR_LIMIT if the log needs more than SK_WOOD_MAX_RINGS
- * rings. */
+/* Sets up the tree: ring tables R and T (with their search index and per-ring bounds for
+ * the ring-porous vessel index), the phase table Phi(t, y) and the shading tables.
+ * Vessels are generated from hashes on demand, so their number costs no memory. Fails
+ * with the validation message on a bad desc, SK_ERROR_LIMIT if the log needs more than
+ * SK_WOOD_MAX_RINGS rings. */
 #define SK_WOOD_MAX_RINGS 4096
 sk_result sk_wood_create(const sk_wood_desc *desc, sk_wood **out, sk_error *err);
 void sk_wood_destroy(sk_wood *wood);
@@ -244,12 +247,15 @@ void sk_wood_eval_filtered(const sk_wood *wood, sk_vec3f point, sk_vec3f normal,
  * the surface point; `normal` the unit surface normal), linear RGB, by the desc's shading
  * model:
  *  FIGURE: albedo kd cos(delta) + ks cos^n(delta - alpha) (1 - vessel), with
- *          delta = atan2(light . up, light . normal) and the diffuse cosine light . normal
- *          (both 0 when the light is below the surface); `view` is not used (eq. 4 was
- *          derived for a view along the normal);
- *  FIBRE:  (see sk_wood_shade_fibre in the docs) cos(theta_i) times the sum of the finish's
- *          Fresnel-weighted highlight and, through the finish, the diffuse albedo / pi and
- *          the fibre lobe k_f g(beta, psi_h) / cos^2(psi_d / 2). */
+ *          delta = atan2(light . up, light . normal), alpha = asin(-fibre . normal) (the
+ *          sample's dive when it was evaluated with this normal) and the diffuse cosine
+ *          light . normal (0 when the light is below the surface); `view` is not used
+ *          (eq. 4 was derived for a view along the normal);
+ *  FIBRE:  pi cos(theta_i) times the sum of the finish's Fresnel-weighted Blinn-Phong
+ *          highlight and, through the finish (Fresnel transmittances in and out), the
+ *          diffuse albedo / pi and the fibre lobe k_f g(beta, psi_h) / cos^2(psi_d / 2) /
+ *          eta^2 on the cone around the sample's fibre (Marschner et al. 2005).
+ * Both give 1 for a white diffuse surface lit along its normal. Thread-safe. */
 sk_vec3f sk_wood_shade(const sk_wood *wood, const sk_wood_sample *sample, sk_vec3f normal,
                        sk_vec3f light, sk_vec3f view);
 

@@ -159,18 +159,34 @@ int sk__ring_vessel_count(const sk__ring_index *ri, const sk__rings *rings, int 
     return (int)(ri->density * sk__rings_mean(rings, j) + 0.5); /* round; both >= 0 */
 }
 
+/* The angle of vessel k (of n) in a row of ring j; `h` receives its hash. */
+static inline double ring_vessel_angle(const sk__ring_index *ri, int n, int j, int row, int k,
+                                       uint64_t *h)
+{
+    *h = sk__wood_hash(ri->seed, j, row, k);
+    return 2.0 * SK_PI * ((double)k + ri->jitter * (unit_hi(*h) - 0.5)) / n;
+}
+
+/* The rest of a ring vessel: its distance past the ring boundary, centre and radius. */
+static inline void ring_vessel_place(const sk__vessels *v, const sk__rings *rings, int j, int row,
+                                     uint64_t h, double theta, sk__vessel *out)
+{
+    const sk__ring_index *ri = &v->ring;
+    double offset = ri->pitch * (row + 0.5) + ri->jitter * (unit_lo(h) - 0.5) * ri->pitch * 0.5;
+    double radial = sk__rings_R(rings, (double)j, theta) + offset, s, c;
+    sk__sincos(theta, &s, &c);
+    out->x = radial * c;
+    out->z = radial * s;
+    out->radius = draw_radius(v, &ri->size, sk_u64_to_unit_d(sk_mix64(h ^ 0x5851f42d4c957f2dULL)));
+}
+
 void sk__ring_vessel(const sk__vessels *v, const sk__rings *rings, int j, int row, int k,
                      sk__vessel *out)
 {
-    const sk__ring_index *ri = &v->ring;
-    int n = sk__ring_vessel_count(ri, rings, j);
-    uint64_t h = sk__wood_hash(ri->seed, j, row, k);
-    double theta = 2.0 * SK_PI * ((double)k + ri->jitter * (unit_hi(h) - 0.5)) / n;
-    double offset = ri->pitch * (row + 0.5) + ri->jitter * (unit_lo(h) - 0.5) * ri->pitch * 0.5;
-    double radial = sk__rings_R(rings, (double)j, theta) + offset;
-    out->x = radial * cos(theta);
-    out->z = radial * sin(theta);
-    out->radius = draw_radius(v, &ri->size, sk_u64_to_unit_d(sk_mix64(h ^ 0x5851f42d4c957f2dULL)));
+    uint64_t h;
+    int n = sk__ring_vessel_count(&v->ring, rings, j);
+    double theta = ring_vessel_angle(&v->ring, n, j, row, k, &h);
+    ring_vessel_place(v, rings, j, row, h, theta, out);
 }
 
 /* Coverage from ring j's rows for vessels within `window` radians of theta0. */
@@ -181,18 +197,24 @@ static double ring_coverage(const sk__vessels *v, const sk__rings *rings, int j,
     int n = sk__ring_vessel_count(ri, rings, j);
     if (n == 0) return 0.0;
     double per = n / (2.0 * SK_PI), half = 0.5 * ri->jitter;
-    double klo = ceil((theta0 - window) * per - half), khi = floor((theta0 + window) * per + half);
-    long long first = (long long)klo, last = (long long)khi;
-    if (khi - klo + 1.0 >= n) {
+    int64_t first = -sk__floor_i64(-((theta0 - window) * per - half)); /* ceil */
+    int64_t last = sk__floor_i64((theta0 + window) * per + half);
+    if (last - first + 1 >= n) {
         first = 0;
         last = n - 1;
     }
     double best = 0.0;
     for (int row = 0; row < ri->rows; row++)
-        for (long long kk = first; kk <= last; kk++) {
+        for (int64_t kk = first; kk <= last; kk++) {
             int k = (int)(((kk % n) + n) % n);
+            uint64_t h;
+            double theta = ring_vessel_angle(ri, n, j, row, k, &h);
+            /* a vessel that could reach p0 lies within `window` of its angle */
+            double d = theta - theta0;
+            d -= 2.0 * SK_PI * sk__floor_d(d * (0.5 / SK_PI) + 0.5);
+            if (d > window || d < -window) continue;
             sk__vessel vs;
-            sk__ring_vessel(v, rings, j, row, k, &vs);
+            ring_vessel_place(v, rings, j, row, h, theta, &vs);
             double d2 = (vs.x - x0) * (vs.x - x0) + (vs.z - z0) * (vs.z - z0);
             if (d2 >= reach * reach) continue;
             double c = sk__vessel_cover(sqrt(d2), vs.radius, fw);
