@@ -51,6 +51,106 @@ void sk_wood_view_cut(const sk_wood *wood, const sk_wood_view_desc *view_in, sk_
     cut->view_incidence = view->view_incidence;
 }
 
+/* Everything a planar cut's pixels share. */
+typedef struct cut_context {
+    const sk_wood *wood;
+    const sk_wood_cut_desc *desc;
+    sk_vec3f n, a, up, light, view; /* unit normal, image right and up; light and view */
+    int rx, ry, rw;                 /* region origin and width */
+    int S;                          /* samples per pixel along each axis */
+    double inv_W, inv_H, width_mm, height_mm;
+    double sub[8];                  /* (s + 0.5) / S: sample offsets inside a pixel */
+    int pixel_of[SK__WOOD_BATCH], sub_of[SK__WOOD_BATCH]; /* sample j of a span: pixel, column */
+    float footprint, inv;          /* sample footprint (mm); 1 / samples per pixel */
+    bool figure, lit;              /* eq. (4) shading; light above the surface */
+    sk__figure_light fl;
+    unsigned flags;
+} cut_context;
+
+/* Renders `pixels` (<= SK__WOOD_BATCH / S) pixels of region row yy from region column x0. */
+static void render_span(const cut_context *c, int yy, int x0, int pixels)
+{
+    const sk_wood_cut_desc *desc = c->desc;
+    const sk_wood *wood = c->wood;
+    sk_vec3f n = c->n, a = c->a, up = c->up;
+    sk_vec3f shaded[SK__WOOD_BATCH], albedo[SK__WOOD_BATCH], fibre[SK__WOOD_BATCH];
+    float vessel[SK__WOOD_BATCH], dive[SK__WOOD_BATCH];
+    sk_vec3f points[SK__WOOD_BATCH];
+    sk_wood_sample s[SK__WOOD_BATCH];
+    int Y = c->ry + yy, count = pixels * c->S;
+    for (int k = 0; k < pixels; k++) {
+        shaded[k] = albedo[k] = fibre[k] = sk_v3f(0, 0, 0);
+        vessel[k] = dive[k] = 0.0f;
+    }
+    for (int sy = 0; sy < c->S; sy++) {
+        /* the pixel position depends only on (X, Y): regions match the image */
+        double fy = 0.5 - (Y + c->sub[sy]) * c->inv_H;
+        sk_vec3f row = sk_v3f_add(desc->point, sk_v3f_scale(up, (float)(fy * c->height_mm)));
+        for (int j = 0; j < count; j++) {
+            double fx = (c->rx + x0 + c->pixel_of[j] + c->sub[c->sub_of[j]]) * c->inv_W - 0.5;
+            points[j] = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * c->width_mm)));
+        }
+        sk__wood_eval_batch(wood, count, points, n, c->footprint, c->flags, s);
+        if (desc->shaded)
+            for (int j = 0; j < count; j++) {
+                sk_vec3f col;
+                if (!c->figure)
+                    col = sk__shade_fibre(&wood->shading, &s[j], n, c->light, c->view);
+                else if (c->lit)
+                    col = sk__shade_figure_lit(&wood->shading, &c->fl, s[j].albedo, s[j].vessel,
+                                               -(double)sk_v3f_dot(s[j].fibre, n));
+                else
+                    col = sk_v3f(0, 0, 0);
+                int k = c->pixel_of[j];
+                shaded[k] = sk_v3f_add(shaded[k], col);
+            }
+        if (desc->albedo)
+            for (int j = 0; j < count; j++) {
+                int k = c->pixel_of[j];
+                albedo[k] = sk_v3f_add(albedo[k], s[j].albedo);
+            }
+        if (desc->fibre)
+            for (int j = 0; j < count; j++) {
+                int k = c->pixel_of[j];
+                fibre[k] = sk_v3f_add(fibre[k], sk_v3f(sk_v3f_dot(s[j].fibre, a), sk_v3f_dot(s[j].fibre, up),
+                                                       sk_v3f_dot(s[j].fibre, n)));
+            }
+        if (desc->vessel)
+            for (int j = 0; j < count; j++) vessel[c->pixel_of[j]] += s[j].vessel;
+        if (desc->dive)
+            for (int j = 0; j < count; j++) dive[c->pixel_of[j]] += s[j].dive;
+    }
+    float inv = c->inv;
+    size_t px0 = (size_t)yy * (size_t)c->rw + (size_t)x0;
+    if (desc->shaded)
+        for (int k = 0; k < pixels; k++) {
+            float *o = desc->shaded + 3 * (px0 + (size_t)k);
+            o[0] = shaded[k].x * inv;
+            o[1] = shaded[k].y * inv;
+            o[2] = shaded[k].z * inv;
+        }
+    if (desc->albedo)
+        for (int k = 0; k < pixels; k++) {
+            float *o = desc->albedo + 3 * (px0 + (size_t)k);
+            o[0] = albedo[k].x * inv;
+            o[1] = albedo[k].y * inv;
+            o[2] = albedo[k].z * inv;
+        }
+    if (desc->fibre)
+        for (int k = 0; k < pixels; k++) {
+            float len = sk_v3f_length(fibre[k]);
+            sk_vec3f f = len > 0.0f ? sk_v3f_scale(fibre[k], 1.0f / len) : sk_v3f(0, 1, 0);
+            float *o = desc->fibre + 3 * (px0 + (size_t)k);
+            o[0] = 0.5f + 0.5f * f.x;
+            o[1] = 0.5f + 0.5f * f.y;
+            o[2] = 0.5f + 0.5f * f.z;
+        }
+    if (desc->vessel)
+        for (int k = 0; k < pixels; k++) desc->vessel[px0 + (size_t)k] = vessel[k] * inv;
+    if (desc->dive)
+        for (int k = 0; k < pixels; k++) desc->dive[px0 + (size_t)k] = dive[k] * inv;
+}
+
 sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_error *err)
 {
     if (!wood || !desc) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "wood cut: NULL argument");
@@ -86,76 +186,47 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "cut axis is zero or along the normal");
     a = sk_v3f_scale(a, 1.0f / alen);
     sk_vec3f up = sk_v3f_cross(n, a);
-    sk_vec3f light = tilt_towards(n, up, a, desc->light_incidence, desc->light_azimuth);
-    sk_vec3f view = tilt_towards(n, up, a, desc->view_incidence, 0.0);
     int S = desc->samples ? desc->samples : 1;
-    double W = desc->width, H = desc->height, inv_W = 1.0 / W, inv_H = 1.0 / H, inv_S = 1.0 / S;
-    double width_mm = desc->width_mm, height_mm = width_mm * H / W;
-    float footprint = (float)(width_mm / W / S);
-    float inv = 1.0f / (float)(S * S);
+    cut_context c;
+    c.wood = wood;
+    c.desc = desc;
+    c.n = n;
+    c.a = a;
+    c.up = up;
+    c.light = tilt_towards(n, up, a, desc->light_incidence, desc->light_azimuth);
+    c.view = tilt_towards(n, up, a, desc->view_incidence, 0.0);
+    c.rx = rx;
+    c.ry = ry;
+    c.rw = rw;
+    c.S = S;
+    double W = desc->width, H = desc->height;
+    c.inv_W = 1.0 / W;
+    c.inv_H = 1.0 / H;
+    double inv_S = 1.0 / S;
+    for (int k = 0; k < S; k++) c.sub[k] = (k + 0.5) * inv_S;
+    for (int j = 0; j < SK__WOOD_BATCH; j++) {
+        c.pixel_of[j] = j / S;
+        c.sub_of[j] = j % S;
+    }
+    c.width_mm = desc->width_mm;
+    c.height_mm = c.width_mm * H / W;
+    c.footprint = (float)(c.width_mm / W / S);
+    c.inv = 1.0f / (float)(S * S);
+    /* eq. (4)'s light terms are the same for every sample of the plane */
+    c.figure = wood->shading.model != SK_WOOD_SHADING_FIBRE;
+    c.fl = sk__figure_light_make(&wood->shading, n, sk__wood_surface_up(wood, sk_v3f_normalize(n)),
+                                 c.light);
+    c.lit = c.fl.cos_i > 0.0;
+    c.flags = desc->dive ? SK__WOOD_EVAL_DIVE : 0u;
+    int batch_pixels = SK__WOOD_BATCH / S;
 
     sk__loop_progress lp;
     sk__loop_progress_init(&lp, &desc->progress, rh);
 #pragma omp parallel for schedule(dynamic, 1)
     for (int yy = 0; yy < rh; yy++) {
-        int Y = ry + yy;
-        /* sample positions of the row, one sub-row at a time, in batches of points */
-        sk_vec3f shaded[SK__WOOD_BATCH], albedo[SK__WOOD_BATCH], fibre[SK__WOOD_BATCH];
-        float vessel[SK__WOOD_BATCH], dive[SK__WOOD_BATCH];
-        sk_vec3f points[SK__WOOD_BATCH];
-        sk_wood_sample s[SK__WOOD_BATCH];
-        for (int x0 = 0; x0 < rw; x0 += SK__WOOD_BATCH / S) {
-            int pixels = rw - x0 < SK__WOOD_BATCH / S ? rw - x0 : SK__WOOD_BATCH / S;
-            for (int k = 0; k < pixels; k++) {
-                shaded[k] = albedo[k] = fibre[k] = sk_v3f(0, 0, 0);
-                vessel[k] = dive[k] = 0.0f;
-            }
-            for (int sy = 0; sy < S; sy++) {
-                /* the pixel position depends only on (X, Y): regions match the image */
-                double fy = 0.5 - (Y + (sy + 0.5) * inv_S) * inv_H;
-                sk_vec3f row = sk_v3f_add(desc->point, sk_v3f_scale(up, (float)(fy * height_mm)));
-                int count = 0;
-                for (int k = 0; k < pixels; k++)
-                    for (int sx = 0; sx < S; sx++) {
-                        double fx = (rx + x0 + k + (sx + 0.5) * inv_S) * inv_W - 0.5;
-                        points[count++] = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * width_mm)));
-                    }
-                sk__wood_eval_batch(wood, count, points, n, footprint, s);
-                for (int j = 0; j < count; j++) {
-                    int k = j / S;
-                    if (desc->shaded)
-                        shaded[k] = sk_v3f_add(shaded[k], sk__shade(&wood->shading, &s[j], n, light, view));
-                    if (desc->albedo) albedo[k] = sk_v3f_add(albedo[k], s[j].albedo);
-                    if (desc->fibre)
-                        fibre[k] = sk_v3f_add(fibre[k], sk_v3f(sk_v3f_dot(s[j].fibre, a),
-                                                               sk_v3f_dot(s[j].fibre, up),
-                                                               sk_v3f_dot(s[j].fibre, n)));
-                    vessel[k] += s[j].vessel;
-                    dive[k] += s[j].dive;
-                }
-            }
-            for (int k = 0; k < pixels; k++) {
-                size_t px = (size_t)yy * (size_t)rw + (size_t)(x0 + k);
-                if (desc->shaded) {
-                    desc->shaded[3 * px + 0] = shaded[k].x * inv;
-                    desc->shaded[3 * px + 1] = shaded[k].y * inv;
-                    desc->shaded[3 * px + 2] = shaded[k].z * inv;
-                }
-                if (desc->albedo) {
-                    desc->albedo[3 * px + 0] = albedo[k].x * inv;
-                    desc->albedo[3 * px + 1] = albedo[k].y * inv;
-                    desc->albedo[3 * px + 2] = albedo[k].z * inv;
-                }
-                if (desc->fibre) {
-                    float len = sk_v3f_length(fibre[k]);
-                    sk_vec3f f = len > 0.0f ? sk_v3f_scale(fibre[k], 1.0f / len) : sk_v3f(0, 1, 0);
-                    desc->fibre[3 * px + 0] = 0.5f + 0.5f * f.x;
-                    desc->fibre[3 * px + 1] = 0.5f + 0.5f * f.y;
-                    desc->fibre[3 * px + 2] = 0.5f + 0.5f * f.z;
-                }
-                if (desc->vessel) desc->vessel[px] = vessel[k] * inv;
-                if (desc->dive) desc->dive[px] = dive[k] * inv;
-            }
+        for (int x0 = 0; x0 < rw; x0 += batch_pixels) {
+            int pixels = rw - x0 < batch_pixels ? rw - x0 : batch_pixels;
+            render_span(&c, yy, x0, pixels);
         }
         sk__loop_progress_tick(&lp);
     }

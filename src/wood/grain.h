@@ -25,26 +25,6 @@ typedef struct sk__grain {
     float *phi; /* Phi of dg: integral of dg from y = 0 (phase.c) */
 } sk__grain;
 
-/* Row blend and column position of (t, y) in the dg grid. */
-static inline void sk__grain_grid_pos(const sk__grain *g, double t, double y, int *i,
-                                      double *a, int *j, double *u)
-{
-    double ut = t * g->inv_dt;
-    if (ut < 0.0) ut = 0.0;
-    if (ut > (double)(g->nt - 1)) ut = (double)(g->nt - 1);
-    int ii = (int)ut;
-    if (ii > g->nt - 2) ii = g->nt - 2;
-    *i = ii;
-    *a = ut - ii;
-    double ym = y - sk__floor_d(y * g->inv_period) * g->period;
-    double uy = ym * g->inv_dy;
-    int jj = (int)uy;
-    if (jj > g->ny - 1) jj = g->ny - 1;
-    if (jj < 0) jj = 0;
-    *j = jj;
-    *u = uy - jj;
-}
-
 /* Sets up g and the dg table for t in [0, t_max] (a resolved, validated desc). */
 sk_result sk__grain_build(sk__grain *grain, const sk_wood_desc *desc, double t_max, sk_error *err);
 void sk__grain_free(sk__grain *grain);
@@ -60,33 +40,67 @@ double sk__grain_slope(const sk__grain *grain, double t, double y);
 
 /* Phase table (phase.c): fills grain->phi from grain->dg (false on allocation failure). */
 bool sk__phase_build(sk__grain *grain);
-/* Phi(t, y) = integral from 0 to y of G'(t, y') dy' (closed forms + the dg table), and
- * optionally its derivative dPhi/dy = G'(t, y). dg is linear between samples along y, so
- * the table holds the exact integral at the samples and the lookup adds the exact
- * quadratic in between: dPhi/dy is the interpolated dg, consistent with the fibre. */
-static inline double sk__phase_eval(const sk__grain *g, double t, double y, double *slope)
+
+/* The terms of Phi(t, y) and G'(t, y) that depend on y alone (a planar cut along the
+ * rings has one y per row, so they are found once for many points). */
+typedef struct sk__phase_y {
+    double P, G; /* spiral, wavy and tabulated terms */
+    int j;       /* dg grid column of y and the weight u of column j + 1 */
+    double u;
+} sk__phase_y;
+
+static inline sk__phase_y sk__phase_at_y(const sk__grain *g, double y)
 {
-    double P = g->spiral * y, G = g->spiral;
+    sk__phase_y py;
+    py.P = g->spiral * y;
+    py.G = g->spiral;
     if (g->wavy_amplitude != 0.0) {
         double s, c;
         sk__sincos(y * g->inv_wavelength, &s, &c);
-        P += g->wavy_amplitude * g->wavy_wavelength * (1.0 - c);
-        G += g->wavy_amplitude * s;
+        py.P += g->wavy_amplitude * g->wavy_wavelength * (1.0 - c);
+        py.G += g->wavy_amplitude * s;
     }
+    if (g->table_count) {
+        py.P += sk__grain_table_integral(g, y);
+        py.G += sk__grain_table_slope(g, y);
+    }
+    py.j = 0;
+    py.u = 0.0;
+    if (g->dg) {
+        double ym = y - sk__floor_d(y * g->inv_period) * g->period;
+        double uy = ym * g->inv_dy;
+        int jj = (int)uy;
+        if (jj > g->ny - 1) jj = g->ny - 1;
+        if (jj < 0) jj = 0;
+        py.j = jj;
+        py.u = uy - jj;
+    }
+    return py;
+}
+
+/* Phi(t, y) = integral from 0 to y of G'(t, y') dy' (closed forms + the dg table) given
+ * the y terms `py` = sk__phase_at_y(y), and optionally dPhi/dy = G'(t, y). dg is linear
+ * between samples along y, so the table holds the exact integral at the samples and the
+ * lookup adds the exact quadratic in between: dPhi/dy is the interpolated dg, consistent
+ * with the fibre. */
+static inline double sk__phase_eval_y(const sk__grain *g, const sk__phase_y *py, double t,
+                                      double y, double *slope)
+{
+    double P = py->P, G = py->G;
     if (g->inter_slope != 0.0) {
         double s = g->inter_slope * sin(2.0 * SK_PI * t / g->inter_period);
         P += s * y;
         G += s;
     }
-    if (g->table_count) {
-        P += sk__grain_table_integral(g, y);
-        G += sk__grain_table_slope(g, y);
-    }
     if (g->dg) {
-        /* dg is linear between samples along y: the exact integral adds a quadratic */
-        int i, j;
-        double a, u;
-        sk__grain_grid_pos(g, t, y, &i, &a, &j, &u);
+        /* row blend of t in the dg grid */
+        double ut = t * g->inv_dt;
+        if (ut < 0.0) ut = 0.0;
+        if (ut > (double)(g->nt - 1)) ut = (double)(g->nt - 1);
+        int i = (int)ut;
+        if (i > g->nt - 2) i = g->nt - 2;
+        double a = ut - i, u = py->u;
+        int j = py->j;
         size_t row = (size_t)g->ny + 1;
         double v[2], d[2];
         for (int e = 0; e < 2; e++) {
@@ -100,6 +114,13 @@ static inline double sk__phase_eval(const sk__grain *g, double t, double y, doub
     }
     if (slope) *slope = G;
     return P;
+}
+
+/* Phi(t, y) and optionally dPhi/dy = G'(t, y). */
+static inline double sk__phase_eval(const sk__grain *g, double t, double y, double *slope)
+{
+    sk__phase_y py = sk__phase_at_y(g, y);
+    return sk__phase_eval_y(g, &py, t, y, slope);
 }
 /* phi of eq. (3): Phi(t, y) / R(t, theta), where R(T(r, theta), theta) = r. */
 static inline double sk__phase_phi(double Phi, double r) { return Phi / (r > 1e-6 ? r : 1e-6); }

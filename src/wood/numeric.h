@@ -24,10 +24,13 @@ static inline double sk__floor_d(double x) { return (double)sk__floor_i64(x); }
 /* One 64-bit mix of a seed and three integer ids: leaner than sk_hash (which mixes every
  * id separately) for lookups made millions of times per image; distinct small ids give
  * independent-looking bits. */
+#define SK__WOOD_HASH_A 0x9e3779b97f4a7c15ULL
+#define SK__WOOD_HASH_B 0xc2b2ae3d27d4eb4fULL
+#define SK__WOOD_HASH_C 0x165667b19e3779f9ULL
 static inline uint64_t sk__wood_hash(uint64_t seed, int64_t a, int64_t b, int64_t c)
 {
-    return sk_mix64(seed + (uint64_t)a * 0x9e3779b97f4a7c15ULL + (uint64_t)b * 0xc2b2ae3d27d4eb4fULL +
-                    (uint64_t)c * 0x165667b19e3779f9ULL);
+    return sk_mix64(seed + (uint64_t)a * SK__WOOD_HASH_A + (uint64_t)b * SK__WOOD_HASH_B +
+                    (uint64_t)c * SK__WOOD_HASH_C);
 }
 
 /* atan2(y, x) in (-pi, pi]: the ratio q in [0, 1] of the smaller to the larger magnitude

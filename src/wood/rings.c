@@ -139,7 +139,7 @@ static bool build_tables(sk__rings *rg, const sk_wood_desc *desc, int years, con
         for (int j = 0; j < ntheta; j++) s += rg->R[(size_t)j * nt + i];
         rg->mean[i] = (float)(s / ntheta);
     }
-    int per_year = (int)lround(1.0 / rg->dt);
+    int per_year = rg->per_year = (int)lround(1.0 / rg->dt);
     double end_lip = 0.0;
     for (int j = 0; j < ntheta; j++)
         end_lip = fmax(end_lip, fabs((double)rg->end_slope[j + 1] - rg->end_slope[j]));

@@ -13,6 +13,7 @@ typedef struct sk__rings {
     double width;       /* d: mean growth per year (mm) */
     double dt;          /* t step of the table in years (1 / dt is an integer) */
     double inv_dt;
+    int per_year;       /* knots per year, 1 / dt */
     int nt;             /* knots t_i = i dt, i = 0 .. nt - 1 */
     double t_max;       /* (nt - 1) dt */
     int years;          /* whole years the table covers (= t_max) */
@@ -56,24 +57,53 @@ static inline double sk__rings_col_value(const float *c0, const float *c1, doubl
     return (double)c0[i] + f * ((double)c1[i] - (double)c0[i]);
 }
 
-/* R(t, theta): radius of the ring formed at time t (years) in direction theta. */
-static inline double sk__rings_R(const sk__rings *rg, double t, double theta)
-{
+/* The table columns around one angle, found once for several lookups at that angle. */
+typedef struct sk__rings_at {
+    const float *c0, *c1; /* columns j and j + 1 */
+    double f;             /* weight of column j + 1 */
     int j;
-    double f;
-    sk__rings_column(rg, theta, &j, &f);
-    const float *c0 = rg->R + (size_t)j * (size_t)rg->nt, *c1 = c0 + rg->nt;
+} sk__rings_at;
+
+static inline sk__rings_at sk__rings_at_angle(const sk__rings *rg, double theta)
+{
+    sk__rings_at at;
+    sk__rings_column(rg, theta, &at.j, &at.f);
+    at.c0 = rg->R + (size_t)at.j * (size_t)rg->nt;
+    at.c1 = at.c0 + rg->nt;
+    return at;
+}
+
+/* R(t, theta) at the angle of `at`. */
+static inline double sk__rings_R_at(const sk__rings *rg, const sk__rings_at *at, double t)
+{
     if (t <= 0.0) return 0.0;
     double u = t * rg->inv_dt;
     if (u >= (double)(rg->nt - 1)) {
-        double last = sk__rings_col_value(c0, c1, f, rg->nt - 1);
-        double slope = rg->end_slope[j] + f * (rg->end_slope[j + 1] - rg->end_slope[j]);
+        double last = sk__rings_col_value(at->c0, at->c1, at->f, rg->nt - 1);
+        double slope = rg->end_slope[at->j] + at->f * (rg->end_slope[at->j + 1] - rg->end_slope[at->j]);
         return last + (t - rg->t_max) * slope;
     }
     int i = (int)u;
     double a = u - i;
-    double r0 = sk__rings_col_value(c0, c1, f, i), r1 = sk__rings_col_value(c0, c1, f, i + 1);
+    double r0 = sk__rings_col_value(at->c0, at->c1, at->f, i);
+    double r1 = sk__rings_col_value(at->c0, at->c1, at->f, i + 1);
     return r0 + a * (r1 - r0);
+}
+
+/* R(j, theta) at the whole year j at the angle of `at`: a knot of the table (the value
+ * sk__rings_R_at gives, without its interpolation). */
+static inline double sk__rings_R_year_at(const sk__rings *rg, const sk__rings_at *at, int j)
+{
+    int i = j * rg->per_year;
+    if (j > 0 && i < rg->nt - 1) return sk__rings_col_value(at->c0, at->c1, at->f, i);
+    return sk__rings_R_at(rg, at, (double)j);
+}
+
+/* R(t, theta): radius of the ring formed at time t (years) in direction theta. */
+static inline double sk__rings_R(const sk__rings *rg, double t, double theta)
+{
+    sk__rings_at at = sk__rings_at_angle(rg, theta);
+    return sk__rings_R_at(rg, &at, t);
 }
 
 /* T(r, theta): formation time at radius r >= 0 in direction theta, the exact inverse of
@@ -81,11 +111,10 @@ static inline double sk__rings_R(const sk__rings *rg, double t, double theta)
 static inline double sk__rings_T(const sk__rings *rg, double r, double theta, double *width,
                                  double *dR_dtheta)
 {
-    int j;
-    double f;
-    sk__rings_column(rg, theta, &j, &f);
-    const float *c0 = rg->R + (size_t)j * (size_t)rg->nt, *c1 = c0 + rg->nt;
-    int last = rg->nt - 1;
+    sk__rings_at at = sk__rings_at_angle(rg, theta);
+    const float *c0 = at.c0, *c1 = at.c1;
+    double f = at.f;
+    int j = at.j, last = rg->nt - 1;
     double r_last = sk__rings_col_value(c0, c1, f, last);
     if (r >= r_last) {
         double s0 = rg->end_slope[j], s1 = rg->end_slope[j + 1];
@@ -115,7 +144,7 @@ static inline double sk__rings_T(const sk__rings *rg, double r, double theta, do
     return ((double)i + a) * rg->dt;
 }
 
-/* Mean over theta of R(t, theta). */
+/* Mean over theta of R(t, theta) (at a whole year, the table's knot). */
 static inline double sk__rings_mean(const sk__rings *rg, double t)
 {
     if (t <= 0.0) return 0.0;

@@ -25,29 +25,55 @@ void sk__shading_init(sk__shading *shading, const sk_wood_desc *desc);
 sk_vec3f sk__shade_fibre(const sk__shading *shading, const sk_wood_sample *sample,
                          sk_vec3f normal, sk_vec3f light, sk_vec3f view);
 
-/* eq. (4), see sk_wood_shade. */
-static inline sk_vec3f sk__shade_figure(const sk__shading *s, const sk_wood_sample *sample, sk_vec3f n,
-                          sk_vec3f l)
+/* The parts of eq. (4) that depend only on the light, the normal and the direction `up`
+ * towards the tree top (one set for a whole planar cut). */
+typedef struct sk__figure_light {
+    double cos_i; /* l . n: cos(delta) seen in the surface's up-normal plane */
+    double l_up;  /* l . up */
+    double h;     /* length of (l . n, l . up) */
+    float diffuse; /* kd cos_i */
+} sk__figure_light;
+
+static inline sk__figure_light sk__figure_light_make(const sk__shading *s, sk_vec3f n, sk_vec3f up,
+                                                     sk_vec3f l)
 {
-    double cos_i = sk_v3f_dot(l, n);
-    if (cos_i <= 0.0) return sk_v3f(0, 0, 0);
+    sk__figure_light fl;
+    fl.cos_i = sk_v3f_dot(l, n);
+    fl.l_up = sk_v3f_dot(l, up);
+    fl.h = sqrt(fl.cos_i * fl.cos_i + fl.l_up * fl.l_up);
+    fl.diffuse = (float)(s->kd * fl.cos_i);
+    return fl;
+}
+
+/* eq. (4) for a sample of the given albedo, vessel coverage and sin(alpha) = -f . n;
+ * the light must be above the surface (fl->cos_i > 0). */
+static inline sk_vec3f sk__shade_figure_lit(const sk__shading *s, const sk__figure_light *fl,
+                                            sk_vec3f albedo, float vessel, double sin_a)
+{
     /* cos(delta - alpha) with delta = atan2(l . up, l . n) and sin(alpha) = -f . n (the
        dive angle of the sample's fibre under this normal), expanded without trigonometry */
-    double l_up = sk_v3f_dot(l, sample->up), h = sqrt(cos_i * cos_i + l_up * l_up);
-    double sin_a = -(double)sk_v3f_dot(sample->fibre, n);
     sin_a = sin_a < -1.0 ? -1.0 : (sin_a > 1.0 ? 1.0 : sin_a);
-    double c = (cos_i * sqrt(1.0 - sin_a * sin_a) + l_up * sin_a) / h;
+    double c = (fl->cos_i * sqrt(1.0 - sin_a * sin_a) + fl->l_up * sin_a) / fl->h;
     double spec = 0.0;
     if (c > s->cos_floor) {
         double u = (c - s->cos_floor) * s->inv_step;
         int i = (int)u;
         if (i > SK__POW_TABLE - 1) i = SK__POW_TABLE - 1;
         double f = u - i;
-        spec = (s->ks_pow[i] + f * (s->ks_pow[i + 1] - s->ks_pow[i])) * (1.0 - sample->vessel);
+        spec = (s->ks_pow[i] + f * (s->ks_pow[i + 1] - s->ks_pow[i])) * (1.0 - vessel);
     }
-    float diffuse = (float)(s->kd * cos_i);
-    return sk_v3f(sample->albedo.x * diffuse + (float)spec, sample->albedo.y * diffuse + (float)spec,
-                  sample->albedo.z * diffuse + (float)spec);
+    return sk_v3f(albedo.x * fl->diffuse + (float)spec, albedo.y * fl->diffuse + (float)spec,
+                  albedo.z * fl->diffuse + (float)spec);
+}
+
+/* eq. (4), see sk_wood_shade. */
+static inline sk_vec3f sk__shade_figure(const sk__shading *s, const sk_wood_sample *sample, sk_vec3f n,
+                          sk_vec3f l)
+{
+    sk__figure_light fl = sk__figure_light_make(s, n, sample->up, l);
+    if (fl.cos_i <= 0.0) return sk_v3f(0, 0, 0);
+    return sk__shade_figure_lit(s, &fl, sample->albedo, sample->vessel,
+                                -(double)sk_v3f_dot(sample->fibre, n));
 }
 
 static inline sk_vec3f sk__shade(const sk__shading *s, const sk_wood_sample *sample, sk_vec3f n,

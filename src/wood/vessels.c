@@ -123,6 +123,19 @@ static inline double cell_cover(const sk__vessels *v, int64_t cx, int64_t cz, do
     return sk__vessel_cover(sqrt(d2), cell_radius(v, h), fw);
 }
 
+/* cell_cover for the cell of hash key `key` (the sum that sk__wood_hash mixes) whose
+ * indices as doubles are (cxd, czd); `best` is raised to the coverage. */
+static inline double cell_cover_key(const sk__vessels *v, uint64_t key, double cxd, double czd,
+                                    double x0, double z0, double reach2, double fw, double best)
+{
+    uint64_t h = sk_mix64(key);
+    double x = (cxd + unit_hi(h)) * v->diffuse.cell, z = (czd + unit_lo(h)) * v->diffuse.cell;
+    double d2 = (x - x0) * (x - x0) + (z - z0) * (z - z0);
+    if (d2 >= reach2) return best;
+    double c = sk__vessel_cover(sqrt(d2), cell_radius(v, h), fw);
+    return c > best ? c : best;
+}
+
 static double diffuse_coverage(const sk__vessels *v, double x0, double z0, double fw)
 {
     const sk__diffuse_index *di = &v->diffuse;
@@ -131,13 +144,27 @@ static double diffuse_coverage(const sk__vessels *v, double x0, double z0, doubl
     int64_t hx = sk__floor_i64(ux), hz = sk__floor_i64(uz);
     if (reach <= 0.5 * di->cell) {
         /* A vessel of the home cell's neighbours can reach the point only from the side of
-           the point's quadrant: the 2 x 2 block of cells around that corner is all. */
-        int64_t nx = hx + (ux - (double)hx < 0.5 ? -1 : 1);
-        int64_t nz = hz + (uz - (double)hz < 0.5 ? -1 : 1);
-        double c[4] = {cell_cover(v, hx, hz, x0, z0, reach2, fw), cell_cover(v, nx, hz, x0, z0, reach2, fw),
-                       cell_cover(v, hx, nz, x0, z0, reach2, fw), cell_cover(v, nx, nz, x0, z0, reach2, fw)};
-        double a = c[0] > c[1] ? c[0] : c[1], b = c[2] > c[3] ? c[2] : c[3];
-        return a > b ? a : b;
+           the point's quadrant: the 2 x 2 block of cells around that corner is all. A
+           neighbour farther than `reach` (with a margin for the rounding of the centres,
+           which then fail the distance test anyway) is not looked at. */
+        double fx = ux - (double)hx, fz = uz - (double)hz;
+        int64_t nx = hx + (fx < 0.5 ? -1 : 1);
+        int64_t nz = hz + (fz < 0.5 ? -1 : 1);
+        double ex = (fx < 0.5 ? fx : 1.0 - fx) * di->cell - 1e-9 * di->cell;
+        double ez = (fz < 0.5 ? fz : 1.0 - fz) * di->cell - 1e-9 * di->cell;
+        /* the hash keys of the block's rows and columns (sk__wood_hash's sum) */
+        uint64_t kh = di->seed + (uint64_t)hx * SK__WOOD_HASH_A;
+        uint64_t kn = di->seed + (uint64_t)nx * SK__WOOD_HASH_A;
+        uint64_t lh = (uint64_t)hz * SK__WOOD_HASH_B, ln = (uint64_t)nz * SK__WOOD_HASH_B;
+        double hxd = (double)hx, hzd = (double)hz, nxd = (double)nx, nzd = (double)nz;
+        best = cell_cover_key(v, kh + lh, hxd, hzd, x0, z0, reach2, fw, 0.0);
+        if (ex < reach) best = cell_cover_key(v, kn + lh, nxd, hzd, x0, z0, reach2, fw, best);
+        if (ez < reach) {
+            best = cell_cover_key(v, kh + ln, hxd, nzd, x0, z0, reach2, fw, best);
+            if (ex < reach && ex * ex + ez * ez < reach2)
+                best = cell_cover_key(v, kn + ln, nxd, nzd, x0, z0, reach2, fw, best);
+        }
+        return best;
     }
     int64_t cx0 = sk__floor_i64((x0 - reach) * di->inv_cell);
     int64_t cx1 = sk__floor_i64((x0 + reach) * di->inv_cell);
@@ -153,10 +180,18 @@ static double diffuse_coverage(const sk__vessels *v, double x0, double z0, doubl
 
 /* ------------------------------------------------------------- ring-porous */
 
-int sk__ring_vessel_count(const sk__ring_index *ri, const sk__rings *rings, int j)
+static inline int ring_vessel_count(const sk__ring_index *ri, const sk__rings *rings, int j)
 {
     if (!ri->on || j <= 0) return 0;
-    return (int)(ri->density * sk__rings_mean(rings, j) + 0.5); /* round; both >= 0 */
+    int i = j * rings->per_year;
+    /* the mean radius at the whole year j: a knot of the table inside it */
+    double mean = i < rings->nt - 1 ? (double)rings->mean[i] : sk__rings_mean(rings, j);
+    return (int)(ri->density * mean + 0.5); /* round; both >= 0 */
+}
+
+int sk__ring_vessel_count(const sk__ring_index *ri, const sk__rings *rings, int j)
+{
+    return ring_vessel_count(ri, rings, j);
 }
 
 /* The angle of vessel k (of n) in a row of ring j; `h` receives its hash. */
@@ -167,34 +202,42 @@ static inline double ring_vessel_angle(const sk__ring_index *ri, int n, int j, i
     return 2.0 * SK_PI * ((double)k + ri->jitter * (unit_hi(*h) - 0.5)) / n;
 }
 
-/* The rest of a ring vessel: its distance past the ring boundary, centre and radius. */
-static inline void ring_vessel_place(const sk__vessels *v, const sk__rings *rings, int j, int row,
-                                     uint64_t h, double theta, sk__vessel *out)
+/* The distance of a ring vessel from the pith: the ring boundary at its angle plus its
+ * distance past the boundary. */
+static inline double ring_vessel_radial(const sk__ring_index *ri, const sk__rings *rings, int j,
+                                        int row, uint64_t h, double theta)
 {
-    const sk__ring_index *ri = &v->ring;
     double offset = ri->pitch * (row + 0.5) + ri->jitter * (unit_lo(h) - 0.5) * ri->pitch * 0.5;
-    double radial = sk__rings_R(rings, (double)j, theta) + offset, s, c;
-    sk__sincos(theta, &s, &c);
-    out->x = radial * c;
-    out->z = radial * s;
-    out->radius = draw_radius(v, &ri->size, sk_u64_to_unit_d(sk_mix64(h ^ 0x5851f42d4c957f2dULL)));
+    sk__rings_at at = sk__rings_at_angle(rings, theta);
+    return sk__rings_R_year_at(rings, &at, j) + offset;
+}
+
+static inline double ring_vessel_radius(const sk__vessels *v, uint64_t h)
+{
+    return draw_radius(v, &v->ring.size, sk_u64_to_unit_d(sk_mix64(h ^ 0x5851f42d4c957f2dULL)));
 }
 
 void sk__ring_vessel(const sk__vessels *v, const sk__rings *rings, int j, int row, int k,
                      sk__vessel *out)
 {
     uint64_t h;
-    int n = sk__ring_vessel_count(&v->ring, rings, j);
-    double theta = ring_vessel_angle(&v->ring, n, j, row, k, &h);
-    ring_vessel_place(v, rings, j, row, h, theta, out);
+    int n = ring_vessel_count(&v->ring, rings, j);
+    double theta = ring_vessel_angle(&v->ring, n, j, row, k, &h), s, c;
+    double radial = ring_vessel_radial(&v->ring, rings, j, row, h, theta);
+    sk__sincos(theta, &s, &c);
+    out->x = radial * c;
+    out->z = radial * s;
+    out->radius = ring_vessel_radius(v, h);
 }
 
-/* Coverage from ring j's rows for vessels within `window` radians of theta0. */
+/* Coverage from ring j's rows for vessels within `window` radians of theta0 (p0 = (x0, z0)
+ * at distance r0 from the pith). */
 static double ring_coverage(const sk__vessels *v, const sk__rings *rings, int j, double x0,
-                            double z0, double theta0, double window, double reach, double fw)
+                            double z0, double r0, double theta0, double window, double reach,
+                            double fw)
 {
     const sk__ring_index *ri = &v->ring;
-    int n = sk__ring_vessel_count(ri, rings, j);
+    int n = ring_vessel_count(ri, rings, j);
     if (n == 0) return 0.0;
     double per = n / (2.0 * SK_PI), half = 0.5 * ri->jitter;
     int64_t first = -sk__floor_i64(-((theta0 - window) * per - half)); /* ceil */
@@ -203,40 +246,50 @@ static double ring_coverage(const sk__vessels *v, const sk__rings *rings, int j,
         first = 0;
         last = n - 1;
     }
+    /* A centre whose distance from the pith differs from r0 by `reach` or more is at least
+       that far from p0; the margin covers the rounding of the centres, which are then also
+       beyond `reach` by the exact test. */
+    double radial_reach = reach * (1.0 + 1e-9) + 1e-12 * r0;
     double best = 0.0;
     for (int row = 0; row < ri->rows; row++)
         for (int64_t kk = first; kk <= last; kk++) {
-            int k = (int)(((kk % n) + n) % n);
+            int64_t kw = kk < 0 ? kk + n : (kk >= n ? kk - n : kk); /* kk in [-n, 2n) */
+            int k = (int)(kw >= 0 && kw < n ? kw : ((kk % n) + n) % n);
             uint64_t h;
             double theta = ring_vessel_angle(ri, n, j, row, k, &h);
             /* a vessel that could reach p0 lies within `window` of its angle */
             double d = theta - theta0;
             d -= 2.0 * SK_PI * sk__floor_d(d * (0.5 / SK_PI) + 0.5);
             if (d > window || d < -window) continue;
-            sk__vessel vs;
-            ring_vessel_place(v, rings, j, row, h, theta, &vs);
-            double d2 = (vs.x - x0) * (vs.x - x0) + (vs.z - z0) * (vs.z - z0);
+            double radial = ring_vessel_radial(ri, rings, j, row, h, theta);
+            if (fabs(radial - r0) >= radial_reach) continue;
+            double s, c;
+            sk__sincos(theta, &s, &c);
+            double x = radial * c, z = radial * s;
+            double d2 = (x - x0) * (x - x0) + (z - z0) * (z - z0);
             if (d2 >= reach * reach) continue;
-            double c = sk__vessel_cover(sqrt(d2), vs.radius, fw);
-            if (c > best) best = c;
+            double cover = sk__vessel_cover(sqrt(d2), ring_vessel_radius(v, h), fw);
+            if (cover > best) best = cover;
         }
     return best;
 }
 
 /* Bounds on R(j, theta) for |theta - theta0| <= window: the Lipschitz bound around
- * R(j, theta0), never wider than the ring's own extent. */
-static void ring_reach(const sk__rings *rings, int j, double theta0, double window, double *lo,
-                       double *hi)
+ * R(j, theta0) (`at0` the table columns of theta0), never wider than the ring's own
+ * extent. */
+static void ring_reach(const sk__rings *rings, const sk__rings_at *at0, int j, double window,
+                       double *lo, double *hi)
 {
-    double Rj = sk__rings_R(rings, (double)j, theta0);
+    double Rj = sk__rings_R_year_at(rings, at0, j);
     double slack = sk__rings_lipschitz(rings, j) * window, ymin, ymax;
     sk__rings_year_bounds(rings, j, &ymin, &ymax);
     *lo = Rj - slack > ymin ? Rj - slack : ymin;
     *hi = Rj + slack < ymax ? Rj + slack : ymax;
 }
 
-static double ring_porous_coverage(const sk__vessels *v, const sk__rings *rings, double x0,
-                                   double z0, double r0, double theta0, double t, double fw)
+static double ring_porous_coverage(const sk__vessels *v, const sk__rings *rings,
+                                   const sk__rings_at *at0, double x0, double z0, double r0,
+                                   double theta0, double t, double fw)
 {
     const sk__ring_index *ri = &v->ring;
     double reach = sk__vessel_reach(ri->size.hi, fw);
@@ -251,33 +304,41 @@ static double ring_porous_coverage(const sk__vessels *v, const sk__rings *rings,
        short of r0 - reach no lower ring can reach p0. */
     for (int j = j0; j >= 1; j--) {
         double lo, hi;
-        ring_reach(rings, j, theta0, window, &lo, &hi);
+        ring_reach(rings, at0, j, window, &lo, &hi);
         if (hi + ri->offset_max < r0 - reach) break;
         if (lo + ri->offset_min > r0 + reach) continue;
-        double c = ring_coverage(v, rings, j, x0, z0, theta0, window, reach, fw);
+        double c = ring_coverage(v, rings, j, x0, z0, r0, theta0, window, reach, fw);
         if (c > best) best = c;
         if (best >= 1.0) return 1.0;
     }
     /* Upwards: likewise centres of rings j' >= j lie beyond ring j's lower bound. */
     for (int j = j0 + 1;; j++) {
         double lo, hi;
-        ring_reach(rings, j, theta0, window, &lo, &hi);
+        ring_reach(rings, at0, j, window, &lo, &hi);
         if (lo + ri->offset_min > r0 + reach) break;
-        double c = ring_coverage(v, rings, j, x0, z0, theta0, window, reach, fw);
+        double c = ring_coverage(v, rings, j, x0, z0, r0, theta0, window, reach, fw);
         if (c > best) best = c;
         if (best >= 1.0) return 1.0;
     }
     return best;
 }
 
-double sk__vessels_coverage(const sk__vessels *v, const sk__rings *rings, double x0, double z0,
-                            double r0, double theta0, double t, double fw)
+double sk__vessels_coverage_at(const sk__vessels *v, const sk__rings *rings,
+                               const sk__rings_at *at0, double x0, double z0, double r0,
+                               double theta0, double t, double fw)
 {
     double c = 0.0;
-    if (v->ring.on) c = ring_porous_coverage(v, rings, x0, z0, r0, theta0, t, fw);
+    if (v->ring.on) c = ring_porous_coverage(v, rings, at0, x0, z0, r0, theta0, t, fw);
     if (c < 1.0 && v->diffuse.on) {
         double d = diffuse_coverage(v, x0, z0, fw);
         if (d > c) c = d;
     }
     return c;
+}
+
+double sk__vessels_coverage(const sk__vessels *v, const sk__rings *rings, double x0, double z0,
+                            double r0, double theta0, double t, double fw)
+{
+    sk__rings_at at0 = sk__rings_at_angle(rings, theta0);
+    return sk__vessels_coverage_at(v, rings, &at0, x0, z0, r0, theta0, t, fw);
 }

@@ -65,6 +65,10 @@ void sk__ring_vessel(const sk__vessels *vessels, const sk__rings *rings, int j, 
  * width, with 0 the answer is 0 or 1 (inside a circle: distance < radius). */
 double sk__vessels_coverage(const sk__vessels *vessels, const sk__rings *rings, double x0,
                             double z0, double r0, double theta0, double t, double footprint);
+/* The same with the ring table columns of theta0 already found (sk__rings_at_angle). */
+double sk__vessels_coverage_at(const sk__vessels *vessels, const sk__rings *rings,
+                               const sk__rings_at *at0, double x0, double z0, double r0,
+                               double theta0, double t, double footprint);
 
 /* Coverage of one vessel at distance d (the rule both the index and a scan use): the
  * outline is a linear ramp of width min(footprint, radius), which keeps the integrated

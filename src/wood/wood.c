@@ -57,16 +57,35 @@ sk_result sk_wood_create(const sk_wood_desc *desc, sk_wood **out, sk_error *err)
     return SK_OK;
 }
 
+sk_vec3f sk__wood_surface_up(const sk_wood *w, sk_vec3f n)
+{
+    sk_vec3f up = sk_v3f_sub(w->axis, sk_v3f_scale(n, sk_v3f_dot(w->axis, n)));
+    float len = sk_v3f_length(up);
+    if (len > 1e-6f) return sk_v3f_scale(up, 1.0f / len);
+    sk_vec3f b;
+    sk_v3f_basis(n, &up, &b);
+    return up;
+}
+
+static inline bool same_bits(double a, double b)
+{
+    uint64_t ua, ub;
+    memcpy(&ua, &a, sizeof ua);
+    memcpy(&ub, &b, sizeof ub);
+    return ua == ub;
+}
+
 /* Evaluates `count` (<= SK__WOOD_BATCH) points sharing one normal stage by stage: each
  * stage's loop has no dependence between points, so the processor overlaps them. One
  * point or many, every point gets the same arithmetic. */
 void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk_vec3f normal,
-                         float footprint_mm, sk_wood_sample *out)
+                         float footprint_mm, unsigned flags, sk_wood_sample *out)
 {
     double r[SK__WOOD_BATCH], y[SK__WOOD_BATCH], cos_t[SK__WOOD_BATCH], sin_t[SK__WOOD_BATCH];
     double t[SK__WOOD_BATCH], width[SK__WOOD_BATCH], dR[SK__WOOD_BATCH], theta[SK__WOOD_BATCH];
     double G[SK__WOOD_BATCH], phi[SK__WOOD_BATCH], theta0[SK__WOOD_BATCH], r0[SK__WOOD_BATCH];
     double x0[SK__WOOD_BATCH], z0[SK__WOOD_BATCH];
+    sk__rings_at at0[SK__WOOD_BATCH];
     sk_vec3f n = sk_v3f_normalize(normal);
     sk_vec3f nt = sk__wood_frame_dir_to_tree(&w->frame, n);
     /* Round rings (no fluctuation) do not depend on theta: no angle is needed, and the
@@ -85,9 +104,12 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
         theta[i] = round ? 0.0 : sk__atan2(z, x);
         t[i] = sk__rings_T(&w->rings, r[i], theta[i], &width[i], &dR[i]);
     }
-    /* eq. (3): the fibre through (r, theta, y) left the end grain at theta0 = theta - phi */
+    /* eq. (3): the fibre through (r, theta, y) left the end grain at theta0 = theta - phi;
+       the terms of the phase that depend on y alone are found once per run of equal y */
+    sk__phase_y py = {0};
     for (int i = 0; i < count; i++) {
-        phi[i] = sk__phase_phi(sk__phase_eval(&w->grain, t[i], y[i], &G[i]), r[i]);
+        if (i == 0 || !same_bits(y[i], y[i - 1])) py = sk__phase_at_y(&w->grain, y[i]);
+        phi[i] = sk__phase_phi(sk__phase_eval_y(&w->grain, &py, t[i], y[i], &G[i]), r[i]);
         double phi_mod = phi[i] - 2.0 * SK_PI * sk__floor_d(phi[i] * (0.5 / SK_PI));
         double sin_p, cos_p;
         sk__sincos(phi_mod, &sin_p, &cos_p);
@@ -97,10 +119,12 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
             r0[i] = r[i];
             theta0[i] = need_theta0 ? sk__atan2(dir_z, dir_x) : 0.0;
             if (theta0[i] < 0.0) theta0[i] += 2.0 * SK_PI;
+            at0[i] = sk__rings_at_angle(&w->rings, theta0[i]);
         } else {
             double a = theta[i] - phi_mod;
             theta0[i] = a - 2.0 * SK_PI * sk__floor_d(a * (0.5 / SK_PI));
-            r0[i] = sk__rings_R(&w->rings, t[i], theta0[i]);
+            at0[i] = sk__rings_at_angle(&w->rings, theta0[i]);
+            r0[i] = sk__rings_R_at(&w->rings, &at0[i], t[i]);
         }
         x0[i] = r0[i] * dir_x;
         z0[i] = r0[i] * dir_z;
@@ -122,25 +146,22 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
         out[i].latewood = (float)late;
     }
     /* vessels (sec. 5) */
-    for (int i = 0; i < count; i++) {
-        double vessel = sk__vessels_coverage(&w->vessels, &w->rings, x0[i], z0[i], r0[i],
-                                             theta0[i], t[i], footprint_mm);
-        out[i].albedo = sk_v3f_lerp(out[i].albedo, w->attr.vessel, (float)vessel);
-        out[i].vessel = (float)vessel;
+    if (w->vessels.ring.on || w->vessels.diffuse.on) {
+        for (int i = 0; i < count; i++) {
+            double vessel = sk__vessels_coverage_at(&w->vessels, &w->rings, &at0[i], x0[i], z0[i],
+                                                    r0[i], theta0[i], t[i], footprint_mm);
+            out[i].albedo = sk_v3f_lerp(out[i].albedo, w->attr.vessel, (float)vessel);
+            out[i].vessel = (float)vessel;
+        }
+    } else {
+        for (int i = 0; i < count; i++) out[i].vessel = 0.0f;
     }
     /* the fibre through the point and its dive under the surface (sec. 7.1) */
-    sk_vec3f up = sk_v3f_sub(w->axis, sk_v3f_scale(n, sk_v3f_dot(w->axis, n)));
-    float len = sk_v3f_length(up);
-    if (len > 1e-6f) {
-        up = sk_v3f_scale(up, 1.0f / len);
-    } else {
-        sk_vec3f b;
-        sk_v3f_basis(n, &up, &b);
-    }
+    sk_vec3f up = sk__wood_surface_up(w, n);
     for (int i = 0; i < count; i++) {
         sk_vec3d f = sk__fibre_direction(G[i], dR[i], r[i], cos_t[i], sin_t[i]);
         out[i].fibre = sk__wood_frame_dir_to_scene(&w->frame, sk_v3d_to_f(f));
-        out[i].dive = (float)sk__fibre_dive(out[i].fibre, n);
+        out[i].dive = (flags & SK__WOOD_EVAL_DIVE) ? (float)sk__fibre_dive(out[i].fibre, n) : 0.0f;
         out[i].up = up;
         out[i].t = (float)t[i];
         out[i].phase = (float)phi[i];
@@ -150,7 +171,7 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
 void sk_wood_eval_filtered(const sk_wood *w, sk_vec3f point, sk_vec3f normal, float footprint_mm,
                            sk_wood_sample *s)
 {
-    sk__wood_eval_batch(w, 1, &point, normal, footprint_mm, s);
+    sk__wood_eval_batch(w, 1, &point, normal, footprint_mm, SK__WOOD_EVAL_DIVE, s);
 }
 
 void sk_wood_eval(const sk_wood *wood, sk_vec3f point, sk_vec3f normal, sk_wood_sample *sample)

@@ -25,8 +25,16 @@ struct sk_wood {
 /* Points evaluated together by sk__wood_eval_batch. */
 #define SK__WOOD_BATCH 16
 
-/* sk_wood_eval_filtered for `count` <= SK__WOOD_BATCH points with one normal. */
+/* Optional outputs of sk__wood_eval_batch (the others are always filled). */
+#define SK__WOOD_EVAL_DIVE 1u /* the dive angle (0 without it) */
+
+/* sk_wood_eval_filtered for `count` <= SK__WOOD_BATCH points with one normal; `flags`
+ * (SK__WOOD_EVAL_*) asks for the optional outputs. */
 void sk__wood_eval_batch(const sk_wood *wood, int count, const sk_vec3f *points, sk_vec3f normal,
-                         float footprint_mm, sk_wood_sample *out);
+                         float footprint_mm, unsigned flags, sk_wood_sample *out);
+
+/* The unit direction towards the tree top in the surface of unit normal n (any tangent on
+ * end grain): the `up` of every sample evaluated with that normal. */
+sk_vec3f sk__wood_surface_up(const sk_wood *wood, sk_vec3f n);
 
 #endif
