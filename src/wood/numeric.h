@@ -33,25 +33,35 @@ static inline uint64_t sk__wood_hash(uint64_t seed, int64_t a, int64_t b, int64_
                     (uint64_t)c * SK__WOOD_HASH_C);
 }
 
+/* floor(x) for |x| < 2^31, through a 32-bit conversion and a select (which the
+ * vectorizer can use). */
+static inline double sk__floor_small(double x)
+{
+    double i = (double)(int)x;
+    return x < i ? i - 1.0 : i;
+}
+
 /* atan2(y, x) in (-pi, pi]: the ratio q in [0, 1] of the smaller to the larger magnitude
  * is moved next to the nearest of c = 0, 1/4, .., 1 by atan(q) = atan(c) +
- * atan((q - c) / (1 + q c)), leaving |u| <= 1/8 for the series (error < u^11 / 11). */
+ * atan((q - c) / (1 + q c)), leaving |u| <= 1/8 for the series (error < u^11 / 11).
+ * Branch-free (selects only), so loops of it vectorize; atan2(0, 0) = 0. */
 static inline double sk__atan2(double y, double x)
 {
-    static const double atan_c[5] = {0.0, 0.24497866312686414, 0.46364760900080612,
-                                     0.64350110879328439, 0.78539816339744831};
     double ax = fabs(x), ay = fabs(y);
     int swap = ay > ax;
     double num = swap ? ax : ay, den = swap ? ay : ax;
-    if (den == 0.0) return 0.0;
-    double q = num / den;
-    int k = (int)(q * 4.0 + 0.5);
-    double c = 0.25 * k;
+    double q = num / (den == 0.0 ? 1.0 : den);
+    double k = (double)(int)(q * 4.0 + 0.5), c = 0.25 * k;
+    /* atan(c) */
+    double atan_c = k < 0.5 ? 0.0 : 0.24497866312686414;
+    atan_c = k < 1.5 ? atan_c : 0.46364760900080612;
+    atan_c = k < 2.5 ? atan_c : 0.64350110879328439;
+    atan_c = k < 3.5 ? atan_c : 0.78539816339744831;
     double u = (q - c) / (1.0 + q * c), u2 = u * u;
-    double a = atan_c[k] +
+    double a = atan_c +
                u * (1.0 + u2 * (-1.0 / 3 + u2 * (1.0 / 5 + u2 * (-1.0 / 7 + u2 * (1.0 / 9)))));
-    if (swap) a = 1.5707963267948966 - a;
-    if (x < 0.0) a = 3.1415926535897931 - a;
+    a = swap ? 1.5707963267948966 - a : a;
+    a = x < 0.0 ? 3.1415926535897931 - a : a;
     return y < 0.0 ? -a : a;
 }
 

@@ -64,13 +64,23 @@ typedef struct sk__rings_at {
     int j;
 } sk__rings_at;
 
-static inline sk__rings_at sk__rings_at_angle(const sk__rings *rg, double theta)
+/* The columns j, j + 1 with weight f (as sk__rings_column finds them). */
+static inline sk__rings_at sk__rings_at_column(const sk__rings *rg, int j, double f)
 {
     sk__rings_at at;
-    sk__rings_column(rg, theta, &at.j, &at.f);
-    at.c0 = rg->R + (size_t)at.j * (size_t)rg->nt;
+    at.j = j;
+    at.f = f;
+    at.c0 = rg->R + (size_t)j * (size_t)rg->nt;
     at.c1 = at.c0 + rg->nt;
     return at;
+}
+
+static inline sk__rings_at sk__rings_at_angle(const sk__rings *rg, double theta)
+{
+    int j;
+    double f;
+    sk__rings_column(rg, theta, &j, &f);
+    return sk__rings_at_column(rg, j, f);
 }
 
 /* R(t, theta) at the angle of `at`. */
@@ -108,13 +118,12 @@ static inline double sk__rings_R(const sk__rings *rg, double t, double theta)
 
 /* T(r, theta): formation time at radius r >= 0 in direction theta, the exact inverse of
  * sk__rings_R. Optional outputs: `width` = dR/dt there (mm per year) and `dR_dtheta`. */
-static inline double sk__rings_T(const sk__rings *rg, double r, double theta, double *width,
-                                 double *dR_dtheta)
+static inline double sk__rings_T_at(const sk__rings *rg, const sk__rings_at *at, double r,
+                                    double *width, double *dR_dtheta)
 {
-    sk__rings_at at = sk__rings_at_angle(rg, theta);
-    const float *c0 = at.c0, *c1 = at.c1;
-    double f = at.f;
-    int j = at.j, last = rg->nt - 1;
+    const float *c0 = at->c0, *c1 = at->c1;
+    double f = at->f;
+    int j = at->j, last = rg->nt - 1;
     double r_last = sk__rings_col_value(c0, c1, f, last);
     if (r >= r_last) {
         double s0 = rg->end_slope[j], s1 = rg->end_slope[j + 1];
@@ -142,6 +151,13 @@ static inline double sk__rings_T(const sk__rings *rg, double r, double theta, do
         *dR_dtheta = (d0 + a * (d1 - d0)) * rg->theta_scale;
     }
     return ((double)i + a) * rg->dt;
+}
+
+static inline double sk__rings_T(const sk__rings *rg, double r, double theta, double *width,
+                                 double *dR_dtheta)
+{
+    sk__rings_at at = sk__rings_at_angle(rg, theta);
+    return sk__rings_T_at(rg, &at, r, width, dR_dtheta);
 }
 
 /* Mean over theta of R(t, theta) (at a whole year, the table's knot). */

@@ -123,14 +123,30 @@ static inline double cell_cover(const sk__vessels *v, int64_t cx, int64_t cz, do
     return sk__vessel_cover(sqrt(d2), cell_radius(v, h), fw);
 }
 
+/* Squared distance from (x0, z0) to the vessel of the cell with hash h whose indices as
+ * doubles are (cxd, czd) (cell_vessel's arithmetic). */
+static inline double cell_d2(const sk__diffuse_index *di, uint64_t h, double cxd, double czd,
+                             double x0, double z0)
+{
+    double x = (cxd + unit_hi(h)) * di->cell, z = (czd + unit_lo(h)) * di->cell;
+    return (x - x0) * (x - x0) + (z - z0) * (z - z0);
+}
+
+/* Coverage of the vessel of hash h at squared distance d2 (0 beyond reach2). */
+static inline double cell_cover_d2(const sk__vessels *v, uint64_t h, double d2, double reach2,
+                                   double fw)
+{
+    double c = sk__vessel_cover(sqrt(d2), cell_radius(v, h), fw);
+    return d2 < reach2 ? c : 0.0;
+}
+
 /* cell_cover for the cell of hash key `key` (the sum that sk__wood_hash mixes) whose
  * indices as doubles are (cxd, czd); `best` is raised to the coverage. */
 static inline double cell_cover_key(const sk__vessels *v, uint64_t key, double cxd, double czd,
                                     double x0, double z0, double reach2, double fw, double best)
 {
     uint64_t h = sk_mix64(key);
-    double x = (cxd + unit_hi(h)) * v->diffuse.cell, z = (czd + unit_lo(h)) * v->diffuse.cell;
-    double d2 = (x - x0) * (x - x0) + (z - z0) * (z - z0);
+    double d2 = cell_d2(&v->diffuse, h, cxd, czd, x0, z0);
     if (d2 >= reach2) return best;
     double c = sk__vessel_cover(sqrt(d2), cell_radius(v, h), fw);
     return c > best ? c : best;
@@ -148,15 +164,38 @@ static double diffuse_coverage(const sk__vessels *v, double x0, double z0, doubl
            neighbour farther than `reach` (with a margin for the rounding of the centres,
            which then fail the distance test anyway) is not looked at. */
         double fx = ux - (double)hx, fz = uz - (double)hz;
-        int64_t nx = hx + (fx < 0.5 ? -1 : 1);
-        int64_t nz = hz + (fz < 0.5 ? -1 : 1);
-        double ex = (fx < 0.5 ? fx : 1.0 - fx) * di->cell - 1e-9 * di->cell;
-        double ez = (fz < 0.5 ? fz : 1.0 - fz) * di->cell - 1e-9 * di->cell;
+        int64_t nx = hx - 1 + 2 * (int64_t)(fx >= 0.5); /* fx < 0.5: hx - 1, else hx + 1 */
+        int64_t nz = hz - 1 + 2 * (int64_t)(fz >= 0.5);
         /* the hash keys of the block's rows and columns (sk__wood_hash's sum) */
         uint64_t kh = di->seed + (uint64_t)hx * SK__WOOD_HASH_A;
         uint64_t kn = di->seed + (uint64_t)nx * SK__WOOD_HASH_A;
         uint64_t lh = (uint64_t)hz * SK__WOOD_HASH_B, ln = (uint64_t)nz * SK__WOOD_HASH_B;
         double hxd = (double)hx, hzd = (double)hz, nxd = (double)nx, nzd = (double)nz;
+        if (reach > 0.125 * di->cell) {
+            /* Neighbours are mostly within reach: all four cells without branches, and the
+               coverage of the nearest, unless (rarely) more than one vessel is in reach. */
+            uint64_t h[4] = {sk_mix64(kh + lh), sk_mix64(kn + lh), sk_mix64(kh + ln),
+                             sk_mix64(kn + ln)};
+            double d[4] = {cell_d2(di, h[0], hxd, hzd, x0, z0), cell_d2(di, h[1], nxd, hzd, x0, z0),
+                           cell_d2(di, h[2], hxd, nzd, x0, z0), cell_d2(di, h[3], nxd, nzd, x0, z0)};
+            int in = (d[0] < reach2) + (d[1] < reach2) + (d[2] < reach2) + (d[3] < reach2);
+            if (in > 1) {
+                for (int k = 0; k < 4; k++) {
+                    double c = cell_cover_d2(v, h[k], d[k], reach2, fw);
+                    if (c > best) best = c;
+                }
+                return best;
+            }
+            double dm = d[0];
+            uint64_t hm = h[0];
+            for (int k = 1; k < 4; k++) {
+                hm = d[k] < dm ? h[k] : hm;
+                dm = d[k] < dm ? d[k] : dm;
+            }
+            return cell_cover_d2(v, hm, dm, reach2, fw);
+        }
+        double ex = (fx < 0.5 ? fx : 1.0 - fx) * di->cell - 1e-9 * di->cell;
+        double ez = (fz < 0.5 ? fz : 1.0 - fz) * di->cell - 1e-9 * di->cell;
         best = cell_cover_key(v, kh + lh, hxd, hzd, x0, z0, reach2, fw, 0.0);
         if (ex < reach) best = cell_cover_key(v, kn + lh, nxd, hzd, x0, z0, reach2, fw, best);
         if (ez < reach) {

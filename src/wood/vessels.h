@@ -79,7 +79,8 @@ static inline double sk__vessel_cover(double d, double radius, double footprint)
     if (footprint <= 0.0) return d < radius ? 1.0 : 0.0;
     double w = footprint < radius ? footprint : radius;
     double c = 0.5 + (radius - d) / w;
-    return c < 0.0 ? 0.0 : (c > 1.0 ? 1.0 : c);
+    c = c > 0.0 ? c : 0.0; /* clamped to [0, 1] by selects (c is never -0) */
+    return c < 1.0 ? c : 1.0;
 }
 
 /* How far from its centre a vessel of the largest radius can cover a point. */

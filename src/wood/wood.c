@@ -93,16 +93,34 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
     bool round = w->rings.ntheta == 1;
     bool need_theta0 = !round || w->vessels.ring.on || w->attr.shift > 0.0;
 
-    /* into the tree frame; t = T(r, theta) (sec. 4.4) */
+    /* into the tree frame: r, theta and the ring table's columns there */
+    float px[SK__WOOD_BATCH], pz[SK__WOOD_BATCH];
+    double col[SK__WOOD_BATCH], col_f[SK__WOOD_BATCH];
     for (int i = 0; i < count; i++) {
         sk_vec3f p = sk__wood_frame_point_to_tree(&w->frame, points[i]);
-        double x = p.x, z = p.z;
+        px[i] = p.x;
         y[i] = p.y;
+        pz[i] = p.z;
+    }
+    double theta_scale = w->rings.theta_scale;
+    int col_mask = w->rings.ntheta - 1;
+#pragma omp simd
+    for (int i = 0; i < count; i++) {
+        double x = px[i], z = pz[i];
         r[i] = sqrt(x * x + z * z);
         cos_t[i] = r[i] > 0.0 ? x / r[i] : 1.0;
         sin_t[i] = r[i] > 0.0 ? z / r[i] : 0.0;
-        theta[i] = round ? 0.0 : sk__atan2(z, x);
-        t[i] = sk__rings_T(&w->rings, r[i], theta[i], &width[i], &dR[i]);
+        /* (round rings have one column: theta does not matter there) */
+        theta[i] = sk__atan2(z, x);
+        /* sk__rings_column */
+        double u = theta[i] * theta_scale, fl = sk__floor_small(u);
+        col_f[i] = u - fl;
+        col[i] = fl;
+    }
+    /* t = T(r, theta) (sec. 4.4) */
+    for (int i = 0; i < count; i++) {
+        sk__rings_at at = sk__rings_at_column(&w->rings, (int)col[i] & col_mask, col_f[i]);
+        t[i] = sk__rings_T_at(&w->rings, &at, r[i], &width[i], &dR[i]);
     }
     /* eq. (3): the fibre through (r, theta, y) left the end grain at theta0 = theta - phi;
        the terms of the phase that depend on y alone are found once per run of equal y */
