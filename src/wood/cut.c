@@ -67,20 +67,80 @@ typedef struct cut_context {
     unsigned flags;
 } cut_context;
 
-/* Renders `pixels` (<= SK__WOOD_BATCH / S) pixels of region row yy from region column x0. */
+/* eq. (4) of the batch's samples under the cut's light (sk__shade_figure_lit), into rgb. */
+static void shade_figure_batch(const cut_context *c, const sk__wood_batch *b, int count,
+                               float rgb[3][SK__WOOD_BATCH])
+{
+    const sk__shading *s = &c->wood->shading;
+    const sk__figure_light *fl = &c->fl;
+    float nx = c->n.x, ny = c->n.y, nz = c->n.z;
+    double cos_i = fl->cos_i, l_up = fl->l_up, h = fl->h, floor_c = s->cos_floor;
+    double inv_step = s->inv_step;
+    double cu[SK__WOOD_BATCH];
+    if (!c->lit) {
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < count; j++) rgb[k][j] = 0.0f;
+        return;
+    }
+    /* cos(delta - alpha), as a position in the cos^n table */
+#pragma omp simd
+    for (int j = 0; j < count; j++) {
+        double sin_a = -(double)(b->fibre[0][j] * nx + b->fibre[1][j] * ny + b->fibre[2][j] * nz);
+        sin_a = sin_a < -1.0 ? -1.0 : sin_a;
+        sin_a = sin_a > 1.0 ? 1.0 : sin_a;
+        double cd = (cos_i * sqrt(1.0 - sin_a * sin_a) + l_up * sin_a) / h;
+        cu[j] = cd > floor_c ? (cd - floor_c) * inv_step : -1.0;
+    }
+    for (int j = 0; j < count; j++) {
+        double spec = 0.0;
+        if (cu[j] >= 0.0) {
+            int i = (int)cu[j];
+            if (i > SK__POW_TABLE - 1) i = SK__POW_TABLE - 1;
+            double f = cu[j] - i;
+            spec = (s->ks_pow[i] + f * (s->ks_pow[i + 1] - s->ks_pow[i])) * (1.0 - b->vessel[j]);
+        }
+        float sf = (float)spec;
+        for (int k = 0; k < 3; k++) rgb[k][j] = b->albedo[k][j] * fl->diffuse + sf;
+    }
+}
+
+/* Adds the batch's values src[j] to out[stride * pixel_of[j]]. With one sample per pixel
+ * (`single`, pixel_of[j] = j) the value is stored as 0 + src[j], the same sum without
+ * clearing the output first. */
+static void accumulate(float *out, int stride, const float *src, int count, const int *pixel_of,
+                       bool single)
+{
+    if (single) {
+        for (int j = 0; j < count; j++) out[stride * j] = 0.0f + src[j];
+    } else {
+        for (int j = 0; j < count; j++) out[stride * pixel_of[j]] += src[j];
+    }
+}
+
+/* Renders `pixels` (<= SK__WOOD_BATCH / S) pixels of region row yy from region column x0:
+ * the samples of each pixel are summed in the output buffers, then scaled to their mean. */
 static void render_span(const cut_context *c, int yy, int x0, int pixels)
 {
     const sk_wood_cut_desc *desc = c->desc;
     const sk_wood *wood = c->wood;
     sk_vec3f n = c->n, a = c->a, up = c->up;
-    sk_vec3f shaded[SK__WOOD_BATCH], albedo[SK__WOOD_BATCH], fibre[SK__WOOD_BATCH];
-    float vessel[SK__WOOD_BATCH], dive[SK__WOOD_BATCH];
     sk_vec3f points[SK__WOOD_BATCH];
-    sk_wood_sample s[SK__WOOD_BATCH];
+    sk__wood_batch b;
+    float rgb[3][SK__WOOD_BATCH];
     int Y = c->ry + yy, count = pixels * c->S;
-    for (int k = 0; k < pixels; k++) {
-        shaded[k] = albedo[k] = fibre[k] = sk_v3f(0, 0, 0);
-        vessel[k] = dive[k] = 0.0f;
+    bool single = c->S == 1;
+    size_t px0 = (size_t)yy * (size_t)c->rw + (size_t)x0;
+    float *sh = desc->shaded ? desc->shaded + 3 * px0 : NULL;
+    float *al = desc->albedo ? desc->albedo + 3 * px0 : NULL;
+    float *fi = desc->fibre ? desc->fibre + 3 * px0 : NULL;
+    float *ve = desc->vessel ? desc->vessel + px0 : NULL;
+    float *dv = desc->dive ? desc->dive + px0 : NULL;
+    if (!single) {
+        float *rgb_outputs[3] = {sh, al, fi};
+        for (int o = 0; o < 3; o++)
+            if (rgb_outputs[o]) memset(rgb_outputs[o], 0, 3 * (size_t)pixels * sizeof(float));
+        if (ve) memset(ve, 0, (size_t)pixels * sizeof(float));
+        if (dv) memset(dv, 0, (size_t)pixels * sizeof(float));
     }
     for (int sy = 0; sy < c->S; sy++) {
         /* the pixel position depends only on (X, Y): regions match the image */
@@ -90,65 +150,58 @@ static void render_span(const cut_context *c, int yy, int x0, int pixels)
             double fx = (c->rx + x0 + c->pixel_of[j] + c->sub[c->sub_of[j]]) * c->inv_W - 0.5;
             points[j] = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * c->width_mm)));
         }
-        sk__wood_eval_batch(wood, count, points, n, c->footprint, c->flags, s);
-        if (desc->shaded)
-            for (int j = 0; j < count; j++) {
-                sk_vec3f col;
-                if (!c->figure)
-                    col = sk__shade_fibre(&wood->shading, &s[j], n, c->light, c->view);
-                else if (c->lit)
-                    col = sk__shade_figure_lit(&wood->shading, &c->fl, s[j].albedo, s[j].vessel,
-                                               -(double)sk_v3f_dot(s[j].fibre, n));
-                else
-                    col = sk_v3f(0, 0, 0);
-                int k = c->pixel_of[j];
-                shaded[k] = sk_v3f_add(shaded[k], col);
+        sk__wood_eval_batch(wood, count, points, n, c->footprint, c->flags, &b);
+        if (sh) {
+            if (c->figure) {
+                shade_figure_batch(c, &b, count, rgb);
+            } else {
+                for (int j = 0; j < count; j++) {
+                    sk_wood_sample smp = {0};
+                    smp.albedo = sk_v3f(b.albedo[0][j], b.albedo[1][j], b.albedo[2][j]);
+                    smp.vessel = b.vessel[j];
+                    smp.fibre = sk_v3f(b.fibre[0][j], b.fibre[1][j], b.fibre[2][j]);
+                    smp.up = b.up;
+                    sk_vec3f col = sk__shade_fibre(&wood->shading, &smp, n, c->light, c->view);
+                    rgb[0][j] = col.x;
+                    rgb[1][j] = col.y;
+                    rgb[2][j] = col.z;
+                }
             }
-        if (desc->albedo)
+            for (int k = 0; k < 3; k++) accumulate(sh + k, 3, rgb[k], count, c->pixel_of, single);
+        }
+        if (al)
+            for (int k = 0; k < 3; k++) accumulate(al + k, 3, b.albedo[k], count, c->pixel_of, single);
+        if (fi) {
+            /* the fibre in the cut's frame (x = image right, y = image up, z = viewer) */
             for (int j = 0; j < count; j++) {
-                int k = c->pixel_of[j];
-                albedo[k] = sk_v3f_add(albedo[k], s[j].albedo);
+                sk_vec3f f = sk_v3f(b.fibre[0][j], b.fibre[1][j], b.fibre[2][j]);
+                rgb[0][j] = sk_v3f_dot(f, a);
+                rgb[1][j] = sk_v3f_dot(f, up);
+                rgb[2][j] = sk_v3f_dot(f, n);
             }
-        if (desc->fibre)
-            for (int j = 0; j < count; j++) {
-                int k = c->pixel_of[j];
-                fibre[k] = sk_v3f_add(fibre[k], sk_v3f(sk_v3f_dot(s[j].fibre, a), sk_v3f_dot(s[j].fibre, up),
-                                                       sk_v3f_dot(s[j].fibre, n)));
-            }
-        if (desc->vessel)
-            for (int j = 0; j < count; j++) vessel[c->pixel_of[j]] += s[j].vessel;
-        if (desc->dive)
-            for (int j = 0; j < count; j++) dive[c->pixel_of[j]] += s[j].dive;
+            for (int k = 0; k < 3; k++) accumulate(fi + k, 3, rgb[k], count, c->pixel_of, single);
+        }
+        if (ve) accumulate(ve, 1, b.vessel, count, c->pixel_of, single);
+        if (dv) accumulate(dv, 1, b.dive, count, c->pixel_of, single);
     }
     float inv = c->inv;
-    size_t px0 = (size_t)yy * (size_t)c->rw + (size_t)x0;
-    if (desc->shaded)
+    if (inv != 1.0f) { /* x * 1 = x: nothing to scale with one sample */
+        float *outputs[4] = {sh, al, ve, dv};
+        int sizes[4] = {3 * pixels, 3 * pixels, pixels, pixels};
+        for (int o = 0; o < 4; o++)
+            if (outputs[o])
+                for (int k = 0; k < sizes[o]; k++) outputs[o][k] *= inv;
+    }
+    if (fi)
         for (int k = 0; k < pixels; k++) {
-            float *o = desc->shaded + 3 * (px0 + (size_t)k);
-            o[0] = shaded[k].x * inv;
-            o[1] = shaded[k].y * inv;
-            o[2] = shaded[k].z * inv;
-        }
-    if (desc->albedo)
-        for (int k = 0; k < pixels; k++) {
-            float *o = desc->albedo + 3 * (px0 + (size_t)k);
-            o[0] = albedo[k].x * inv;
-            o[1] = albedo[k].y * inv;
-            o[2] = albedo[k].z * inv;
-        }
-    if (desc->fibre)
-        for (int k = 0; k < pixels; k++) {
-            float len = sk_v3f_length(fibre[k]);
-            sk_vec3f f = len > 0.0f ? sk_v3f_scale(fibre[k], 1.0f / len) : sk_v3f(0, 1, 0);
-            float *o = desc->fibre + 3 * (px0 + (size_t)k);
+            float *o = fi + 3 * k;
+            sk_vec3f sum = sk_v3f(o[0], o[1], o[2]);
+            float len = sk_v3f_length(sum);
+            sk_vec3f f = len > 0.0f ? sk_v3f_scale(sum, 1.0f / len) : sk_v3f(0, 1, 0);
             o[0] = 0.5f + 0.5f * f.x;
             o[1] = 0.5f + 0.5f * f.y;
             o[2] = 0.5f + 0.5f * f.z;
         }
-    if (desc->vessel)
-        for (int k = 0; k < pixels; k++) desc->vessel[px0 + (size_t)k] = vessel[k] * inv;
-    if (desc->dive)
-        for (int k = 0; k < pixels; k++) desc->dive[px0 + (size_t)k] = dive[k] * inv;
 }
 
 sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_error *err)

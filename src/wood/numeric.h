@@ -21,6 +21,17 @@ static inline int64_t sk__floor_i64(double x)
 
 static inline double sk__floor_d(double x) { return (double)sk__floor_i64(x); }
 
+/* floor(x) of any finite x as a double, without integer conversions (so loops of it
+ * vectorize): round to an integer by adding and removing 2^52, then step down if that
+ * went up. Equal to sk__floor_d wherever that is defined. */
+static inline double sk__floor_vec(double x)
+{
+    const double big = 4503599627370496.0; /* 2^52: doubles beyond are integers */
+    double a = x >= 0.0 ? (x + big) - big : (x - big) + big;
+    a = fabs(x) < big ? a : x;
+    return a > x ? a - 1.0 : a;
+}
+
 /* One 64-bit mix of a seed and three integer ids: leaner than sk_hash (which mixes every
  * id separately) for lookups made millions of times per image; distinct small ids give
  * independent-looking bits. */
@@ -70,17 +81,30 @@ extern const double sk__sin_cos_table[256][2];
 
 /* sin and cos of x (|x| < 1e9): x = k pi/128 + b with |b| <= pi/256 (pi/128 split in two
  * parts so b keeps its precision), the table at k, and the series of sin b and cos b
- * (errors below 1e-17) joined by the addition formulas. */
-static inline void sk__sincos(double x, double *s, double *c)
+ * (errors below 1e-17) joined by the addition formulas. In two steps so that loops can
+ * vectorize the arithmetic: sk__sincos_reduce gives k (as a double) and the series,
+ * sk__sincos_join looks up the table and joins them. */
+static inline void sk__sincos_reduce(double x, double *k, double *sb, double *cb)
 {
-    int64_t k = sk__floor_i64(x * 40.743665431525208 + 0.5);
-    double kf = (double)k;
+    double kf = sk__floor_vec(x * 40.743665431525208 + 0.5);
     double b = (x - kf * 0.024543692605220713) - kf * 9.495469541415925e-13, b2 = b * b;
-    double sb = b * (1.0 + b2 * (-1.0 / 6 + b2 * (1.0 / 120)));
-    double cb = 1.0 + b2 * (-0.5 + b2 * (1.0 / 24 + b2 * (-1.0 / 720)));
-    const double *t = sk__sin_cos_table[k & 255];
+    *k = kf;
+    *sb = b * (1.0 + b2 * (-1.0 / 6 + b2 * (1.0 / 120)));
+    *cb = 1.0 + b2 * (-0.5 + b2 * (1.0 / 24 + b2 * (-1.0 / 720)));
+}
+
+static inline void sk__sincos_join(double k, double sb, double cb, double *s, double *c)
+{
+    const double *t = sk__sin_cos_table[(int64_t)k & 255];
     *s = t[0] * cb + t[1] * sb;
     *c = t[1] * cb - t[0] * sb;
+}
+
+static inline void sk__sincos(double x, double *s, double *c)
+{
+    double k, sb, cb;
+    sk__sincos_reduce(x, &k, &sb, &cb);
+    sk__sincos_join(k, sb, cb, s, c);
 }
 
 /* asin(x) for |x| <= 1: the Taylor series on |x| <= 1/2 (to x^23, error < 2e-10), and

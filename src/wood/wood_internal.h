@@ -28,10 +28,21 @@ struct sk_wood {
 /* Optional outputs of sk__wood_eval_batch (the others are always filled). */
 #define SK__WOOD_EVAL_DIVE 1u /* the dive angle (0 without it) */
 
+/* The samples of a batch of points (the fields of sk_wood_sample), one array entry per
+ * point. */
+typedef struct sk__wood_batch {
+    float albedo[3][SK__WOOD_BATCH]; /* linear R, G, B */
+    float vessel[SK__WOOD_BATCH];
+    float fibre[3][SK__WOOD_BATCH];  /* unit fibre direction, scene frame */
+    float dive[SK__WOOD_BATCH];      /* 0 without SK__WOOD_EVAL_DIVE */
+    float t[SK__WOOD_BATCH], latewood[SK__WOOD_BATCH], phase[SK__WOOD_BATCH];
+    sk_vec3f up;                     /* the same for every point (one normal) */
+} sk__wood_batch;
+
 /* sk_wood_eval_filtered for `count` <= SK__WOOD_BATCH points with one normal; `flags`
  * (SK__WOOD_EVAL_*) asks for the optional outputs. */
 void sk__wood_eval_batch(const sk_wood *wood, int count, const sk_vec3f *points, sk_vec3f normal,
-                         float footprint_mm, unsigned flags, sk_wood_sample *out);
+                         float footprint_mm, unsigned flags, sk__wood_batch *out);
 
 /* The unit direction towards the tree top in the surface of unit normal n (any tangent on
  * end grain): the `up` of every sample evaluated with that normal. */

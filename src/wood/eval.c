@@ -1,0 +1,208 @@
+/* Evaluation of the wood solid texture at points (Kawai 2000 sec. 6.2, the render steps):
+ * into the tree frame, t = T(r, theta) (sec. 4.4), the grain's phase phi = Phi(t, y) /
+ * R(t, theta) (eq. 3), back to the end grain at theta0 = theta - phi, where the attribute
+ * array C'(t, theta0) (sec. 6.3) and the vessels (sec. 5) are looked up; the fibre
+ * direction there gives the dive angle of sec. 7.
+ *
+ * Points go through in batches, stage by stage over arrays: the arithmetic stages are
+ * branch-free loops the compiler vectorizes (#pragma omp simd), the table lookups and
+ * hashes are plain loops between them. A single point runs the same loops, so it gets the
+ * same arithmetic as a point in a batch. */
+#include <math.h>
+#include <string.h>
+
+#include "wood/fibre.h"
+#include "wood/numeric.h"
+#include "wood/wood_internal.h"
+
+sk_vec3f sk__wood_surface_up(const sk_wood *w, sk_vec3f n)
+{
+    sk_vec3f up = sk_v3f_sub(w->axis, sk_v3f_scale(n, sk_v3f_dot(w->axis, n)));
+    float len = sk_v3f_length(up);
+    if (len > 1e-6f) return sk_v3f_scale(up, 1.0f / len);
+    sk_vec3f b;
+    sk_v3f_basis(n, &up, &b);
+    return up;
+}
+
+static inline bool same_bits(double a, double b)
+{
+    uint64_t ua, ub;
+    memcpy(&ua, &a, sizeof ua);
+    memcpy(&ub, &b, sizeof ub);
+    return ua == ub;
+}
+
+#define B SK__WOOD_BATCH
+
+void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk_vec3f normal,
+                         float footprint_mm, unsigned flags, sk__wood_batch *out)
+{
+    const sk__rings *rg = &w->rings;
+    double y[B], r[B], cos_t[B], sin_t[B], theta[B], col[B], col_f[B];
+    double t[B], width[B], dR[B], P[B], G[B], phi[B], phi_mod[B];
+    double sk[B], sb[B], cb[B], sin_p[B], cos_p[B], dir_x[B], dir_z[B];
+    double theta0[B], col0[B], col0_f[B], r0[B], half[B];
+    float px[B], pz[B];
+    sk__rings_at at0[B];
+    sk_vec3f n = sk_v3f_normalize(normal);
+    sk_vec3f nt = sk__wood_frame_dir_to_tree(&w->frame, n);
+    /* Round rings (no fluctuation) do not depend on theta: their one column makes theta
+       irrelevant to T and R, and the end-grain point is the point turned back by phi. */
+    bool round = rg->ntheta == 1;
+    bool need_theta0 = !round || w->vessels.ring.on || w->attr.shift > 0.0;
+    double theta_scale = rg->theta_scale;
+    int col_mask = rg->ntheta - 1;
+
+    /* into the tree frame: r, theta and the ring table's columns there */
+    for (int i = 0; i < count; i++) {
+        sk_vec3f p = sk__wood_frame_point_to_tree(&w->frame, points[i]);
+        px[i] = p.x;
+        y[i] = p.y;
+        pz[i] = p.z;
+    }
+#pragma omp simd
+    for (int i = 0; i < count; i++) {
+        double x = px[i], z = pz[i];
+        r[i] = sqrt(x * x + z * z);
+        cos_t[i] = r[i] > 0.0 ? x / r[i] : 1.0;
+        sin_t[i] = r[i] > 0.0 ? z / r[i] : 0.0;
+        theta[i] = sk__atan2(z, x);
+        double u = theta[i] * theta_scale, fl = sk__floor_small(u); /* sk__rings_column */
+        col_f[i] = u - fl;
+        col[i] = fl;
+    }
+    /* t = T(r, theta) (sec. 4.4) */
+    for (int i = 0; i < count; i++) {
+        sk__rings_at at = sk__rings_at_column(rg, (int)col[i] & col_mask, col_f[i]);
+        t[i] = sk__rings_T_at(rg, &at, r[i], &width[i], &dR[i]);
+    }
+    /* eq. (3): Phi(t, y) and G'(t, y); the terms that depend on y alone are found once per
+       run of equal y (a planar cut along the rings has one y per row) */
+    sk__phase_y py = {0};
+    for (int i = 0; i < count; i++) {
+        if (i == 0 || !same_bits(y[i], y[i - 1])) py = sk__phase_at_y(&w->grain, y[i]);
+        P[i] = sk__phase_eval_y(&w->grain, &py, t[i], y[i], &G[i]);
+    }
+    /* phi = Phi / R(t, theta) = Phi / r; the fibre through (r, theta, y) left the end grain
+       at theta0 = theta - phi */
+#pragma omp simd
+    for (int i = 0; i < count; i++) {
+        phi[i] = P[i] / (r[i] > 1e-6 ? r[i] : 1e-6); /* sk__phase_phi */
+        phi_mod[i] = phi[i] - 2.0 * SK_PI * sk__floor_vec(phi[i] * (0.5 / SK_PI));
+        sk__sincos_reduce(phi_mod[i], &sk[i], &sb[i], &cb[i]);
+    }
+    for (int i = 0; i < count; i++) sk__sincos_join(sk[i], sb[i], cb[i], &sin_p[i], &cos_p[i]);
+    if (round) {
+#pragma omp simd
+        for (int i = 0; i < count; i++) {
+            dir_x[i] = cos_t[i] * cos_p[i] + sin_t[i] * sin_p[i];
+            dir_z[i] = sin_t[i] * cos_p[i] - cos_t[i] * sin_p[i];
+            double a = sk__atan2(dir_z[i], dir_x[i]);
+            a = a < 0.0 ? a + 2.0 * SK_PI : a;
+            theta0[i] = need_theta0 ? a : 0.0;
+            double u = theta0[i] * theta_scale, fl = sk__floor_small(u);
+            col0_f[i] = u - fl;
+            col0[i] = fl;
+        }
+    } else {
+#pragma omp simd
+        for (int i = 0; i < count; i++) {
+            dir_x[i] = cos_t[i] * cos_p[i] + sin_t[i] * sin_p[i];
+            dir_z[i] = sin_t[i] * cos_p[i] - cos_t[i] * sin_p[i];
+            double a = theta[i] - phi_mod[i];
+            theta0[i] = a - 2.0 * SK_PI * sk__floor_small(a * (0.5 / SK_PI));
+            double u = theta0[i] * theta_scale, fl = sk__floor_small(u);
+            col0_f[i] = u - fl;
+            col0[i] = fl;
+        }
+    }
+    /* the end-grain point at R(t, theta0) */
+    for (int i = 0; i < count; i++) {
+        at0[i] = sk__rings_at_column(rg, (int)col0[i] & col_mask, col0_f[i]);
+        r0[i] = round ? r[i] : sk__rings_R_at(rg, &at0[i], t[i]);
+    }
+    /* C'(t, theta0): the ring profile, box-filtered over the footprint's span of t along
+       the surface (the radial direction's part in the surface over the ring width), and
+       the cell's brightness shift (sec. 6.3) */
+    double half_footprint = footprint_mm > 0.0f ? 0.5 * footprint_mm : 0.0;
+    double ntx = nt.x, ntz = nt.z;
+#pragma omp simd
+    for (int i = 0; i < count; i++) {
+        double er_n = cos_t[i] * ntx + sin_t[i] * ntz;
+        double tangential = 1.0 - er_n * er_n;
+        half[i] = half_footprint * sqrt(tangential > 0.0 ? tangential : 0.0) / width[i];
+    }
+    const sk__attributes *attr = &w->attr;
+    for (int i = 0; i < count; i++) {
+        double late = sk__attributes_latewood(attr, t[i], half[i]);
+        float shift = (float)sk__attributes_shift(attr, t[i], theta0[i], y[i]), lf = (float)late;
+        out->albedo[0][i] = (attr->earlywood.x + (attr->latewood.x - attr->earlywood.x) * lf) * shift;
+        out->albedo[1][i] = (attr->earlywood.y + (attr->latewood.y - attr->earlywood.y) * lf) * shift;
+        out->albedo[2][i] = (attr->earlywood.z + (attr->latewood.z - attr->earlywood.z) * lf) * shift;
+        out->latewood[i] = lf;
+    }
+    /* vessels (sec. 5) at the end-grain point */
+    if (w->vessels.ring.on || w->vessels.diffuse.on) {
+        for (int i = 0; i < count; i++) {
+            double vessel = sk__vessels_coverage_at(&w->vessels, rg, &at0[i], r0[i] * dir_x[i],
+                                                    r0[i] * dir_z[i], r0[i], theta0[i], t[i],
+                                                    footprint_mm);
+            float vf = (float)vessel;
+            for (int c = 0; c < 3; c++)
+                out->albedo[c][i] += ((&attr->vessel.x)[c] - out->albedo[c][i]) * vf;
+            out->vessel[i] = vf;
+        }
+    } else {
+        for (int i = 0; i < count; i++) out->vessel[i] = 0.0f;
+    }
+    /* the fibre through the point (sec. 7.1): sk__fibre_direction */
+#pragma omp simd
+    for (int i = 0; i < count; i++) {
+        double radial = G[i] * dR[i] / (r[i] > 1e-6 ? r[i] : 1.0);
+        radial = r[i] > 1e-6 ? radial : 0.0;
+        double fx = radial * cos_t[i] - G[i] * sin_t[i], fz = radial * sin_t[i] + G[i] * cos_t[i];
+        double inv = 1.0 / sqrt(fx * fx + 1.0 + fz * fz);
+        out->fibre[0][i] = (float)(fx * inv);
+        out->fibre[1][i] = (float)inv;
+        out->fibre[2][i] = (float)(fz * inv);
+        out->t[i] = (float)t[i];
+        out->phase[i] = (float)phi[i];
+    }
+    if (!w->frame.identity)
+        for (int i = 0; i < count; i++) {
+            sk_vec3f f = sk__wood_frame_dir_to_scene(
+                &w->frame, sk_v3f(out->fibre[0][i], out->fibre[1][i], out->fibre[2][i]));
+            out->fibre[0][i] = f.x;
+            out->fibre[1][i] = f.y;
+            out->fibre[2][i] = f.z;
+        }
+    /* its dive under the surface (sec. 7.1) */
+    for (int i = 0; i < count; i++)
+        out->dive[i] = (flags & SK__WOOD_EVAL_DIVE)
+                           ? (float)sk__fibre_dive(sk_v3f(out->fibre[0][i], out->fibre[1][i],
+                                                          out->fibre[2][i]),
+                                                   n)
+                           : 0.0f;
+    out->up = sk__wood_surface_up(w, n);
+}
+
+void sk_wood_eval_filtered(const sk_wood *w, sk_vec3f point, sk_vec3f normal, float footprint_mm,
+                           sk_wood_sample *s)
+{
+    sk__wood_batch b;
+    sk__wood_eval_batch(w, 1, &point, normal, footprint_mm, SK__WOOD_EVAL_DIVE, &b);
+    s->albedo = sk_v3f(b.albedo[0][0], b.albedo[1][0], b.albedo[2][0]);
+    s->vessel = b.vessel[0];
+    s->fibre = sk_v3f(b.fibre[0][0], b.fibre[1][0], b.fibre[2][0]);
+    s->dive = b.dive[0];
+    s->up = b.up;
+    s->t = b.t[0];
+    s->latewood = b.latewood[0];
+    s->phase = b.phase[0];
+}
+
+void sk_wood_eval(const sk_wood *wood, sk_vec3f point, sk_vec3f normal, sk_wood_sample *sample)
+{
+    sk_wood_eval_filtered(wood, point, normal, 0.0f, sample);
+}
