@@ -38,6 +38,7 @@ static inline bool same_bits(double a, double b)
 void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk_vec3f normal,
                          float footprint_mm, unsigned flags, sk__wood_batch *out)
 {
+    if (count <= 0) return;
     const sk__rings *rg = &w->rings;
     double y[B], r[B], cos_t[B], sin_t[B], theta[B], col[B], col_f[B];
     double t[B], width[B], dR[B], P[B], G[B], phi[B], phi_mod[B];
@@ -144,11 +145,16 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
     }
     /* vessels (sec. 5) at the end-grain point */
     if (w->vessels.ring.on || w->vessels.diffuse.on) {
+        double x0[B], z0[B], vessel[B];
+#pragma omp simd
         for (int i = 0; i < count; i++) {
-            double vessel = sk__vessels_coverage_at(&w->vessels, rg, &at0[i], r0[i] * dir_x[i],
-                                                    r0[i] * dir_z[i], r0[i], theta0[i], t[i],
-                                                    footprint_mm);
-            float vf = (float)vessel;
+            x0[i] = r0[i] * dir_x[i];
+            z0[i] = r0[i] * dir_z[i];
+        }
+        sk__vessels_coverage_batch(&w->vessels, rg, count, at0, x0, z0, r0, theta0, t,
+                                   footprint_mm, vessel);
+        for (int i = 0; i < count; i++) {
+            float vf = (float)vessel[i];
             for (int c = 0; c < 3; c++)
                 out->albedo[c][i] += ((&attr->vessel.x)[c] - out->albedo[c][i]) * vf;
             out->vessel[i] = vf;

@@ -152,59 +152,12 @@ static inline double cell_cover_key(const sk__vessels *v, uint64_t key, double c
     return c > best ? c : best;
 }
 
+/* Diffuse-porous coverage at (x0, z0) when a vessel can reach further than half a cell:
+ * every cell within reach. (Nearer reaches take the 2 x 2 blocks of diffuse_block_batch.) */
 static double diffuse_coverage(const sk__vessels *v, double x0, double z0, double fw)
 {
     const sk__diffuse_index *di = &v->diffuse;
     double reach = sk__vessel_reach(di->size.hi, fw), reach2 = reach * reach, best = 0.0;
-    double ux = x0 * di->inv_cell, uz = z0 * di->inv_cell;
-    int64_t hx = sk__floor_i64(ux), hz = sk__floor_i64(uz);
-    if (reach <= 0.5 * di->cell) {
-        /* A vessel of the home cell's neighbours can reach the point only from the side of
-           the point's quadrant: the 2 x 2 block of cells around that corner is all. A
-           neighbour farther than `reach` (with a margin for the rounding of the centres,
-           which then fail the distance test anyway) is not looked at. */
-        double fx = ux - (double)hx, fz = uz - (double)hz;
-        int64_t nx = hx - 1 + 2 * (int64_t)(fx >= 0.5); /* fx < 0.5: hx - 1, else hx + 1 */
-        int64_t nz = hz - 1 + 2 * (int64_t)(fz >= 0.5);
-        /* the hash keys of the block's rows and columns (sk__wood_hash's sum) */
-        uint64_t kh = di->seed + (uint64_t)hx * SK__WOOD_HASH_A;
-        uint64_t kn = di->seed + (uint64_t)nx * SK__WOOD_HASH_A;
-        uint64_t lh = (uint64_t)hz * SK__WOOD_HASH_B, ln = (uint64_t)nz * SK__WOOD_HASH_B;
-        double hxd = (double)hx, hzd = (double)hz, nxd = (double)nx, nzd = (double)nz;
-        if (reach > 0.125 * di->cell) {
-            /* Neighbours are mostly within reach: all four cells without branches, and the
-               coverage of the nearest, unless (rarely) more than one vessel is in reach. */
-            uint64_t h[4] = {sk_mix64(kh + lh), sk_mix64(kn + lh), sk_mix64(kh + ln),
-                             sk_mix64(kn + ln)};
-            double d[4] = {cell_d2(di, h[0], hxd, hzd, x0, z0), cell_d2(di, h[1], nxd, hzd, x0, z0),
-                           cell_d2(di, h[2], hxd, nzd, x0, z0), cell_d2(di, h[3], nxd, nzd, x0, z0)};
-            int in = (d[0] < reach2) + (d[1] < reach2) + (d[2] < reach2) + (d[3] < reach2);
-            if (in > 1) {
-                for (int k = 0; k < 4; k++) {
-                    double c = cell_cover_d2(v, h[k], d[k], reach2, fw);
-                    if (c > best) best = c;
-                }
-                return best;
-            }
-            double dm = d[0];
-            uint64_t hm = h[0];
-            for (int k = 1; k < 4; k++) {
-                hm = d[k] < dm ? h[k] : hm;
-                dm = d[k] < dm ? d[k] : dm;
-            }
-            return cell_cover_d2(v, hm, dm, reach2, fw);
-        }
-        double ex = (fx < 0.5 ? fx : 1.0 - fx) * di->cell - 1e-9 * di->cell;
-        double ez = (fz < 0.5 ? fz : 1.0 - fz) * di->cell - 1e-9 * di->cell;
-        best = cell_cover_key(v, kh + lh, hxd, hzd, x0, z0, reach2, fw, 0.0);
-        if (ex < reach) best = cell_cover_key(v, kn + lh, nxd, hzd, x0, z0, reach2, fw, best);
-        if (ez < reach) {
-            best = cell_cover_key(v, kh + ln, hxd, nzd, x0, z0, reach2, fw, best);
-            if (ex < reach && ex * ex + ez * ez < reach2)
-                best = cell_cover_key(v, kn + ln, nxd, nzd, x0, z0, reach2, fw, best);
-        }
-        return best;
-    }
     int64_t cx0 = sk__floor_i64((x0 - reach) * di->inv_cell);
     int64_t cx1 = sk__floor_i64((x0 + reach) * di->inv_cell);
     int64_t cz0 = sk__floor_i64((z0 - reach) * di->inv_cell);
@@ -269,55 +222,11 @@ void sk__ring_vessel(const sk__vessels *v, const sk__rings *rings, int j, int ro
     out->radius = ring_vessel_radius(v, h);
 }
 
-/* Coverage from ring j's rows for vessels within `window` radians of theta0 (p0 = (x0, z0)
- * at distance r0 from the pith). */
-static double ring_coverage(const sk__vessels *v, const sk__rings *rings, int j, double x0,
-                            double z0, double r0, double theta0, double window, double reach,
-                            double fw)
-{
-    const sk__ring_index *ri = &v->ring;
-    int n = ring_vessel_count(ri, rings, j);
-    if (n == 0) return 0.0;
-    double per = n / (2.0 * SK_PI), half = 0.5 * ri->jitter;
-    int64_t first = -sk__floor_i64(-((theta0 - window) * per - half)); /* ceil */
-    int64_t last = sk__floor_i64((theta0 + window) * per + half);
-    if (last - first + 1 >= n) {
-        first = 0;
-        last = n - 1;
-    }
-    /* A centre whose distance from the pith differs from r0 by `reach` or more is at least
-       that far from p0; the margin covers the rounding of the centres, which are then also
-       beyond `reach` by the exact test. */
-    double radial_reach = reach * (1.0 + 1e-9) + 1e-12 * r0;
-    double best = 0.0;
-    for (int row = 0; row < ri->rows; row++)
-        for (int64_t kk = first; kk <= last; kk++) {
-            int64_t kw = kk < 0 ? kk + n : (kk >= n ? kk - n : kk); /* kk in [-n, 2n) */
-            int k = (int)(kw >= 0 && kw < n ? kw : ((kk % n) + n) % n);
-            uint64_t h;
-            double theta = ring_vessel_angle(ri, n, j, row, k, &h);
-            /* a vessel that could reach p0 lies within `window` of its angle */
-            double d = theta - theta0;
-            d -= 2.0 * SK_PI * sk__floor_d(d * (0.5 / SK_PI) + 0.5);
-            if (d > window || d < -window) continue;
-            double radial = ring_vessel_radial(ri, rings, j, row, h, theta);
-            if (fabs(radial - r0) >= radial_reach) continue;
-            double s, c;
-            sk__sincos(theta, &s, &c);
-            double x = radial * c, z = radial * s;
-            double d2 = (x - x0) * (x - x0) + (z - z0) * (z - z0);
-            if (d2 >= reach * reach) continue;
-            double cover = sk__vessel_cover(sqrt(d2), ring_vessel_radius(v, h), fw);
-            if (cover > best) best = cover;
-        }
-    return best;
-}
-
 /* Bounds on R(j, theta) for |theta - theta0| <= window: the Lipschitz bound around
  * R(j, theta0) (`at0` the table columns of theta0), never wider than the ring's own
  * extent. */
-static void ring_reach(const sk__rings *rings, const sk__rings_at *at0, int j, double window,
-                       double *lo, double *hi)
+static inline void ring_reach(const sk__rings *rings, const sk__rings_at *at0, int j,
+                              double window, double *lo, double *hi)
 {
     double Rj = sk__rings_R_year_at(rings, at0, j);
     double slack = sk__rings_lipschitz(rings, j) * window, ymin, ymax;
@@ -326,52 +235,285 @@ static void ring_reach(const sk__rings *rings, const sk__rings_at *at0, int j, d
     *hi = Rj + slack < ymax ? Rj + slack : ymax;
 }
 
-static double ring_porous_coverage(const sk__vessels *v, const sk__rings *rings,
-                                   const sk__rings_at *at0, double x0, double z0, double r0,
-                                   double theta0, double t, double fw)
+/* Ring-porous candidates of a batch of points, tested in stages over all of them (so that
+ * no stage waits on an unpredictable branch): a candidate is vessel k of row `row` of
+ * ring j for point `point`. */
+#define RING_CANDIDATES (8 * SK__WOOD_BATCH)
+
+typedef struct ring_stream {
+    const sk__vessels *v;
+    const sk__rings *rings;
+    const double *x0, *z0, *r0, *theta0;
+    const double *window;       /* per point: the angles around theta0 a vessel can reach from */
+    double reach, reach2, fw;
+    double *cover;              /* per point: the largest coverage so far */
+    int count;                  /* candidates waiting */
+    int point[RING_CANDIDATES], j[RING_CANDIDATES], row[RING_CANDIDATES];
+    int n[RING_CANDIDATES], k[RING_CANDIDATES];
+} ring_stream;
+
+/* Tests the waiting candidates: first their angle against the window, then their distance
+ * from the pith against r0 +- reach, then their distance from p0 (each test is exact:
+ * a candidate dropped by one is beyond `reach` by the final one); the survivors' coverage
+ * raises their point's. */
+static void ring_stream_flush(ring_stream *s)
+{
+    const sk__ring_index *ri = &s->v->ring;
+    int idx[RING_CANDIDATES], m = 0;
+    uint64_t h[RING_CANDIDATES];
+    double theta[RING_CANDIDATES], radial[RING_CANDIDATES], d2[RING_CANDIDATES];
+    for (int c = 0; c < s->count; c++) {
+        theta[c] = ring_vessel_angle(ri, s->n[c], s->j[c], s->row[c], s->k[c], &h[c]);
+        double d = theta[c] - s->theta0[s->point[c]], w = s->window[s->point[c]];
+        d -= 2.0 * SK_PI * sk__floor_d(d * (0.5 / SK_PI) + 0.5);
+        idx[m] = c;
+        m += !(d > w || d < -w);
+    }
+    int m2 = 0;
+    for (int a = 0; a < m; a++) {
+        /* a centre whose distance from the pith differs from r0 by `reach` or more is at
+           least that far from p0; the margin covers the rounding of the centres */
+        int c = idx[a];
+        double r0 = s->r0[s->point[c]];
+        radial[c] = ring_vessel_radial(ri, s->rings, s->j[c], s->row[c], h[c], theta[c]);
+        idx[m2] = c;
+        m2 += !(fabs(radial[c] - r0) >= s->reach * (1.0 + 1e-9) + 1e-12 * r0);
+    }
+    int m3 = 0;
+    for (int a = 0; a < m2; a++) {
+        int c = idx[a], i = s->point[c];
+        double sn, cs;
+        sk__sincos(theta[c], &sn, &cs);
+        double x = radial[c] * cs, z = radial[c] * sn;
+        d2[c] = (x - s->x0[i]) * (x - s->x0[i]) + (z - s->z0[i]) * (z - s->z0[i]);
+        idx[m3] = c;
+        m3 += !(d2[c] >= s->reach2);
+    }
+    for (int a = 0; a < m3; a++) {
+        int c = idx[a], i = s->point[c];
+        double cover = sk__vessel_cover(sqrt(d2[c]), ring_vessel_radius(s->v, h[c]), s->fw);
+        if (cover > s->cover[i]) s->cover[i] = cover;
+    }
+    s->count = 0;
+}
+
+/* The candidates of ring j for point i: every vessel whose jittered angle can fall in the
+ * window, in the rows not radially out of reach (R(j, theta) in [lo, hi] there). */
+static void ring_stream_add(ring_stream *s, int i, int j, double lo, double hi)
+{
+    const sk__ring_index *ri = &s->v->ring;
+    int n = ring_vessel_count(ri, s->rings, j);
+    if (n == 0) return;
+    double per = n / (2.0 * SK_PI), half = 0.5 * ri->jitter;
+    double theta0 = s->theta0[i], window = s->window[i], r0 = s->r0[i];
+    int64_t first = -sk__floor_i64(-((theta0 - window) * per - half)); /* ceil */
+    int64_t last = sk__floor_i64((theta0 + window) * per + half);
+    if (last - first + 1 >= n) {
+        first = 0;
+        last = n - 1;
+    }
+    double radial_reach = s->reach * (1.0 + 1e-9) + 1e-12 * r0;
+    double jitter_offset = ri->jitter * ri->pitch * 0.25;
+    for (int row = 0; row < ri->rows; row++) {
+        /* the row's centres lie R(j, theta) + [offset - jitter_offset, offset +
+           jitter_offset] from the pith: a row out of radial reach has no candidate */
+        double offset = ri->pitch * (row + 0.5);
+        if (lo + offset - jitter_offset >= r0 + radial_reach ||
+            hi + offset + jitter_offset <= r0 - radial_reach)
+            continue;
+        for (int64_t kk = first; kk <= last; kk++) {
+            if (s->count == RING_CANDIDATES) ring_stream_flush(s);
+            int64_t kw = kk < 0 ? kk + n : (kk >= n ? kk - n : kk); /* kk in [-n, 2n) */
+            int c = s->count++;
+            s->point[c] = i;
+            s->j[c] = j;
+            s->row[c] = row;
+            s->n[c] = n;
+            s->k[c] = (int)(kw >= 0 && kw < n ? kw : ((kk % n) + n) % n);
+        }
+    }
+}
+
+/* The ring-porous coverage of a batch of end-grain points into cover[]. For each point,
+ * the rings whose vessels can reach it: from ring floor(t) down while the ring's centres
+ * can still reach (R(j', theta) <= R(j, theta) for j' <= j), and up while they can. */
+static void ring_porous_batch(const sk__vessels *v, const sk__rings *rings, int count,
+                              const sk__rings_at *at0, const double *x0, const double *z0,
+                              const double *r0, const double *theta0, const double *t, double fw,
+                              double *cover)
 {
     const sk__ring_index *ri = &v->ring;
-    double reach = sk__vessel_reach(ri->size.hi, fw);
-    /* every point within `reach` of p0 lies within asin(reach / r0) of its angle; for
-       reach / r0 <= 1/2 that is below 1.05 reach / r0 */
-    double q = reach / r0;
-    double window = r0 > 2.0 * reach ? 1.05 * q + 1e-12 : SK_PI;
-    double best = 0.0;
-    int j0 = (int)t; /* t >= 0 */
-    if (j0 < 1) j0 = 1;
-    /* Downwards: R(j', theta) <= R(j, theta) for j' <= j, so once ring j's centres fall
-       short of r0 - reach no lower ring can reach p0. */
-    for (int j = j0; j >= 1; j--) {
-        double lo, hi;
-        ring_reach(rings, at0, j, window, &lo, &hi);
-        if (hi + ri->offset_max < r0 - reach) break;
-        if (lo + ri->offset_min > r0 + reach) continue;
-        double c = ring_coverage(v, rings, j, x0, z0, r0, theta0, window, reach, fw);
-        if (c > best) best = c;
-        if (best >= 1.0) return 1.0;
+    double window[SK__WOOD_BATCH];
+    ring_stream s;
+    s.v = v;
+    s.rings = rings;
+    s.x0 = x0;
+    s.z0 = z0;
+    s.r0 = r0;
+    s.theta0 = theta0;
+    s.window = window;
+    s.reach = sk__vessel_reach(ri->size.hi, fw);
+    s.reach2 = s.reach * s.reach;
+    s.fw = fw;
+    s.cover = cover;
+    s.count = 0;
+    double reach = s.reach;
+    for (int i = 0; i < count; i++) {
+        cover[i] = 0.0;
+        /* every point within `reach` of p0 lies within asin(reach / r0) of its angle; for
+           reach / r0 <= 1/2 that is below 1.05 reach / r0 */
+        double q = reach / r0[i];
+        window[i] = r0[i] > 2.0 * reach ? 1.05 * q + 1e-12 : SK_PI;
+        int j0 = (int)t[i]; /* t >= 0 */
+        if (j0 < 1) j0 = 1;
+        /* Most points are far from both ring j0's vessels and ring j0 + 1's: the walks
+           below would stop at once, as the same bounds without the clamp to the rings'
+           extent tell (ring_reach's hi <= R + slack and lo >= R - slack). */
+        if (sk__rings_R_year_at(rings, &at0[i], j0) + sk__rings_lipschitz(rings, j0) * window[i] +
+                    ri->offset_max < r0[i] - reach &&
+            sk__rings_R_year_at(rings, &at0[i], j0 + 1) -
+                    sk__rings_lipschitz(rings, j0 + 1) * window[i] + ri->offset_min > r0[i] + reach)
+            continue;
+        for (int j = j0; j >= 1; j--) {
+            double lo, hi;
+            ring_reach(rings, &at0[i], j, window[i], &lo, &hi);
+            if (hi + ri->offset_max < r0[i] - reach) break;
+            if (lo + ri->offset_min > r0[i] + reach) continue;
+            ring_stream_add(&s, i, j, lo, hi);
+        }
+        for (int j = j0 + 1;; j++) {
+            double lo, hi;
+            ring_reach(rings, &at0[i], j, window[i], &lo, &hi);
+            if (lo + ri->offset_min > r0[i] + reach) break;
+            ring_stream_add(&s, i, j, lo, hi);
+        }
     }
-    /* Upwards: likewise centres of rings j' >= j lie beyond ring j's lower bound. */
-    for (int j = j0 + 1;; j++) {
-        double lo, hi;
-        ring_reach(rings, at0, j, window, &lo, &hi);
-        if (lo + ri->offset_min > r0 + reach) break;
-        double c = ring_coverage(v, rings, j, x0, z0, r0, theta0, window, reach, fw);
-        if (c > best) best = c;
-        if (best >= 1.0) return 1.0;
+    ring_stream_flush(&s);
+}
+
+/* The diffuse-porous coverage of a batch of end-grain points when a vessel reaches no
+ * further than half a cell: a vessel of the home cell's neighbours can then reach a point
+ * only from the side of the point's quadrant, so the 2 x 2 block of cells around that
+ * corner is all. Stage by stage: the cells; then, with neighbours mostly within reach,
+ * all four hashes, the distances of their vessels and the nearest vessel's coverage
+ * (unless, rarely, more than one is in reach); or else the home cell and the neighbours
+ * nearer than `reach` (with a margin for the rounding of the centres, which then fail the
+ * distance test anyway). */
+static void diffuse_block_batch(const sk__vessels *v, int count, const double *x0, const double *z0,
+                                double fw, double *cover)
+{
+    const sk__diffuse_index *di = &v->diffuse;
+    double reach = sk__vessel_reach(di->size.hi, fw), reach2 = reach * reach;
+    double cell = di->cell, inv_cell = di->inv_cell;
+    double cx[2][SK__WOOD_BATCH], cz[2][SK__WOOD_BATCH]; /* home and neighbour indices */
+    double ex[SK__WOOD_BATCH], ez[SK__WOOD_BATCH];       /* distances to the neighbours */
+    double uh[4][SK__WOOD_BATCH], ul[4][SK__WOOD_BATCH], d2[4][SK__WOOD_BATCH];
+    uint64_t h[4][SK__WOOD_BATCH];
+#pragma omp simd
+    for (int i = 0; i < count; i++) {
+        double ux = x0[i] * inv_cell, uz = z0[i] * inv_cell;
+        double hx = sk__floor_vec(ux), hz = sk__floor_vec(uz), fx = ux - hx, fz = uz - hz;
+        double gx = 1.0 - fx, gz = 1.0 - fz;
+        cx[0][i] = hx;
+        cz[0][i] = hz;
+        cx[1][i] = fx >= 0.5 ? hx + 1.0 : hx - 1.0;
+        cz[1][i] = fz >= 0.5 ? hz + 1.0 : hz - 1.0;
+        ex[i] = (fx < gx ? fx : gx) * cell - 1e-9 * cell;
+        ez[i] = (fz < gz ? fz : gz) * cell - 1e-9 * cell;
     }
-    return best;
+    if (reach <= 0.125 * cell) {
+        /* neighbours rarely within reach: the home cell, and the others when near */
+        for (int i = 0; i < count; i++) {
+            uint64_t kh = di->seed + (uint64_t)(int64_t)cx[0][i] * SK__WOOD_HASH_A;
+            uint64_t lh = (uint64_t)(int64_t)cz[0][i] * SK__WOOD_HASH_B;
+            double best = cell_cover_key(v, kh + lh, cx[0][i], cz[0][i], x0[i], z0[i], reach2, fw, 0.0);
+            if (ex[i] < reach || ez[i] < reach) {
+                uint64_t kn = di->seed + (uint64_t)(int64_t)cx[1][i] * SK__WOOD_HASH_A;
+                uint64_t ln = (uint64_t)(int64_t)cz[1][i] * SK__WOOD_HASH_B;
+                if (ex[i] < reach)
+                    best = cell_cover_key(v, kn + lh, cx[1][i], cz[0][i], x0[i], z0[i], reach2, fw, best);
+                if (ez[i] < reach) {
+                    best = cell_cover_key(v, kh + ln, cx[0][i], cz[1][i], x0[i], z0[i], reach2, fw, best);
+                    if (ex[i] < reach && ex[i] * ex[i] + ez[i] * ez[i] < reach2)
+                        best = cell_cover_key(v, kn + ln, cx[1][i], cz[1][i], x0[i], z0[i], reach2,
+                                              fw, best);
+                }
+            }
+            cover[i] = best;
+        }
+        return;
+    }
+    for (int i = 0; i < count; i++) {
+        /* the hash keys of the block's columns and rows (sk__wood_hash's sum) */
+        uint64_t kx[2] = {di->seed + (uint64_t)(int64_t)cx[0][i] * SK__WOOD_HASH_A,
+                          di->seed + (uint64_t)(int64_t)cx[1][i] * SK__WOOD_HASH_A};
+        uint64_t kz[2] = {(uint64_t)(int64_t)cz[0][i] * SK__WOOD_HASH_B,
+                          (uint64_t)(int64_t)cz[1][i] * SK__WOOD_HASH_B};
+        for (int c = 0; c < 4; c++) {
+            uint64_t hc = sk_mix64(kx[c & 1] + kz[c >> 1]);
+            h[c][i] = hc;
+            uh[c][i] = unit_hi(hc);
+            ul[c][i] = unit_lo(hc);
+        }
+    }
+    for (int c = 0; c < 4; c++) {
+        const double *ccx = cx[c & 1], *ccz = cz[c >> 1];
+#pragma omp simd
+        for (int i = 0; i < count; i++) {
+            double x = (ccx[i] + uh[c][i]) * cell, z = (ccz[i] + ul[c][i]) * cell; /* cell_d2 */
+            d2[c][i] = (x - x0[i]) * (x - x0[i]) + (z - z0[i]) * (z - z0[i]);
+        }
+    }
+    for (int i = 0; i < count; i++) {
+        int in = (d2[0][i] < reach2) + (d2[1][i] < reach2) + (d2[2][i] < reach2) + (d2[3][i] < reach2);
+        double best = 0.0;
+        if (in > 1) {
+            for (int c = 0; c < 4; c++) {
+                double cc = cell_cover_d2(v, h[c][i], d2[c][i], reach2, fw);
+                if (cc > best) best = cc;
+            }
+        } else {
+            /* at most one vessel in reach: the nearest one's coverage (0 beyond reach) */
+            double dm = d2[0][i];
+            uint64_t hm = h[0][i];
+            for (int c = 1; c < 4; c++) {
+                hm = d2[c][i] < dm ? h[c][i] : hm;
+                dm = d2[c][i] < dm ? d2[c][i] : dm;
+            }
+            best = cell_cover_d2(v, hm, dm, reach2, fw);
+        }
+        cover[i] = best;
+    }
+}
+
+void sk__vessels_coverage_batch(const sk__vessels *v, const sk__rings *rings, int count,
+                                const sk__rings_at *at0, const double *x0, const double *z0,
+                                const double *r0, const double *theta0, const double *t,
+                                double fw, double *cover)
+{
+    if (v->ring.on) {
+        ring_porous_batch(v, rings, count, at0, x0, z0, r0, theta0, t, fw, cover);
+    } else {
+        for (int i = 0; i < count; i++) cover[i] = 0.0;
+    }
+    if (!v->diffuse.on) return;
+    const sk__diffuse_index *di = &v->diffuse;
+    double reach = sk__vessel_reach(di->size.hi, fw), d[SK__WOOD_BATCH];
+    if (reach <= 0.5 * di->cell) {
+        diffuse_block_batch(v, count, x0, z0, fw, d);
+    } else {
+        for (int i = 0; i < count; i++) d[i] = diffuse_coverage(v, x0[i], z0[i], fw);
+    }
+    /* the larger of the two (both in [0, 1]) */
+    for (int i = 0; i < count; i++) cover[i] = d[i] > cover[i] ? d[i] : cover[i];
 }
 
 double sk__vessels_coverage_at(const sk__vessels *v, const sk__rings *rings,
                                const sk__rings_at *at0, double x0, double z0, double r0,
                                double theta0, double t, double fw)
 {
-    double c = 0.0;
-    if (v->ring.on) c = ring_porous_coverage(v, rings, at0, x0, z0, r0, theta0, t, fw);
-    if (c < 1.0 && v->diffuse.on) {
-        double d = diffuse_coverage(v, x0, z0, fw);
-        if (d > c) c = d;
-    }
+    double c;
+    sk__vessels_coverage_batch(v, rings, 1, at0, &x0, &z0, &r0, &theta0, &t, fw, &c);
     return c;
 }
 

@@ -11,6 +11,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "wood/batch.h"
 #include "wood/rings.h"
 
 typedef struct sk__vessel {
@@ -65,6 +66,12 @@ void sk__ring_vessel(const sk__vessels *vessels, const sk__rings *rings, int j, 
  * width, with 0 the answer is 0 or 1 (inside a circle: distance < radius). */
 double sk__vessels_coverage(const sk__vessels *vessels, const sk__rings *rings, double x0,
                             double z0, double r0, double theta0, double t, double footprint);
+/* sk__vessels_coverage_at for `count` <= SK__WOOD_BATCH points (arrays), into cover. */
+void sk__vessels_coverage_batch(const sk__vessels *vessels, const sk__rings *rings, int count,
+                                const sk__rings_at *at0, const double *x0, const double *z0,
+                                const double *r0, const double *theta0, const double *t,
+                                double footprint, double *cover);
+
 /* The same with the ring table columns of theta0 already found (sk__rings_at_angle). */
 double sk__vessels_coverage_at(const sk__vessels *vessels, const sk__rings *rings,
                                const sk__rings_at *at0, double x0, double z0, double r0,

@@ -4,6 +4,7 @@
 
 #include "shitsukan/wood.h"
 #include "wood/attributes.h"
+#include "wood/batch.h"
 #include "wood/frame.h"
 #include "wood/grain.h"
 #include "wood/rings.h"
@@ -21,23 +22,6 @@ struct sk_wood {
     sk_vec3f axis;     /* the tree's +y in the scene */
     sk_wood_stats stats;
 };
-
-/* Points evaluated together by sk__wood_eval_batch. */
-#define SK__WOOD_BATCH 16
-
-/* Optional outputs of sk__wood_eval_batch (the others are always filled). */
-#define SK__WOOD_EVAL_DIVE 1u /* the dive angle (0 without it) */
-
-/* The samples of a batch of points (the fields of sk_wood_sample), one array entry per
- * point. */
-typedef struct sk__wood_batch {
-    float albedo[3][SK__WOOD_BATCH]; /* linear R, G, B */
-    float vessel[SK__WOOD_BATCH];
-    float fibre[3][SK__WOOD_BATCH];  /* unit fibre direction, scene frame */
-    float dive[SK__WOOD_BATCH];      /* 0 without SK__WOOD_EVAL_DIVE */
-    float t[SK__WOOD_BATCH], latewood[SK__WOOD_BATCH], phase[SK__WOOD_BATCH];
-    sk_vec3f up;                     /* the same for every point (one normal) */
-} sk__wood_batch;
 
 /* sk_wood_eval_filtered for `count` <= SK__WOOD_BATCH points with one normal; `flags`
  * (SK__WOOD_EVAL_*) asks for the optional outputs. */
