@@ -44,9 +44,10 @@ bool sk__phase_build(sk__grain *grain);
 /* The terms of Phi(t, y) and G'(t, y) that depend on y alone (a planar cut along the
  * rings has one y per row, so they are found once for many points). */
 typedef struct sk__phase_y {
-    double P, G; /* spiral, wavy and tabulated terms */
-    int j;       /* dg grid column of y and the weight u of column j + 1 */
+    double P, G;    /* spiral, wavy and tabulated terms */
+    int j;          /* dg grid column of y and the weight u of column j + 1 */
     double u;
+    double dy_u, half_u; /* dy u and u / 2, the factors of the quadratic in between */
 } sk__phase_y;
 
 static inline sk__phase_y sk__phase_at_y(const sk__grain *g, double y)
@@ -65,7 +66,7 @@ static inline sk__phase_y sk__phase_at_y(const sk__grain *g, double y)
         py.G += sk__grain_table_slope(g, y);
     }
     py.j = 0;
-    py.u = 0.0;
+    py.u = py.dy_u = py.half_u = 0.0;
     if (g->dg) {
         double ym = y - sk__floor_d(y * g->inv_period) * g->period;
         double uy = ym * g->inv_dy;
@@ -74,6 +75,8 @@ static inline sk__phase_y sk__phase_at_y(const sk__grain *g, double y)
         if (jj < 0) jj = 0;
         py.j = jj;
         py.u = uy - jj;
+        py.dy_u = g->dy * py.u;
+        py.half_u = 0.5 * py.u;
     }
     return py;
 }
@@ -99,18 +102,16 @@ static inline double sk__phase_eval_y(const sk__grain *g, const sk__phase_y *py,
         if (ut > (double)(g->nt - 1)) ut = (double)(g->nt - 1);
         int i = (int)ut;
         if (i > g->nt - 2) i = g->nt - 2;
-        double a = ut - i, u = py->u;
-        int j = py->j;
-        size_t row = (size_t)g->ny + 1;
-        double v[2], d[2];
-        for (int e = 0; e < 2; e++) {
-            const float *dg = g->dg + (size_t)(i + e) * row, *ph = g->phi + (size_t)(i + e) * row;
-            double slope_j = (double)dg[j + 1] - dg[j];
-            d[e] = dg[j] + u * slope_j;
-            v[e] = ph[j] + g->dy * u * (dg[j] + 0.5 * u * slope_j);
-        }
-        P += v[0] + a * (v[1] - v[0]);
-        G += d[0] + a * (d[1] - d[0]);
+        double a = ut - i, u = py->u, dy_u = py->dy_u, half_u = py->half_u;
+        size_t row = (size_t)g->ny + 1, at = (size_t)i * row + (size_t)py->j;
+        const float *dg0 = g->dg + at, *dg1 = dg0 + row, *ph0 = g->phi + at, *ph1 = ph0 + row;
+        /* rows i and i + 1: dg linear in y, its integral quadratic */
+        double s0 = (double)dg0[1] - dg0[0], s1 = (double)dg1[1] - dg1[0];
+        double d0 = dg0[0] + u * s0, d1 = dg1[0] + u * s1;
+        double v0 = ph0[0] + dy_u * (dg0[0] + half_u * s0);
+        double v1 = ph1[0] + dy_u * (dg1[0] + half_u * s1);
+        P += v0 + a * (v1 - v0);
+        G += d0 + a * (d1 - d0);
     }
     if (slope) *slope = G;
     return P;

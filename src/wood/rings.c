@@ -227,6 +227,7 @@ sk_result sk__rings_build(sk__rings *rg, const sk_wood_desc *desc, sk_error *err
         double rmin = INFINITY;
         for (int j = 0; j < rg->ntheta; j++)
             rmin = fmin(rmin, rg->R[(size_t)j * (size_t)rg->nt + (size_t)rg->nt - 1]);
+        rg->inside = rmin;
         if (rmin >= radius || years >= SK_WOOD_MAX_RINGS) break;
         double width = rg->width;
         sk__rings_free(rg);

@@ -14,6 +14,7 @@ typedef struct sk__rings {
     double dt;          /* t step of the table in years (1 / dt is an integer) */
     double inv_dt;
     int per_year;       /* knots per year, 1 / dt */
+    double inside;      /* smallest R at the last knot: every r below is inside the table */
     int nt;             /* knots t_i = i dt, i = 0 .. nt - 1 */
     double t_max;       /* (nt - 1) dt */
     int years;          /* whole years the table covers (= t_max) */
@@ -124,8 +125,10 @@ static inline double sk__rings_T_at(const sk__rings *rg, const sk__rings_at *at,
     const float *c0 = at->c0, *c1 = at->c1;
     double f = at->f;
     int j = at->j, last = rg->nt - 1;
-    double r_last = sk__rings_col_value(c0, c1, f, last);
-    if (r >= r_last) {
+    /* beyond the table (only past its smallest last radius: col_value lies between the
+       columns' values) */
+    double r_last;
+    if (r >= rg->inside && r >= (r_last = sk__rings_col_value(c0, c1, f, last))) {
         double s0 = rg->end_slope[j], s1 = rg->end_slope[j + 1];
         double slope = s0 + f * (s1 - s0);
         double t = rg->t_max + (r - r_last) / slope;
@@ -139,6 +142,9 @@ static inline double sk__rings_T_at(const sk__rings *rg, const sk__rings_at *at,
     if (k >= rg->nguess) k = rg->nguess - 1;
     int i = rg->guess[(size_t)j * (size_t)rg->nguess + (size_t)k];
     double r1 = sk__rings_col_value(c0, c1, f, i + 1);
+    /* the guess is the knot or one below it: a step without a branch, then (rarely) more */
+    i += r1 <= r && i + 1 < last;
+    r1 = sk__rings_col_value(c0, c1, f, i + 1);
     while (r1 <= r && i + 1 < last) {
         i++;
         r1 = sk__rings_col_value(c0, c1, f, i + 1);

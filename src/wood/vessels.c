@@ -409,6 +409,7 @@ static void diffuse_block_batch(const sk__vessels *v, int count, const double *x
     double ex[SK__WOOD_BATCH], ez[SK__WOOD_BATCH];       /* distances to the neighbours */
     double uh[4][SK__WOOD_BATCH], ul[4][SK__WOOD_BATCH], d2[4][SK__WOOD_BATCH];
     uint64_t h[4][SK__WOOD_BATCH];
+    uint32_t hi[4][SK__WOOD_BATCH], lo[4][SK__WOOD_BATCH];
 #pragma omp simd
     for (int i = 0; i < count; i++) {
         double ux = x0[i] * inv_cell, uz = z0[i] * inv_cell;
@@ -444,43 +445,64 @@ static void diffuse_block_batch(const sk__vessels *v, int count, const double *x
         return;
     }
     for (int i = 0; i < count; i++) {
-        /* the hash keys of the block's columns and rows (sk__wood_hash's sum) */
-        uint64_t kx[2] = {di->seed + (uint64_t)(int64_t)cx[0][i] * SK__WOOD_HASH_A,
-                          di->seed + (uint64_t)(int64_t)cx[1][i] * SK__WOOD_HASH_A};
-        uint64_t kz[2] = {(uint64_t)(int64_t)cz[0][i] * SK__WOOD_HASH_B,
-                          (uint64_t)(int64_t)cz[1][i] * SK__WOOD_HASH_B};
+        /* the hash keys of the block's columns and rows (sk__wood_hash's sum); the cells
+           in the order home, x neighbour, z neighbour, diagonal */
+        uint64_t kh = di->seed + (uint64_t)(int64_t)cx[0][i] * SK__WOOD_HASH_A;
+        uint64_t kn = di->seed + (uint64_t)(int64_t)cx[1][i] * SK__WOOD_HASH_A;
+        uint64_t lh = (uint64_t)(int64_t)cz[0][i] * SK__WOOD_HASH_B;
+        uint64_t ln = (uint64_t)(int64_t)cz[1][i] * SK__WOOD_HASH_B;
+        h[0][i] = sk_mix64(kh + lh);
+        h[1][i] = sk_mix64(kn + lh);
+        h[2][i] = sk_mix64(kh + ln);
+        h[3][i] = sk_mix64(kn + ln);
         for (int c = 0; c < 4; c++) {
-            uint64_t hc = sk_mix64(kx[c & 1] + kz[c >> 1]);
-            h[c][i] = hc;
-            uh[c][i] = unit_hi(hc);
-            ul[c][i] = unit_lo(hc);
+            hi[c][i] = (uint32_t)(h[c][i] >> 32);
+            lo[c][i] = (uint32_t)h[c][i];
         }
     }
+    /* unit_hi and unit_lo of the hashes */
     for (int c = 0; c < 4; c++) {
-        const double *ccx = cx[c & 1], *ccz = cz[c >> 1];
 #pragma omp simd
         for (int i = 0; i < count; i++) {
-            double x = (ccx[i] + uh[c][i]) * cell, z = (ccz[i] + ul[c][i]) * cell; /* cell_d2 */
-            d2[c][i] = (x - x0[i]) * (x - x0[i]) + (z - z0[i]) * (z - z0[i]);
+            uh[c][i] = (double)hi[c][i] * 0x1.0p-32;
+            ul[c][i] = (double)lo[c][i] * 0x1.0p-32;
         }
     }
+    /* the distances (cell_d2), how many are in reach, and the nearest */
+    double in[SK__WOOD_BATCH], nearest[SK__WOOD_BATCH];
+#pragma omp simd
     for (int i = 0; i < count; i++) {
-        int in = (d2[0][i] < reach2) + (d2[1][i] < reach2) + (d2[2][i] < reach2) + (d2[3][i] < reach2);
+        double xh = cx[0][i], xn = cx[1][i], zh = cz[0][i], zn = cz[1][i];
+        double x, z;
+        x = (xh + uh[0][i]) * cell, z = (zh + ul[0][i]) * cell;
+        double e0 = d2[0][i] = (x - x0[i]) * (x - x0[i]) + (z - z0[i]) * (z - z0[i]);
+        x = (xn + uh[1][i]) * cell, z = (zh + ul[1][i]) * cell;
+        double e1 = d2[1][i] = (x - x0[i]) * (x - x0[i]) + (z - z0[i]) * (z - z0[i]);
+        x = (xh + uh[2][i]) * cell, z = (zn + ul[2][i]) * cell;
+        double e2 = d2[2][i] = (x - x0[i]) * (x - x0[i]) + (z - z0[i]) * (z - z0[i]);
+        x = (xn + uh[3][i]) * cell, z = (zn + ul[3][i]) * cell;
+        double e3 = d2[3][i] = (x - x0[i]) * (x - x0[i]) + (z - z0[i]) * (z - z0[i]);
+        in[i] = (e0 < reach2 ? 1.0 : 0.0) + (e1 < reach2 ? 1.0 : 0.0) +
+                (e2 < reach2 ? 1.0 : 0.0) + (e3 < reach2 ? 1.0 : 0.0);
+        double dm = e0, km = 0.0;
+        km = e1 < dm ? 1.0 : km;
+        dm = e1 < dm ? e1 : dm;
+        km = e2 < dm ? 2.0 : km;
+        dm = e2 < dm ? e2 : dm;
+        km = e3 < dm ? 3.0 : km;
+        nearest[i] = km;
+    }
+    for (int i = 0; i < count; i++) {
         double best = 0.0;
-        if (in > 1) {
+        if (in[i] > 1.0) {
             for (int c = 0; c < 4; c++) {
                 double cc = cell_cover_d2(v, h[c][i], d2[c][i], reach2, fw);
                 if (cc > best) best = cc;
             }
         } else {
             /* at most one vessel in reach: the nearest one's coverage (0 beyond reach) */
-            double dm = d2[0][i];
-            uint64_t hm = h[0][i];
-            for (int c = 1; c < 4; c++) {
-                hm = d2[c][i] < dm ? h[c][i] : hm;
-                dm = d2[c][i] < dm ? d2[c][i] : dm;
-            }
-            best = cell_cover_d2(v, hm, dm, reach2, fw);
+            int c = (int)nearest[i];
+            best = cell_cover_d2(v, h[c][i], d2[c][i], reach2, fw);
         }
         cover[i] = best;
     }
