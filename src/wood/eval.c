@@ -135,17 +135,14 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
         half[i] = half_footprint * sqrt(tangential > 0.0 ? tangential : 0.0) / width[i];
     }
     const sk__attributes *attr = &w->attr;
+    double late[B], shift[B], vessel[B];
     for (int i = 0; i < count; i++) {
-        double late = sk__attributes_latewood(attr, t[i], half[i]);
-        float shift = (float)sk__attributes_shift(attr, t[i], theta0[i], y[i]), lf = (float)late;
-        out->albedo[0][i] = (attr->earlywood.x + (attr->latewood.x - attr->earlywood.x) * lf) * shift;
-        out->albedo[1][i] = (attr->earlywood.y + (attr->latewood.y - attr->earlywood.y) * lf) * shift;
-        out->albedo[2][i] = (attr->earlywood.z + (attr->latewood.z - attr->earlywood.z) * lf) * shift;
-        out->latewood[i] = lf;
+        late[i] = sk__attributes_latewood(attr, t[i], half[i]);
+        shift[i] = sk__attributes_shift(attr, t[i], theta0[i], y[i]);
     }
     /* vessels (sec. 5) at the end-grain point */
     if (w->vessels.ring.on || w->vessels.diffuse.on) {
-        double x0[B], z0[B], vessel[B];
+        double x0[B], z0[B];
 #pragma omp simd
         for (int i = 0; i < count; i++) {
             x0[i] = r0[i] * dir_x[i];
@@ -153,14 +150,27 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
         }
         sk__vessels_coverage_batch(&w->vessels, rg, count, at0, x0, z0, r0, theta0, t,
                                    footprint_mm, vessel);
-        for (int i = 0; i < count; i++) {
-            float vf = (float)vessel[i];
-            for (int c = 0; c < 3; c++)
-                out->albedo[c][i] += ((&attr->vessel.x)[c] - out->albedo[c][i]) * vf;
-            out->vessel[i] = vf;
-        }
     } else {
-        for (int i = 0; i < count; i++) out->vessel[i] = 0.0f;
+        for (int i = 0; i < count; i++) vessel[i] = 0.0;
+    }
+    /* the albedo: the ring profile's colour darkened by the cell's shift, and an open
+       vessel's colour over its coverage (a coverage of 0 leaves the colour as it is) */
+    float ew[3] = {attr->earlywood.x, attr->earlywood.y, attr->earlywood.z};
+    float lw[3] = {attr->latewood.x, attr->latewood.y, attr->latewood.z};
+    float vc[3] = {attr->vessel.x, attr->vessel.y, attr->vessel.z};
+    for (int c = 0; c < 3; c++) {
+        float e = ew[c], l = lw[c], vcol = vc[c];
+        float *alb = out->albedo[c];
+#pragma omp simd
+        for (int i = 0; i < count; i++) {
+            float a = (e + (l - e) * (float)late[i]) * (float)shift[i];
+            alb[i] = a + (vcol - a) * (float)vessel[i];
+        }
+    }
+#pragma omp simd
+    for (int i = 0; i < count; i++) {
+        out->latewood[i] = (float)late[i];
+        out->vessel[i] = (float)vessel[i];
     }
     /* the fibre through the point (sec. 7.1): sk__fibre_direction */
 #pragma omp simd

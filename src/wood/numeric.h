@@ -21,14 +21,13 @@ static inline int64_t sk__floor_i64(double x)
 
 static inline double sk__floor_d(double x) { return (double)sk__floor_i64(x); }
 
-/* floor(x) of any finite x as a double, without integer conversions (so loops of it
- * vectorize): round to an integer by adding and removing 2^52, then step down if that
- * went up. Equal to sk__floor_d wherever that is defined. */
+/* floor(x) for |x| < 2^51 as a double, without integer conversions (so loops of it
+ * vectorize): adding and removing 1.5 2^52 rounds x to an integer, then step down if that
+ * went up. Equal to sk__floor_d in that range (beyond it, deterministic but not exact). */
 static inline double sk__floor_vec(double x)
 {
-    const double big = 4503599627370496.0; /* 2^52: doubles beyond are integers */
-    double a = x >= 0.0 ? (x + big) - big : (x - big) + big;
-    a = fabs(x) < big ? a : x;
+    const double round = 6755399441055744.0; /* 1.5 2^52 */
+    double a = (x + round) - round;
     return a > x ? a - 1.0 : a;
 }
 
@@ -79,7 +78,7 @@ static inline double sk__atan2(double y, double x)
 /* sin and cos of 2 pi k / 256, k = 0 .. 255 (numeric.c). */
 extern const double sk__sin_cos_table[256][2];
 
-/* sin and cos of x (|x| < 1e9): x = k pi/128 + b with |b| <= pi/256 (pi/128 split in two
+/* sin and cos of x (|x| < 1e13): x = k pi/128 + b with |b| <= pi/256 (pi/128 split in two
  * parts so b keeps its precision), the table at k, and the series of sin b and cos b
  * (errors below 1e-17) joined by the addition formulas. In two steps so that loops can
  * vectorize the arithmetic: sk__sincos_reduce gives k (as a double) and the series,
