@@ -78,7 +78,7 @@ static inline double sk__atan2(double y, double x)
 /* sin and cos of 2 pi k / 256, k = 0 .. 255 (numeric.c). */
 extern const double sk__sin_cos_table[256][2];
 
-/* sin and cos of x (|x| < 1e13): x = k pi/128 + b with |b| <= pi/256 (pi/128 split in two
+/* sin and cos of x (|x| < 1e9): x = k pi/128 + b with |b| <= pi/256 (pi/128 split in two
  * parts so b keeps its precision), the table at k, and the series of sin b and cos b
  * (errors below 1e-17) joined by the addition formulas. In two steps so that loops can
  * vectorize the arithmetic: sk__sincos_reduce gives k (as a double) and the series,
