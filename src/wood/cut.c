@@ -60,7 +60,9 @@ typedef struct cut_context {
     int S;                          /* samples per pixel along each axis */
     double inv_W, inv_H, width_mm, height_mm;
     double sub[8];                  /* (s + 0.5) / S: sample offsets inside a pixel */
-    int pixel_of[SK__WOOD_BATCH], sub_of[SK__WOOD_BATCH]; /* sample j of a span: pixel, column */
+    int pixel_of[SK__WOOD_BATCH];   /* sample j of a span: its pixel */
+    double pixel_x[SK__WOOD_BATCH]; /* that pixel's column in the span, and the sample's */
+    double sub_x[SK__WOOD_BATCH];   /* offset inside the pixel */
     float footprint, inv;          /* sample footprint (mm); 1 / samples per pixel */
     bool figure, lit;              /* eq. (4) shading; light above the surface */
     sk__figure_light fl;
@@ -104,16 +106,35 @@ static void shade_figure_batch(const cut_context *c, const sk__wood_batch *b, in
     }
 }
 
-/* Adds the batch's values src[j] to out[stride * pixel_of[j]]. With one sample per pixel
+/* Adds the batch's values src[j] to out[pixel_of[j]]. With one sample per pixel
  * (`single`, pixel_of[j] = j) the value is stored as 0 + src[j], the same sum without
  * clearing the output first. */
-static void accumulate(float *out, int stride, const float *src, int count, const int *pixel_of,
-                       bool single)
+static void accumulate(float *out, const float *src, int count, const int *pixel_of, bool single)
 {
     if (single) {
-        for (int j = 0; j < count; j++) out[stride * j] = 0.0f + src[j];
+        for (int j = 0; j < count; j++) out[j] = 0.0f + src[j];
     } else {
-        for (int j = 0; j < count; j++) out[stride * pixel_of[j]] += src[j];
+        for (int j = 0; j < count; j++) out[pixel_of[j]] += src[j];
+    }
+}
+
+/* accumulate for the three channels of RGB pixels (r, g, b: the batch's arrays). */
+static void accumulate_rgb(float *out, const float *r, const float *g, const float *b, int count,
+                           const int *pixel_of, bool single)
+{
+    if (single) {
+        for (int j = 0; j < count; j++) {
+            out[3 * j + 0] = 0.0f + r[j];
+            out[3 * j + 1] = 0.0f + g[j];
+            out[3 * j + 2] = 0.0f + b[j];
+        }
+    } else {
+        for (int j = 0; j < count; j++) {
+            float *o = out + 3 * pixel_of[j];
+            o[0] += r[j];
+            o[1] += g[j];
+            o[2] += b[j];
+        }
     }
 }
 
@@ -124,7 +145,8 @@ static void render_span(const cut_context *c, int yy, int x0, int pixels)
     const sk_wood_cut_desc *desc = c->desc;
     const sk_wood *wood = c->wood;
     sk_vec3f n = c->n, a = c->a, up = c->up;
-    sk_vec3f points[SK__WOOD_BATCH];
+    float px[SK__WOOD_BATCH], py[SK__WOOD_BATCH], pz[SK__WOOD_BATCH];
+    const float *points[3] = {px, py, pz};
     sk__wood_batch b;
     float rgb[3][SK__WOOD_BATCH];
     int Y = c->ry + yy, count = pixels * c->S;
@@ -146,9 +168,15 @@ static void render_span(const cut_context *c, int yy, int x0, int pixels)
         /* the pixel position depends only on (X, Y): regions match the image */
         double fy = 0.5 - (Y + c->sub[sy]) * c->inv_H;
         sk_vec3f row = sk_v3f_add(desc->point, sk_v3f_scale(up, (float)(fy * c->height_mm)));
+        double column = c->rx + x0;
+#pragma omp simd
         for (int j = 0; j < count; j++) {
-            double fx = (c->rx + x0 + c->pixel_of[j] + c->sub[c->sub_of[j]]) * c->inv_W - 0.5;
-            points[j] = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * c->width_mm)));
+            /* (rx + x0 + pixel + sample offset) / W - 0.5, the integer part exact */
+            double fx = (column + c->pixel_x[j] + c->sub_x[j]) * c->inv_W - 0.5;
+            float s = (float)(fx * c->width_mm);
+            px[j] = row.x + a.x * s;
+            py[j] = row.y + a.y * s;
+            pz[j] = row.z + a.z * s;
         }
         sk__wood_eval_batch(wood, count, points, n, c->footprint, c->flags, &b);
         if (sh) {
@@ -167,10 +195,10 @@ static void render_span(const cut_context *c, int yy, int x0, int pixels)
                     rgb[2][j] = col.z;
                 }
             }
-            for (int k = 0; k < 3; k++) accumulate(sh + k, 3, rgb[k], count, c->pixel_of, single);
+            accumulate_rgb(sh, rgb[0], rgb[1], rgb[2], count, c->pixel_of, single);
         }
         if (al)
-            for (int k = 0; k < 3; k++) accumulate(al + k, 3, b.albedo[k], count, c->pixel_of, single);
+            accumulate_rgb(al, b.albedo[0], b.albedo[1], b.albedo[2], count, c->pixel_of, single);
         if (fi) {
             /* the fibre in the cut's frame (x = image right, y = image up, z = viewer) */
             for (int j = 0; j < count; j++) {
@@ -179,10 +207,10 @@ static void render_span(const cut_context *c, int yy, int x0, int pixels)
                 rgb[1][j] = sk_v3f_dot(f, up);
                 rgb[2][j] = sk_v3f_dot(f, n);
             }
-            for (int k = 0; k < 3; k++) accumulate(fi + k, 3, rgb[k], count, c->pixel_of, single);
+            accumulate_rgb(fi, rgb[0], rgb[1], rgb[2], count, c->pixel_of, single);
         }
-        if (ve) accumulate(ve, 1, b.vessel, count, c->pixel_of, single);
-        if (dv) accumulate(dv, 1, b.dive, count, c->pixel_of, single);
+        if (ve) accumulate(ve, b.vessel, count, c->pixel_of, single);
+        if (dv) accumulate(dv, b.dive, count, c->pixel_of, single);
     }
     float inv = c->inv;
     if (inv != 1.0f) { /* x * 1 = x: nothing to scale with one sample */
@@ -259,7 +287,8 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
     for (int k = 0; k < S; k++) c.sub[k] = (k + 0.5) * inv_S;
     for (int j = 0; j < SK__WOOD_BATCH; j++) {
         c.pixel_of[j] = j / S;
-        c.sub_of[j] = j % S;
+        c.pixel_x[j] = j / S;
+        c.sub_x[j] = c.sub[j % S];
     }
     c.width_mm = desc->width_mm;
     c.height_mm = c.width_mm * H / W;

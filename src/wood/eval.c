@@ -35,8 +35,8 @@ static inline bool same_bits(double a, double b)
 
 #define B SK__WOOD_BATCH
 
-void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk_vec3f normal,
-                         float footprint_mm, unsigned flags, sk__wood_batch *out)
+void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[3],
+                         sk_vec3f normal, float footprint_mm, unsigned flags, sk__wood_batch *out)
 {
     if (count <= 0) return;
     const sk__rings *rg = &w->rings;
@@ -55,12 +55,27 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const sk_vec3f *points, sk
     double theta_scale = rg->theta_scale;
     int col_mask = rg->ntheta - 1;
 
-    /* into the tree frame: r, theta and the ring table's columns there */
-    for (int i = 0; i < count; i++) {
-        sk_vec3f p = sk__wood_frame_point_to_tree(&w->frame, points[i]);
-        px[i] = p.x;
-        y[i] = p.y;
-        pz[i] = p.z;
+    /* into the tree frame (sk__wood_frame_point_to_tree): r, theta and the ring table's
+       columns there */
+    const float *sx = points[0], *sy = points[1], *sz = points[2];
+    if (w->frame.identity) {
+        for (int i = 0; i < count; i++) {
+            px[i] = sx[i];
+            y[i] = sy[i];
+            pz[i] = sz[i];
+        }
+    } else {
+        const sk__wood_frame *f = &w->frame;
+        sk_vec3f o = f->origin, m0 = sk_v3f(f->to_tree.m[0][0], f->to_tree.m[0][1], f->to_tree.m[0][2]);
+        sk_vec3f m1 = sk_v3f(f->to_tree.m[1][0], f->to_tree.m[1][1], f->to_tree.m[1][2]);
+        sk_vec3f m2 = sk_v3f(f->to_tree.m[2][0], f->to_tree.m[2][1], f->to_tree.m[2][2]);
+#pragma omp simd
+        for (int i = 0; i < count; i++) {
+            float dx = sx[i] - o.x, dy = sy[i] - o.y, dz = sz[i] - o.z;
+            px[i] = m0.x * dx + m0.y * dy + m0.z * dz;
+            y[i] = m1.x * dx + m1.y * dy + m1.z * dz;
+            pz[i] = m2.x * dx + m2.y * dy + m2.z * dz;
+        }
     }
 #pragma omp simd
     for (int i = 0; i < count; i++) {
@@ -207,7 +222,8 @@ void sk_wood_eval_filtered(const sk_wood *w, sk_vec3f point, sk_vec3f normal, fl
                            sk_wood_sample *s)
 {
     sk__wood_batch b;
-    sk__wood_eval_batch(w, 1, &point, normal, footprint_mm, SK__WOOD_EVAL_DIVE, &b);
+    const float *p[3] = {&point.x, &point.y, &point.z};
+    sk__wood_eval_batch(w, 1, p, normal, footprint_mm, SK__WOOD_EVAL_DIVE, &b);
     s->albedo = sk_v3f(b.albedo[0][0], b.albedo[1][0], b.albedo[2][0]);
     s->vessel = b.vessel[0];
     s->fibre = sk_v3f(b.fibre[0][0], b.fibre[1][0], b.fibre[2][0]);

@@ -495,10 +495,11 @@ static void diffuse_block_batch(const sk__vessels *v, int count, const double *x
     for (int i = 0; i < count; i++) {
         double best = 0.0;
         if (in[i] > 1.0) {
-            for (int c = 0; c < 4; c++) {
-                double cc = cell_cover_d2(v, h[c][i], d2[c][i], reach2, fw);
-                if (cc > best) best = cc;
-            }
+            for (int c = 0; c < 4; c++)
+                if (d2[c][i] < reach2) {
+                    double cc = cell_cover_d2(v, h[c][i], d2[c][i], reach2, fw);
+                    if (cc > best) best = cc;
+                }
         } else {
             /* at most one vessel in reach: the nearest one's coverage (0 beyond reach) */
             int c = (int)nearest[i];

@@ -23,10 +23,11 @@ struct sk_wood {
     sk_wood_stats stats;
 };
 
-/* sk_wood_eval_filtered for `count` <= SK__WOOD_BATCH points with one normal; `flags`
- * (SK__WOOD_EVAL_*) asks for the optional outputs. */
-void sk__wood_eval_batch(const sk_wood *wood, int count, const sk_vec3f *points, sk_vec3f normal,
-                         float footprint_mm, unsigned flags, sk__wood_batch *out);
+/* sk_wood_eval_filtered for `count` <= SK__WOOD_BATCH scene points (points[0..2]: the
+ * arrays of x, y and z) with one normal; `flags` (SK__WOOD_EVAL_*) asks for the optional
+ * outputs. */
+void sk__wood_eval_batch(const sk_wood *wood, int count, const float *const points[3],
+                         sk_vec3f normal, float footprint_mm, unsigned flags, sk__wood_batch *out);
 
 /* The unit direction towards the tree top in the surface of unit normal n (any tangent on
  * end grain): the `up` of every sample evaluated with that normal. */
