@@ -257,22 +257,37 @@ static double brute_force_coverage(const sk_wood *w, double x0, double z0, doubl
     return best;
 }
 
-/* Random end-grain points, and points placed near vessels so that hits are common. */
+/* Random end-grain points, and points placed near vessels so that hits are common; each
+ * point alone and in batches (the index tests a batch's points together). */
 static void check_index_against_scan(const sk_wood *w, double extent, int rings, double fw,
                                      int count)
 {
     int hits = 0;
-    for (int i = 0; i < count; i++) {
-        sk_rng rng = sk_rng_make(17, i, 0, 0);
-        double x0 = sk_rng_range(&rng, -extent * 0.8, extent * 0.8);
-        double z0 = sk_rng_range(&rng, -extent * 0.8, extent * 0.8);
-        double r0 = hypot(x0, z0), theta0 = atan2(z0, x0);
-        double t = sk__rings_T(&w->rings, r0, theta0, NULL, NULL);
-        double indexed = sk__vessels_coverage(&w->vessels, &w->rings, x0, z0, r0, theta0, t, fw);
-        double scanned = brute_force_coverage(w, x0, z0, fw, extent, rings);
-        if (indexed != scanned) fprintf(stderr, "point %d (%g, %g): index %.17g, scan %.17g\n", i, x0, z0, indexed, scanned);
-        assert_true(indexed == scanned);
-        if (indexed > 0.0) hits++;
+    sk__rings_at at[SK__WOOD_BATCH];
+    double x[SK__WOOD_BATCH], z[SK__WOOD_BATCH], r[SK__WOOD_BATCH], theta[SK__WOOD_BATCH];
+    double t[SK__WOOD_BATCH], cover[SK__WOOD_BATCH], scanned[SK__WOOD_BATCH];
+    for (int i0 = 0; i0 < count; i0 += SK__WOOD_BATCH) {
+        int n = count - i0 < SK__WOOD_BATCH ? count - i0 : SK__WOOD_BATCH;
+        for (int k = 0; k < n; k++) {
+            int i = i0 + k;
+            sk_rng rng = sk_rng_make(17, i, 0, 0);
+            x[k] = sk_rng_range(&rng, -extent * 0.8, extent * 0.8);
+            z[k] = sk_rng_range(&rng, -extent * 0.8, extent * 0.8);
+            r[k] = hypot(x[k], z[k]);
+            theta[k] = atan2(z[k], x[k]);
+            t[k] = sk__rings_T(&w->rings, r[k], theta[k], NULL, NULL);
+            at[k] = sk__rings_at_angle(&w->rings, theta[k]);
+            double indexed = sk__vessels_coverage(&w->vessels, &w->rings, x[k], z[k], r[k],
+                                                  theta[k], t[k], fw);
+            scanned[k] = brute_force_coverage(w, x[k], z[k], fw, extent, rings);
+            if (indexed != scanned[k])
+                fprintf(stderr, "point %d (%g, %g): index %.17g, scan %.17g\n", i, x[k], z[k],
+                        indexed, scanned[k]);
+            assert_true(indexed == scanned[k]);
+            if (indexed > 0.0) hits++;
+        }
+        sk__vessels_coverage_batch(&w->vessels, &w->rings, n, at, x, z, r, theta, t, fw, cover);
+        for (int k = 0; k < n; k++) assert_true(cover[k] == scanned[k]);
     }
     assert_true(hits > count / 30); /* the comparison saw vessels, not only empty wood */
 }
@@ -604,6 +619,85 @@ static void test_cut_same_bytes_for_threads_and_regions(void **state)
     free(fa);
     free(va);
     free(r);
+    sk_wood_destroy(w);
+}
+
+/* Every pixel of a cut (one sample per pixel) is sk_wood_eval_filtered at the pixel's
+ * point with the pixel's footprint, shaded by sk_wood_shade, to the bit: the cut's
+ * vectorized batches give what a single point gives. */
+static void check_cut_equals_eval(const sk_wood *w, int W, int H)
+{
+    size_t np = (size_t)W * H;
+    float *shaded = malloc(np * 3 * sizeof(float)), *albedo = malloc(np * 3 * sizeof(float));
+    float *vessel = malloc(np * sizeof(float)), *dive = malloc(np * sizeof(float));
+    sk_wood_cut_desc c = {0};
+    sk_wood_view_cut(w, &sk_wood_get_desc(w)->view, &c);
+    c.width = W;
+    c.height = H;
+    c.shaded = shaded;
+    c.albedo = albedo;
+    c.vessel = vessel;
+    c.dive = dive;
+    assert_int_equal(sk_wood_cut(w, &c, NULL), SK_OK);
+    /* the cut's frame and light, as sk_wood_cut sets them up */
+    sk_vec3f n = sk_v3f_scale(c.normal, 1.0f / sk_v3f_length(c.normal));
+    sk_vec3f a = sk_v3f_sub(c.axis, sk_v3f_scale(n, sk_v3f_dot(c.axis, n)));
+    a = sk_v3f_scale(a, 1.0f / sk_v3f_length(a));
+    sk_vec3f up = sk_v3f_cross(n, a);
+    sk_vec3f dir = sk_v3f_add(sk_v3f_scale(up, (float)cos(c.light_azimuth)),
+                              sk_v3f_scale(a, (float)sin(c.light_azimuth)));
+    sk_vec3f light = sk_v3f_normalize(sk_v3f_add(sk_v3f_scale(n, (float)cos(c.light_incidence)),
+                                                 sk_v3f_scale(dir, (float)sin(c.light_incidence))));
+    sk_vec3f view = sk_v3f_normalize(sk_v3f_add(sk_v3f_scale(n, (float)cos(c.view_incidence)),
+                                                sk_v3f_scale(up, (float)sin(c.view_incidence))));
+    double width_mm = c.width_mm, height_mm = width_mm * H / W;
+    float footprint = (float)(width_mm / W);
+    int vessels = 0;
+    for (int Y = 0; Y < H; Y++) {
+        double fy = 0.5 - (Y + 0.5) * (1.0 / H);
+        sk_vec3f row = sk_v3f_add(c.point, sk_v3f_scale(up, (float)(fy * height_mm)));
+        for (int X = 0; X < W; X++) {
+            double fx = (X + 0.5) * (1.0 / W) - 0.5;
+            sk_vec3f p = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * width_mm)));
+            sk_wood_sample s;
+            sk_wood_eval_filtered(w, p, n, footprint, &s);
+            sk_vec3f col = sk_wood_shade(w, &s, n, light, view);
+            size_t i = (size_t)Y * W + X;
+            assert_memory_equal(&albedo[3 * i], &s.albedo, 3 * sizeof(float));
+            assert_memory_equal(&shaded[3 * i], &col, 3 * sizeof(float));
+            assert_memory_equal(&vessel[i], &s.vessel, sizeof(float));
+            assert_memory_equal(&dive[i], &s.dive, sizeof(float));
+            vessels += s.vessel > 0.0f;
+        }
+    }
+    assert_true(vessels > 0); /* the comparison took the vessel paths too */
+    free(shaded);
+    free(albedo);
+    free(vessel);
+    free(dive);
+}
+
+static void test_cut_equals_eval(void **state)
+{
+    (void)state;
+    /* ring-porous and sparse diffuse vessels, fluctuating rings, wavy grain with dg */
+    sk_wood_desc d = busy_desc();
+    sk_wood *w = make_wood(&d);
+    check_cut_equals_eval(w, 77, 9);
+    sk_wood_destroy(w);
+    /* dense diffuse vessels, round rings, a rotated tree, fibre highlight shading */
+    d = busy_desc();
+    d.rings.fluctuation = 0.0f;
+    d.vessels.ring.linear_density = 0.0f;
+    d.vessels.diffuse.density_per_mm2 = 40.0f;
+    d.vessels.diffuse.radius_mm = 0.03f;
+    d.vessels.diffuse.radius_sd_mm = 0.004f;
+    d.transform.rotate[0] = 0.2f;
+    d.transform.translate_mm[2] = 3.0f;
+    d.shading.model = SK_WOOD_SHADING_FIBRE;
+    d.view.width_mm = 6.0f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 77, 9);
     sk_wood_destroy(w);
 }
 
@@ -952,6 +1046,7 @@ int main(void)
         cmocka_unit_test(test_shading_equals_eq4),
         cmocka_unit_test(test_fibre_highlight_cone),
         cmocka_unit_test(test_cut_same_bytes_for_threads_and_regions),
+        cmocka_unit_test(test_cut_equals_eval),
         cmocka_unit_test(test_transform_moves_the_tree),
         cmocka_unit_test(test_bad_parameters),
         cmocka_unit_test(test_bad_cut),
