@@ -268,21 +268,33 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
     a = sk_v3f_scale(a, 1.0f / alen);
     sk_vec3f up = sk_v3f_cross(n, a);
     int S = desc->samples ? desc->samples : 1;
-    cut_context c;
-    c.wood = wood;
-    c.desc = desc;
-    c.n = n;
-    c.a = a;
-    c.up = up;
-    c.light = tilt_towards(n, up, a, desc->light_incidence, desc->light_azimuth);
-    c.view = tilt_towards(n, up, a, desc->view_incidence, 0.0);
-    c.rx = rx;
-    c.ry = ry;
-    c.rw = rw;
-    c.S = S;
-    double W = desc->width, H = desc->height;
-    c.inv_W = 1.0 / W;
-    c.inv_H = 1.0 / H;
+    double W = desc->width, H = desc->height, width_mm = desc->width_mm;
+    sk_vec3f light = tilt_towards(n, up, a, desc->light_incidence, desc->light_azimuth);
+    cut_context c = {
+        .wood = wood,
+        .desc = desc,
+        .n = n,
+        .a = a,
+        .up = up,
+        .light = light,
+        .view = tilt_towards(n, up, a, desc->view_incidence, 0.0),
+        .rx = rx,
+        .ry = ry,
+        .rw = rw,
+        .S = S,
+        .inv_W = 1.0 / W,
+        .inv_H = 1.0 / H,
+        .width_mm = width_mm,
+        .height_mm = width_mm * H / W,
+        .footprint = (float)(width_mm / W / S),
+        .inv = 1.0f / (float)(S * S),
+        .figure = wood->shading.model != SK_WOOD_SHADING_FIBRE,
+        /* eq. (4)'s light terms are the same for every sample of the plane */
+        .fl = sk__figure_light_make(&wood->shading, n,
+                                    sk__wood_surface_up(wood, sk_v3f_normalize(n)), light),
+        .flags = desc->dive ? SK__WOOD_EVAL_DIVE : 0u,
+    };
+    c.lit = c.fl.cos_i > 0.0;
     double inv_S = 1.0 / S;
     for (int k = 0; k < S; k++) c.sub[k] = (k + 0.5) * inv_S;
     for (int j = 0; j < SK__WOOD_BATCH; j++) {
@@ -290,16 +302,6 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
         c.pixel_x[j] = j / S;
         c.sub_x[j] = c.sub[j % S];
     }
-    c.width_mm = desc->width_mm;
-    c.height_mm = c.width_mm * H / W;
-    c.footprint = (float)(c.width_mm / W / S);
-    c.inv = 1.0f / (float)(S * S);
-    /* eq. (4)'s light terms are the same for every sample of the plane */
-    c.figure = wood->shading.model != SK_WOOD_SHADING_FIBRE;
-    c.fl = sk__figure_light_make(&wood->shading, n, sk__wood_surface_up(wood, sk_v3f_normalize(n)),
-                                 c.light);
-    c.lit = c.fl.cos_i > 0.0;
-    c.flags = desc->dive ? SK__WOOD_EVAL_DIVE : 0u;
     int batch_pixels = SK__WOOD_BATCH / S;
 
     sk__loop_progress lp;

@@ -42,7 +42,7 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
     const sk__rings *rg = &w->rings;
     double y[B], r[B], cos_t[B], sin_t[B], theta[B], col[B], col_f[B];
     double t[B], width[B], dR[B], P[B], G[B], phi[B], phi_mod[B];
-    double sk[B], sb[B], cb[B], sin_p[B], cos_p[B], dir_x[B], dir_z[B];
+    double k_p[B], sb[B], cb[B], sin_p[B], cos_p[B], dir_x[B], dir_z[B];
     double theta0[B], col0[B], col0_f[B], r0[B], half[B];
     float px[B], pz[B];
     sk__rings_at at0[B];
@@ -106,9 +106,9 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
     for (int i = 0; i < count; i++) {
         phi[i] = P[i] / (r[i] > 1e-6 ? r[i] : 1e-6); /* sk__phase_phi */
         phi_mod[i] = phi[i] - 2.0 * SK_PI * sk__floor_vec(phi[i] * (0.5 / SK_PI));
-        sk__sincos_reduce(phi_mod[i], &sk[i], &sb[i], &cb[i]);
+        sk__sincos_reduce(phi_mod[i], &k_p[i], &sb[i], &cb[i]);
     }
-    for (int i = 0; i < count; i++) sk__sincos_join(sk[i], sb[i], cb[i], &sin_p[i], &cos_p[i]);
+    for (int i = 0; i < count; i++) sk__sincos_join(k_p[i], sb[i], cb[i], &sin_p[i], &cos_p[i]);
     if (round) {
 #pragma omp simd
         for (int i = 0; i < count; i++) {

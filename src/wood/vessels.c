@@ -240,6 +240,12 @@ static inline void ring_reach(const sk__rings *rings, const sk__rings_at *at0, i
  * ring j for point `point`. */
 #define RING_CANDIDATES (8 * SK__WOOD_BATCH)
 
+typedef struct ring_candidates {
+    int count; /* waiting */
+    int point[RING_CANDIDATES], j[RING_CANDIDATES], row[RING_CANDIDATES];
+    int n[RING_CANDIDATES], k[RING_CANDIDATES];
+} ring_candidates;
+
 typedef struct ring_stream {
     const sk__vessels *v;
     const sk__rings *rings;
@@ -247,9 +253,7 @@ typedef struct ring_stream {
     const double *window;       /* per point: the angles around theta0 a vessel can reach from */
     double reach, reach2, fw;
     double *cover;              /* per point: the largest coverage so far */
-    int count;                  /* candidates waiting */
-    int point[RING_CANDIDATES], j[RING_CANDIDATES], row[RING_CANDIDATES];
-    int n[RING_CANDIDATES], k[RING_CANDIDATES];
+    ring_candidates *cand;
 } ring_stream;
 
 /* Tests the waiting candidates: first their angle against the window, then their distance
@@ -259,12 +263,13 @@ typedef struct ring_stream {
 static void ring_stream_flush(ring_stream *s)
 {
     const sk__ring_index *ri = &s->v->ring;
+    ring_candidates *cd = s->cand;
     int idx[RING_CANDIDATES], m = 0;
     uint64_t h[RING_CANDIDATES];
     double theta[RING_CANDIDATES], radial[RING_CANDIDATES], d2[RING_CANDIDATES];
-    for (int c = 0; c < s->count; c++) {
-        theta[c] = ring_vessel_angle(ri, s->n[c], s->j[c], s->row[c], s->k[c], &h[c]);
-        double d = theta[c] - s->theta0[s->point[c]], w = s->window[s->point[c]];
+    for (int c = 0; c < cd->count; c++) {
+        theta[c] = ring_vessel_angle(ri, cd->n[c], cd->j[c], cd->row[c], cd->k[c], &h[c]);
+        double d = theta[c] - s->theta0[cd->point[c]], w = s->window[cd->point[c]];
         d -= 2.0 * SK_PI * sk__floor_d(d * (0.5 / SK_PI) + 0.5);
         idx[m] = c;
         m += !(d > w || d < -w);
@@ -274,14 +279,14 @@ static void ring_stream_flush(ring_stream *s)
         /* a centre whose distance from the pith differs from r0 by `reach` or more is at
            least that far from p0; the margin covers the rounding of the centres */
         int c = idx[a];
-        double r0 = s->r0[s->point[c]];
-        radial[c] = ring_vessel_radial(ri, s->rings, s->j[c], s->row[c], h[c], theta[c]);
+        double r0 = s->r0[cd->point[c]];
+        radial[c] = ring_vessel_radial(ri, s->rings, cd->j[c], cd->row[c], h[c], theta[c]);
         idx[m2] = c;
         m2 += !(fabs(radial[c] - r0) >= s->reach * (1.0 + 1e-9) + 1e-12 * r0);
     }
     int m3 = 0;
     for (int a = 0; a < m2; a++) {
-        int c = idx[a], i = s->point[c];
+        int c = idx[a], i = cd->point[c];
         double sn, cs;
         sk__sincos(theta[c], &sn, &cs);
         double x = radial[c] * cs, z = radial[c] * sn;
@@ -290,11 +295,11 @@ static void ring_stream_flush(ring_stream *s)
         m3 += !(d2[c] >= s->reach2);
     }
     for (int a = 0; a < m3; a++) {
-        int c = idx[a], i = s->point[c];
+        int c = idx[a], i = cd->point[c];
         double cover = sk__vessel_cover(sqrt(d2[c]), ring_vessel_radius(s->v, h[c]), s->fw);
         if (cover > s->cover[i]) s->cover[i] = cover;
     }
-    s->count = 0;
+    cd->count = 0;
 }
 
 /* The candidates of ring j for point i: every vessel whose jittered angle can fall in the
@@ -322,14 +327,15 @@ static void ring_stream_add(ring_stream *s, int i, int j, double lo, double hi)
             hi + offset + jitter_offset <= r0 - radial_reach)
             continue;
         for (int64_t kk = first; kk <= last; kk++) {
-            if (s->count == RING_CANDIDATES) ring_stream_flush(s);
+            ring_candidates *cd = s->cand;
+            if (cd->count == RING_CANDIDATES) ring_stream_flush(s);
             int64_t kw = kk < 0 ? kk + n : (kk >= n ? kk - n : kk); /* kk in [-n, 2n) */
-            int c = s->count++;
-            s->point[c] = i;
-            s->j[c] = j;
-            s->row[c] = row;
-            s->n[c] = n;
-            s->k[c] = (int)(kw >= 0 && kw < n ? kw : ((kk % n) + n) % n);
+            int c = cd->count++;
+            cd->point[c] = i;
+            cd->j[c] = j;
+            cd->row[c] = row;
+            cd->n[c] = n;
+            cd->k[c] = (int)(kw >= 0 && kw < n ? kw : ((kk % n) + n) % n);
         }
     }
 }
@@ -343,21 +349,12 @@ static void ring_porous_batch(const sk__vessels *v, const sk__rings *rings, int 
                               double *cover)
 {
     const sk__ring_index *ri = &v->ring;
-    double window[SK__WOOD_BATCH];
-    ring_stream s;
-    s.v = v;
-    s.rings = rings;
-    s.x0 = x0;
-    s.z0 = z0;
-    s.r0 = r0;
-    s.theta0 = theta0;
-    s.window = window;
-    s.reach = sk__vessel_reach(ri->size.hi, fw);
-    s.reach2 = s.reach * s.reach;
-    s.fw = fw;
-    s.cover = cover;
-    s.count = 0;
-    double reach = s.reach;
+    double window[SK__WOOD_BATCH], reach = sk__vessel_reach(ri->size.hi, fw);
+    ring_candidates cand;
+    cand.count = 0;
+    ring_stream s = {.v = v, .rings = rings, .x0 = x0, .z0 = z0, .r0 = r0, .theta0 = theta0,
+                     .window = window, .reach = reach, .reach2 = reach * reach, .fw = fw,
+                     .cover = cover, .cand = &cand};
     for (int i = 0; i < count; i++) {
         cover[i] = 0.0;
         /* every point within `reach` of p0 lies within asin(reach / r0) of its angle; for
