@@ -95,9 +95,9 @@ static int run(bool ring_porous)
     cut.width = cut.height = size;
     cut.shaded = shaded;
     int threads = sk_threads_max();
-    double all = best_cut(wood, &cut, 3);
+    double all = best_cut(wood, &cut, 5);
     sk_threads_set(1);
-    double one = best_cut(wood, &cut, 2);
+    double one = best_cut(wood, &cut, 3);
     sk_threads_set(threads);
     double samples = (double)size * size;
     printf("  shaded %dx%d flat-sawn cut, 1 sample/pixel (fluctuating rings, wavy grain + dg):\n"
@@ -110,8 +110,21 @@ static int run(bool ring_porous)
     return 0;
 }
 
+/* The machine's load when the figures were taken (other jobs share the cores), where the
+ * system tells it. */
+static void print_load(void)
+{
+    FILE *f = fopen("/proc/loadavg", "r");
+    double load;
+    if (f && fscanf(f, "%lf", &load) == 1)
+        printf("machine load (1-minute average) %.2f on %d cores; best of 5 runs on all threads, "
+               "3 on one\n", load, sk_threads_max());
+    if (f) fclose(f);
+}
+
 int main(void)
 {
+    print_load();
     int status = run(false);
     if (status == 0) status = run(true);
     return status;
