@@ -76,33 +76,21 @@ static void shade_figure_batch(const cut_context *c, const sk__wood_batch *b, in
     const sk__shading *s = &c->wood->shading;
     const sk__figure_light *fl = &c->fl;
     float nx = c->n.x, ny = c->n.y, nz = c->n.z;
-    double cos_i = fl->cos_i, l_up = fl->l_up, h = fl->h, floor_c = s->cos_floor;
-    double inv_step = s->inv_step;
-    double cu[SK__WOOD_BATCH];
+    double u[SK__WOOD_BATCH];
     if (!c->lit) {
         for (int k = 0; k < 3; k++)
             for (int j = 0; j < count; j++) rgb[k][j] = 0.0f;
         return;
     }
-    /* cos(delta - alpha), as a position in the cos^n table */
+    /* sk__shade_figure_lit in two loops: the arithmetic vectorized, then the table */
 #pragma omp simd
     for (int j = 0; j < count; j++) {
         double sin_a = -(double)(b->fibre[0][j] * nx + b->fibre[1][j] * ny + b->fibre[2][j] * nz);
-        sin_a = sin_a < -1.0 ? -1.0 : sin_a;
-        sin_a = sin_a > 1.0 ? 1.0 : sin_a;
-        double cd = (cos_i * sqrt(1.0 - sin_a * sin_a) + l_up * sin_a) / h;
-        cu[j] = cd > floor_c ? (cd - floor_c) * inv_step : -1.0;
+        u[j] = sk__figure_position(s, fl, sin_a);
     }
     for (int j = 0; j < count; j++) {
-        double spec = 0.0;
-        if (cu[j] >= 0.0) {
-            int i = (int)cu[j];
-            if (i > SK__POW_TABLE - 1) i = SK__POW_TABLE - 1;
-            double f = cu[j] - i;
-            spec = (s->ks_pow[i] + f * (s->ks_pow[i + 1] - s->ks_pow[i])) * (1.0 - b->vessel[j]);
-        }
-        float sf = (float)spec;
-        for (int k = 0; k < 3; k++) rgb[k][j] = b->albedo[k][j] * fl->diffuse + sf;
+        float spec = (float)sk__figure_specular(s, u[j], b->vessel[j]);
+        for (int k = 0; k < 3; k++) rgb[k][j] = b->albedo[k][j] * fl->diffuse + spec;
     }
 }
 

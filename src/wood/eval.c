@@ -53,7 +53,6 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
     bool round = rg->ntheta == 1;
     bool need_theta0 = !round || w->vessels.ring.on || w->attr.shift > 0.0;
     double theta_scale = rg->theta_scale;
-    int col_mask = rg->ntheta - 1;
 
     /* into the tree frame (sk__wood_frame_point_to_tree): r, theta and the ring table's
        columns there */
@@ -84,13 +83,11 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
         cos_t[i] = r[i] > 0.0 ? x / r[i] : 1.0;
         sin_t[i] = r[i] > 0.0 ? z / r[i] : 0.0;
         theta[i] = sk__atan2(z, x);
-        double u = theta[i] * theta_scale, fl = sk__floor_small(u); /* sk__rings_column */
-        col_f[i] = u - fl;
-        col[i] = fl;
+        col[i] = sk__rings_column_split(theta_scale, theta[i], &col_f[i]);
     }
     /* t = T(r, theta) (sec. 4.4) */
     for (int i = 0; i < count; i++) {
-        sk__rings_at at = sk__rings_at_column(rg, (int)col[i] & col_mask, col_f[i]);
+        sk__rings_at at = sk__rings_at_column(rg, sk__rings_column_wrap(rg, col[i]), col_f[i]);
         t[i] = sk__rings_T_at(rg, &at, r[i], &width[i], &dR[i]);
     }
     /* eq. (3): Phi(t, y) and G'(t, y); the terms that depend on y alone are found once per
@@ -104,7 +101,7 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
        at theta0 = theta - phi */
 #pragma omp simd
     for (int i = 0; i < count; i++) {
-        phi[i] = P[i] / (r[i] > 1e-6 ? r[i] : 1e-6); /* sk__phase_phi */
+        phi[i] = sk__phase_phi(P[i], r[i]);
         phi_mod[i] = phi[i] - 2.0 * SK_PI * sk__floor_vec(phi[i] * (0.5 / SK_PI));
         sk__sincos_reduce(phi_mod[i], &k_p[i], &sb[i], &cb[i]);
     }
@@ -117,9 +114,7 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
             double a = sk__atan2(dir_z[i], dir_x[i]);
             a = a < 0.0 ? a + 2.0 * SK_PI : a;
             theta0[i] = need_theta0 ? a : 0.0;
-            double u = theta0[i] * theta_scale, fl = sk__floor_small(u);
-            col0_f[i] = u - fl;
-            col0[i] = fl;
+            col0[i] = sk__rings_column_split(theta_scale, theta0[i], &col0_f[i]);
         }
     } else {
 #pragma omp simd
@@ -128,14 +123,12 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
             dir_z[i] = sin_t[i] * cos_p[i] - cos_t[i] * sin_p[i];
             double a = theta[i] - phi_mod[i];
             theta0[i] = a - 2.0 * SK_PI * sk__floor_small(a * (0.5 / SK_PI));
-            double u = theta0[i] * theta_scale, fl = sk__floor_small(u);
-            col0_f[i] = u - fl;
-            col0[i] = fl;
+            col0[i] = sk__rings_column_split(theta_scale, theta0[i], &col0_f[i]);
         }
     }
     /* the end-grain point at R(t, theta0) */
     for (int i = 0; i < count; i++) {
-        at0[i] = sk__rings_at_column(rg, (int)col0[i] & col_mask, col0_f[i]);
+        at0[i] = sk__rings_at_column(rg, sk__rings_column_wrap(rg, col0[i]), col0_f[i]);
         r0[i] = round ? r[i] : sk__rings_R_at(rg, &at0[i], t[i]);
     }
     /* C'(t, theta0): the ring profile, box-filtered over the footprint's span of t along
@@ -187,16 +180,13 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
         out->latewood[i] = (float)late[i];
         out->vessel[i] = (float)vessel[i];
     }
-    /* the fibre through the point (sec. 7.1): sk__fibre_direction */
+    /* the fibre through the point (sec. 7.1) */
 #pragma omp simd
     for (int i = 0; i < count; i++) {
-        double radial = G[i] * dR[i] / (r[i] > 1e-6 ? r[i] : 1.0);
-        radial = r[i] > 1e-6 ? radial : 0.0;
-        double fx = radial * cos_t[i] - G[i] * sin_t[i], fz = radial * sin_t[i] + G[i] * cos_t[i];
-        double inv = 1.0 / sqrt(fx * fx + 1.0 + fz * fz);
-        out->fibre[0][i] = (float)(fx * inv);
-        out->fibre[1][i] = (float)inv;
-        out->fibre[2][i] = (float)(fz * inv);
+        sk_vec3d f = sk__fibre_direction(G[i], dR[i], r[i], cos_t[i], sin_t[i]);
+        out->fibre[0][i] = (float)f.x;
+        out->fibre[1][i] = (float)f.y;
+        out->fibre[2][i] = (float)f.z;
         out->t[i] = (float)t[i];
         out->phase[i] = (float)phi[i];
     }

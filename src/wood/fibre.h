@@ -15,7 +15,8 @@
 static inline sk_vec3d sk__fibre_direction(double G, double dR_dtheta, double r, double c,
                                            double s)
 {
-    double radial = r > 1e-6 ? G * dR_dtheta / r : 0.0;
+    double radial = G * dR_dtheta / (r > 1e-6 ? r : 1.0); /* selects: loops vectorize */
+    radial = r > 1e-6 ? radial : 0.0;
     /* e_r = (cos, 0, sin), e_theta = (-sin, 0, cos), e_y = (0, 1, 0) */
     double fx = radial * c - G * s, fz = radial * s + G * c;
     double inv = 1.0 / sqrt(fx * fx + 1.0 + fz * fz);

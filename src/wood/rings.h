@@ -44,13 +44,26 @@ sk_result sk__rings_build(sk__rings *rings, const sk_wood_desc *desc, sk_error *
 void sk__rings_free(sk__rings *rings);
 size_t sk__rings_memory(const sk__rings *rings);
 
+/* The column coordinate u = theta ntheta / (2 pi) of an angle, split into its whole part
+ * (column j before wrapping around) and the weight f = u - j of column j + 1; without
+ * branches, so vector loops use it. */
+static inline double sk__rings_column_split(double theta_scale, double theta, double *f)
+{
+    double u = theta * theta_scale, fl = sk__floor_vec(u);
+    *f = u - fl;
+    return fl;
+}
+
+/* The column j (wrapped around the tree) of a whole column coordinate. */
+static inline int sk__rings_column_wrap(const sk__rings *rg, double whole)
+{
+    return (int)((int64_t)whole & (int64_t)(rg->ntheta - 1)); /* ntheta is a power of two */
+}
+
 /* Column pair (j, j + 1) and weight f of the angle theta (any real value). */
 static inline void sk__rings_column(const sk__rings *rg, double theta, int *j, double *f)
 {
-    double u = theta * rg->theta_scale;
-    int64_t fl = sk__floor_i64(u);
-    *f = u - (double)fl;
-    *j = (int)(fl & (int64_t)(rg->ntheta - 1)); /* ntheta is a power of two */
+    *j = sk__rings_column_wrap(rg, sk__rings_column_split(rg->theta_scale, theta, f));
 }
 
 static inline double sk__rings_col_value(const float *c0, const float *c1, double f, int i)

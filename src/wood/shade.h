@@ -45,25 +45,39 @@ static inline sk__figure_light sk__figure_light_make(const sk__shading *s, sk_ve
     return fl;
 }
 
+/* cos(delta - alpha) of eq. (4) for sin(alpha) = -f . n, as a position in the cos^n
+ * table (-1 below the table, where ks cos^n is dropped); branch-free. With delta =
+ * atan2(l . up, l . n) and alpha the dive angle of the sample's fibre under this normal,
+ * expanded without trigonometry. */
+static inline double sk__figure_position(const sk__shading *s, const sk__figure_light *fl,
+                                         double sin_a)
+{
+    sin_a = sin_a < -1.0 ? -1.0 : sin_a;
+    sin_a = sin_a > 1.0 ? 1.0 : sin_a;
+    double c = (fl->cos_i * sqrt(1.0 - sin_a * sin_a) + fl->l_up * sin_a) / fl->h;
+    double position = (c - s->cos_floor) * s->inv_step;
+    return c > s->cos_floor ? position : -1.0;
+}
+
+/* ks cos^n at table position u (0 below the table), on the share 1 - vessel of the
+ * surface that has cell walls to reflect. */
+static inline double sk__figure_specular(const sk__shading *s, double u, float vessel)
+{
+    if (u < 0.0) return 0.0;
+    int i = (int)u;
+    if (i > SK__POW_TABLE - 1) i = SK__POW_TABLE - 1;
+    double f = u - i;
+    return (s->ks_pow[i] + f * (s->ks_pow[i + 1] - s->ks_pow[i])) * (1.0 - vessel);
+}
+
 /* eq. (4) for a sample of the given albedo, vessel coverage and sin(alpha) = -f . n;
  * the light must be above the surface (fl->cos_i > 0). */
 static inline sk_vec3f sk__shade_figure_lit(const sk__shading *s, const sk__figure_light *fl,
                                             sk_vec3f albedo, float vessel, double sin_a)
 {
-    /* cos(delta - alpha) with delta = atan2(l . up, l . n) and sin(alpha) = -f . n (the
-       dive angle of the sample's fibre under this normal), expanded without trigonometry */
-    sin_a = sin_a < -1.0 ? -1.0 : (sin_a > 1.0 ? 1.0 : sin_a);
-    double c = (fl->cos_i * sqrt(1.0 - sin_a * sin_a) + fl->l_up * sin_a) / fl->h;
-    double spec = 0.0;
-    if (c > s->cos_floor) {
-        double u = (c - s->cos_floor) * s->inv_step;
-        int i = (int)u;
-        if (i > SK__POW_TABLE - 1) i = SK__POW_TABLE - 1;
-        double f = u - i;
-        spec = (s->ks_pow[i] + f * (s->ks_pow[i + 1] - s->ks_pow[i])) * (1.0 - vessel);
-    }
-    return sk_v3f(albedo.x * fl->diffuse + (float)spec, albedo.y * fl->diffuse + (float)spec,
-                  albedo.z * fl->diffuse + (float)spec);
+    float spec = (float)sk__figure_specular(s, sk__figure_position(s, fl, sin_a), vessel);
+    return sk_v3f(albedo.x * fl->diffuse + spec, albedo.y * fl->diffuse + spec,
+                  albedo.z * fl->diffuse + spec);
 }
 
 /* eq. (4), see sk_wood_shade. */
