@@ -122,7 +122,7 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
             dir_x[i] = cos_t[i] * cos_p[i] + sin_t[i] * sin_p[i];
             dir_z[i] = sin_t[i] * cos_p[i] - cos_t[i] * sin_p[i];
             double a = theta[i] - phi_mod[i];
-            theta0[i] = a - 2.0 * SK_PI * sk__floor_small(a * (0.5 / SK_PI));
+            theta0[i] = a - 2.0 * SK_PI * sk__floor_vec(a * (0.5 / SK_PI));
             col0[i] = sk__rings_column_split(theta_scale, theta0[i], &col0_f[i]);
         }
     }

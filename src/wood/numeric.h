@@ -43,14 +43,6 @@ static inline uint64_t sk__wood_hash(uint64_t seed, int64_t a, int64_t b, int64_
                     (uint64_t)c * SK__WOOD_HASH_C);
 }
 
-/* floor(x) for |x| < 2^31, through a 32-bit conversion and a select (which the
- * vectorizer can use). */
-static inline double sk__floor_small(double x)
-{
-    double i = (double)(int)x;
-    return x < i ? i - 1.0 : i;
-}
-
 /* atan2(y, x) in (-pi, pi]: the ratio q in [0, 1] of the smaller to the larger magnitude
  * is moved next to the nearest of c = 0, 1/4, .., 1 by atan(q) = atan(c) +
  * atan((q - c) / (1 + q c)), leaving |u| <= 1/8 for the series (error < u^11 / 11).
