@@ -1,7 +1,9 @@
 /* Planar cuts through the solid texture (end grain, flat-sawn, quarter-sawn or any plane),
- * rendered pixel by pixel into caller buffers, in parallel rows. Each pixel's position
- * depends only on its coordinates in the full image, so a region is exactly that part of
- * the full image, and the output does not depend on the thread count. */
+ * rendered into caller buffers in parallel rows, each row in runs of pixels whose samples
+ * are evaluated as one batch (eval.c) and shaded together. Each pixel's position depends
+ * only on its coordinates in the full image, and a sample's value not on its batch, so a
+ * region is exactly that part of the full image, and the output does not depend on the
+ * thread count. */
 #include <math.h>
 #include <string.h>
 

@@ -1,8 +1,8 @@
 /* Small numeric helpers for the wood module's per-sample code: floor, hashing and the
  * elementary functions without library calls. At -O2 on x86-64 floor(), atan2() and
- * sin() are calls the compiler cannot schedule across; these inline versions use classic
- * range reductions, a small table and short series, with errors below 1e-9, far under the
- * single-precision data they feed. */
+ * sin() are calls the compiler can neither schedule across nor vectorize; these inline
+ * versions use classic range reductions, a small table and short series, with errors
+ * below 1e-9, far under the single-precision data they feed. */
 #ifndef SK_WOOD_NUMERIC_H
 #define SK_WOOD_NUMERIC_H
 
