@@ -389,7 +389,8 @@ static void test_stratified_patterns(void **state)
         for (uint64_t key = 1; key < 20; key++) {
             int cells[128] = {0}, cols[128] = {0}, rws[128] = {0};
             for (uint32_t i = 0; i < n; i++) {
-                sk_vec2f p = sk__pattern_2d(key * 0x9e3779b97f4a7c15ULL, i, n);
+                sk__pattern pat = sk__pattern_make(key, 77, 3, n);
+                sk_vec2f p = sk__pattern_point(&pat, i);
                 assert_true(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1);
                 int cx = (int)(p.x * (float)m), cy = (int)(p.y * (float)rows);
                 cells[cy * (int)m + cx]++;
@@ -402,7 +403,8 @@ static void test_stratified_patterns(void **state)
                 assert_int_equal(rws[i], 1);
             }
         }
-        sk_vec2f a = sk__pattern_2d(1, 0, n), b = sk__pattern_2d(2, 0, n);
+        sk__pattern pa = sk__pattern_make(1, 0, 0, n), pb = sk__pattern_make(2, 0, 0, n);
+        sk_vec2f a = sk__pattern_point(&pa, 0), b = sk__pattern_point(&pb, 0);
         assert_true(a.x != b.x || a.y != b.y);
     }
     /* permutations are bijections */

@@ -38,13 +38,10 @@ static sk_vec3f direct_light(const sk_render_scene *scene, sk__worker *w, const 
     for (int li = 0; li < scene->light_count; li++) {
         const sk__light *l = &scene->lights[li];
         uint32_t n = (uint32_t)l->samples;
-        uint64_t key = l->type == SK_RENDER_LIGHT_RECT
-                           ? sk__pattern_key(id->seed, id->pixel, SK__SAMPLE_LIGHT + (uint32_t)li)
-                           : 0;
         sk_vec3f light_sum = sk_v3f(0, 0, 0);
         for (uint32_t j = 0; j < n; j++) {
             sk_vec2f u = l->type == SK_RENDER_LIGHT_RECT
-                             ? sk__pattern_2d(key, id->sample * n + j, id->samples * n)
+                             ? sk__pattern_point(&id->lights[li], id->sample * n + j)
                              : sk_v2f(0.5f, 0.5f);
             sk_vec3f wi, weight;
             float dist;
@@ -74,12 +71,11 @@ static sk_vec3f environment_light(const sk_render_scene *scene, sk__worker *w,
     float visible = 1.0f;
     if (env->ambient_occlusion) {
         uint32_t n = (uint32_t)env->ao_samples;
-        uint64_t key = sk__pattern_key(id->seed, id->pixel, SK__SAMPLE_AO);
         float tfar = env->ao_distance > 0 ? env->ao_distance : INFINITY;
         sk_vec3f p = sh->surface.point, ng = sh->geometric_normal;
         uint32_t open = 0;
         for (uint32_t k = 0; k < n; k++) {
-            sk_vec2f u = sk__pattern_2d(key, id->sample * n + k, id->samples * n);
+            sk_vec2f u = sk__pattern_point(&id->ao, id->sample * n + k);
             sk_vec3f d = sk__cosine_hemisphere(sh->shading_normal, u);
             if (sk_v3f_dot(d, ng) <= 0) continue; /* into the surface itself */
             if (!occluded(scene, w, sk__offset_origin(p, ng, d), d, tfar)) open++;
@@ -87,6 +83,19 @@ static sk_vec3f environment_light(const sk_render_scene *scene, sk__worker *w,
         visible = (float)open / (float)n;
     }
     return sk_v3f_scale(sk_v3f_mul(sk__material_ambient_albedo(sh), radiance), visible);
+}
+
+void sk__sample_id_init(const sk_render_scene *scene, uint64_t pixel, sk__sample_id *id)
+{
+    const sk_render_scene_desc *d = &scene->desc;
+    uint32_t spp = (uint32_t)d->image.samples;
+    id->sample = 0;
+    if (d->environment.ambient_occlusion)
+        id->ao = sk__pattern_make(d->seed, pixel, SK__SAMPLE_AO, spp * (uint32_t)d->environment.ao_samples);
+    for (int li = 0; li < scene->light_count; li++)
+        if (scene->lights[li].type == SK_RENDER_LIGHT_RECT)
+            id->lights[li] = sk__pattern_make(d->seed, pixel, SK__SAMPLE_LIGHT + (uint32_t)li,
+                                              spp * (uint32_t)scene->lights[li].samples);
 }
 
 float sk__camera_sample(const sk_render_scene *scene, sk__worker *w, const sk__sample_id *id,
@@ -105,7 +114,7 @@ float sk__camera_sample(const sk_render_scene *scene, sk__worker *w, const sk__s
     sk__geometry_hit(scene, rh.hit.instID[0], rh.hit.primID, rh.hit.u, rh.hit.v, &sh);
     sk__shading_face(&sh, d);
     sh.surface.footprint_mm = sk__camera_footprint(&scene->camera, rh.ray.tfar) *
-                              scene->desc.unit_mm / sqrtf((float)id->samples);
+                              scene->desc.unit_mm / sqrtf((float)scene->desc.image.samples);
     sk__material_eval(scene, &sh);
     sk_vec3f L = sk_v3f_add(direct_light(scene, w, &sh, id), environment_light(scene, w, &sh, id));
     const sk_render_material_desc *m = &sh.material->desc;

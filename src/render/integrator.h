@@ -3,6 +3,7 @@
 #define SK_RENDER_INTEGRATOR_H
 
 #include "render/render_internal.h"
+#include "render/sampling.h"
 
 /* Per-thread counters of the tile loop. */
 typedef struct sk__worker {
@@ -11,13 +12,16 @@ typedef struct sk__worker {
     double intersect_seconds; /* inside rtcIntersect1 / rtcOccluded1 (when timing) */
 } sk__worker;
 
-/* Which sample this is: all its random numbers derive from these. */
+/* The sample patterns of one pixel (made once per pixel) and the current sample's index:
+ * all random numbers of a sample derive from these. */
 typedef struct sk__sample_id {
-    uint64_t seed;
-    uint64_t pixel;   /* y * width + x */
-    uint32_t sample;  /* index of the camera sample in the pixel */
-    uint32_t samples; /* camera samples per pixel */
+    uint32_t sample;                         /* index of the camera sample in the pixel */
+    sk__pattern ao;                          /* occlusion rays: ao_samples per sample */
+    sk__pattern lights[SK_RENDER_MAX_LIGHTS]; /* area light points: samples per sample */
 } sk__sample_id;
+
+/* Sets up the patterns of pixel (y * width + x). */
+void sk__sample_id_init(const sk_render_scene *scene, uint64_t pixel, sk__sample_id *id);
 
 /* Traces the camera ray through image position (x, y) (pixels, continuous) and returns its
  * coverage (1 hit or opaque background, 0 transparent background) with the radiance. */

@@ -9,7 +9,6 @@
 
 #include "core/loop_progress.h"
 #include "render/integrator.h"
-#include "render/sampling.h"
 
 #define TILE 16
 
@@ -45,12 +44,14 @@ static void render_tile(const sk_render_scene *scene, sk__worker *w, sk_image *i
     uint32_t spp = (uint32_t)d->image.samples;
     for (int y = y0; y < y1; y++) {
         for (int x = x0; x < x1; x++) {
-            sk__sample_id id = {d->seed, (uint64_t)y * (uint64_t)width + (uint64_t)x, 0, spp};
-            uint64_t key = sk__pattern_key(d->seed, id.pixel, SK__SAMPLE_PIXEL);
+            uint64_t pixel = (uint64_t)y * (uint64_t)width + (uint64_t)x;
+            sk__sample_id id;
+            sk__sample_id_init(scene, pixel, &id);
+            sk__pattern position = sk__pattern_make(d->seed, pixel, SK__SAMPLE_PIXEL, spp);
             double sum[4] = {0, 0, 0, 0};
             for (uint32_t s = 0; s < spp; s++) {
                 id.sample = s;
-                sk_vec2f u = sk__pattern_2d(key, s, spp);
+                sk_vec2f u = sk__pattern_point(&position, s);
                 sk_vec3f L;
                 float alpha = sk__camera_sample(scene, w, &id, (float)x + u.x, (float)y + u.y, &L);
                 sum[0] += L.x, sum[1] += L.y, sum[2] += L.z, sum[3] += alpha;

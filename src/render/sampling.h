@@ -49,33 +49,46 @@ static inline uint32_t sk__permute(uint32_t i, uint32_t n, uint64_t key)
     return i;
 }
 
-/* Key of the pattern for one pixel and use. */
-static inline uint64_t sk__pattern_key(uint64_t seed, uint64_t pixel, uint32_t use)
+/* A multi-jittered pattern of n points in [0, 1)^2 for one pixel and use: n = m x rows
+ * cells (m = ceil(sqrt(n)) columns; when n < m x rows the last row is partly empty). */
+typedef struct sk__pattern {
+    uint64_t key;
+    uint32_t n, m, rows;
+    float inv_m, inv_rows;
+} sk__pattern;
+
+static inline sk__pattern sk__pattern_make(uint64_t seed, uint64_t pixel, uint32_t use, uint32_t n)
 {
-    return sk_hash(seed, pixel, use, 0x5a3c1e);
+    sk__pattern p;
+    p.key = sk_hash(seed, pixel, use, 0x5a3c1e);
+    p.n = n;
+    p.m = (uint32_t)ceil(sqrt((double)n));
+    p.rows = (n + p.m - 1) / p.m;
+    p.inv_m = 1.0f / (float)p.m;
+    p.inv_rows = 1.0f / (float)p.rows;
+    return p;
 }
 
-/* Point i of a multi-jittered pattern of n points in [0, 1)^2. The order of the points is
- * itself permuted per key, so patterns of two uses do not correlate sample by sample. */
-static inline sk_vec2f sk__pattern_2d(uint64_t key, uint32_t i, uint32_t n)
+/* Point i of the pattern. The order of the points is itself permuted per key, so patterns
+ * of two uses do not correlate sample by sample. */
+static inline sk_vec2f sk__pattern_point(const sk__pattern *p, uint32_t i)
 {
-    uint32_t m = (uint32_t)ceil(sqrt((double)n)); /* columns */
-    uint32_t rows = (n + m - 1) / m;
-    uint32_t j = sk__permute(i, n, key ^ 0x243f6a8885a308d3ULL);
-    uint32_t c = j % m, r = j / m;
+    uint64_t key = p->key;
+    uint32_t j = sk__permute(i, p->n, key ^ 0x243f6a8885a308d3ULL);
+    uint32_t c = j % p->m, r = j / p->m;
     /* sub-column of cell (c, r) within column c, and sub-row within row r */
-    uint32_t sx = sk__permute(r, rows, sk_mix64(key + 0x13198a2e03707344ULL + c));
-    uint32_t sy = sk__permute(c, m, sk_mix64(key + 0xa4093822299f31d0ULL + r));
-    uint64_t h = sk_hash(key, j, 0x82efa98e, 0);
+    uint32_t sx = sk__permute(r, p->rows, sk_mix64(key + 0x13198a2e03707344ULL + c));
+    uint32_t sy = sk__permute(c, p->m, sk_mix64(key + 0xa4093822299f31d0ULL + r));
+    uint64_t h = sk_mix64(key ^ (0x82efa98ec4e6c89bULL * (j + 1)));
     float jx = (float)(h >> 40) * 0x1.0p-24f;
     float jy = (float)((h >> 16) & 0xffffffu) * 0x1.0p-24f;
-    sk_vec2f p;
-    p.x = ((float)c + ((float)sx + jx) / (float)rows) / (float)m;
-    p.y = ((float)r + ((float)sy + jy) / (float)m) / (float)rows;
+    sk_vec2f q;
+    q.x = ((float)c + ((float)sx + jx) * p->inv_rows) * p->inv_m;
+    q.y = ((float)r + ((float)sy + jy) * p->inv_m) * p->inv_rows;
     /* rounding can reach 1.0 in float; keep the half-open interval */
-    if (p.x >= 1.0f) p.x = 0x1.fffffep-1f;
-    if (p.y >= 1.0f) p.y = 0x1.fffffep-1f;
-    return p;
+    if (q.x >= 1.0f) q.x = 0x1.fffffep-1f;
+    if (q.y >= 1.0f) q.y = 0x1.fffffep-1f;
+    return q;
 }
 
 /* Uniform square -> unit disk, area preserving and low distortion (Shirley and Chiu 1997,
