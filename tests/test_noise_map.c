@@ -1,6 +1,7 @@
 /* Tests of noise maps and, through the `noise` command, of the command-line plumbing every
  * module shares: presets, --set with key-path errors, --region, --threads, exit codes. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -186,6 +187,34 @@ static void test_cli_bad_input(void **state)
     assert_non_null(strstr(g_run.out, "[1, 16]"));
 }
 
+/* Progress: a bar with percent and ETA on a terminal (a pseudo-terminal from script(1)),
+ * nothing with --quiet or when stderr is not a terminal. */
+static void test_cli_progress_bar_on_terminal(void **state)
+{
+    (void)state;
+    if (system("command -v script >/dev/null 2>&1") != 0) skip();
+    const char *out = sk_test_path("noise/progress.png");
+    const char *log = sk_test_path("noise/progress.log");
+    char cmd[4096];
+    snprintf(cmd, sizeof cmd, "script -qfec \"'%s' noise --size 1500 -o '%s'\" /dev/null > '%s' 2>&1",
+             SK_TEST_CLI, out, log);
+    assert_int_equal(system(cmd), 0);
+    char *text;
+    assert_int_equal(sk_read_file(log, 0, &text, NULL, NULL), SK_OK);
+    assert_non_null(strstr(text, "ETA"));
+    assert_non_null(strstr(text, "100%"));
+    free(text);
+    snprintf(cmd, sizeof cmd, "script -qfec \"'%s' noise --quiet --size 1500 -o '%s'\" /dev/null > '%s' 2>&1",
+             SK_TEST_CLI, out, log);
+    assert_int_equal(system(cmd), 0);
+    assert_int_equal(sk_read_file(log, 0, &text, NULL, NULL), SK_OK);
+    assert_null(strstr(text, "ETA"));
+    free(text);
+    /* not a terminal: silent (the test runner captures stderr to a file) */
+    assert_int_equal(sk_test_cli(&g_run, "noise --size 1500 -o '%s'", out), 0);
+    assert_string_equal(g_run.err, "");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -194,6 +223,7 @@ int main(void)
         cmocka_unit_test(test_validation),
         cmocka_unit_test(test_cli_writes_maps),
         cmocka_unit_test(test_cli_bad_input),
+        cmocka_unit_test(test_cli_progress_bar_on_terminal),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
