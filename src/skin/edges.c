@@ -1,0 +1,116 @@
+/* Shared edges (paper sec. 3.2.1 (1), Fig. 4): an edge between two cells is perturbed
+ * once, keyed by the pair of cells, and both cells use the same record, so the perturbed
+ * polygons have no gaps and no overlaps. Also the per-use gauge vectors of the queries. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "skin/skin_internal.h"
+
+static int key_cmp(const void *pa, const void *pb)
+{
+    const sk__edge_key *a = pa, *b = pb;
+    if (a->k0 != b->k0) return a->k0 < b->k0 ? -1 : 1;
+    if (a->k1 != b->k1) return a->k1 < b->k1 ? -1 : 1;
+    if (a->side != b->side) return a->side < b->side ? -1 : 1;
+    return a->use < b->use ? -1 : (a->use > b->use);
+}
+
+sk_result sk__build_edges(sk_skin *skin, int level, sk__edge_key *keys, size_t key_count,
+                          const double *site_left_y, sk_error *err)
+{
+    sk__level *lv = &skin->levels[level];
+    qsort(keys, key_count, sizeof *keys, key_cmp);
+    uint32_t *use_owner = malloc(sizeof(uint32_t) * (lv->use_count ? lv->use_count : 1));
+    if (!use_owner) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for edges");
+    for (uint32_t c = 0; c < lv->cell_count; c++)
+        for (uint32_t k = 0; k < lv->cells[c].use_count; k++)
+            use_owner[lv->cells[c].first_use + k] = c;
+
+    size_t pairs = 0;
+    for (size_t i = 0; i + 1 < key_count; i++)
+        if (keys[i].k0 == keys[i + 1].k0 && keys[i].k1 == keys[i + 1].k1 && keys[i].side == 0 &&
+            keys[i + 1].side == 1)
+            pairs++;
+    lv->f_count = (1 << lv->depth) + 1;
+    lv->edges = calloc(pairs ? pairs : 1, sizeof(sk__edge));
+    lv->f = calloc((pairs ? pairs : 1) * (size_t)lv->f_count, sizeof(float));
+    if (!lv->edges || !lv->f) {
+        free(use_owner);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu edges", pairs);
+    }
+    double(*m)[2] = lv->m, (*mi)[2] = lv->minv;
+    uint32_t e = 0;
+    for (size_t i = 0; i + 1 < key_count; i++) {
+        const sk__edge_key *kl = &keys[i], *kr = &keys[i + 1];
+        if (!(kl->k0 == kr->k0 && kl->k1 == kr->k1 && kl->side == 0 && kr->side == 1)) continue;
+        sk__use *ul = &lv->uses[kl->use], *ur = &lv->uses[kr->use];
+        uint32_t cl = use_owner[kl->use], cr = use_owner[kr->use];
+        const sk__cell *cell_l = &lv->cells[cl];
+        uint32_t next = kl->use + 1 == cell_l->first_use + cell_l->use_count ? cell_l->first_use
+                                                                              : kl->use + 1;
+        double ax = lv->vxy[2 * kl->use], ay = lv->vxy[2 * kl->use + 1];
+        double bx = lv->vxy[2 * next], by = lv->vxy[2 * next + 1];
+        /* pre-stretch geometry */
+        double azx = mi[0][0] * ax + mi[0][1] * ay, azy = mi[1][0] * ax + mi[1][1] * ay;
+        double bzx = mi[0][0] * bx + mi[0][1] * by, bzy = mi[1][0] * bx + mi[1][1] * by;
+        double px = site_left_y[2 * kl->use], py = site_left_y[2 * kl->use + 1];
+        double pzx = mi[0][0] * px + mi[0][1] * py, pzy = mi[1][0] * px + mi[1][1] * py;
+        double ex = bzx - azx, ey = bzy - azy, len2 = ex * ex + ey * ey, len = sqrt(len2);
+        sk__edge *E = &lv->edges[e];
+        if (!(len > 0)) continue;
+        /* unit normal towards the left site (the left cell is counter-clockwise) */
+        double nzx = -ey / len, nzy = ex / len;
+        double t_apex, h_apex;
+        sk__support(azx, azy, bzx, bzy, pzx, pzy, &t_apex, &h_apex);
+        float *f = lv->f + (size_t)e * (size_t)lv->f_count;
+        double fmax = 0;
+        if (lv->perturbed) {
+            uint64_t key = sk_hash(kl->k0, kl->k1, (uint64_t)level, 0x45444745ULL);
+            sk__perturb_edge(skin, level, key, len, t_apex, h_apex, f);
+            for (int k = 0; k < lv->f_count; k++) fmax = fmax > fabs(f[k]) ? fmax : fabs(f[k]);
+        }
+        E->ax = (float)ax, E->ay = (float)ay, E->bx = (float)bx, E->by = (float)by;
+        /* t = (Minv (y - a)) . e / len^2  ->  gradient Minv^T e / len^2 */
+        E->atx = (float)((mi[0][0] * ex + mi[1][0] * ey) / len2);
+        E->aty = (float)((mi[0][1] * ex + mi[1][1] * ey) / len2);
+        double asx = mi[0][0] * nzx + mi[1][0] * nzy, asy = mi[0][1] * nzx + mi[1][1] * nzy;
+        E->asx = (float)asx, E->asy = (float)asy;
+        double dx = m[0][0] * nzx + m[0][1] * nzy, dy = m[1][0] * nzx + m[1][1] * nzy;
+        E->dx = (float)dx, E->dy = (float)dy;
+        E->t_apex = (float)t_apex, E->h_apex = (float)h_apex;
+        E->bulge = (float)(fmax * hypot(dx, dy));
+        E->shx = ur->shx, E->shy = ur->shy;
+        E->left = cl, E->right = cr;
+        E->f_first = e * (uint32_t)lv->f_count;
+        /* Both sides take their line from the record: exactly complementary half-planes. */
+        double sl = hypot(asx, asy), nyx = asx / sl, nyy = asy / sl;
+        ul->nx = (float)-nyx, ul->ny = (float)-nyy;
+        ul->d = (float)-(nyx * ax + nyy * ay);
+        ur->nx = (float)nyx, ur->ny = (float)nyy;
+        ur->d = (float)(nyx * (ax - ur->shx) + nyy * (ay - ur->shy));
+        ul->edge = e, ur->edge = e;
+        ul->neighbour = cr, ur->neighbour = cl;
+        e++;
+    }
+    lv->edge_count = e;
+    free(use_owner);
+    return SK_OK;
+}
+
+void sk__finish_uses(sk__level *lv)
+{
+    for (uint32_t c = 0; c < lv->cell_count; c++) {
+        const sk__cell *cell = &lv->cells[c];
+        for (uint32_t k = 0; k < cell->use_count; k++) {
+            sk__use *u = &lv->uses[cell->first_use + k];
+            double hs = (double)u->d - ((double)u->nx * cell->sx + (double)u->ny * cell->sy);
+            double hc = (double)u->d - ((double)u->nx * cell->cx + (double)u->ny * cell->cy);
+            if (hs < 1e-12) hs = 1e-12;
+            if (hc < 1e-12) hc = 1e-12;
+            u->asx = (float)(u->nx / hs), u->asy = (float)(u->ny / hs);
+            u->acx = (float)(u->nx / hc), u->acy = (float)(u->ny / hc);
+            u->hc = (float)hc;
+        }
+    }
+}
