@@ -1,37 +1,68 @@
 /* Point query (paper sec. 3.2.3 (2), Fig. 10): walk down the levels, find the cell at each
  * level, evaluate its section profile, and sum heights over levels; normals combine as
  * gradients add (each level's normal scaled to z = 1, x and y parts summed), carried
- * through the perturbation maps by the chain rule so the normal is the exact normal of
+ * through the perturbation maps by the chain rule, so the normal is the exact normal of
  * the height field. Allocation-free and thread-safe. */
 #include <math.h>
 
 #include "skin/skin_internal.h"
 
-void sk_skin_query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_sample *out)
+/* A hinted cell is used only if the point is inside it by this share of the gauge. */
+#define SK__HINT_MARGIN 1e-4f
+
+void sk__hint_reset(sk__hint *hint)
 {
-    for (int k = 0; k < SK_SKIN_MAX_LEVELS; k++) out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0;
+    for (int k = 0; k < SK_SKIN_MAX_LEVELS; k++) hint->cell[k] = SK__SKIN_NONE;
+    hint->shift[0] = hint->shift[1] = 0.0;
+}
+
+void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_sample *out,
+               sk__hint *hint)
+{
+    int L = skin->level_count;
     out->height_mm = 0.0f;
     out->normal = sk_v3f(0, 0, 1);
+    for (int k = 0; k < L; k++) out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0.0f;
     if (!isfinite(x) || !isfinite(y)) return;
+    const sk__level *l1 = &skin->levels[0];
     float px, py;
-    uint32_t c = sk__locate_level1(skin, x, y, &px, &py);
-    if (c == SK__SKIN_NONE) return;
+    uint32_t c = SK__SKIN_NONE, u = 0;
+    double wx = sk__wrap(x, skin->period[0]), wy = sk__wrap(y, skin->period[1]);
+    if (hint && hint->cell[0] != SK__SKIN_NONE) {
+        float lx = (float)(wx - hint->shift[0]), ly = (float)(wy - hint->shift[1]);
+        if (sk__gauge_site(l1, hint->cell[0], lx, ly, &u) < 1.0f - SK__HINT_MARGIN)
+            c = hint->cell[0], px = lx, py = ly;
+    }
+    if (c == SK__SKIN_NONE) {
+        double shift[2];
+        c = sk__locate_level1(skin, wx, wy, &px, &py, &u, shift);
+        if (c == SK__SKIN_NONE) return;
+        if (hint) hint->cell[0] = c, hint->shift[0] = shift[0], hint->shift[1] = shift[1];
+    }
     float jac[2][2] = {{1, 0}, {0, 1}};
     float h = 0, gx = 0, gy = 0;
-    for (int k = 0; k < skin->level_count; k++) {
+    for (int k = 0; k < L; k++) {
         const sk__level *lv = &skin->levels[k];
         if (k > 0) {
-            const sk__cell *pc = &skin->levels[k - 1].cells[c];
-            c = sk__locate_child(lv, pc->first_child, pc->child_count, px, py);
+            uint32_t parent = c, hc = hint ? hint->cell[k] : SK__SKIN_NONE;
+            c = SK__SKIN_NONE;
+            if (hc != SK__SKIN_NONE && lv->cells[hc].parent == parent &&
+                sk__gauge_site(lv, hc, px, py, &u) < 1.0f - SK__HINT_MARGIN)
+                c = hc;
+            if (c == SK__SKIN_NONE) {
+                const sk__cell *pc = &skin->levels[k - 1].cells[parent];
+                c = sk__locate_child(lv, pc->first_child, pc->child_count, px, py);
+                if (lv->perturbed) u = sk__fan_use(lv, c, px, py);
+                if (hint) hint->cell[k] = c;
+            }
         }
-        uint32_t u = sk__fan_use(lv, c, px, py);
-        float pre_x, pre_y;
-        c = sk__unwarp(lv, c, u, &px, &py, jac, &pre_x, &pre_y);
+        float pre_x = px, pre_y = py;
+        if (lv->perturbed) c = sk__unwarp(lv, c, u, &px, &py, jac, &pre_x, &pre_y);
         out->cell[k] = c;
         if (flags & SK_SKIN_QUERY_FURROW) out->furrow_mm[k] = sk__furrow_distance(lv, c, pre_x, pre_y);
         float g[2];
         h += sk__profile_eval(lv, c, px, py, g);
-        /* gradient in world = jac^T g */
+        /* gradient in the world = jac^T g */
         gx += jac[0][0] * g[0] + jac[1][0] * g[1];
         gy += jac[0][1] * g[0] + jac[1][1] * g[1];
     }
@@ -45,11 +76,17 @@ void sk_skin_query(const sk_skin *skin, double x, double y, unsigned flags, sk_s
     out->normal = sk_v3f(-gx * inv, -gy * inv, inv);
 }
 
+void sk_skin_query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_sample *out)
+{
+    for (int k = 0; k < SK_SKIN_MAX_LEVELS; k++) out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0;
+    sk__query(skin, x, y, flags, out, NULL);
+}
+
 void sk_skin_eval(const sk_skin *skin, double x_mm, double y_mm, float *height_mm,
                   sk_vec3f *normal)
 {
     sk_skin_sample s;
-    sk_skin_query(skin, x_mm, y_mm, 0, &s);
+    sk__query(skin, x_mm, y_mm, 0, &s, NULL);
     if (height_mm) *height_mm = s.height_mm;
     if (normal) *normal = s.normal;
 }

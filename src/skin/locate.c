@@ -34,7 +34,8 @@ uint32_t sk__fan_use(const sk__level *lv, uint32_t c, float px, float py)
     return u;
 }
 
-uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, float *py)
+uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, float *py,
+                           uint32_t *use, double shift[2])
 {
     const sk__grid *g = &skin->grid;
     const sk__level *lv = &skin->levels[0];
@@ -44,19 +45,19 @@ uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, f
     if (gx >= g->nx) gx = g->nx - 1;
     if (gy >= g->ny) gy = g->ny - 1;
     size_t sq = (size_t)gy * (size_t)g->nx + (size_t)gx;
-    uint32_t best = SK__SKIN_NONE;
-    float best_g = INFINITY, bx = 0, by = 0;
+    uint32_t best = SK__SKIN_NONE, best_use = 0, best_e = 0;
+    float best_g = INFINITY;
     for (uint32_t e = g->start[sq]; e < g->start[sq + 1]; e++) {
-        uint32_t c = g->cell[e];
+        uint32_t c = g->cell[e], u;
         float lx = (float)(x - g->shift[2 * e]), ly = (float)(y - g->shift[2 * e + 1]);
-        float gauge = sk__gauge_site(lv, c, lx, ly, NULL);
-        if (gauge <= 1.0f) {
-            *px = lx, *py = ly;
-            return c;
-        }
-        if (gauge < best_g) best_g = gauge, best = c, bx = lx, by = ly;
+        float gauge = sk__gauge_site(lv, c, lx, ly, &u);
+        if (gauge < best_g) best_g = gauge, best = c, best_use = u, best_e = e;
+        if (gauge <= 1.0f) break;
     }
-    *px = bx, *py = by;
+    if (best == SK__SKIN_NONE) return best;
+    shift[0] = g->shift[2 * best_e], shift[1] = g->shift[2 * best_e + 1];
+    *px = (float)(x - shift[0]), *py = (float)(y - shift[1]);
+    *use = best_use;
     return best;
 }
 
@@ -78,7 +79,9 @@ uint32_t sk__locate_child(const sk__level *lv, uint32_t first, uint32_t count, f
 uint32_t sk__locate_straight(const sk_skin *skin, int level, double x, double y, float *px,
                              float *py)
 {
-    uint32_t c = sk__locate_level1(skin, x, y, px, py);
+    uint32_t use;
+    double shift[2];
+    uint32_t c = sk__locate_level1(skin, x, y, px, py, &use, shift);
     for (int k = 1; k <= level && c != SK__SKIN_NONE; k++) {
         const sk__cell *pc = &skin->levels[k - 1].cells[c];
         c = sk__locate_child(&skin->levels[k], pc->first_child, pc->child_count, *px, *py);

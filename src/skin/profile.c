@@ -33,14 +33,23 @@ float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, floa
     float rho = lv->roundness;
     float r2 = qx * qx + qy * qy;
     if (rho > 0.0f && r2 > 0.0f && xq > 0.0f) {
-        /* the pair of consecutive edge normals whose angle holds q */
-        int i = n - 1;
-        for (int k = 0; k < n; k++) {
-            int k1 = k + 1 == n ? 0 : k + 1;
-            float c1 = u[k].nx * qy - u[k].ny * qx, c2 = qx * u[k1].ny - qy * u[k1].nx;
-            if (c1 >= 0.0f && c2 > 0.0f) {
-                i = k;
-                break;
+        /* The pair of consecutive edge normals whose angle holds q: the edge the ray
+           meets (arg) has its normal next to the ray, on one side or the other. */
+        int i = arg;
+        if (u[arg].nx * qy - u[arg].ny * qx < 0.0f) i = arg == 0 ? n - 1 : arg - 1;
+        {
+            int i1 = i + 1 == n ? 0 : i + 1;
+            float c1 = u[i].nx * qy - u[i].ny * qx, c2 = qx * u[i1].ny - qy * u[i1].nx;
+            if (!(c1 >= 0.0f && c2 > 0.0f)) {
+                /* a normal outside its edge's span (obtuse corner): search */
+                for (int k = 0; k < n; k++) {
+                    int k1 = k + 1 == n ? 0 : k + 1;
+                    c1 = u[k].nx * qy - u[k].ny * qx, c2 = qx * u[k1].ny - qy * u[k1].nx;
+                    if (c1 >= 0.0f && c2 > 0.0f) {
+                        i = k;
+                        break;
+                    }
+                }
             }
         }
         int i1 = i + 1 == n ? 0 : i + 1;

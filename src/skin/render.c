@@ -43,12 +43,14 @@ sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, s
 #pragma omp parallel for schedule(dynamic, 1)
     for (int j = 0; j < rh; j++) {
         int gy = ry + j;
+        sk__hint hint;
+        sk__hint_reset(&hint);
         for (int i = 0; i < rw; i++) {
             int gx = rx + i;
             size_t o = (size_t)j * (size_t)rw + (size_t)i;
             double x = (gx + 0.5) * mm_x, y = top - (gy + 0.5) * mm_y;
             sk_skin_sample s;
-            sk_skin_query(skin, x, y, flags, &s);
+            sk__query(skin, x, y, flags, &s, &hint);
             if (desc->height_mm) desc->height_mm[o] = s.height_mm;
             if (desc->normal) {
                 desc->normal[3 * o] = s.normal.x;

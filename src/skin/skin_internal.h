@@ -66,12 +66,20 @@ typedef struct sk__cell {
 } sk__cell;
 
 /* A cubic Bezier chain in (x, z) (paper sec. 3.2.1 (2), parameter 5). */
+#define SK__PROFILE_TABLE 256
 typedef struct sk__profile {
     int segment_count;
     float x[SK_SKIN_MAX_SEGMENTS][4];
     float z[SK_SKIN_MAX_SEGMENTS][4];
+    /* z(x) and dz/dx times the step of each segment at SK__PROFILE_TABLE even steps of x
+       (exact values from the Bezier), interpolated as cubic Hermite */
+    float zx[SK_SKIN_MAX_SEGMENTS][SK__PROFILE_TABLE][2];
+    float last_start;      /* x where the last segment starts */
+    float seg_x0[SK_SKIN_MAX_SEGMENTS], seg_inv_w[SK_SKIN_MAX_SEGMENTS]; /* table mapping */
     float z_min, z_max;    /* bounds of the control points */
 } sk__profile;
+/* Fills the tables of a profile whose control points are set. */
+void sk__profile_prepare(sk__profile *p);
 
 /* Level-1 lookup grid over the tile: each square lists the (cell, tile shift) pairs whose
  * straight polygon meets it. */
@@ -193,7 +201,8 @@ void sk__pores_eval(const sk_skin *skin, double x, double y, float *h, float gra
 /* ---- queries */
 /* Locates the level-1 cell of world point (x, y) (straight cells, no perturbation):
  * returns the cell and the point in its frame (locate.c). */
-uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, float *py);
+uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, float *py,
+                           uint32_t *use, double shift[2]);
 /* Nearest sibling among the children of `parent` at level `level` (0-based). */
 uint32_t sk__locate_child(const sk__level *lv, uint32_t first, uint32_t count, float px,
                           float py);
@@ -225,6 +234,19 @@ void sk__to_world(const sk_skin *skin, int k, uint32_t c, double px, double py, 
 float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, float grad[2]);
 /* Bezier chain helpers (bezier.c). */
 float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg);
+/* The unscaled profile z(x) and its slope. */
+float sk__profile_z(const sk__profile *p, float x, float *dz_dx);
+/* Cells found by the previous query of a row of pixels: tried first, and kept only where
+ * the point is inside them by a margin, so results never depend on the hint. */
+typedef struct sk__hint {
+    uint32_t cell[SK_SKIN_MAX_LEVELS];
+    double shift[2];
+} sk__hint;
+void sk__hint_reset(sk__hint *hint);
+/* The query behind sk_skin_query, with an optional hint (eval.c). */
+void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_sample *out,
+               sk__hint *hint);
+
 /* Distance from p (frame of cell c, F(k-1)) to the perturbed boundary of c (furrow.c). */
 float sk__furrow_distance(const sk__level *lv, uint32_t c, float px, float py);
 
