@@ -180,6 +180,7 @@ typedef struct sk_skin_cell_info {
     uint32_t first_child;   /* children are first_child .. first_child + child_count - 1 */
     uint32_t child_count;   /* at level + 1 (0 at the last level) */
     sk_vec2d centre;        /* where the section profile has its first control point */
+    sk_vec2d site;          /* the centre point the Voronoi division started from */
     uint32_t edge_count;    /* polygon edges (before perturbation) */
 } sk_skin_cell_info;
 
@@ -194,6 +195,13 @@ sk_result sk_skin_cell_info_get(const sk_skin *skin, int level, uint32_t cell,
  * neighbour is the same chain of points from both sides. */
 size_t sk_skin_cell_outline(const sk_skin *skin, int level, uint32_t cell, int subdivide,
                             sk_vec2d *points, size_t max_points);
+
+/* One edge of that outline (edge 0 .. edge_count - 1, counter-clockwise): its points from
+ * its start up to, not including, the next edge's start; `neighbour` receives the cell of
+ * the same level across it (UINT32_MAX on a parent's boundary). Same count rules. */
+size_t sk_skin_cell_edge(const sk_skin *skin, int level, uint32_t cell, uint32_t edge,
+                         int subdivide, uint32_t *neighbour, sk_vec2d *points,
+                         size_t max_points);
 
 /* ----------------------------------------------------------------- rendering */
 typedef struct sk_skin_render_desc {

@@ -5,9 +5,9 @@
  * (t by bisection) and read back as a cubic Hermite curve: relative error below 1e-6, no
  * per-pixel root finding, and segment joints (where the slope may jump, Fig. 13a) fall on
  * table ends.
- * Roundness (parameter 6) moves the control points along x by a factor g: the points of
- * every segment but the last scale by g (x' = g x), those of the last segment move by the
- * affine map that keeps the boundary at x = 10, so the curve stays monotone. */
+ * Roundness (parameter 6) scales the x of every control point but the last (which stays
+ * on the boundary, x = 10) by g: below the last segment that is z(x' / g); the last
+ * segment is solved by Newton's method from a table of t over (g, x'). */
 #include <math.h>
 
 #include "skin/skin_internal.h"
@@ -52,7 +52,64 @@ void sk__profile_prepare(sk__profile *p)
             p->zx[s][i][1] = (float)(dz / dx * (x3 - x0) / (SK__PROFILE_TABLE - 1));
         }
     }
-    p->last_start = p->x[p->segment_count - 1][0];
+    int last = p->segment_count - 1;
+    p->last_start = p->x[last][0];
+    double xc[4], zc[4];
+    power_basis(p->x[last], xc);
+    power_basis(p->z[last], zc);
+    for (int i = 0; i < 4; i++) p->last_xc[i] = (float)xc[i], p->last_zc[i] = (float)zc[i];
+    for (int gi = 0; gi < 9; gi++) {
+        double g = p->g_min + (1.0 - p->g_min) * gi / 8.0;
+        double gc[4] = {g * xc[0], g * xc[1], g * xc[2], g * xc[3] + (1.0 - g) * 10.0};
+        double x0 = g * p->x[last][0];
+        for (int i = 0; i < 65; i++) {
+            double xq = x0 + (10.0 - x0) * i / 64.0, lo = 0.0, hi = 1.0;
+            for (int it = 0; it < 50; it++) {
+                double mid = 0.5 * (lo + hi);
+                if (poly3(gc, mid) < xq) lo = mid;
+                else hi = mid;
+            }
+            p->t_guess[gi][i] = (float)(0.5 * (lo + hi));
+        }
+    }
+    p->g_step_inv = p->g_min < 1.0f ? 8.0f / (1.0f - p->g_min) : 0.0f;
+}
+
+/* The last segment with its inner control points scaled by g (Newton from the table). */
+static float last_segment(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg)
+{
+    const float *xc = p->last_xc, *zc = p->last_zc;
+    float c[4] = {g * xc[0], g * xc[1], g * xc[2], g * xc[3] + (1.0f - g) * 10.0f};
+    float x0 = g * p->last_start;
+    float gu = (g - p->g_min) * p->g_step_inv;
+    if (!(gu > 0.0f)) gu = 0.0f;
+    if (gu > 7.999f) gu = 7.999f;
+    int gi = (int)gu;
+    float gf = gu - (float)gi;
+    float xu = (xq - x0) / (10.0f - x0) * 64.0f;
+    if (!(xu > 0.0f)) xu = 0.0f;
+    if (xu > 63.999f) xu = 63.999f;
+    int xi = (int)xu;
+    float xf = xu - (float)xi;
+    const float *r0 = p->t_guess[gi], *r1 = p->t_guess[gi + 1];
+    float t0 = r0[xi] + (r0[xi + 1] - r0[xi]) * xf, t1 = r1[xi] + (r1[xi + 1] - r1[xi]) * xf;
+    float t = p->g_step_inv > 0.0f ? t0 + (t1 - t0) * gf : t0;
+    for (int it = 0; it < 3; it++) {
+        float d = (3.0f * c[3] * t + 2.0f * c[2]) * t + c[1];
+        if (!(d > 1e-6f)) break;
+        float v = ((c[3] * t + c[2]) * t + c[1]) * t + c[0] - xq;
+        t -= v / d;
+        t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
+    }
+    float dx = (3.0f * c[3] * t + 2.0f * c[2]) * t + c[1];
+    float dz = (3.0f * zc[3] * t + 2.0f * zc[2]) * t + zc[1];
+    if (dx < 1e-6f) dx = 1e-6f;
+    float slope = dz / dx;
+    *dz_dx = slope;
+    /* dBx/dg at fixed t = Bx(t) - 10 t^3 */
+    float xg = ((xc[3] * t + xc[2]) * t + xc[1]) * t + xc[0] - 10.0f * t * t * t;
+    *dz_dg = -slope * xg;
+    return ((zc[3] * t + zc[2]) * t + zc[1]) * t + zc[0];
 }
 
 float sk__profile_z(const sk__profile *p, float x, float *dz_dx)
@@ -81,21 +138,10 @@ float sk__profile_z(const sk__profile *p, float x, float *dz_dx)
 float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg)
 {
     float ls = p->last_start;
-    float x, dxdq, dxdg;
-    if (g == 1.0f) {
-        x = xq, dxdq = 1.0f, dxdg = 0.0f;
-    } else if (xq <= g * ls) {
-        float ig = 1.0f / g;
-        x = xq * ig, dxdq = ig, dxdg = -xq * ig * ig;
-    } else {
-        float den = 10.0f - g * ls, k = (10.0f - ls) / den;
-        x = ls + (xq - g * ls) * k;
-        dxdq = k;
-        dxdg = ls * k * (xq - 10.0f) / den;
-    }
-    float slope;
-    float z = sk__profile_z(p, x, &slope);
-    *dz_dx = slope * dxdq;
-    *dz_dg = slope * dxdg;
+    if (g != 1.0f && xq > g * ls) return last_segment(p, g, xq, dz_dx, dz_dg);
+    float ig = 1.0f / g, slope;
+    float z = sk__profile_z(p, xq * ig, &slope);
+    *dz_dx = slope * ig;
+    *dz_dg = -slope * xq * ig * ig;
     return z;
 }

@@ -30,6 +30,7 @@ static void level_setup(sk_skin *skin, int k)
             p->z_min = fminf(p->z_min, p->z[s][i]);
             p->z_max = fmaxf(p->z_max, p->z[s][i]);
         }
+    p->g_min = 1.0f - d->roundness;
     sk__profile_prepare(p);
 }
 

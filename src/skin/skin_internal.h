@@ -75,6 +75,12 @@ typedef struct sk__profile {
        (exact values from the Bezier), interpolated as cubic Hermite */
     float zx[SK_SKIN_MAX_SEGMENTS][SK__PROFILE_TABLE][2];
     float last_start;      /* x where the last segment starts */
+    /* The last segment under roundness (its end stays at 10, so it is not a scaled copy):
+       power-basis coefficients of Bx and Bz, and t at (g, x) grid points as a first guess
+       for Newton's method, g from 1 - roundness to 1. */
+    float last_xc[4], last_zc[4];
+    float g_min, g_step_inv;
+    float t_guess[9][65];
     float seg_x0[SK_SKIN_MAX_SEGMENTS], seg_inv_w[SK_SKIN_MAX_SEGMENTS]; /* table mapping */
     float z_min, z_max;    /* bounds of the control points */
 } sk__profile;
