@@ -89,6 +89,21 @@ sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
         skin->period[1] += reach;
     }
     for (int k = 0; k < skin->level_count; k++) level_setup(skin, k);
+    /* Refuse absurd sizes before building anything (cells per level ~ area / cell area). */
+    double estimate = 0;
+    for (int k = 0; k < skin->level_count; k++) {
+        const sk_skin_level *lv = &skin->desc.levels[k];
+        double cell = lv->spacing_mm * (double)lv->spacing_mm * lv->stretch[0] * lv->stretch[1] *
+                      (lv->layout == SK_SKIN_LAYOUT_SQUARE ? 1.0 : 0.8660254);
+        estimate += skin->period[0] * skin->period[1] / cell;
+        if (estimate > 1.05 * SK_SKIN_MAX_CELLS) {
+            r = sk_fail(err, SK_ERROR_LIMIT,
+                        "levels[%d].spacing_mm = %g makes about %.3g cells on a %g x %g mm "
+                        "tile; at most %d are supported", k, lv->spacing_mm, estimate,
+                        skin->period[0], skin->period[1], SK_SKIN_MAX_CELLS);
+            goto fail;
+        }
+    }
 
     size_t total = 0;
     for (int k = 0; k < skin->level_count; k++) {
