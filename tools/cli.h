@@ -17,7 +17,7 @@ enum { CLI_EXIT_OK = 0, CLI_EXIT_RUNTIME = 1, CLI_EXIT_USAGE = 2 };
 
 #define CLI_MAX_OPTIONS 48
 #define CLI_MAX_SETS 128
-#define CLI_MAX_POSITIONAL 16
+#define CLI_MAX_POSITIONAL 256
 
 /* A subcommand-specific option. */
 typedef struct cli_option {
@@ -50,7 +50,7 @@ typedef struct cli_common {
     bool quiet;
 } cli_common;
 
-#define CLI_MAX_VALUES 64
+#define CLI_MAX_VALUES 256
 typedef struct cli_args {
     cli_common common;
     /* For option i of the command: how often it was given and its values. */
@@ -130,7 +130,7 @@ bool cli_find_preset(const char *module, const char *name, char *path, size_t si
 /* The preset folders searched, in order; returns how many were written (<= max). */
 int cli_preset_dirs(const char **out, int max);
 
-/* Applies --threads and returns a progress bar sink (enabled unless --quiet). */
+/* Applies --threads (0 = all cores) to the library's parallel loops. */
 void cli_apply_threads(const cli_args *args);
 
 #endif /* SK_TOOLS_CLI_H */

@@ -64,7 +64,10 @@ typedef struct sk_png_write_desc {
     const sk_image_metadata *metadata; /* optional tEXt chunks */
 } sk_png_write_desc;
 
-/* Values are clamped to [0, 1] and rounded to the nearest code. `desc` may be NULL. */
+/* Values are clamped to [0, 1] (NaN to 0) and rounded to the nearest code. Metadata keys
+ * must be PNG keywords (1-79 printable ASCII characters, no leading, trailing or double
+ * spaces) and values UTF-8: ASCII values go into tEXt chunks, others into iTXt chunks.
+ * Linear files carry no colour-space chunk (no sRGB, no gAMA). `desc` may be NULL. */
 sk_result sk_image_write_png(const sk_image *image, const char *path,
                              const sk_png_write_desc *desc, sk_error *err);
 
@@ -75,7 +78,15 @@ typedef struct sk_png_read_desc {
 
 /* Reads any PNG (grey, grey+alpha, RGB, RGBA, palette; 1-16 bits) into floats; palette
  * images become RGB/RGBA. `metadata` (optional) receives the tEXt/zTXt/iTXt chunks,
- * `bit_depth` (optional) the file's bit depth. `desc` may be NULL. */
+ * `bit_depth` (optional) the file's bit depth. `desc` may be NULL.
+ *
+ * A tRNS chunk becomes an alpha channel; alpha is always linear (code / max). The
+ * encoding in `desc` decides how colour codes are decoded; the file's own sRGB/gAMA/iCCP
+ * chunks are not applied. Text is returned as UTF-8 (tEXt/zTXt are converted from
+ * Latin-1), over-long keys and values are cut to fit, entries beyond the 32nd dropped.
+ * Errors: a missing file is SK_ERROR_NOT_FOUND, another open failure SK_ERROR_IO, a size
+ * beyond the caps SK_ERROR_LIMIT (checked from the header, before allocating), anything
+ * malformed or truncated SK_ERROR_PARSE. */
 sk_result sk_image_read_png(sk_image *image, const char *path, const sk_png_read_desc *desc,
                             sk_image_metadata *metadata, int *bit_depth, sk_error *err);
 
@@ -100,15 +111,27 @@ typedef struct sk_exr_write_desc {
        4 "R","G","B","A". */
     const char *const *channel_names;
     const sk_image_metadata *metadata; /* optional string attributes */
+    /* 0 = scanline image; otherwise a tiled image (one level) with square tiles of this
+       many pixels, range 8..4096 (texture caches read tiles faster). */
+    int tile_size;
 } sk_exr_write_desc;
 
-/* Linear data is written as is (EXR is linear by convention). `desc` may be NULL. */
+/* Linear data is written as is (EXR is linear by convention); HALF rounds each float to
+ * the nearest half (ties to even), values beyond +-65504 become +-infinity. Channel names
+ * must be unique and 1-255 bytes; metadata keys must not be EXR's own attribute names
+ * (channels, compression, dataWindow, ...). `desc` may be NULL. */
 sk_result sk_image_write_exr(const sk_image *image, const char *path,
                              const sk_exr_write_desc *desc, sk_error *err);
 
 /* Reads a scanline or tiled single-part EXR (half, float or uint channels). Channels are
  * ordered as the writer names them (Y/R,G,B/A); other names follow alphabetically, up to
- * 4 channels. `metadata` (optional) receives the string attributes. */
+ * 4 channels. `metadata` (optional) receives the string attributes.
+ *
+ * The image is the data window (the display window is ignored); a tiled file gives its
+ * full-resolution level. With more than 4 channels, Y, R, G, B and A are kept first, then
+ * others alphabetically. Subsampled channels, deep and multi-part files are
+ * SK_ERROR_UNSUPPORTED; a missing file SK_ERROR_NOT_FOUND; sizes beyond the caps
+ * SK_ERROR_LIMIT; malformed or truncated files SK_ERROR_PARSE. */
 sk_result sk_image_read_exr(sk_image *image, const char *path, sk_image_metadata *metadata,
                             sk_error *err);
 
@@ -116,7 +139,9 @@ sk_result sk_image_read_exr(sk_image *image, const char *path, sk_image_metadata
 sk_result sk_image_write_auto(const sk_image *image, const char *path,
                               const sk_image_metadata *metadata, sk_error *err);
 
-/* sRGB transfer functions (IEC 61966-2-1). */
+/* sRGB transfer functions (IEC 61966-2-1): 12.92 x below 0.0031308, else
+ * 1.055 x^(1/2.4) - 0.055, and the exact inverse. Not clamped: the linear segment also
+ * serves negative values and the power segment continues above 1; NaN stays NaN. */
 float sk_srgb_from_linear(float linear);
 float sk_linear_from_srgb(float encoded);
 

@@ -44,19 +44,24 @@ typedef enum sk_mesh_flags {
 } sk_mesh_flags;
 
 /* Allocates zero-filled arrays. Counts beyond the caps of sk_mesh_read_desc's defaults
- * fail with SK_ERROR_LIMIT. */
+ * (2 GiB of arrays, 2^32 vertices) fail with SK_ERROR_LIMIT before allocating; triangles
+ * without vertices or unknown flags are SK_ERROR_INVALID_ARGUMENT. */
 sk_result sk_mesh_create(sk_mesh *mesh, size_t vertex_count, size_t triangle_count, int flags,
                          sk_error *err);
-/* Adds a zero-filled attribute; fails if the name exists or all slots are used. */
+/* Adds a zero-filled attribute (name 1-31 bytes, 1-4 components); fails if the name
+ * exists (SK_ERROR_INVALID_ARGUMENT) or all slots are used (SK_ERROR_LIMIT). */
 sk_result sk_mesh_add_attribute(sk_mesh *mesh, const char *name, int components,
                                 float **out_data, sk_error *err);
 /* NULL if absent. */
 const sk_mesh_attribute *sk_mesh_find_attribute(const sk_mesh *mesh, const char *name);
 void sk_mesh_free(sk_mesh *mesh);
 
-/* Checks the invariants: indices in range, positions/normals/uvs finite. */
+/* Checks the invariants: indices in range, positions/normals/uvs/colours finite,
+ * attributes well formed. Fails with SK_ERROR_INVALID_ARGUMENT naming the element. */
 sk_result sk_mesh_validate(const sk_mesh *mesh, sk_error *err);
-/* Computes area-weighted vertex normals (allocating `normals` if absent). */
+/* Computes area-weighted vertex normals (allocating `normals` if absent): each triangle
+ * adds its cross product (twice its area times its unit normal) to its corners. Vertices
+ * on no triangle of non-zero area (e.g. all of a point cloud) get (0, 0, 1). */
 sk_result sk_mesh_compute_normals(sk_mesh *mesh, sk_error *err);
 /* Axis-aligned bounds of the positions; false for an empty mesh. */
 bool sk_mesh_bounds(const sk_mesh *mesh, sk_vec3f *lo, sk_vec3f *hi);
@@ -71,13 +76,32 @@ typedef struct sk_mesh_read_desc {
 /* Reads OBJ: v (with optional r g b), vt, vn, f with v, v/vt, v//vn, v/vt/vn and
  * negative (relative) indices; polygons are triangulated; o/g/s/usemtl/mtllib lines are
  * accepted and ignored; a file with only v lines is a point cloud. Malformed lines,
- * indices out of range and non-finite numbers fail with SK_ERROR_PARSE naming the line. */
+ * indices out of range and non-finite numbers fail with SK_ERROR_PARSE naming the line.
+ *
+ * Details: each distinct (v, vt, vn) triple used by a face becomes one vertex (numbered in
+ * order of first use; v lines no face uses are dropped). An index refers to an element
+ * defined earlier in the file. File normals are normalised; corners without vn (or with
+ * a zero vn) in a file that has some get computed normals. Vertices without a colour in a
+ * file where others have one are white. "v x y z w" is accepted (w dropped). Polygons are
+ * ear-clipped in their best-fit plane, polygons of more than 512 corners fanned. Lines
+ * (l), points (p) and free-form geometry are skipped; unknown statements are errors.
+ * A missing file is SK_ERROR_NOT_FOUND; a file larger than the cap is SK_ERROR_LIMIT. */
 sk_result sk_mesh_read_obj(sk_mesh *mesh, const char *path, const sk_mesh_read_desc *desc,
                            sk_error *err);
 /* Reads PLY 1.0 (ascii, binary_little_endian, binary_big_endian): vertex x y z, optional
  * nx ny nz, u v (or s t, texture_u texture_v), red green blue (8-bit or float), other
  * scalar vertex properties as 1-component attributes; face vertex_indices (or
- * vertex_index) lists, polygons triangulated; other elements skipped. */
+ * vertex_index) lists, polygons triangulated; other elements skipped.
+ *
+ * Details: integer colours are divided by their type's maximum (uchar 255, ushort 65535),
+ * float colours kept. A run of properties "<name>_0", "<name>_1" .. (2-4 of them) is one
+ * attribute "<name>" with that many components (the writer's form for vector
+ * attributes); attributes beyond SK_MESH_MAX_ATTRIBUTES are skipped. Validation is strict,
+ * with SK_ERROR_PARSE naming the element and record (and the line in ASCII): element
+ * counts the rest of the file cannot hold, a truncated body, trailing data, an index out
+ * of range, a face of fewer than 3 vertices, a non-finite value in a kept property, and in
+ * ASCII a record not on its own line. Counts needing more memory than the cap fail with
+ * SK_ERROR_LIMIT before allocating. Version other than 1.0: SK_ERROR_UNSUPPORTED. */
 sk_result sk_mesh_read_ply(sk_mesh *mesh, const char *path, const sk_mesh_read_desc *desc,
                            sk_error *err);
 /* By extension (.obj / .ply). */
@@ -93,11 +117,20 @@ typedef struct sk_obj_write_desc {
 } sk_obj_write_desc;
 
 /* Writes v/vt/vn/f (attributes and colours are not representable in OBJ and are
- * skipped, except vertex colours as the common "v x y z r g b" extension). */
+ * skipped, except vertex colours as the common "v x y z r g b" extension). Floats are
+ * printed with 9 significant digits, so they read back bit-exact. With texture_path, the
+ * MTL file takes the OBJ's name with the extension ".mtl", the OBJ names it by its base
+ * name (mtllib), and texture_path is written as given (make it relative to the OBJ's
+ * folder); material_name must have no white space. Both files are written atomically,
+ * the MTL first. */
 sk_result sk_mesh_write_obj(const sk_mesh *mesh, const char *path,
                             const sk_obj_write_desc *desc, sk_error *err);
 /* Writes binary little-endian PLY with every array and attribute as float properties
- * (colours as uchar red/green/blue) and faces as "list uchar uint vertex_indices". */
+ * (colours as uchar red/green/blue) and faces as "list uchar uint vertex_indices".
+ * Property names: x y z, nx ny nz, s t (what Blender writes and reads), red green blue;
+ * an attribute "<name>" of k > 1 components becomes "<name>_0" .. "<name>_{k-1}".
+ * Attribute names must not contain white space nor be one of those standard names.
+ * A point cloud has no face element. The byte order does not depend on the host. */
 sk_result sk_mesh_write_ply(const sk_mesh *mesh, const char *path, sk_error *err);
 /* By extension (.obj / .ply). */
 sk_result sk_mesh_write(const sk_mesh *mesh, const char *path, sk_error *err);

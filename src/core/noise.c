@@ -246,8 +246,9 @@ float sk_fbm2_periodic(uint64_t seed, float x, float y, int period_x, int period
         if (px < 1) px = 1;
         if (py < 1) py = 1;
         float fx = (float)px / (float)period_x, fy = (float)py / (float)period_y;
-        /* integer offsets keep the lattice aligned with the period */
-        float ox = floorf(octave_offset(seed, k, 0)), oy = floorf(octave_offset(seed, k, 1));
+        /* any offset keeps the period (the lattice wraps in its own coordinates); a
+           fractional one keeps the octaves' zero points apart, so no grid shows */
+        float ox = octave_offset(seed, k, 0), oy = octave_offset(seed, k, 1);
         sum += amp * sk_noise2_periodic(octave_seed(seed, k), x * fx + ox, y * fy + oy, px, py);
         norm += amp;
         amp *= gain;

@@ -1,0 +1,446 @@
+/* shitsukan hand: the skeleton of Yasumuro's thesis (2000, ch. 3) posed from few inputs
+ * by the equilibrium of joint springs and a potential of natural joint coupling, with
+ * calibration from measured angle pairs, lookup-table potentials, keyframe animation,
+ * and BVH / joint-position export.
+ *
+ * Conventions (docs/hand.md has the table of every DOF):
+ * - Units: millimetres and radians in the API; files say degrees where a key says so.
+ * - Right-hand frames: X radial (toward the thumb), Y distal (along each link), Z palmar.
+ *   Every joint rotates by 3-2-1 Euler angles (eq. 3.4): R = Rz(z) Ry(y) Rx(x).
+ *   Flexion is the X angle and positive; abduction is a Z angle, positive away from the
+ *   middle finger (each DOF's sign says how its value maps onto the Euler angle).
+ * - A left hand is the exact mirror image of the right hand with the same DOF values,
+ *   mirrored in the world plane x = 0 (so wrist.tx mirrors too).
+ * - DOF values here are absolute joint angles theta*; the equilibrium works on the
+ *   displacement from the relaxed posture theta = theta* - theta_bar (eq. 3.7).
+ *
+ * Thread-safety: skeletons, constraint sets and lookup tables are immutable after
+ * creation and may be shared between threads; a solver (it caches factorisations)
+ * belongs to one thread at a time. */
+#ifndef SHITSUKAN_HAND_H
+#define SHITSUKAN_HAND_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "shitsukan/core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* -------------------------------------------------------------- DOF table */
+/* 6 wrist DOF (translation + rotation of the carpus) + 29 joint DOF: thumb CMC 2, MCP 2,
+ * IP 1; index..little CMC 2, MCP 2, PIP 1, DIP 1 (spec decision on Table 3.1). */
+#define SK_HAND_DOF_COUNT 35
+#define SK_HAND_WRIST_DOF_COUNT 6
+/* Joint centres + fingertips: wrist, thumb CMC MCP IP tip, then for I, M, R, L:
+ * CMC MCP PIP DIP tip. */
+#define SK_HAND_POINT_COUNT 25
+/* Rigid links: carpus, thumb metacarpal/proximal/distal, 4 x (metacarpal, proximal,
+ * middle, distal). Each starts at its base joint (sk_hand_link_point). */
+#define SK_HAND_LINK_COUNT 20
+
+typedef enum sk_hand_finger {
+    SK_HAND_THUMB = 0,
+    SK_HAND_INDEX,
+    SK_HAND_MIDDLE,
+    SK_HAND_RING,
+    SK_HAND_LITTLE,
+    SK_HAND_FINGER_COUNT
+} sk_hand_finger;
+
+typedef enum sk_hand_side {
+    SK_HAND_SIDE_DEFAULT = 0, /* = right */
+    SK_HAND_SIDE_RIGHT,
+    SK_HAND_SIDE_LEFT
+} sk_hand_side;
+
+typedef struct sk_hand_dof_info {
+    const char *name;    /* e.g. "L.MCP.flex", "wrist.tx" */
+    int link;            /* link whose base joint carries the DOF (0 = carpus) */
+    char axis;           /* 'X', 'Y' or 'Z' of the link frame (translations: world axes) */
+    int sign;            /* right hand: Euler angle (or translation) = sign * value */
+    bool translation;    /* wrist.tx/ty/tz: millimetres; everything else radians */
+    const char *meaning; /* one line: what a positive value does */
+} sk_hand_dof_info;
+
+/* Information on DOF 0..SK_HAND_DOF_COUNT-1 (NULL outside). */
+const sk_hand_dof_info *sk_hand_dof(int dof);
+/* Index of a DOF by name (exact, case-sensitive), or -1. */
+int sk_hand_dof_find(const char *name);
+/* Name of point 0..SK_HAND_POINT_COUNT-1 ("wrist", "T.CMC", ..., "L.tip"), NULL outside. */
+const char *sk_hand_point_name(int point);
+/* Parent point of a point (the joint at the base of its link), -1 for the wrist. */
+int sk_hand_point_parent(int point);
+/* Name of link 0..SK_HAND_LINK_COUNT-1 as used in BVH ("Hand", "T_CMC", ..., "L_DIP"),
+ * named after its base joint. */
+const char *sk_hand_link_name(int link);
+/* Point at the base of a link (0 for the carpus) and the point at its far end (the next
+ * joint or the fingertip; -1 for the carpus, which ends at five CMC joints). */
+int sk_hand_link_point(int link);
+int sk_hand_link_end_point(int link);
+
+
+/* ----------------------------------------------------- anatomy (data file) */
+/* Per-DOF data: limits, relaxed posture (theta_bar, eq. 3.7) and spring stiffness
+ * (eq. 3.8). Angles in radians (translations in mm). */
+typedef struct sk_hand_dof_data {
+    double min, max;     /* anatomical limits of the absolute value */
+    double relaxed;      /* theta_bar */
+    double stiffness;    /* k_i > 0; torque units per radian (per mm for translations) */
+} sk_hand_dof_data;
+
+/* Geometry as fractions of hand length (HL) and breadth (HB), after Buchholz et al.
+ * 1992; the mount is the fixed orientation of each finger's CMC frame on the carpus. */
+typedef struct sk_hand_finger_data {
+    double cmc_x_hb, cmc_y_hl, cmc_z_hb; /* CMC centre from the wrist centre */
+    double mc_dx_hb;      /* metacarpal: radial offset of the MCP from the CMC (x HB);
+                             0 for the thumb */
+    double mc_dy_hl;      /* metacarpal: distal offset of the MCP from the CMC (x HL);
+                             for the thumb, the metacarpal length */
+    double phalanx_hl[3]; /* proximal, middle, distal lengths (x HL); thumb: proximal,
+                             distal, unused */
+    /* Rest orientation of the CMC frame: R = Rz(splay) Rx(tilt) Ry(roll), radians.
+       For I..L the splay follows the metacarpal direction (computed, must be 0 here). */
+    double mount_tilt, mount_roll, thumb_splay;
+} sk_hand_finger_data;
+
+typedef struct sk_hand_anatomy {
+    double hand_length_mm;  /* HL: wrist crease to the middle fingertip */
+    double hand_breadth_mm; /* HB: across the metacarpal heads */
+    sk_hand_finger_data finger[SK_HAND_FINGER_COUNT];
+    sk_hand_dof_data dof[SK_HAND_DOF_COUNT];
+} sk_hand_anatomy;
+
+/* The built-in anatomy (the values of presets/hand/anatomy.json, with their sources). */
+void sk_hand_anatomy_default(sk_hand_anatomy *out);
+/* Reads an anatomy JSON file (format of presets/hand/anatomy.json): every key optional,
+ * starting from the built-in values. Errors name the key path. */
+sk_result sk_hand_anatomy_load_file(const char *path, sk_hand_anatomy *out, sk_error *err);
+sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *source_name,
+                                sk_hand_anatomy *out, sk_error *err);
+
+/* --------------------------------------------------------------- skeleton */
+typedef struct sk_hand_skeleton_desc {
+    double hand_length_mm;  /* 0 = the anatomy's (190 mm); range [60, 400] */
+    double hand_breadth_mm; /* 0 = the anatomy's (85 mm); range [30, 200] */
+    sk_hand_side side;      /* 0 = right */
+    const sk_hand_anatomy *anatomy; /* NULL = sk_hand_anatomy_default() */
+} sk_hand_skeleton_desc;
+
+/* The link tree (3.1.1) with its fixed geometry, in right-hand coordinates. */
+typedef struct sk_hand_skeleton {
+    sk_hand_side side; /* resolved: RIGHT or LEFT */
+    double hand_length_mm, hand_breadth_mm;
+    sk_hand_dof_data dof[SK_HAND_DOF_COUNT];
+    int parent[SK_HAND_LINK_COUNT];      /* parent link, -1 for the carpus */
+    sk_vec3d offset[SK_HAND_LINK_COUNT]; /* r: parent joint -> this joint, parent frame */
+    sk_mat3d mount[SK_HAND_LINK_COUNT];  /* fixed rotation before the joint's DOFs */
+    double length[SK_HAND_LINK_COUNT];   /* joint -> next joint (tip) along +Y, mm */
+} sk_hand_skeleton;
+
+sk_hand_skeleton_desc sk_hand_skeleton_desc_resolved(const sk_hand_skeleton_desc *desc);
+sk_result sk_hand_skeleton_init(sk_hand_skeleton *skeleton, const sk_hand_skeleton_desc *desc,
+                                sk_error *err);
+/* The relaxed posture theta_bar as absolute DOF values. */
+void sk_hand_relaxed(const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT]);
+/* Clamps every DOF into its limits; returns how many were changed. */
+int sk_hand_clamp_to_limits(const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT]);
+
+/* ---------------------------------------------------- forward kinematics */
+/* Link frames and joint positions in world coordinates (eqs. 3.5, 3.6). */
+typedef struct sk_hand_frames {
+    sk_mat3d rotation[SK_HAND_LINK_COUNT]; /* link frame axes as columns */
+    sk_vec3d point[SK_HAND_POINT_COUNT];   /* mm */
+} sk_hand_frames;
+
+/* 3-2-1 Euler rotation of eq. (3.4): Rz(z) Ry(y) Rx(x). */
+sk_mat3d sk_hand_euler321(double x, double y, double z);
+/* Inverse: angles (x, y, z) with R = Rz(z) Ry(y) Rx(x), y in [-pi/2, pi/2]. */
+void sk_hand_euler321_from_matrix(sk_mat3d r, double *x, double *y, double *z);
+/* Forward kinematics of absolute DOF values (not clamped). */
+void sk_hand_forward(const sk_hand_skeleton *skeleton, const double dofs[SK_HAND_DOF_COUNT],
+                     sk_hand_frames *out);
+
+/* ------------------------------------------------------ constraint sets */
+/* One row of A theta + b = 0 (eq. 3.13) with its weight (diagonal of W, eq. 3.14), on
+ * displacements theta from the relaxed posture, in radians. */
+#define SK_HAND_ROW_MAX_TERMS 8
+typedef struct sk_hand_row {
+    int term_count;
+    int dof[SK_HAND_ROW_MAX_TERMS];
+    double coeff[SK_HAND_ROW_MAX_TERMS];
+    double b;      /* radians */
+    double weight; /* w_k > 0 */
+    char label[64];
+} sk_hand_row;
+
+#define SK_HAND_MAX_ROWS 256
+typedef struct sk_hand_constraints {
+    int row_count;
+    sk_hand_row rows[SK_HAND_MAX_ROWS];
+    bool has_stiffness[SK_HAND_DOF_COUNT]; /* stiffness overrides from the file */
+    double stiffness[SK_HAND_DOF_COUNT];
+} sk_hand_constraints;
+
+/* Parses a constraint file (format: docs/hand.md, presets/hand/natural.json). The
+ * skeleton gives the relaxed posture for rows written on absolute angles. Errors
+ * (unknown DOF names, non-positive weights or stiffness, malformed JSON) name the key
+ * path, e.g. "rows[2].pair: unknown DOF \"L.MPC.flex\"". */
+sk_result sk_hand_constraints_parse(const char *text, size_t length, const char *source_name,
+                                    const sk_hand_skeleton *skeleton,
+                                    sk_hand_constraints *out, sk_error *err);
+sk_result sk_hand_constraints_load_file(const char *path, const sk_hand_skeleton *skeleton,
+                                        sk_hand_constraints *out, sk_error *err);
+/* Appends a row y = slope * x + intercept between two DOFs (absolute angles when
+ * `absolute`, otherwise displacements; radians). */
+sk_result sk_hand_constraints_add_pair(sk_hand_constraints *c, const sk_hand_skeleton *skeleton,
+                                       int dof_x, int dof_y, double slope, double intercept,
+                                       double weight, bool absolute, sk_error *err);
+
+/* ------------------------------------------------- lookup-table potentials */
+/* Nonlinear potential of one DOF pair (3.2.3): squared distance (rad^2) from (x, y)
+ * (absolute angles) to the nearest measured sample, tabulated on a grid with its x and
+ * y gradients, bilinearly interpolated. */
+typedef enum sk_hand_lut_interp {
+    SK_HAND_LUT_INTERP_DEFAULT = 0, /* = HERMITE */
+    SK_HAND_LUT_INTERP_HERMITE,     /* bicubic Hermite from the value and gradient tables
+                                       (zero twist): C1, its gradient is the exact
+                                       derivative of the interpolated potential and it
+                                       reproduces the squared distance exactly where a
+                                       cell's corners share their nearest sample, so the
+                                       iterative solve reaches its tolerance */
+    SK_HAND_LUT_INTERP_BILINEAR     /* value and gradient tables each bilinearly
+                                       interpolated (the thesis's tables as they are):
+                                       the gradient differs from the potential's slope by
+                                       O(grid step), so the solve stops at a residual of
+                                       about weight x grid step */
+} sk_hand_lut_interp;
+
+typedef struct sk_hand_lut_desc {
+    int resolution;   /* grid nodes per axis; 0 = 100; range [8, 1024] */
+    double margin;    /* grid extends this fraction of the sample range beyond it on
+                         every side; 0 = 0.25; range [0, 4] */
+    double weight;    /* multiplies the potential; 0 = 1; range (0, 1e6] */
+    sk_hand_lut_interp interp; /* 0 = Hermite */
+} sk_hand_lut_desc;
+
+typedef struct sk_hand_lut {
+    int dof_x, dof_y;
+    int n;                 /* resolution */
+    double x0, y0, h_x, h_y; /* node (i, j) at (x0 + i h_x, y0 + j h_y) */
+    double weight;
+    sk_hand_lut_interp interp; /* resolved */
+    double *value;          /* n*n, node (i, j) at value[j * n + i] */
+    double *grad_x, *grad_y; /* exact gradient of the squared distance at the nodes */
+} sk_hand_lut;
+
+/* Builds the tables from `count` samples (xs[i], ys[i]) in radians. */
+sk_result sk_hand_lut_build(sk_hand_lut *lut, int dof_x, int dof_y, const double *xs,
+                            const double *ys, int count, const sk_hand_lut_desc *desc,
+                            sk_error *err);
+void sk_hand_lut_free(sk_hand_lut *lut);
+/* Interpolated potential (times the weight) and its gradient (times the weight) at
+ * absolute angles (x, y). Outside the grid the potential continues from the nearest
+ * border point c with its slope and the squared distance d to the border:
+ * V(c) + V_x dx + V_y dy + V_xy dx dy + |d|^2, whose gradient is returned (continuous
+ * and consistent with the value for Hermite). */
+double sk_hand_lut_eval(const sk_hand_lut *lut, double x, double y, double *gx, double *gy);
+
+/* ------------------------------------------------------------- solver */
+/* Inputs of one solve: directed torques tau_hat (eq. 3.9) and pinned DOFs. */
+typedef struct sk_hand_input {
+    double torque[SK_HAND_DOF_COUNT];   /* tau_hat; torque units = stiffness x radians */
+    bool pinned[SK_HAND_DOF_COUNT];
+    double pin_value[SK_HAND_DOF_COUNT]; /* absolute values of pinned DOFs (clamped into
+                                            the limits) */
+} sk_hand_input;
+
+typedef struct sk_hand_solve_info {
+    int active_set_iterations; /* solves of the linear system */
+    int clamped_count;         /* DOFs held at a limit in the result */
+    int pins_clamped;          /* pin values that were outside the limits */
+    int newton_iterations;     /* iterative solve with lookup tables (0 without) */
+    double residual;           /* max |gradient of the energy| over free DOFs not at a
+                                  limit: (3.17) residual for linear sets */
+    double energy;             /* 1/2 th'K th - tau'th + J (+ lookup potentials) */
+    bool converged;
+} sk_hand_solve_info;
+
+typedef struct sk_hand_solver_desc {
+    int max_newton_iterations; /* iterative solve with lookup tables; 0 = 100; [1, 10000] */
+    double tolerance;          /* iterative solve stops when the residual (max |gradient|
+                                  over free DOFs) is below; 0 = 1e-6; [1e-15, 1]. The
+                                  linear solve is direct (residual ~1e-15). */
+    int cache_size;            /* factorisations kept (by free set); 0 = 8; [1, 64] */
+} sk_hand_solver_desc;
+
+typedef struct sk_hand_solver sk_hand_solver;
+
+/* The solver copies what it needs from the skeleton and constraints (stiffness from the
+ * skeleton, overridden by the constraint file's). `luts` (may be NULL when lut_count is
+ * 0) are referenced, not copied: they must outlive the solver. */
+sk_result sk_hand_solver_create(sk_hand_solver **out, const sk_hand_skeleton *skeleton,
+                                const sk_hand_constraints *constraints,
+                                const sk_hand_lut *luts, int lut_count,
+                                const sk_hand_solver_desc *desc, sk_error *err);
+void sk_hand_solver_destroy(sk_hand_solver *solver);
+/* Changes one stiffness k_i (> 0) or one row weight (> 0): drops cached factorisations. */
+sk_result sk_hand_solver_set_stiffness(sk_hand_solver *solver, int dof, double k, sk_error *err);
+sk_result sk_hand_solver_set_weight(sk_hand_solver *solver, int row, double w, sk_error *err);
+/* Solves the equilibrium (3.17) for the free DOFs with the pinned ones held, keeping
+ * every DOF within its limits (active set). With lookup tables the equilibrium is
+ * solved iteratively (damped Newton on the energy, the linear part exact). Writes
+ * absolute DOF values. Fails with SK_ERROR_NUMERIC if the system is not positive
+ * definite. `info` may be NULL. Allocation-free. */
+sk_result sk_hand_solve(sk_hand_solver *solver, const sk_hand_input *input,
+                        double dofs[SK_HAND_DOF_COUNT], sk_hand_solve_info *info, sk_error *err);
+/* Matrix H = K + A'WA and vector g = -A'Wb (column-major n x n, n = SK_HAND_DOF_COUNT)
+ * of the solver, for checks. */
+const double *sk_hand_solver_matrix(const sk_hand_solver *solver);
+const double *sk_hand_solver_rhs_constant(const sk_hand_solver *solver);
+
+/* ----------------------------------------------------------- calibration */
+typedef enum sk_hand_weight_rule {
+    SK_HAND_WEIGHT_DEFAULT = 0,       /* = THESIS */
+    SK_HAND_WEIGHT_THESIS,            /* eq. (3.18): w_k = mean l^2 / max_k(mean l^2) */
+    SK_HAND_WEIGHT_INVERSE_VARIANCE   /* w_k = min_k(mean l^2) / mean l^2 */
+} sk_hand_weight_rule;
+
+typedef struct sk_hand_fit {
+    int dof_x, dof_y;
+    double slope, intercept; /* y = slope x + intercept (absolute radians), least squares */
+    double mean_sq_distance; /* mean of l_i^2, l_i = distance from the line (rad^2) */
+    double weight;           /* by the chosen rule */
+    int count;
+} sk_hand_fit;
+
+/* Fits one line per pair (3.2.2) from sample columns (radians). `columns[d]` is the
+ * column of DOF d (NULL if absent); fits[k] gets pair k. */
+sk_result sk_hand_calibrate(const double *const columns[SK_HAND_DOF_COUNT], int sample_count,
+                            const int (*pairs)[2], int pair_count, sk_hand_weight_rule rule,
+                            sk_hand_fit *fits, sk_error *err);
+/* Writes fits as a constraint file (absolute angles, degrees). */
+sk_result sk_hand_fits_write_json(const sk_hand_fit *fits, int count, sk_hand_weight_rule rule,
+                                  const char *source_note, const char *path, sk_error *err);
+
+/* Joint-angle samples from CSV: a header of DOF names, one sample per line, degrees
+ * (translations mm). Errors name the line and the column. */
+typedef struct sk_hand_samples {
+    int count;
+    bool present[SK_HAND_DOF_COUNT];
+    double *column[SK_HAND_DOF_COUNT]; /* radians / mm; NULL if absent */
+} sk_hand_samples;
+sk_result sk_hand_samples_parse(const char *text, size_t length, const char *source_name,
+                                sk_hand_samples *out, sk_error *err);
+sk_result sk_hand_samples_load_file(const char *path, sk_hand_samples *out, sk_error *err);
+void sk_hand_samples_free(sk_hand_samples *samples);
+/* "A:B,C:D" -> pairs of DOF indices (at most max_pairs). */
+sk_result sk_hand_parse_pairs(const char *text, int (*pairs)[2], int max_pairs, int *count,
+                              sk_error *err);
+
+/* -------------------------------------------------------------- animation */
+typedef enum sk_hand_interp {
+    SK_HAND_INTERP_DEFAULT = 0, /* = BEZIER */
+    SK_HAND_INTERP_BEZIER,      /* cubic Bezier per segment, handles flat at the keys */
+    SK_HAND_INTERP_CATMULL_ROM  /* uniform Catmull-Rom through the keys */
+} sk_hand_interp;
+
+#define SK_HAND_MAX_KEYS 256
+/* One key: partial inputs (pins and torques on some DOFs). */
+typedef struct sk_hand_key {
+    bool has_pin[SK_HAND_DOF_COUNT];
+    double pin[SK_HAND_DOF_COUNT];      /* absolute, radians / mm */
+    bool has_torque[SK_HAND_DOF_COUNT];
+    double torque[SK_HAND_DOF_COUNT];
+} sk_hand_key;
+
+typedef struct sk_hand_animation {
+    char constraints[256];   /* "natural", "yasumuro-table-3.2" or a file path */
+    sk_hand_side side;
+    double hand_length_mm, hand_breadth_mm; /* 0 = defaults */
+    sk_hand_interp interp;
+    int steps;               /* frames from one key to the next; default 30 */
+    double fps;              /* default 30 */
+    int key_count;
+    sk_hand_key keys[SK_HAND_MAX_KEYS];
+} sk_hand_animation;
+
+/* Parses an animation file (presets/hand/little-mcp.json is an example). */
+sk_result sk_hand_animation_parse(const char *text, size_t length, const char *source_name,
+                                  sk_hand_animation *out, sk_error *err);
+sk_result sk_hand_animation_load_file(const char *path, sk_hand_animation *out, sk_error *err);
+/* Frames: (key_count - 1) * steps + 1. */
+int sk_hand_animation_frame_count(const sk_hand_animation *anim);
+/* Interpolated inputs at frame f: each pin or torque channel is its own curve through
+ * the keys that set it, held before its first and after its last key. */
+void sk_hand_animation_input(const sk_hand_animation *anim, int frame, sk_hand_input *out);
+/* Scalar interpolation used above, exposed for tests: value at parameter t in [0, 1]
+ * of the segment (p1, p2) with neighbours p0, p3. */
+double sk_hand_interpolate(sk_hand_interp interp, double p0, double p1, double p2, double p3,
+                           double t);
+
+/* ---------------------------------------------------------------- export */
+/* BVH: hierarchy with OFFSETs in millimetres in the rest pose (all DOFs zero), the root
+ * "Hand" with 6 channels (X/Y/Z position, then Zrotation Yrotation Xrotation), every
+ * other joint 3 channels in the model's order Zrotation Yrotation Xrotation (degrees),
+ * rotations relative to the rest pose. `dofs` holds frame_count x SK_HAND_DOF_COUNT. */
+sk_result sk_hand_bvh_write(const sk_hand_skeleton *skeleton, const double *dofs,
+                            int frame_count, double frame_time, const char *path, sk_error *err);
+sk_result sk_hand_bvh_write_stream(const sk_hand_skeleton *skeleton, const double *dofs,
+                                   int frame_count, double frame_time, FILE *out);
+
+/* A BVH file read back: any hierarchy; joint positions by its own forward kinematics. */
+#define SK_BVH_MAX_JOINTS 256
+typedef struct sk_bvh {
+    int joint_count;                 /* joints and end sites */
+    char name[SK_BVH_MAX_JOINTS][64]; /* end sites: "<parent>_end" */
+    int parent[SK_BVH_MAX_JOINTS];
+    sk_vec3d offset[SK_BVH_MAX_JOINTS];
+    int channel_count[SK_BVH_MAX_JOINTS];
+    int channel_first[SK_BVH_MAX_JOINTS]; /* index of the first channel in a frame */
+    char channel[SK_BVH_MAX_JOINTS][6];   /* 'x','y','z' position, 'X','Y','Z' rotation */
+    int frame_count;
+    int channels_per_frame;
+    double frame_time;
+    double *motion; /* frame_count x channels_per_frame */
+} sk_bvh;
+
+sk_result sk_bvh_parse(const char *text, size_t length, const char *source_name, sk_bvh *out,
+                       sk_error *err);
+sk_result sk_bvh_load_file(const char *path, sk_bvh *out, sk_error *err);
+void sk_bvh_free(sk_bvh *bvh);
+/* World positions of every joint (and end site) at a frame. */
+void sk_bvh_positions(const sk_bvh *bvh, int frame, sk_vec3d *out);
+int sk_bvh_find(const sk_bvh *bvh, const char *name);
+/* Name in a BVH written by sk_hand_bvh_write of each hand point ("Hand", "T_CMC", ...,
+ * "L_DIP", "L_DIP_end" for the tip). */
+const char *sk_hand_point_bvh_name(int point);
+
+/* Joint positions of frames (frame_count x SK_HAND_DOF_COUNT dofs) as CSV
+ * ("frame,point,x_mm,y_mm,z_mm") or JSON ({"points": [...names], "frames": [[[x,y,z],..]]}). */
+typedef enum sk_hand_positions_format {
+    SK_HAND_POSITIONS_DEFAULT = 0, /* = CSV */
+    SK_HAND_POSITIONS_CSV,
+    SK_HAND_POSITIONS_JSON
+} sk_hand_positions_format;
+sk_result sk_hand_positions_write(const sk_hand_skeleton *skeleton, const double *dofs,
+                                  int frame_count, sk_hand_positions_format format,
+                                  const char *path, sk_error *err);
+/* Joint angles of frames as CSV: "frame,time_s,<DOF names...>", degrees (mm for the
+ * wrist translations); the data of joint-angle plots. */
+sk_result sk_hand_angles_write_csv(const double *dofs, int frame_count, double frame_time,
+                                   const char *path, sk_error *err);
+/* A pose as JSON: {"side": ..., "dofs_deg": {name: value...}, "points_mm": {...}}. */
+sk_result sk_hand_pose_write_json(const sk_hand_skeleton *skeleton,
+                                  const double dofs[SK_HAND_DOF_COUNT],
+                                  const sk_hand_solve_info *info, const char *path,
+                                  sk_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SHITSUKAN_HAND_H */

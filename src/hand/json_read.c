@@ -1,0 +1,110 @@
+/* Strict JSON reading for the hand's data files (constraint sets, anatomy, keyframes):
+ * unknown keys, wrong types and out-of-range numbers are errors naming the key path. */
+#include <math.h>
+#include <string.h>
+
+#include "hand/hand_private.h"
+#include "shitsukan/io.h"
+
+sk_result sk_hand__json_parse(const char *text, size_t length, const char *source_name,
+                              cJSON **out, sk_error *err)
+{
+    const char *end = NULL;
+    cJSON *root = cJSON_ParseWithLengthOpts(text, length, &end, false);
+    if (!root) {
+        int line = 1;
+        const char *stop = end && end >= text && end <= text + length ? end : text;
+        for (const char *c = text; c < stop; c++) line += *c == '\n';
+        (void)source_name;
+        return sk_fail(err, SK_ERROR_PARSE, "line %d: malformed JSON", line);
+    }
+    *out = root;
+    return SK_OK;
+}
+
+bool sk_hand__json_is_doc_key(const char *key)
+{
+    return strcmp(key, "description") == 0 || strcmp(key, "source") == 0 ||
+           strcmp(key, "notes") == 0 || strcmp(key, "figure") == 0;
+}
+
+sk_result sk_hand__json_check_keys(const cJSON *object, const char *path,
+                                   const char *const *allowed, sk_error *err)
+{
+    for (const cJSON *item = object->child; item; item = item->next) {
+        if (sk_hand__json_is_doc_key(item->string)) continue;
+        bool known = false;
+        for (int i = 0; allowed && allowed[i]; i++)
+            if (strcmp(allowed[i], item->string) == 0) known = true;
+        if (!known)
+            return sk_fail(err, SK_ERROR_PARSE, "%s%s%s: unknown key", path, path[0] ? "." : "",
+                           item->string);
+    }
+    return SK_OK;
+}
+
+sk_result sk_hand__json_number(const cJSON *object, const char *path, const char *key,
+                               double lo, double hi, bool required, double *out, sk_error *err)
+{
+    const cJSON *item = cJSON_GetObjectItemCaseSensitive(object, key);
+    const char *dot = path[0] ? "." : "";
+    if (!item) {
+        if (required) return sk_fail(err, SK_ERROR_PARSE, "%s%s%s: missing", path, dot, key);
+        return SK_OK;
+    }
+    if (!cJSON_IsNumber(item))
+        return sk_fail(err, SK_ERROR_PARSE, "%s%s%s: expected a number", path, dot, key);
+    double v = item->valuedouble;
+    if (!isfinite(v))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s%s%s is not a finite number", path, dot,
+                       key);
+    if (v < lo || v > hi)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s%s%s = %g is out of range [%g, %g]", path,
+                       dot, key, v, lo, hi);
+    *out = v;
+    return SK_OK;
+}
+
+sk_result sk_hand__json_string(const cJSON *object, const char *path, const char *key,
+                               const char **out, sk_error *err)
+{
+    const cJSON *item = cJSON_GetObjectItemCaseSensitive(object, key);
+    *out = NULL;
+    if (!item) return SK_OK;
+    if (!cJSON_IsString(item))
+        return sk_fail(err, SK_ERROR_PARSE, "%s%s%s: expected a string", path, path[0] ? "." : "",
+                       key);
+    *out = item->valuestring;
+    return SK_OK;
+}
+
+sk_result sk_hand__json_expect_object(const cJSON *item, const char *path, sk_error *err)
+{
+    if (!cJSON_IsObject(item))
+        return sk_fail(err, SK_ERROR_PARSE, "%s: expected an object", path[0] ? path : "(top level)");
+    return SK_OK;
+}
+
+sk_result sk_hand__dof_by_name(const char *name, const char *path, int *dof, sk_error *err)
+{
+    int d = sk_hand_dof_find(name);
+    if (d < 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "%s: unknown DOF \"%s\" (names like \"L.MCP.flex\"; see docs/hand.md)", path,
+                       name);
+    *dof = d;
+    return SK_OK;
+}
+
+sk_result sk_hand__write_text_file(const char *path, const char *text, sk_error *err)
+{
+    sk_atomic_file file;
+    sk_result r = sk_atomic_file_open(&file, path, err);
+    if (r != SK_OK) return r;
+    size_t n = strlen(text);
+    if (fwrite(text, 1, n, file.fp) != n) {
+        sk_atomic_file_abort(&file);
+        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+    }
+    return sk_atomic_file_commit(&file, err);
+}

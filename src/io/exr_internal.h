@@ -1,0 +1,27 @@
+/* Private OpenEXR (C API) glue shared by the EXR reader and writer (not installed). */
+#ifndef SK_IO_EXR_INTERNAL_H
+#define SK_IO_EXR_INTERNAL_H
+
+#include <openexr.h>
+
+#include "shitsukan/core.h"
+
+/* The user data of every context we create: our own file descriptor (so that reading
+ * distinguishes a missing file, and writing goes to the atomic temporary file) and the
+ * first error message the library reported (it would print to stderr otherwise). */
+typedef struct sk__exr_io {
+    int fd;
+    int64_t size; /* file size for reading */
+    int io_errno; /* errno of a failed pread/pwrite, 0 if none */
+    char message[256];
+} sk__exr_io;
+
+/* A context initializer wired to `io`: silent error capture plus pread/pwrite on io->fd. */
+exr_context_initializer_t sk__exr_initializer(sk__exr_io *io, bool writing);
+
+/* Records an OpenEXR failure in `err` as "<path>: <what> (<library message>)" with
+ * the sk_result matching `rv` (`fallback` for format errors); returns that result. */
+sk_result sk__exr_fail(sk_error *err, const sk__exr_io *io, exr_result_t rv, sk_result fallback,
+                       const char *path, const char *what);
+
+#endif

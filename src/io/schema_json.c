@@ -1,0 +1,174 @@
+/* The inverse of binding: a desc written back as JSON through its schema, and the
+ * schema printed as a table of key paths, types, ranges and docs (for --help-keys). */
+#include <stdlib.h>
+#include <string.h>
+
+#include <cjson/cJSON.h>
+
+#include "shitsukan/preset.h"
+
+static cJSON *object_to_json(const sk_schema *schema, const unsigned char *base);
+
+static int stored_count(const sk_schema_field *f, const unsigned char *base)
+{
+    if (f->count_offset == SK_FIELD_FIXED) return f->count;
+    int n;
+    memcpy(&n, base + f->count_offset, sizeof n);
+    return n < 0 ? 0 : (n > f->count ? f->count : n);
+}
+
+static cJSON *value_to_json(const sk_schema_field *f, const unsigned char *base)
+{
+    const unsigned char *ptr = base + f->offset;
+    double scale = f->scale != 0.0 ? f->scale : 1.0;
+    switch (f->type) {
+    case SK_FIELD_FLOAT: {
+        float v;
+        memcpy(&v, ptr, sizeof v);
+        return cJSON_CreateNumber((double)v / scale);
+    }
+    case SK_FIELD_DOUBLE: {
+        double v;
+        memcpy(&v, ptr, sizeof v);
+        return cJSON_CreateNumber(v / scale);
+    }
+    case SK_FIELD_INT: {
+        int v;
+        memcpy(&v, ptr, sizeof v);
+        return cJSON_CreateNumber(v);
+    }
+    case SK_FIELD_SEED: {
+        uint64_t v;
+        memcpy(&v, ptr, sizeof v);
+        return cJSON_CreateNumber((double)v);
+    }
+    case SK_FIELD_BOOL: {
+        bool v;
+        memcpy(&v, ptr, sizeof v);
+        return cJSON_CreateBool(v);
+    }
+    case SK_FIELD_ENUM: {
+        int v;
+        memcpy(&v, ptr, sizeof v);
+        int n = 0;
+        while (f->names && f->names[n]) n++;
+        return cJSON_CreateString(v >= 0 && v < n ? f->names[v] : "");
+    }
+    case SK_FIELD_STRING:
+        return cJSON_CreateString((const char *)ptr);
+    case SK_FIELD_FLOATS: {
+        cJSON *arr = cJSON_CreateArray();
+        int n = stored_count(f, base);
+        for (int i = 0; i < n; i++) {
+            float v;
+            memcpy(&v, ptr + (size_t)i * sizeof v, sizeof v);
+            cJSON_AddItemToArray(arr, cJSON_CreateNumber((double)v / scale));
+        }
+        return arr;
+    }
+    case SK_FIELD_OBJECT:
+        return object_to_json(f->schema, ptr);
+    case SK_FIELD_ARRAY: {
+        cJSON *arr = cJSON_CreateArray();
+        int n = stored_count(f, base);
+        const sk_schema *es = f->schema;
+        bool bare = es->field_count == 1 && es->fields[0].key == NULL;
+        for (int i = 0; i < n; i++) {
+            const unsigned char *elem = ptr + (size_t)i * f->elem_size;
+            cJSON_AddItemToArray(arr, bare ? value_to_json(&es->fields[0], elem)
+                                           : object_to_json(es, elem));
+        }
+        return arr;
+    }
+    }
+    return cJSON_CreateNull();
+}
+
+static cJSON *object_to_json(const sk_schema *schema, const unsigned char *base)
+{
+    cJSON *obj = cJSON_CreateObject();
+    for (int i = 0; i < schema->field_count; i++) {
+        const sk_schema_field *f = &schema->fields[i];
+        if (f->key) cJSON_AddItemToObject(obj, f->key, value_to_json(f, base));
+    }
+    return obj;
+}
+
+char *sk_schema_to_json(const sk_schema *schema, const void *desc)
+{
+    cJSON *obj = object_to_json(schema, desc);
+    char *text = cJSON_Print(obj);
+    cJSON_Delete(obj);
+    return text;
+}
+
+static const char *type_name(const sk_schema_field *f)
+{
+    switch (f->type) {
+    case SK_FIELD_FLOAT:
+    case SK_FIELD_DOUBLE: return "number";
+    case SK_FIELD_INT: return "integer";
+    case SK_FIELD_SEED: return "integer";
+    case SK_FIELD_BOOL: return "boolean";
+    case SK_FIELD_ENUM: return "string";
+    case SK_FIELD_STRING: return "string";
+    case SK_FIELD_FLOATS: return "numbers";
+    case SK_FIELD_OBJECT: return "object";
+    case SK_FIELD_ARRAY: return "array";
+    }
+    return "?";
+}
+
+static void print_fields(const sk_schema *schema, const char *prefix, FILE *out)
+{
+    for (int i = 0; i < schema->field_count; i++) {
+        const sk_schema_field *f = &schema->fields[i];
+        char path[256];
+        if (f->key)
+            snprintf(path, sizeof path, "%s%s%s", prefix, prefix[0] ? "." : "", f->key);
+        else
+            snprintf(path, sizeof path, "%s", prefix);
+        char range[160] = "";
+        switch (f->type) {
+        case SK_FIELD_FLOAT:
+        case SK_FIELD_DOUBLE:
+        case SK_FIELD_INT:
+            snprintf(range, sizeof range, "[%g, %g]", f->min, f->max);
+            break;
+        case SK_FIELD_FLOATS:
+            if (f->count_offset == SK_FIELD_FIXED)
+                snprintf(range, sizeof range, "%d x [%g, %g]", f->count, f->min, f->max);
+            else
+                snprintf(range, sizeof range, "%d..%d x [%g, %g]", f->min_count, f->count, f->min,
+                         f->max);
+            break;
+        case SK_FIELD_ENUM: {
+            size_t used = 0;
+            for (int k = 0; f->names && f->names[k]; k++) {
+                int n = snprintf(range + used, sizeof range - used, "%s%s", k ? "|" : "",
+                                 f->names[k]);
+                if (n < 0 || (size_t)n >= sizeof range - used) break;
+                used += (size_t)n;
+            }
+            break;
+        }
+        case SK_FIELD_ARRAY:
+            snprintf(range, sizeof range, "%d..%d elements", f->min_count, f->count);
+            break;
+        default:
+            break;
+        }
+        if (f->type == SK_FIELD_OBJECT) {
+            print_fields(f->schema, path, out);
+        } else if (f->type == SK_FIELD_ARRAY) {
+            fprintf(out, "  %-36s %-8s %-22s %s\n", path, type_name(f), range, f->doc ? f->doc : "");
+            char elem[sizeof path + 4];
+            snprintf(elem, sizeof elem, "%s[]", path);
+            print_fields(f->schema, elem, out);
+        } else {
+            fprintf(out, "  %-36s %-8s %-22s %s\n", path, type_name(f), range, f->doc ? f->doc : "");
+        }
+    }
+}
+
+void sk_schema_print(const sk_schema *schema, FILE *out) { print_fields(schema, "", out); }

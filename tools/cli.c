@@ -1,0 +1,468 @@
+/* Command-line framework: option parsing, --help text, one-line errors with exit codes,
+ * preset resolution and --set overrides (see cli.h). */
+#define _POSIX_C_SOURCE 200809L
+#include "cli.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* ------------------------------------------------------------------ errors */
+
+int cli_fail(int status, const char *fmt, ...)
+{
+    char msg[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    /* one line, whatever the message holds */
+    for (char *c = msg; *c; c++)
+        if (*c == '\n' || *c == '\r') *c = ' ';
+    fprintf(stderr, "shitsukan: error: %s\n", msg);
+    return status;
+}
+
+int cli_exit_status(sk_result result)
+{
+    switch (result) {
+    case SK_OK: return CLI_EXIT_OK;
+    case SK_ERROR_INVALID_ARGUMENT:
+    case SK_ERROR_PARSE:
+    case SK_ERROR_LIMIT:
+    case SK_ERROR_UNSUPPORTED:
+    case SK_ERROR_NOT_FOUND: return CLI_EXIT_USAGE;
+    default: return CLI_EXIT_RUNTIME;
+    }
+}
+
+int cli_fail_error(const sk_error *err)
+{
+    return cli_fail(cli_exit_status(err->result), "%s",
+                    err->message[0] ? err->message : sk_result_string(err->result));
+}
+
+/* ---------------------------------------------------------- common options */
+
+typedef struct common_option {
+    unsigned bit;
+    const char *name;
+    char short_name;
+    const char *arg_name;
+    const char *help;
+} common_option;
+
+static const common_option k_common[] = {
+    {CLI_COMMON_OUTPUT, "output", 'o', "PATH", "output file or folder"},
+    {CLI_COMMON_PRESET, "preset", 0, "NAME|FILE",
+     "parameter preset: a shipped name (see 'shitsukan presets') or a JSON file"},
+    {CLI_COMMON_SET, "set", 0, "KEY=VALUE",
+     "override a preset key, e.g. --set levels[0].jitter=0.3 (repeatable)"},
+    {CLI_COMMON_SEED, "seed", 0, "N", "random seed, an integer in [0, 2^53]"},
+    {CLI_COMMON_THREADS, "threads", 0, "N", "threads to use; 0 = all cores (default)"},
+    {CLI_COMMON_QUIET, "quiet", 'q', NULL, "no progress output"},
+};
+#define COMMON_COUNT ((int)(sizeof k_common / sizeof k_common[0]))
+
+static void print_option_line(FILE *out, char short_name, const char *name, const char *arg,
+                              const char *help)
+{
+    char left[64];
+    if (short_name)
+        snprintf(left, sizeof left, "-%c, --%s%s%s", short_name, name, arg ? " " : "",
+                 arg ? arg : "");
+    else
+        snprintf(left, sizeof left, "    --%s%s%s", name, arg ? " " : "", arg ? arg : "");
+    fprintf(out, "  %-28s %s\n", left, help);
+}
+
+void cli_print_help(const cli_command *command, FILE *out)
+{
+    fprintf(out, "usage: %s\n\n", command->usage);
+    if (command->description) fprintf(out, "%s\n\n", command->description);
+    if (command->option_count > 0) {
+        fprintf(out, "options:\n");
+        for (int i = 0; i < command->option_count; i++) {
+            const cli_option *o = &command->options[i];
+            print_option_line(out, o->short_name, o->name, o->arg_name, o->help);
+        }
+        fprintf(out, "\n");
+    }
+    fprintf(out, "common options:\n");
+    for (int i = 0; i < COMMON_COUNT; i++)
+        if (command->common & k_common[i].bit)
+            print_option_line(out, k_common[i].short_name, k_common[i].name, k_common[i].arg_name,
+                              k_common[i].help);
+    print_option_line(out, 'h', "help", NULL, "show this help and exit");
+    if (command->schema)
+        print_option_line(out, 0, "help-keys", NULL, "list every preset key with its range");
+    if (command->examples) fprintf(out, "\nexamples:\n%s\n", command->examples);
+}
+
+/* ------------------------------------------------------------------ parsing */
+
+static int find_option(const cli_command *command, const char *name, size_t len, char short_name)
+{
+    for (int i = 0; i < command->option_count; i++) {
+        const cli_option *o = &command->options[i];
+        if (short_name ? o->short_name == short_name
+                       : (strlen(o->name) == len && strncmp(o->name, name, len) == 0))
+            return i;
+    }
+    return -1;
+}
+
+static int find_common(const cli_command *command, const char *name, size_t len, char short_name)
+{
+    for (int i = 0; i < COMMON_COUNT; i++) {
+        if (!(command->common & k_common[i].bit)) continue;
+        if (short_name ? k_common[i].short_name == short_name
+                       : (strlen(k_common[i].name) == len &&
+                          strncmp(k_common[i].name, name, len) == 0))
+            return i;
+    }
+    return -1;
+}
+
+static int parse_u64(const char *text, uint64_t max, uint64_t *out)
+{
+    if (!text[0] || text[0] == '-' || text[0] == '+') return -1;
+    errno = 0;
+    char *end;
+    unsigned long long v = strtoull(text, &end, 10);
+    if (errno || *end || v > max) return -1;
+    *out = v;
+    return 0;
+}
+
+static int apply_common(const cli_command *command, int which, const char *value, cli_args *args)
+{
+    cli_common *c = &args->common;
+    switch (k_common[which].bit) {
+    case CLI_COMMON_OUTPUT: c->output = value; break;
+    case CLI_COMMON_PRESET: c->preset = value; break;
+    case CLI_COMMON_SET:
+        if (c->set_count == CLI_MAX_SETS)
+            return cli_fail(CLI_EXIT_USAGE, "%s: more than %d --set options", command->name,
+                            CLI_MAX_SETS);
+        c->sets[c->set_count++] = value;
+        break;
+    case CLI_COMMON_SEED:
+        if (parse_u64(value, 9007199254740992ull, &c->seed) != 0)
+            return cli_fail(CLI_EXIT_USAGE, "--seed '%s' must be an integer in [0, 2^53]", value);
+        c->has_seed = true;
+        break;
+    case CLI_COMMON_THREADS: {
+        uint64_t t;
+        if (parse_u64(value, 1024, &t) != 0)
+            return cli_fail(CLI_EXIT_USAGE, "--threads '%s' must be an integer in [0, 1024]",
+                            value);
+        c->threads = (int)t;
+        break;
+    }
+    case CLI_COMMON_QUIET: c->quiet = true; break;
+    }
+    return 0;
+}
+
+static int store_option(const cli_command *command, int i, const char *value, cli_args *args)
+{
+    const cli_option *o = &command->options[i];
+    if (args->count[i] > 0 && !o->repeatable)
+        return cli_fail(CLI_EXIT_USAGE, "--%s given more than once", o->name);
+    args->count[i]++;
+    args->value[i] = value;
+    if (o->repeatable) {
+        if (args->values_count == CLI_MAX_VALUES)
+            return cli_fail(CLI_EXIT_USAGE, "too many option values (at most %d)", CLI_MAX_VALUES);
+        args->values[args->values_count] = value;
+        args->values_option[args->values_count] = i;
+        args->values_count++;
+    }
+    return 0;
+}
+
+int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args)
+{
+    memset(args, 0, sizeof *args);
+    bool only_positional = false;
+    for (int k = 0; k < argc; k++) {
+        const char *a = argv[k];
+        if (only_positional || a[0] != '-' || a[1] == '\0') {
+            if (args->positional_count == CLI_MAX_POSITIONAL)
+                return cli_fail(CLI_EXIT_USAGE, "%s: too many arguments", command->name);
+            args->positional[args->positional_count++] = a;
+            continue;
+        }
+        if (strcmp(a, "--") == 0) {
+            only_positional = true;
+            continue;
+        }
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            cli_print_help(command, stdout);
+            return -1;
+        }
+        if (strcmp(a, "--help-keys") == 0 && command->schema) {
+            printf("preset keys of '%s' (key, type, accepted range, meaning):\n", command->name);
+            sk_schema_print(command->schema, stdout);
+            return -1;
+        }
+        const char *name, *inline_value = NULL;
+        size_t len;
+        char short_name = 0;
+        if (a[1] == '-') {
+            name = a + 2;
+            const char *eq = strchr(name, '=');
+            len = eq ? (size_t)(eq - name) : strlen(name);
+            if (eq) inline_value = eq + 1;
+        } else {
+            short_name = a[1];
+            name = a + 1;
+            len = 1;
+            if (a[2]) inline_value = a + 2;
+        }
+        int opt = find_option(command, name, len, short_name);
+        int common = opt < 0 ? find_common(command, name, len, short_name) : -1;
+        if (opt < 0 && common < 0)
+            return cli_fail(CLI_EXIT_USAGE, "%s: unknown option '%s' (see 'shitsukan %s --help')",
+                            command->name, a, command->name);
+        const char *arg_name = opt >= 0 ? command->options[opt].arg_name : k_common[common].arg_name;
+        const char *value = "";
+        if (arg_name) {
+            if (inline_value) {
+                value = inline_value;
+            } else if (k + 1 < argc) {
+                value = argv[++k];
+            } else {
+                return cli_fail(CLI_EXIT_USAGE, "%s: option '%s' needs a value (%s)",
+                                command->name, a, arg_name);
+            }
+        } else if (inline_value) {
+            return cli_fail(CLI_EXIT_USAGE, "%s: option '%s' takes no value", command->name, a);
+        }
+        int status = opt >= 0 ? store_option(command, opt, value, args)
+                              : apply_common(command, common, value, args);
+        if (status != 0) return status;
+    }
+    if (args->positional_count < command->min_positional ||
+        args->positional_count > command->max_positional) {
+        if (command->max_positional == 0)
+            return cli_fail(CLI_EXIT_USAGE, "%s: unexpected argument '%s' (see 'shitsukan %s --help')",
+                            command->name, args->positional[0], command->name);
+        return cli_fail(CLI_EXIT_USAGE, "%s: expected %d to %d arguments, got %d (see 'shitsukan %s --help')",
+                        command->name, command->min_positional, command->max_positional,
+                        args->positional_count, command->name);
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ access */
+
+static int option_index(const cli_command *command, const char *name)
+{
+    int i = find_option(command, name, strlen(name), 0);
+    if (i < 0) {
+        /* a programming error in a command: the name must be one of its options */
+        fprintf(stderr, "shitsukan: internal error: %s has no option --%s\n", command->name, name);
+        abort();
+    }
+    return i;
+}
+
+const char *cli_get(const cli_command *command, const cli_args *args, const char *name)
+{
+    int i = option_index(command, name);
+    return args->count[i] ? args->value[i] : NULL;
+}
+
+bool cli_has(const cli_command *command, const cli_args *args, const char *name)
+{
+    return args->count[option_index(command, name)] > 0;
+}
+
+int cli_get_all(const cli_command *command, const cli_args *args, const char *name,
+                const char **out, int max)
+{
+    int i = option_index(command, name), n = 0;
+    for (int k = 0; k < args->values_count && n < max; k++)
+        if (args->values_option[k] == i) out[n++] = args->values[k];
+    return n;
+}
+
+int cli_get_int(const cli_command *command, const cli_args *args, const char *name,
+                long long fallback, long long lo, long long hi, long long *out)
+{
+    const char *v = cli_get(command, args, name);
+    if (!v) {
+        *out = fallback;
+        return 0;
+    }
+    errno = 0;
+    char *end;
+    long long x = strtoll(v, &end, 10);
+    if (!v[0] || *end || errno || x < lo || x > hi)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be an integer in [%lld, %lld]", name, v,
+                        lo, hi);
+    *out = x;
+    return 0;
+}
+
+int cli_get_double(const cli_command *command, const cli_args *args, const char *name,
+                   double fallback, double lo, double hi, double *out)
+{
+    const char *v = cli_get(command, args, name);
+    if (!v) {
+        *out = fallback;
+        return 0;
+    }
+    char *end;
+    double x = strtod(v, &end);
+    if (!v[0] || *end || !isfinite(x) || x < lo || x > hi)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be a number in [%g, %g]", name, v, lo, hi);
+    *out = x;
+    return 0;
+}
+
+int cli_get_size(const cli_command *command, const cli_args *args, const char *name,
+                 int fallback_w, int fallback_h, int max, int *w, int *h)
+{
+    const char *v = cli_get(command, args, name);
+    if (!v) {
+        *w = fallback_w;
+        *h = fallback_h;
+        return 0;
+    }
+    char *end;
+    errno = 0;
+    long a = strtol(v, &end, 10), b = a;
+    bool ok = end != v && !errno;
+    if (ok && *end == 'x') {
+        const char *second = end + 1;
+        b = strtol(second, &end, 10);
+        ok = end != second && !errno;
+    }
+    if (!ok || *end || a < 1 || b < 1 || a > max || b > max)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be N or WxH with each in [1, %d]", name, v,
+                        max);
+    *w = (int)a;
+    *h = (int)b;
+    return 0;
+}
+
+int cli_parse_region(const char *text, int width, int height, int region[4])
+{
+    long v[4];
+    const char *p = text;
+    for (int i = 0; i < 4; i++) {
+        char *end;
+        errno = 0;
+        v[i] = strtol(p, &end, 10);
+        if (end == p || errno || (i < 3 ? *end != ',' : *end != '\0'))
+            return cli_fail(CLI_EXIT_USAGE, "--region '%s' must be x,y,w,h (integers)", text);
+        p = end + 1;
+    }
+    if (v[0] < 0 || v[1] < 0 || v[2] < 1 || v[3] < 1 || v[0] + v[2] > width ||
+        v[1] + v[3] > height)
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--region '%s' must lie inside the %dx%d image (x, y >= 0, w, h >= 1, "
+                        "x + w <= %d, y + h <= %d)",
+                        text, width, height, width, height);
+    for (int i = 0; i < 4; i++) region[i] = (int)v[i];
+    return 0;
+}
+
+/* ------------------------------------------------------------------ presets */
+
+static bool is_dir(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+static bool is_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+int cli_preset_dirs(const char **out, int max)
+{
+    /* Filled once per call into static storage: the process is single-threaded here. */
+    static char installed[PATH_MAX];
+    int n = 0;
+    const char *env = getenv("SHITSUKAN_PRESET_DIR");
+    if (env && env[0] && is_dir(env) && n < max) out[n++] = env;
+    char exe[PATH_MAX];
+    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (len > 0) {
+        exe[len] = '\0';
+        char *slash = strrchr(exe, '/');
+        if (slash) {
+            *slash = '\0';
+            snprintf(installed, sizeof installed, "%s/../share/shitsukan/presets", exe);
+            if (is_dir(installed) && n < max) out[n++] = installed;
+        }
+    }
+    if (is_dir(SK_SOURCE_PRESET_DIR) && n < max) out[n++] = SK_SOURCE_PRESET_DIR;
+    if (is_dir(SK_INSTALL_PRESET_DIR) && n < max) out[n++] = SK_INSTALL_PRESET_DIR;
+    return n;
+}
+
+bool cli_find_preset(const char *module, const char *name, char *path, size_t size)
+{
+    const char *dirs[4];
+    int n = cli_preset_dirs(dirs, 4);
+    for (int i = 0; i < n; i++) {
+        snprintf(path, size, "%s/%s/%s.json", dirs[i], module, name);
+        if (is_file(path)) return true;
+    }
+    return false;
+}
+
+int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset **out)
+{
+    *out = NULL;
+    sk_error err = {0};
+    sk_preset *preset = NULL;
+    const char *name = args->common.preset;
+    if (name) {
+        char path[PATH_MAX];
+        bool looks_like_file = strchr(name, '/') || strstr(name, ".json");
+        if (looks_like_file) {
+            snprintf(path, sizeof path, "%s", name);
+        } else if (!command->preset_module ||
+                   !cli_find_preset(command->preset_module, name, path, sizeof path)) {
+            return cli_fail(CLI_EXIT_USAGE,
+                            "--preset '%s': no such preset for '%s' (see 'shitsukan presets %s')",
+                            name, command->name,
+                            command->preset_module ? command->preset_module : "");
+        }
+        if (sk_preset_load_file(&preset, path, &err) != SK_OK) return cli_fail_error(&err);
+    } else if (sk_preset_create(&preset, &err) != SK_OK) {
+        return cli_fail_error(&err);
+    }
+    for (int i = 0; i < args->common.set_count; i++) {
+        if (sk_preset_set(preset, args->common.sets[i], &err) != SK_OK) {
+            sk_preset_free(preset);
+            return cli_fail_error(&err);
+        }
+    }
+    if (args->common.has_seed) {
+        char assignment[64];
+        snprintf(assignment, sizeof assignment, "seed=%llu",
+                 (unsigned long long)args->common.seed);
+        if (sk_preset_set(preset, assignment, &err) != SK_OK) {
+            sk_preset_free(preset);
+            return cli_fail_error(&err);
+        }
+    }
+    *out = preset;
+    return 0;
+}
+
+void cli_apply_threads(const cli_args *args) { sk_threads_set(args->common.threads); }

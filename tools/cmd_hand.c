@@ -1,0 +1,396 @@
+/* `shitsukan hand pose | animate | calibrate`: the hand skeleton posed by its natural
+ * coupling (Yasumuro 2000, ch. 3), keyframe animation to BVH and joint positions, and
+ * calibration of constraint rows from measured samples. Argument parsing only; the model
+ * is in the library (include/shitsukan/hand.h). */
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "shitsukan/hand.h"
+
+#define MAX_PINS 64
+
+/* ------------------------------------------------------------ helpers */
+
+static int parse_side(const char *text, sk_hand_side *side)
+{
+    if (!text || strcmp(text, "right") == 0) *side = SK_HAND_SIDE_RIGHT;
+    else if (strcmp(text, "left") == 0) *side = SK_HAND_SIDE_LEFT;
+    else return cli_fail(CLI_EXIT_USAGE, "--side '%s' must be right or left", text);
+    return 0;
+}
+
+/* Skeleton from --side, --hand-length, --hand-breadth, --anatomy (each may be absent). */
+static int build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side,
+                          double length_mm, double breadth_mm, sk_hand_skeleton *skel)
+{
+    sk_error err = {0};
+    sk_hand_anatomy anatomy;
+    sk_hand_skeleton_desc desc = {0};
+    const char *anatomy_path = cli_get(cmd, args, "anatomy");
+    if (anatomy_path) {
+        if (sk_hand_anatomy_load_file(anatomy_path, &anatomy, &err) != SK_OK) return cli_fail_error(&err);
+        desc.anatomy = &anatomy;
+    }
+    double hl = length_mm, hb = breadth_mm;
+    int rc = cli_get_double(cmd, args, "hand-length", hl, 60, 400, &hl);
+    if (rc == 0) rc = cli_get_double(cmd, args, "hand-breadth", hb, 30, 200, &hb);
+    if (rc) return rc;
+    const char *side_text = cli_get(cmd, args, "side");
+    if (side_text && (rc = parse_side(side_text, &side))) return rc;
+    desc.side = side;
+    desc.hand_length_mm = hl;
+    desc.hand_breadth_mm = hb;
+    if (sk_hand_skeleton_init(skel, &desc, &err) != SK_OK) return cli_fail_error(&err);
+    return 0;
+}
+
+/* "natural", "yasumuro-table-3.2", "none" or a file. `out` is zeroed for "none". */
+static int load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out)
+{
+    memset(out, 0, sizeof *out);
+    if (strcmp(name, "none") == 0) return 0;
+    char path[PATH_MAX];
+    bool looks_like_file = strchr(name, '/') || strstr(name, ".json");
+    if (looks_like_file) snprintf(path, sizeof path, "%s", name);
+    else if (!cli_find_preset("hand", name, path, sizeof path))
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--constraints '%s': no such set (natural, yasumuro-table-3.2, none, or a "
+                        "JSON file)", name);
+    sk_error err = {0};
+    if (sk_hand_constraints_load_file(path, skel, out, &err) != SK_OK) return cli_fail_error(&err);
+    return 0;
+}
+
+/* "DOF=value" -> dof index and the number (in file units). */
+static int parse_assignment(const char *option, const char *text, int *dof, double *value)
+{
+    const char *eq = strchr(text, '=');
+    if (!eq) return cli_fail(CLI_EXIT_USAGE, "--%s '%s': expected DOF=value, e.g. L.MCP.flex=60", option, text);
+    char name[64];
+    size_t n = (size_t)(eq - text);
+    if (n >= sizeof name) n = sizeof name - 1;
+    memcpy(name, text, n);
+    name[n] = '\0';
+    *dof = sk_hand_dof_find(name);
+    if (*dof < 0)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)",
+                        option, text, name);
+    char *end;
+    errno = 0;
+    *value = strtod(eq + 1, &end);
+    if (!eq[1] || *end || errno == ERANGE || !isfinite(*value) || fabs(*value) > 1e6)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': \"%s\" is not a finite number", option, text, eq + 1);
+    return 0;
+}
+
+static int write_positions(const sk_hand_skeleton *skel, const double *dofs, int frames, const char *path)
+{
+    size_t len = strlen(path);
+    bool json = len >= 5 && strcmp(path + len - 5, ".json") == 0;
+    sk_error err = {0};
+    if (sk_hand_positions_write(skel, dofs, frames, json ? SK_HAND_POSITIONS_JSON : SK_HAND_POSITIONS_CSV,
+                                path, &err) != SK_OK)
+        return cli_fail_error(&err);
+    return 0;
+}
+
+/* Lookup tables from --samples and --pairs (3.2.3). */
+static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut *luts, int *count)
+{
+    *count = 0;
+    const char *samples_path = cli_get(cmd, args, "samples");
+    const char *pairs_text = cli_get(cmd, args, "pairs");
+    if (!samples_path && !pairs_text) return 0;
+    if (!samples_path || !pairs_text) return cli_fail(CLI_EXIT_USAGE, "--samples and --pairs go together");
+    long long resolution;
+    double weight;
+    int rc = cli_get_int(cmd, args, "lut-resolution", 100, 8, 1024, &resolution);
+    if (rc == 0) rc = cli_get_double(cmd, args, "lut-weight", 1.0, 1e-6, 1e6, &weight);
+    if (rc) return rc;
+    sk_hand_lut_desc desc = {0};
+    desc.resolution = (int)resolution;
+    desc.weight = weight;
+    const char *interp = cli_get(cmd, args, "lut-interp");
+    if (interp && strcmp(interp, "bilinear") == 0) desc.interp = SK_HAND_LUT_INTERP_BILINEAR;
+    else if (interp && strcmp(interp, "hermite") != 0)
+        return cli_fail(CLI_EXIT_USAGE, "--lut-interp '%s' must be hermite or bilinear", interp);
+    sk_error err = {0};
+    int pairs[16][2], n = 0;
+    if (sk_hand_parse_pairs(pairs_text, pairs, 16, &n, &err) != SK_OK) {
+        sk_error_prefix(&err, "--pairs");
+        return cli_fail_error(&err);
+    }
+    sk_hand_samples samples;
+    if (sk_hand_samples_load_file(samples_path, &samples, &err) != SK_OK) return cli_fail_error(&err);
+    for (int k = 0; k < n; k++) {
+        int x = pairs[k][0], y = pairs[k][1];
+        if (!samples.present[x] || !samples.present[y]) {
+            sk_hand_samples_free(&samples);
+            for (int j = 0; j < *count; j++) sk_hand_lut_free(&luts[j]);
+            *count = 0;
+            return cli_fail(CLI_EXIT_USAGE, "%s: no column \"%s\" for pair %s:%s", samples_path,
+                            sk_hand_dof(samples.present[x] ? y : x)->name, sk_hand_dof(x)->name,
+                            sk_hand_dof(y)->name);
+        }
+        if (sk_hand_lut_build(&luts[k], x, y, samples.column[x], samples.column[y], samples.count, &desc,
+                              &err) != SK_OK) {
+            sk_hand_samples_free(&samples);
+            for (int j = 0; j < *count; j++) sk_hand_lut_free(&luts[j]);
+            *count = 0;
+            return cli_fail_error(&err);
+        }
+        (*count)++;
+    }
+    sk_hand_samples_free(&samples);
+    return 0;
+}
+
+/* ------------------------------------------------------------ hand pose */
+
+static const cli_option pose_options[] = {
+    {"pin", 0, "DOF=DEG", "hold a DOF at an absolute angle in degrees (mm for wrist.tx/ty/tz); repeatable", true},
+    {"torque", 0, "DOF=T", "directed input torque on a DOF (stiffness x radians); repeatable", true},
+    {"constraints", 0, "SET", "natural (default), yasumuro-table-3.2, none, or a constraint JSON file", false},
+    {"samples", 0, "CSV", "joint-angle samples (header of DOF names, degrees) for lookup-table potentials", false},
+    {"pairs", 0, "A:B,...", "DOF pairs that get a lookup-table potential from --samples", false},
+    {"lut-resolution", 0, "N", "lookup-table grid nodes per axis (default 100)", false},
+    {"lut-weight", 0, "W", "weight of each lookup-table potential (default 1)", false},
+    {"lut-interp", 0, "MODE", "hermite (default, converges to 1e-6) or bilinear (the tables as they are)", false},
+    {"side", 0, "SIDE", "right (default) or left (the mirror image)", false},
+    {"hand-length", 0, "MM", "hand length, wrist crease to middle fingertip (default 190)", false},
+    {"hand-breadth", 0, "MM", "hand breadth across the knuckles (default 85)", false},
+    {"anatomy", 0, "FILE", "anatomy JSON (limits, relaxed posture, proportions; default built in)", false},
+    {"bvh", 0, "FILE", "also write the pose as a one-frame BVH", false},
+    {"positions", 0, "FILE", "also write joint positions (.csv or .json)", false},
+};
+
+static int run_pose(const cli_command *cmd, const cli_args *args)
+{
+    sk_hand_skeleton skel;
+    int rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    if (rc) return rc;
+    const char *set = cli_get(cmd, args, "constraints");
+    sk_hand_constraints *c = malloc(sizeof *c);
+    if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    rc = load_constraints(set ? set : "natural", &skel, c);
+    sk_hand_input in = {0};
+    const char *values[MAX_PINS];
+    int n = rc ? 0 : cli_get_all(cmd, args, "pin", values, MAX_PINS);
+    for (int i = 0; i < n && !rc; i++) {
+        int dof;
+        double v;
+        rc = parse_assignment("pin", values[i], &dof, &v);
+        if (!rc) {
+            in.pinned[dof] = true;
+            in.pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
+        }
+    }
+    n = rc ? 0 : cli_get_all(cmd, args, "torque", values, MAX_PINS);
+    for (int i = 0; i < n && !rc; i++) {
+        int dof;
+        double v;
+        rc = parse_assignment("torque", values[i], &dof, &v);
+        if (!rc) in.torque[dof] = v;
+    }
+    sk_hand_lut luts[16];
+    int lut_count = 0;
+    if (!rc) rc = build_luts(cmd, args, luts, &lut_count);
+    sk_hand_solver *solver = NULL;
+    sk_error err = {0};
+    double q[SK_HAND_DOF_COUNT];
+    sk_hand_solve_info info;
+    if (!rc && sk_hand_solver_create(&solver, &skel, c, luts, lut_count, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
+    if (!rc && sk_hand_solve(solver, &in, q, &info, &err) != SK_OK) rc = cli_fail_error(&err);
+    if (!rc && info.pins_clamped > 0)
+        fprintf(stderr, "shitsukan: note: %d pinned value(s) were outside the joint limits and were clamped\n",
+                info.pins_clamped);
+    if (!rc && lut_count > 0 && !info.converged)
+        fprintf(stderr, "shitsukan: note: the iterative solve stopped at residual %.3g after %d steps\n",
+                info.residual, info.newton_iterations);
+    const char *out = args->common.output;
+    if (!rc && out && sk_hand_pose_write_json(&skel, q, &info, out, &err) != SK_OK) rc = cli_fail_error(&err);
+    const char *bvh = cli_get(cmd, args, "bvh");
+    if (!rc && bvh && sk_hand_bvh_write(&skel, q, 1, 1.0 / 30.0, bvh, &err) != SK_OK) rc = cli_fail_error(&err);
+    const char *positions = cli_get(cmd, args, "positions");
+    if (!rc && positions) rc = write_positions(&skel, q, 1, positions);
+    if (!rc && !out) {
+        for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
+            printf("%-11s %10.4f%s\n", sk_hand_dof(i)->name, sk_hand_dof(i)->translation ? q[i] : q[i] * SK_RAD_TO_DEG,
+                   sk_hand_dof(i)->translation ? " mm" : "");
+    }
+    sk_hand_solver_destroy(solver);
+    for (int i = 0; i < lut_count; i++) sk_hand_lut_free(&luts[i]);
+    free(c);
+    return rc;
+}
+
+const cli_command cmd_hand_pose = {
+    .name = "hand pose",
+    .summary = "pose the hand skeleton from a few pinned angles or torques (natural coupling)",
+    .usage = "shitsukan hand pose [--pin DOF=DEG]... [--torque DOF=T]... [options]",
+    .description =
+        "Solves the equilibrium of joint springs and the natural-coupling potential of\n"
+        "Yasumuro's thesis (eq. 3.17): pinned DOFs are held, the others settle, every DOF\n"
+        "stays within its limits. DOF names: wrist.tx/ty/tz (mm), wrist.flex/roll/dev,\n"
+        "T.CMC.flex T.CMC.abd T.MCP.flex T.MCP.abd T.IP.flex, and for F in I M R L:\n"
+        "F.CMC.flex F.CMC.abd F.MCP.flex F.MCP.abd F.PIP.flex F.DIP.flex (flexion positive;\n"
+        "docs/hand.md has axes, signs and ranges). Writes the pose as JSON with -o, else\n"
+        "prints the DOF values in degrees. With --samples and --pairs, lookup-table\n"
+        "potentials built from the samples join the linear rows (thesis 3.2.3).",
+    .examples = "  shitsukan hand pose --pin L.MCP.flex=60 -o pose.json\n"
+                "  shitsukan hand pose --torque I.MCP.flex=0.8 --constraints yasumuro-table-3.2\n"
+                "  shitsukan hand pose --samples angles.csv --pairs I.MCP.flex:I.PIP.flex --pin I.MCP.flex=50",
+    .options = pose_options,
+    .option_count = (int)(sizeof pose_options / sizeof pose_options[0]),
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET,
+    .min_positional = 0,
+    .max_positional = 0,
+    .run = run_pose,
+};
+
+/* ------------------------------------------------------------ hand animate */
+
+static const cli_option animate_options[] = {
+    {"bvh", 0, "FILE", "write the motion as BVH (mm, Blender: import with scale 0.001)", false},
+    {"positions", 0, "FILE", "write joint positions of every frame (.csv or .json)", false},
+    {"angles", 0, "FILE", "write the joint angles of every frame as CSV (degrees)", false},
+    {"constraints", 0, "SET", "override the file's constraint set (natural, yasumuro-table-3.2, none, FILE)", false},
+    {"side", 0, "SIDE", "override the file's side: right or left", false},
+    {"hand-length", 0, "MM", "override the hand length", false},
+    {"hand-breadth", 0, "MM", "override the hand breadth", false},
+    {"anatomy", 0, "FILE", "anatomy JSON (default built in)", false},
+};
+
+static int run_animate(const cli_command *cmd, const cli_args *args)
+{
+    const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
+    const char *angles = cli_get(cmd, args, "angles");
+    if (!bvh && !positions && !angles) return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions or --angles");
+    sk_error err = {0};
+    sk_hand_animation *anim = malloc(sizeof *anim);
+    sk_hand_constraints *c = malloc(sizeof *c);
+    double *dofs = NULL;
+    sk_hand_solver *solver = NULL;
+    int rc = 0;
+    if (!anim || !c) rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    const char *path = args->positional[0];
+    if (!rc && sk_hand_animation_load_file(path, anim, &err) != SK_OK) rc = cli_fail_error(&err);
+    sk_hand_skeleton skel;
+    if (!rc) rc = build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
+    const char *set = cli_get(cmd, args, "constraints");
+    if (!rc) rc = load_constraints(set ? set : anim->constraints, &skel, c);
+    if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
+    int frames = rc ? 0 : sk_hand_animation_frame_count(anim);
+    if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))
+        rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    sk_progress_bar bar;
+    if (!rc) sk_progress_bar_begin(&bar, "hand animate", !args->common.quiet);
+    for (int f = 0; f < frames && !rc; f++) {
+        sk_hand_input in;
+        sk_hand_animation_input(anim, f, &in);
+        if (sk_hand_solve(solver, &in, dofs + (size_t)f * SK_HAND_DOF_COUNT, NULL, &err) != SK_OK)
+            rc = cli_fail_error(&err);
+        sk_progress_bar_update(&bar, (f + 1.0) / frames);
+    }
+    if (frames > 0) sk_progress_bar_end(&bar);
+    double frame_time = rc ? 0 : 1.0 / anim->fps;
+    if (!rc && bvh && sk_hand_bvh_write(&skel, dofs, frames, frame_time, bvh, &err) != SK_OK) rc = cli_fail_error(&err);
+    if (!rc && positions) rc = write_positions(&skel, dofs, frames, positions);
+    if (!rc && angles && sk_hand_angles_write_csv(dofs, frames, frame_time, angles, &err) != SK_OK)
+        rc = cli_fail_error(&err);
+    if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
+    sk_hand_solver_destroy(solver);
+    free(dofs);
+    free(anim);
+    free(c);
+    return rc;
+}
+
+const cli_command cmd_hand_animate = {
+    .name = "hand animate",
+    .summary = "keyframe animation of the hand with the equilibrium solved every frame",
+    .usage = "shitsukan hand animate FILE [--bvh OUT.bvh] [--positions OUT.csv] [--angles OUT.csv]",
+    .description =
+        "Reads an animation file (keys of partial inputs: \"pin\" angles in degrees and\n"
+        "\"torque\" values per DOF), interpolates every input between keys by cubic Bezier\n"
+        "curves (thesis 4.2.2) or Catmull-Rom, solves the natural posture at every frame and\n"
+        "writes BVH (root with 6 channels, joints Zrotation Yrotation Xrotation, offsets in\n"
+        "mm), joint positions and joint angles. Shipped examples: presets/hand/little-mcp.json\n"
+        "(Fig. 4.19), little-dip.json (Fig. 4.20), piano-key.json.",
+    .examples = "  shitsukan hand animate presets/hand/little-mcp.json --bvh little-mcp.bvh\n"
+                "  shitsukan hand animate presets/hand/piano-key.json --positions keys.json --side left",
+    .options = animate_options,
+    .option_count = (int)(sizeof animate_options / sizeof animate_options[0]),
+    .common = CLI_COMMON_QUIET,
+    .min_positional = 1,
+    .max_positional = 1,
+    .run = run_animate,
+};
+
+/* ------------------------------------------------------------ hand calibrate */
+
+static const cli_option calibrate_options[] = {
+    {"pairs", 0, "A:B,...", "joint pairs to fit, each 'x:y' for the line y = A x + b (required)", false},
+    {"weights", 0, "RULE", "thesis (eq. 3.18, default) or inverse-variance", false},
+};
+
+static int run_calibrate(const cli_command *cmd, const cli_args *args)
+{
+    const char *pairs_text = cli_get(cmd, args, "pairs");
+    if (!pairs_text) return cli_fail(CLI_EXIT_USAGE, "--pairs is required (e.g. --pairs R.MCP.flex:L.MCP.flex)");
+    if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o rows.json is required");
+    sk_hand_weight_rule rule = SK_HAND_WEIGHT_THESIS;
+    const char *w = cli_get(cmd, args, "weights");
+    if (w && strcmp(w, "inverse-variance") == 0) rule = SK_HAND_WEIGHT_INVERSE_VARIANCE;
+    else if (w && strcmp(w, "thesis") != 0)
+        return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
+    sk_error err = {0};
+    int pairs[64][2], n = 0;
+    if (sk_hand_parse_pairs(pairs_text, pairs, 64, &n, &err) != SK_OK) {
+        sk_error_prefix(&err, "--pairs");
+        return cli_fail_error(&err);
+    }
+    sk_hand_samples samples;
+    const char *path = args->positional[0];
+    if (sk_hand_samples_load_file(path, &samples, &err) != SK_OK) return cli_fail_error(&err);
+    sk_hand_fit fits[64];
+    int rc = 0;
+    if (sk_hand_calibrate((const double *const *)samples.column, samples.count, (const int(*)[2])pairs, n, rule,
+                          fits, &err) != SK_OK) {
+        sk_error_prefix(&err, "%s", path);
+        rc = cli_fail_error(&err);
+    }
+    char note[512];
+    snprintf(note, sizeof note, "fitted from %d samples of %s", samples.count, path);
+    if (!rc && sk_hand_fits_write_json(fits, n, rule, note, args->common.output, &err) != SK_OK) rc = cli_fail_error(&err);
+    for (int k = 0; k < n && !rc && !args->common.quiet; k++)
+        printf("%s:%s  A %.4f  b %.3f deg  W %.3f  rms %.3f deg\n", sk_hand_dof(fits[k].dof_x)->name,
+               sk_hand_dof(fits[k].dof_y)->name, fits[k].slope, fits[k].intercept * SK_RAD_TO_DEG, fits[k].weight,
+               sqrt(fits[k].mean_sq_distance) * SK_RAD_TO_DEG);
+    sk_hand_samples_free(&samples);
+    return rc;
+}
+
+const cli_command cmd_hand_calibrate = {
+    .name = "hand calibrate",
+    .summary = "fit constraint rows (A, b, W) to measured joint-angle samples (thesis 3.2.2)",
+    .usage = "shitsukan hand calibrate SAMPLES.csv --pairs A:B[,C:D...] -o rows.json",
+    .description =
+        "Fits one least-squares line y = A x + b per pair of DOFs to the samples (a CSV with\n"
+        "a header of DOF names and one sample per line, in degrees; columns 'frame' and\n"
+        "'time' are ignored) and sets each row's weight from the spread of the samples about\n"
+        "the line, w = mean l^2 / max over the pairs (eq. 3.18), or by inverse variance.\n"
+        "Writes a constraint file for --constraints.",
+    .examples = "  shitsukan hand calibrate glove.csv --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex -o rows.json",
+    .options = calibrate_options,
+    .option_count = (int)(sizeof calibrate_options / sizeof calibrate_options[0]),
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET,
+    .min_positional = 1,
+    .max_positional = 1,
+    .run = run_calibrate,
+};

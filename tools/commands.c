@@ -1,0 +1,19 @@
+/* The table of subcommands of the `shitsukan` command (one file per module's commands). */
+#include "cli.h"
+
+extern const cli_command cmd_presets;
+extern const cli_command cmd_noise;
+extern const cli_command cmd_sheet;
+extern const cli_command cmd_hand_pose;
+extern const cli_command cmd_hand_animate;
+extern const cli_command cmd_hand_calibrate;
+
+const cli_command *const cli_commands[] = {
+    &cmd_presets,
+    &cmd_noise,
+    &cmd_sheet,
+    &cmd_hand_pose,
+    &cmd_hand_animate,
+    &cmd_hand_calibrate,
+    NULL,
+};
