@@ -7,6 +7,8 @@ extern const cli_command cmd_sheet;
 extern const cli_command cmd_hand_pose;
 extern const cli_command cmd_hand_animate;
 extern const cli_command cmd_hand_calibrate;
+extern const cli_command cmd_skin;
+extern const cli_command cmd_skin_maps;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -15,5 +17,7 @@ const cli_command *const cli_commands[] = {
     &cmd_hand_pose,
     &cmd_hand_animate,
     &cmd_hand_calibrate,
+    &cmd_skin,
+    &cmd_skin_maps,
     NULL,
 };

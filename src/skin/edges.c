@@ -7,6 +7,8 @@
 
 #include "skin/skin_internal.h"
 
+#define SK__SUPPORT_REACH 3.0
+
 static int key_cmp(const void *pa, const void *pb)
 {
     const sk__edge_key *a = pa, *b = pb;
@@ -59,32 +61,50 @@ sk_result sk__build_edges(sk_skin *skin, int level, sk__edge_key *keys, size_t k
         double ex = bzx - azx, ey = bzy - azy, len2 = ex * ex + ey * ey, len = sqrt(len2);
         sk__edge *E = &lv->edges[e];
         if (!(len > 0)) continue;
-        /* unit normal towards the left site (the left cell is counter-clockwise) */
+        /* Midpoint displacement runs in pre-stretch space (the paper perturbs, then
+           stretches): offsets along the pre-stretch normal, towards the left site. */
         double nzx = -ey / len, nzy = ex / len;
         double t_apex, h_apex;
         sk__support(azx, azy, bzx, bzy, pzx, pzy, &t_apex, &h_apex);
         float *f = lv->f + (size_t)e * (size_t)lv->f_count;
+        /* In y space the stretched offset M n f has a part across the edge and a part
+           along it; the part along it only slides points along the edge (and can fold a
+           strongly stretched edge), so the polyline keeps the part across it: a graph over
+           the edge, in a support triangle inside the y-space fan triangle. */
+        double eyx = bx - ax, eyy = by - ay, leny2 = eyx * eyx + eyy * eyy, leny = sqrt(leny2);
+        double nwx = -eyy / leny, nwy = eyx / leny;
+        double across = (m[0][0] * nzx + m[0][1] * nzy) * nwx + (m[1][0] * nzx + m[1][1] * nzy) * nwy;
+        double ty_apex, hy_apex;
+        sk__support(ax, ay, bx, by, px, py, &ty_apex, &hy_apex);
         double fmax = 0;
         if (lv->perturbed) {
             uint64_t key = sk_hash(kl->k0, kl->k1, (uint64_t)level, 0x45444745ULL);
             sk__perturb_edge(skin, level, key, len, t_apex, h_apex, f);
-            for (int k = 0; k < lv->f_count; k++) fmax = fmax > fabs(f[k]) ? fmax : fabs(f[k]);
+            double raw = 0;
+            for (int k = 0; k < lv->f_count; k++) raw = raw > fabs(f[k] * across) ? raw : fabs(f[k] * across);
+            /* The support reaches no farther from the edge than a few times the polyline's
+               excursion: the warp stays local, so a strongly stretched level does not
+               shear its children far from its edges. */
+            hy_apex = fmin(hy_apex, SK__SUPPORT_REACH * raw);
+            for (int k = 0; k < lv->f_count; k++) {
+                double t = (double)k / (lv->f_count - 1);
+                double hs = 0.8 * hy_apex * fmin(t / ty_apex, (1.0 - t) / (1.0 - ty_apex));
+                double v = f[k] * across;
+                f[k] = (float)(v > hs ? hs : (v < -hs ? -hs : v));
+                fmax = fmax > fabs(f[k]) ? fmax : fabs(f[k]);
+            }
         }
         E->ax = (float)ax, E->ay = (float)ay, E->bx = (float)bx, E->by = (float)by;
-        /* t = (Minv (y - a)) . e / len^2  ->  gradient Minv^T e / len^2 */
-        E->atx = (float)((mi[0][0] * ex + mi[1][0] * ey) / len2);
-        E->aty = (float)((mi[0][1] * ex + mi[1][1] * ey) / len2);
-        double asx = mi[0][0] * nzx + mi[1][0] * nzy, asy = mi[0][1] * nzx + mi[1][1] * nzy;
-        E->asx = (float)asx, E->asy = (float)asy;
-        double dx = m[0][0] * nzx + m[0][1] * nzy, dy = m[1][0] * nzx + m[1][1] * nzy;
-        E->dx = (float)dx, E->dy = (float)dy;
-        E->t_apex = (float)t_apex, E->h_apex = (float)h_apex;
-        E->bulge = (float)(fmax * hypot(dx, dy));
+        E->atx = (float)(eyx / leny2), E->aty = (float)(eyy / leny2);
+        E->asx = (float)nwx, E->asy = (float)nwy;
+        E->dx = (float)nwx, E->dy = (float)nwy;
+        E->t_apex = (float)ty_apex, E->h_apex = (float)hy_apex;
+        E->bulge = (float)fmax;
         E->shx = ur->shx, E->shy = ur->shy;
         E->left = cl, E->right = cr;
         E->f_first = e * (uint32_t)lv->f_count;
         /* Both sides take their line from the record: exactly complementary half-planes. */
-        double sl = hypot(asx, asy), nyx = asx / sl, nyy = asy / sl;
+        double nyx = nwx, nyy = nwy;
         ul->nx = (float)-nyx, ul->ny = (float)-nyy;
         ul->d = (float)-(nyx * ax + nyy * ay);
         ur->nx = (float)nyx, ur->ny = (float)nyy;

@@ -39,7 +39,7 @@ typedef struct sk__use {
 
 /* A shared edge, perturbed once (paper sec. 3.2.1 (1), midpoint displacement). Geometry
  * in y space in the frame of its left cell. With s the signed distance from the straight
- * edge in pre-stretch units (positive towards the left site) and t in [0, 1] along it:
+ * edge (positive towards the left site) and t in [0, 1] along it:
  *   t = at . (y - a), s = as . (y - a); the polyline is s = f(t);
  * the perturbation lives in the support |s| < H(t) (a triangle over the edge on each side,
  * inside the two cells' fan triangles), H(t) = h_apex min(t / t_apex, (1-t) / (1-t_apex)). */
@@ -47,8 +47,8 @@ typedef struct sk__edge {
     float ax, ay;        /* start point a */
     float bx, by;        /* end point b */
     float atx, aty;      /* gradient of t */
-    float asx, asy;      /* gradient of s */
-    float dx, dy;        /* y-space displacement per unit of s */
+    float asx, asy;      /* gradient of s: the unit normal towards the left site */
+    float dx, dy;        /* displacement per unit of s (the same unit normal) */
     float t_apex, h_apex;
     float bulge;         /* max |f| times |d|: how far the polyline strays (y units) */
     float shx, shy;      /* right frame = left frame - shift */
