@@ -7,12 +7,10 @@
 
 #include "skin/skin_internal.h"
 
-/* A hinted cell is used only if the point is inside it by this share of the gauge. */
-#define SK__HINT_MARGIN 1e-4f
-
 void sk__hint_reset(sk__hint *hint)
 {
-    for (int k = 0; k < SK_SKIN_MAX_LEVELS; k++) hint->cell[k] = SK__SKIN_NONE;
+    for (int k = 0; k < SK_SKIN_MAX_LEVELS; k++)
+        hint->cell[k] = SK__SKIN_NONE, hint->fan[k] = UINT32_MAX, hint->sector[k] = UINT32_MAX;
     hint->shift[0] = hint->shift[1] = 0.0;
 }
 
@@ -24,47 +22,62 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
     out->normal = sk_v3f(0, 0, 1);
     for (int k = 0; k < L; k++) out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0.0f;
     if (!isfinite(x) || !isfinite(y)) return;
+    sk__hint local;
+    if (!hint) {
+        sk__hint_reset(&local);
+        hint = &local;
+    }
     const sk__level *l1 = &skin->levels[0];
-    float px, py;
+    float px = 0, py = 0;
     uint32_t c = SK__SKIN_NONE, u = 0;
     double wx = sk__wrap(x, skin->period[0]), wy = sk__wrap(y, skin->period[1]);
-    if (hint && hint->cell[0] != SK__SKIN_NONE) {
+    /* Level 1: the previous point's fan triangle, else the grid. */
+    if (hint->cell[0] != SK__SKIN_NONE) {
         float lx = (float)(wx - hint->shift[0]), ly = (float)(wy - hint->shift[1]);
-        if (sk__gauge_site(l1, hint->cell[0], lx, ly, &u) < 1.0f - SK__HINT_MARGIN)
+        if (sk__in_fan(l1, hint->cell[0], hint->fan[0], lx, ly)) {
             c = hint->cell[0], px = lx, py = ly;
+            u = l1->cells[c].first_use + hint->fan[0];
+        }
     }
     if (c == SK__SKIN_NONE) {
         double shift[2];
         c = sk__locate_level1(skin, wx, wy, &px, &py, &u, shift);
         if (c == SK__SKIN_NONE) return;
-        if (hint) hint->cell[0] = c, hint->shift[0] = shift[0], hint->shift[1] = shift[1];
+        hint->cell[0] = c, hint->shift[0] = shift[0], hint->shift[1] = shift[1];
+        hint->fan[0] = u - l1->cells[c].first_use;
     }
     float jac[2][2] = {{1, 0}, {0, 1}};
     float h = 0, gx = 0, gy = 0;
     for (int k = 0; k < L; k++) {
         const sk__level *lv = &skin->levels[k];
         if (k > 0) {
-            uint32_t parent = c, hc = hint ? hint->cell[k] : SK__SKIN_NONE;
+            uint32_t parent = c, hc = hint->cell[k];
             c = SK__SKIN_NONE;
             if (hc != SK__SKIN_NONE && lv->cells[hc].parent == parent &&
-                sk__gauge_site(lv, hc, px, py, &u) < 1.0f - SK__HINT_MARGIN)
+                sk__in_fan(lv, hc, hint->fan[k], px, py)) {
                 c = hc;
-            if (c == SK__SKIN_NONE) {
+                u = lv->cells[c].first_use + hint->fan[k];
+            } else {
                 const sk__cell *pc = &skin->levels[k - 1].cells[parent];
                 c = sk__locate_child(lv, pc->first_child, pc->child_count, px, py);
-                if (lv->perturbed) u = sk__fan_use(lv, c, px, py);
-                if (hint) hint->cell[k] = c;
+                u = sk__fan_use(lv, c, px, py);
+                hint->cell[k] = c;
+                hint->fan[k] = u - lv->cells[c].first_use;
             }
         }
         float pre_x = px, pre_y = py;
-        if (lv->perturbed) c = sk__unwarp(lv, c, u, &px, &py, jac, &pre_x, &pre_y);
-        out->cell[k] = c;
-        if (flags & SK_SKIN_QUERY_FURROW) out->furrow_mm[k] = sk__furrow_distance(lv, c, pre_x, pre_y);
+        uint32_t owner = c;
+        if (lv->perturbed) owner = sk__unwarp(lv, c, u, &px, &py, jac, &pre_x, &pre_y);
+        out->cell[k] = owner;
+        if (flags & SK_SKIN_QUERY_FURROW) out->furrow_mm[k] = sk__furrow_distance(lv, owner, pre_x, pre_y);
         float g[2];
-        h += sk__profile_eval(lv, c, px, py, g);
+        uint32_t sector = owner == c ? hint->sector[k] : UINT32_MAX;
+        h += sk__profile_eval(lv, owner, px, py, g, &sector);
+        if (owner == c) hint->sector[k] = sector;
         /* gradient in the world = jac^T g */
         gx += jac[0][0] * g[0] + jac[1][0] * g[1];
         gy += jac[0][1] * g[0] + jac[1][1] * g[1];
+        c = owner;
     }
     if (skin->pores.count) {
         float pg[2] = {0, 0}, ph = 0;

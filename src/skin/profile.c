@@ -11,18 +11,40 @@
 
 #include "skin/skin_internal.h"
 
-float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, float grad[2])
+/* The edge the ray from the centre through q meets: the hinted one if q lies inside its
+ * sector by a margin (the same answer the full search gives), else the full gauge. */
+static int centre_edge(const sk__use *u, int n, float qx, float qy, uint32_t *hint, float *gauge)
+{
+    if (*hint < (uint32_t)n) {
+        int k = (int)*hint;
+        const sk__use *a = &u[k], *b = &u[k + 1 == n ? 0 : k + 1];
+        float ca = a->cvx * qy - a->cvy * qx, cb = qx * b->cvy - qy * b->cvx;
+        float scale = (fabsf(qx) + fabsf(qy)) * 1e-4f;
+        if (ca > scale * (fabsf(a->cvx) + fabsf(a->cvy)) && cb > scale * (fabsf(b->cvx) + fabsf(b->cvy))) {
+            *gauge = a->acx * qx + a->acy * qy;
+            return k;
+        }
+    }
+    float best = -INFINITY;
+    int arg = 0;
+    for (int j = 0; j < n; j++) {
+        float gk = u[j].acx * qx + u[j].acy * qy;
+        if (gk > best) best = gk, arg = j;
+    }
+    *hint = (uint32_t)arg;
+    *gauge = best;
+    return arg;
+}
+
+float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, float grad[2],
+                       uint32_t *hint)
 {
     const sk__cell *cell = &lv->cells[c];
     const sk__use *u = lv->uses + cell->first_use;
     int n = (int)cell->use_count;
     float qx = px - cell->cx, qy = py - cell->cy;
-    float best = -INFINITY;
-    int arg = 0;
-    for (int k = 0; k < n; k++) {
-        float gk = u[k].acx * qx + u[k].acy * qy;
-        if (gk > best) best = gk, arg = k;
-    }
+    float best;
+    int arg = centre_edge(u, n, qx, qy, hint, &best);
     float xq = 10.0f * best;
     const sk__profile *pr = &lv->profile;
     grad[0] = grad[1] = 0.0f;
@@ -60,15 +82,17 @@ float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, floa
             float h1 = u[i].hc, h2 = u[i1].hc;
             float R = h1 + t * (h2 - h1);
             float r = sqrtf(r2);
-            float kappa = R * xq / (10.0f * r);
+            float inv = 1.0f / (10.0f * r);
+            float kappa = R * xq * inv;
             if (kappa < 1.0f) {
                 /* grad t = (s2 grad s1 - s1 grad s2) / ss^2 */
+                float iss2 = 1.0f / (ss * ss);
                 float g1x = -u[i].ny, g1y = u[i].nx, g2x = u[i1].ny, g2y = -u[i1].nx;
-                float tx = (s2 * g1x - s1 * g2x) / (ss * ss), ty = (s2 * g1y - s1 * g2y) / (ss * ss);
-                float Rx = (h2 - h1) * tx, Ry = (h2 - h1) * ty;
-                float inv = 1.0f / (10.0f * r);
-                float kx = Rx * xq * inv + R * gxq * inv - R * xq * qx * inv / r2;
-                float ky = Ry * xq * inv + R * gyq * inv - R * xq * qy * inv / r2;
+                float dh = (h2 - h1) * iss2;
+                float Rx = dh * (s2 * g1x - s1 * g2x), Ry = dh * (s2 * g1y - s1 * g2y);
+                float k0 = R * xq * inv / r2;
+                float kx = (Rx * xq + R * gxq) * inv - k0 * qx;
+                float ky = (Ry * xq + R * gyq) * inv - k0 * qy;
                 g = 1.0f - rho + rho * kappa;
                 ggx = rho * kx, ggy = rho * ky;
             }

@@ -31,6 +31,8 @@ typedef struct sk__use {
     float asx, asy;   /* gauge from the site: n / (d - n . site) */
     float acx, acy;   /* gauge from the profile centre: n / (d - n . centre) */
     float hc;         /* distance from the centre to the line, d - n . centre */
+    float svx, svy;   /* start vertex relative to the site (fan sectors) */
+    float cvx, cvy;   /* start vertex relative to the centre (profile sectors) */
     float shx, shy;   /* add to a point of this cell's frame to get the edge's frame */
     uint32_t edge;    /* edge record of this level, or SK__SKIN_NONE (a piece of the
                          parent's boundary, or an unpaired degenerate edge) */
@@ -80,7 +82,7 @@ typedef struct sk__profile {
        for Newton's method, g from 1 - roundness to 1. */
     float last_xc[4], last_zc[4];
     float g_min, g_step_inv;
-    float t_guess[9][65];
+    float t_guess[9][129]; /* g = g_min .. 1 (9 steps) x x' = 0 .. 10 (129 steps) */
     float seg_x0[SK_SKIN_MAX_SEGMENTS], seg_inv_w[SK_SKIN_MAX_SEGMENTS]; /* table mapping */
     float z_min, z_max;    /* bounds of the control points */
 } sk__profile;
@@ -226,6 +228,9 @@ void sk__warp(const sk__level *lv, uint32_t c, uint32_t u, double *px, double *p
 /* Gauge of p in cell c seen from its site (<= 1 inside the straight cell) and the use
  * that attains it (the fan triangle). */
 float sk__gauge_site(const sk__level *lv, uint32_t c, float px, float py, uint32_t *use);
+/* True if p is inside fan triangle k of cell c (site, vertex k, vertex k + 1) by a margin:
+ * then the cell holds p and k is its fan, exactly as the full gauge would find. */
+bool sk__in_fan(const sk__level *lv, uint32_t c, uint32_t k, float px, float py);
 /* The straight cell of `level` (0-based) containing a point of the tile period, going down
  * the levels without perturbation (frame F(level)); writes the point in the cell's frame. */
 uint32_t sk__locate_straight(const sk_skin *skin, int level, double x, double y, float *px,
@@ -237,7 +242,8 @@ void sk__to_world(const sk_skin *skin, int k, uint32_t c, double px, double py, 
 
 /* Section profile of level lv at point p of cell c (straight frame): height in mm and
  * gradient (mm per mm, in that frame) (profile.c). */
-float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, float grad[2]);
+float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, float grad[2],
+                       uint32_t *hint);
 /* Bezier chain helpers (bezier.c). */
 float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg);
 /* The unscaled profile z(x) and its slope. */
@@ -246,6 +252,8 @@ float sk__profile_z(const sk__profile *p, float x, float *dz_dx);
  * the point is inside them by a margin, so results never depend on the hint. */
 typedef struct sk__hint {
     uint32_t cell[SK_SKIN_MAX_LEVELS];
+    uint32_t fan[SK_SKIN_MAX_LEVELS];    /* use (index in the cell) of the site's fan */
+    uint32_t sector[SK_SKIN_MAX_LEVELS]; /* use of the centre's sector (profile) */
     double shift[2];
 } sk__hint;
 void sk__hint_reset(sk__hint *hint);
