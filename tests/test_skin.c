@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "shitsukan/image.h"
+#include "shitsukan/preset.h"
 #include "shitsukan/skin.h"
 #include "test_support.h"
 
@@ -596,6 +598,125 @@ static void test_defaults(void **state)
     sk_skin_destroy(skin);
 }
 
+/* ------------------------------------------------------------ command line */
+static void test_cli_help_and_errors(void **state)
+{
+    (void)state;
+    sk_test_run run;
+    assert_int_equal(sk_test_cli(&run, "skin --help"), 0);
+    assert_non_null(strstr(run.out, "shitsukan skin"));
+    assert_int_equal(sk_test_cli(&run, "skin maps --help"), 0);
+    assert_non_null(strstr(run.out, "--directx"));
+    const char *out = sk_test_path("bad.png");
+    struct {
+        const char *set, *message;
+    } bad[] = {
+        {"levels=[]", "levels: array length 0 is out of range [1, 6]"},
+        {"levels[0].spacing_mm=-1", "levels[0].spacing_mm = -1 is out of range [0, 1000]"},
+        {"levels[0].profile[0].points[2][0]=2", "levels[0].profile[0].points[2][0] = 2 is less than"},
+        {"levels[1].jitter_rate=nan", "levels[1].jitter_rate is not a finite number"},
+        {"levels[0].layout=hexagonal", "levels[0].layout"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        int status = sk_test_cli(&run, "skin --preset fig19a --set '%s' -o '%s'", bad[i].set, out);
+        assert_int_equal(status, 2);
+        if (!strstr(run.err, bad[i].message)) fail_msg("'%s': stderr \"%s\"", bad[i].set, run.err);
+        assert_int_equal(sk_test_count_lines(run.err), 1);
+        assert_false(sk_test_file_exists(out));
+    }
+    assert_int_equal(sk_test_cli(&run, "skin --preset no-such-figure -o '%s'", out), 2);
+    assert_int_equal(sk_test_cli(&run, "skin --preset fig19a --size 0 -o '%s'", out), 2);
+    assert_int_equal(sk_test_cli(&run, "skin maps --preset fig19a --furrow-level 4 -o '%s'",
+                                 sk_test_path("badmaps")), 2);
+    assert_false(sk_test_file_exists(out));
+}
+
+/* Every shipped preset loads, validates and builds (Table 1 and the real regions). */
+static void test_presets_build(void **state)
+{
+    (void)state;
+    const char *names[] = {"fig13a", "fig13b", "fig13c", "fig14a", "fig14b", "fig14c", "fig15a",
+                           "fig15b", "fig15c", "fig16a", "fig16b", "fig17a", "fig17b", "fig17c",
+                           "fig18a", "fig18b", "fig18c", "fig19a", "fig19b", "fig19c", "fig19d",
+                           "fig19e", "fig19f", "back-of-hand", "wrist", "forearm"};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/skin/%s.json", SK_TEST_PRESET_DIR, names[i]);
+        sk_preset *p = NULL;
+        sk_error err = {0};
+        if (sk_preset_load_file(&p, path, &err) != SK_OK) fail_msg("%s: %s", names[i], err.message);
+        sk_skin_desc d = {0};
+        if (sk_preset_bind(p, &sk_skin_schema, &d, &err) != SK_OK) fail_msg("%s: %s", names[i], err.message);
+        assert_non_null(sk_preset_get_string(p, "source"));
+        sk_preset_free(p);
+        sk_skin *skin = make(&d);
+        assert_true(sk_skin_cell_count(skin, 1) > 0);
+        sk_skin_destroy(skin);
+    }
+}
+
+static sk_image read_png(const char *path, sk_image_metadata *meta, int *bits)
+{
+    sk_image im = {0};
+    sk_error err = {0};
+    sk_png_read_desc rd = {.encoding = SK_PNG_ENCODING_LINEAR};
+    if (sk_image_read_png(&im, path, &rd, meta, bits, &err) != SK_OK) fail_msg("%s: %s", path, err.message);
+    return im;
+}
+
+/* skin maps writes every map; --region gives the same pixels; threads do not matter. */
+static void test_cli_maps(void **state)
+{
+    (void)state;
+    sk_test_run run;
+    const char *full = sk_test_path("maps-full"), *part = sk_test_path("maps-part");
+    assert_int_equal(sk_test_cli(&run, "skin maps --preset fig19a --size 96x64 --threads 1 --edges -q -o '%s'", full), 0);
+    assert_int_equal(sk_test_cli(&run, "skin maps --preset fig19a --size 96x64 --threads 2 --region 20,10,30,40 -q -o '%s'", part), 0);
+    const char *maps[] = {"height.png", "normal.png", "furrow.png", "cells.png", "preview.png"};
+    for (size_t m = 0; m < sizeof maps / sizeof maps[0]; m++) {
+        char a[1024], b[1024];
+        snprintf(a, sizeof a, "%s/%s", full, maps[m]);
+        snprintf(b, sizeof b, "%s/%s", part, maps[m]);
+        sk_image_metadata meta = {0};
+        int bits = 0;
+        sk_image fa = read_png(a, &meta, &bits), fb = read_png(b, NULL, NULL);
+        assert_int_equal(fa.width, 96);
+        assert_int_equal(fb.width, 30);
+        assert_int_equal(fb.height, 40);
+        if (m == 0) {
+            assert_int_equal(bits, 16);
+            assert_non_null(sk_image_metadata_get(&meta, "shitsukan:height_max_mm"));
+            assert_non_null(sk_image_metadata_get(&meta, "shitsukan:mm_per_px"));
+        }
+        for (int y = 0; y < 40; y++)
+            assert_memory_equal(sk_image_pixel(&fa, 20, 10 + y), sk_image_pixel(&fb, 0, y),
+                                sizeof(float) * fa.channels * 30);
+        sk_image_free(&fa);
+        sk_image_free(&fb);
+    }
+    char path[1024];
+    snprintf(path, sizeof path, "%s/height.exr", full);
+    sk_image ex = {0};
+    sk_image_metadata meta = {0};
+    assert_int_equal(sk_image_read_exr(&ex, path, &meta, NULL), SK_OK);
+    assert_string_equal(sk_image_metadata_get(&meta, "shitsukan:units"), "mm");
+    float lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < ex.width * ex.height; i++) lo = fminf(lo, ex.data[i]), hi = fmaxf(hi, ex.data[i]);
+    /* Fig. 19a: heights from the furrow floor (0) towards 4, 2, 0.8 tenths of each radius */
+    assert_true(lo >= 0.0f && hi > 0.1f && hi < 0.2f);
+    sk_image_free(&ex);
+    snprintf(path, sizeof path, "%s/edges.png", full);
+    assert_true(sk_test_file_exists(path));
+    /* preview: same bytes for 1 and 2 threads */
+    const char *p1 = sk_test_path("t1.png"), *p2 = sk_test_path("t2.png");
+    assert_int_equal(sk_test_cli(&run, "skin --preset back-of-hand --size 80 --threads 1 -q -o '%s'", p1), 0);
+    assert_int_equal(sk_test_cli(&run, "skin --preset back-of-hand --size 80 --threads 2 -q -o '%s'", p2), 0);
+    sk_image a = read_png(p1, NULL, NULL), b = read_png(p2, NULL, NULL);
+    assert_memory_equal(a.data, b.data, sizeof(float) * 3 * 80 * 80);
+    sk_image_free(&a);
+    sk_image_free(&b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -611,6 +732,9 @@ int main(void)
         cmocka_unit_test(test_region_and_threads),
         cmocka_unit_test(test_furrow_distance),
         cmocka_unit_test(test_bad_parameters),
+        cmocka_unit_test(test_presets_build),
+        cmocka_unit_test(test_cli_help_and_errors),
+        cmocka_unit_test(test_cli_maps),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -258,10 +258,11 @@ static int run_maps(const cli_command *command, const cli_args *args)
     const sk_skin_desc *rd_desc = sk_skin_get_desc(skin);
     sk_error err = {0};
     sk_result r = SK_OK;
-    if (furrow_level > rd_desc->level_count || id_level > rd_desc->level_count) {
+    int level_count = rd_desc->level_count;
+    if (furrow_level > level_count || id_level > level_count) {
         sk_skin_destroy(skin);
         return cli_fail(CLI_EXIT_USAGE, "--furrow-level and --id-level must be at most %d (the "
-                        "skin's levels)", rd_desc->level_count);
+                        "skin's levels)", level_count);
     }
     map_images m;
     memset(&m, 0, sizeof m);
