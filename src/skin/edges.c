@@ -150,6 +150,8 @@ void sk__finish_uses(sk__level *lv)
             u->hc = (float)hc;
             u->svx = u->vx - cell->sx, u->svy = u->vy - cell->sy;
             u->cvx = u->vx - cell->cx, u->cvy = u->vy - cell->cy;
+            u->svn = (fabsf(u->svx) + fabsf(u->svy)) * SK__SECTOR_MARGIN;
+            u->cvn = (fabsf(u->cvx) + fabsf(u->cvy)) * SK__SECTOR_MARGIN;
         }
     }
 }

@@ -20,8 +20,10 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
     int L = skin->level_count;
     out->height_mm = 0.0f;
     out->normal = sk_v3f(0, 0, 1);
-    for (int k = 0; k < L; k++) out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0.0f;
-    if (!isfinite(x) || !isfinite(y)) return;
+    if (!isfinite(x) || !isfinite(y)) {
+        for (int k = 0; k < L; k++) out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0.0f;
+        return;
+    }
     sk__hint local;
     if (!hint) {
         sk__hint_reset(&local);
@@ -42,7 +44,10 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
     if (c == SK__SKIN_NONE) {
         double shift[2];
         c = sk__locate_level1(skin, wx, wy, &px, &py, &u, shift);
-        if (c == SK__SKIN_NONE) return;
+        if (c == SK__SKIN_NONE) {
+            for (int k = 0; k < L; k++) out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0.0f;
+            return;
+        }
         hint->cell[0] = c, hint->shift[0] = shift[0], hint->shift[1] = shift[1];
         hint->fan[0] = u - l1->cells[c].first_use;
     }
@@ -69,7 +74,7 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
         uint32_t owner = c;
         if (lv->perturbed) owner = sk__unwarp(lv, c, u, &px, &py, jac, &pre_x, &pre_y);
         out->cell[k] = owner;
-        if (flags & SK_SKIN_QUERY_FURROW) out->furrow_mm[k] = sk__furrow_distance(lv, owner, pre_x, pre_y);
+        out->furrow_mm[k] = (flags & SK_SKIN_QUERY_FURROW) ? sk__furrow_distance(lv, owner, pre_x, pre_y) : 0.0f;
         float g[2];
         uint32_t sector = owner == c ? hint->sector[k] : UINT32_MAX;
         h += sk__profile_eval(lv, owner, px, py, g, &sector);

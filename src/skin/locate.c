@@ -27,23 +27,6 @@ float sk__gauge_site(const sk__level *lv, uint32_t c, float px, float py, uint32
     return best;
 }
 
-/* Relative margin of the sector tests (far above float rounding). */
-#define SK__SECTOR_MARGIN 1e-4f
-
-bool sk__in_fan(const sk__level *lv, uint32_t c, uint32_t k, float px, float py)
-{
-    const sk__cell *cell = &lv->cells[c];
-    if (k >= cell->use_count) return false;
-    const sk__use *u = lv->uses + cell->first_use;
-    const sk__use *a = &u[k], *b = &u[k + 1 == cell->use_count ? 0 : k + 1];
-    float qx = px - cell->sx, qy = py - cell->sy;
-    float ca = a->svx * qy - a->svy * qx, cb = qx * b->svy - qy * b->svx;
-    float scale = (fabsf(qx) + fabsf(qy)) * SK__SECTOR_MARGIN;
-    return ca > scale * (fabsf(a->svx) + fabsf(a->svy)) &&
-           cb > scale * (fabsf(b->svx) + fabsf(b->svy)) &&
-           a->asx * qx + a->asy * qy < 1.0f - SK__SECTOR_MARGIN;
-}
-
 uint32_t sk__fan_use(const sk__level *lv, uint32_t c, float px, float py)
 {
     uint32_t u;

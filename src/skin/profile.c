@@ -18,9 +18,8 @@ static int centre_edge(const sk__use *u, int n, float qx, float qy, uint32_t *hi
     if (*hint < (uint32_t)n) {
         int k = (int)*hint;
         const sk__use *a = &u[k], *b = &u[k + 1 == n ? 0 : k + 1];
-        float ca = a->cvx * qy - a->cvy * qx, cb = qx * b->cvy - qy * b->cvx;
-        float scale = (fabsf(qx) + fabsf(qy)) * 1e-4f;
-        if (ca > scale * (fabsf(a->cvx) + fabsf(a->cvy)) && cb > scale * (fabsf(b->cvx) + fabsf(b->cvy))) {
+        float q1 = fabsf(qx) + fabsf(qy);
+        if (a->cvx * qy - a->cvy * qx > q1 * a->cvn && qx * b->cvy - qy * b->cvx > q1 * b->cvn) {
             *gauge = a->acx * qx + a->acy * qy;
             return k;
         }
@@ -59,38 +58,32 @@ float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, floa
            meets (arg) has its normal next to the ray, on one side or the other. */
         int i = arg;
         if (u[arg].nx * qy - u[arg].ny * qx < 0.0f) i = arg == 0 ? n - 1 : arg - 1;
-        {
-            int i1 = i + 1 == n ? 0 : i + 1;
-            float c1 = u[i].nx * qy - u[i].ny * qx, c2 = qx * u[i1].ny - qy * u[i1].nx;
-            if (!(c1 >= 0.0f && c2 > 0.0f)) {
-                /* a normal outside its edge's span (obtuse corner): search */
-                for (int k = 0; k < n; k++) {
-                    int k1 = k + 1 == n ? 0 : k + 1;
-                    c1 = u[k].nx * qy - u[k].ny * qx, c2 = qx * u[k1].ny - qy * u[k1].nx;
-                    if (c1 >= 0.0f && c2 > 0.0f) {
-                        i = k;
-                        break;
-                    }
+        int i1 = i + 1 == n ? 0 : i + 1;
+        float s1 = u[i].nx * qy - u[i].ny * qx, s2 = qx * u[i1].ny - qy * u[i1].nx;
+        if (!(s1 >= 0.0f && s2 > 0.0f)) {
+            /* a normal outside its edge's span (obtuse corner): search */
+            for (int k = 0; k < n; k++) {
+                int k1 = k + 1 == n ? 0 : k + 1;
+                float c1 = u[k].nx * qy - u[k].ny * qx, c2 = qx * u[k1].ny - qy * u[k1].nx;
+                if (c1 >= 0.0f && c2 > 0.0f) {
+                    i = k, i1 = k1, s1 = c1, s2 = c2;
+                    break;
                 }
             }
         }
-        int i1 = i + 1 == n ? 0 : i + 1;
-        float s1 = u[i].nx * qy - u[i].ny * qx, s2 = qx * u[i1].ny - qy * u[i1].nx;
         float ss = s1 + s2;
         if (ss > 0.0f) {
-            float t = s1 / ss;
+            float iss = 1.0f / ss, t = s1 * iss;
             float h1 = u[i].hc, h2 = u[i1].hc;
             float R = h1 + t * (h2 - h1);
-            float r = sqrtf(r2);
-            float inv = 1.0f / (10.0f * r);
-            float kappa = R * xq * inv;
+            float ir = 1.0f / sqrtf(r2), inv = 0.1f * ir;
+            float kappa = R * xq * inv; /* R / D(phi) */
             if (kappa < 1.0f) {
                 /* grad t = (s2 grad s1 - s1 grad s2) / ss^2 */
-                float iss2 = 1.0f / (ss * ss);
                 float g1x = -u[i].ny, g1y = u[i].nx, g2x = u[i1].ny, g2y = -u[i1].nx;
-                float dh = (h2 - h1) * iss2;
+                float dh = (h2 - h1) * iss * iss;
                 float Rx = dh * (s2 * g1x - s1 * g2x), Ry = dh * (s2 * g1y - s1 * g2y);
-                float k0 = R * xq * inv / r2;
+                float k0 = kappa * ir * ir;
                 float kx = (Rx * xq + R * gxq) * inv - k0 * qx;
                 float ky = (Ry * xq + R * gyq) * inv - k0 * qy;
                 g = 1.0f - rho + rho * kappa;

@@ -33,6 +33,7 @@ typedef struct sk__use {
     float hc;         /* distance from the centre to the line, d - n . centre */
     float svx, svy;   /* start vertex relative to the site (fan sectors) */
     float cvx, cvy;   /* start vertex relative to the centre (profile sectors) */
+    float svn, cvn;   /* |svx| + |svy| and |cvx| + |cvy| times the sector margin */
     float shx, shy;   /* add to a point of this cell's frame to get the edge's frame */
     uint32_t edge;    /* edge record of this level, or SK__SKIN_NONE (a piece of the
                          parent's boundary, or an unpaired degenerate edge) */
@@ -151,6 +152,7 @@ struct sk_skin {
 /* Wraps a coordinate into [0, period). */
 static inline double sk__wrap(double v, double period)
 {
+    if (v >= 0.0 && v < period) return v;
     double r = v - period * floor(v / period);
     return (r >= period || r < 0.0) ? 0.0 : r;
 }
@@ -228,9 +230,22 @@ void sk__warp(const sk__level *lv, uint32_t c, uint32_t u, double *px, double *p
 /* Gauge of p in cell c seen from its site (<= 1 inside the straight cell) and the use
  * that attains it (the fan triangle). */
 float sk__gauge_site(const sk__level *lv, uint32_t c, float px, float py, uint32_t *use);
+/* Relative margin of the sector tests (far above float rounding). */
+#define SK__SECTOR_MARGIN 1e-4f
+
 /* True if p is inside fan triangle k of cell c (site, vertex k, vertex k + 1) by a margin:
  * then the cell holds p and k is its fan, exactly as the full gauge would find. */
-bool sk__in_fan(const sk__level *lv, uint32_t c, uint32_t k, float px, float py);
+static inline bool sk__in_fan(const sk__level *lv, uint32_t c, uint32_t k, float px, float py)
+{
+    const sk__cell *cell = &lv->cells[c];
+    if (k >= cell->use_count) return false;
+    const sk__use *u = lv->uses + cell->first_use;
+    const sk__use *a = &u[k], *b = &u[k + 1 == cell->use_count ? 0 : k + 1];
+    float qx = px - cell->sx, qy = py - cell->sy;
+    float q1 = fabsf(qx) + fabsf(qy);
+    return a->svx * qy - a->svy * qx > q1 * a->svn && qx * b->svy - qy * b->svx > q1 * b->svn &&
+           a->asx * qx + a->asy * qy < 1.0f - SK__SECTOR_MARGIN;
+}
 /* The straight cell of `level` (0-based) containing a point of the tile period, going down
  * the levels without perturbation (frame F(level)); writes the point in the cell's frame. */
 uint32_t sk__locate_straight(const sk_skin *skin, int level, double x, double y, float *px,
