@@ -17,7 +17,8 @@ static int load(const char *name, sk_skin_desc *desc)
     sk_preset *p;
     sk_error err = {0};
     memset(desc, 0, sizeof *desc);
-    if (sk_preset_load_file(&p, path, &err) != SK_OK || sk_preset_bind(p, &sk_skin_schema, desc, &err) != SK_OK) {
+    if (sk_preset_load_file(&p, path, &err) != SK_OK ||
+        sk_preset_bind(p, &sk_skin_schema, desc, &err) != SK_OK) {
         fprintf(stderr, "bench_skin: %s\n", err.message);
         return 1;
     }
@@ -99,8 +100,8 @@ int main(void)
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     printf("  4096 x 4096 height + normal maps, %d levels, 2 threads:\n", levels);
-    printf("    create %.1f ms, render %.1f ms, total %.3f s   target <= 1.5 s\n",
-           (t1 - t0) * 1e3, (t2 - t1) * 1e3, t2 - t0);
+    printf("    create %.1f ms, render %.1f ms, total %.3f s   target <= 1.5 s\n", (t1 - t0) * 1e3,
+           (t2 - t1) * 1e3, t2 - t0);
     printf("    %.1f ns per pixel wall, %.1f ns per pixel per level (thread time: %.1f)\n",
            (t2 - t1) * 1e9 / px, (t2 - t1) * 1e9 / px / levels, 2 * (t2 - t1) * 1e9 / px / levels);
     printf("    peak memory %.0f MiB (maps %.0f MiB)   target < 1024 MiB\n", ru.ru_maxrss / 1024.0,

@@ -108,8 +108,9 @@ static outlines get_outlines(const sk_skin *skin, int level, int subdivide)
     }
     o.pts = malloc(sizeof(sk_vec2d) * (total ? total : 1));
     for (uint32_t c = 0; c < o.count; c++)
-        assert_int_equal(sk_skin_cell_outline(skin, level, c, subdivide, o.pts + o.start[c], o.len[c]),
-                         o.len[c]);
+        assert_int_equal(
+            sk_skin_cell_outline(skin, level, c, subdivide, o.pts + o.start[c], o.len[c]),
+            o.len[c]);
     return o;
 }
 
@@ -189,7 +190,8 @@ static void test_nearest_centre(void **state)
             uint32_t first = 0, count = sk_skin_cell_count(skin, level);
             if (level > 1) {
                 sk_skin_cell_info pi;
-                assert_int_equal(sk_skin_cell_info_get(skin, level - 1, smp.cell[level - 2], &pi, NULL), SK_OK);
+                assert_int_equal(
+                    sk_skin_cell_info_get(skin, level - 1, smp.cell[level - 2], &pi, NULL), SK_OK);
                 first = pi.first_child, count = pi.child_count;
             }
             double best = INFINITY, second = INFINITY;
@@ -201,8 +203,10 @@ static void test_nearest_centre(void **state)
                     for (int mx = -1; mx <= 1; mx++) {
                         double dx = ci.site.x + mx * w - x, dy = ci.site.y + my * h - y;
                         double d2 = dx * dx + dy * dy;
-                        if (d2 < best) second = best, best = d2, arg = c;
-                        else if (d2 < second) second = d2;
+                        if (d2 < best)
+                            second = best, best = d2, arg = c;
+                        else if (d2 < second)
+                            second = d2;
                     }
             }
             if (sqrt(second) - sqrt(best) < 1e-6) continue; /* on a bisector */
@@ -251,7 +255,9 @@ static void test_shared_edges(void **state)
                     }
                     if (worst < 1e-5) found = true;
                 }
-                if (!found) fail_msg("level %d: edge %u of cell %u differs from cell %u's", level, e, c, nb);
+                if (!found)
+                    fail_msg("level %d: edge %u of cell %u differs from cell %u's", level, e, c,
+                             nb);
                 compared++;
             }
         }
@@ -278,9 +284,10 @@ static void test_children_in_parent(void **state)
             size_t pn = parents.len[ci.parent];
             for (size_t i = 0; i < kids.len[c]; i++) {
                 const sk_vec2d *q = kids.pts + kids.start[c] + i;
-                if (winding(pp, pn, q->x, q->y) == 0 && polyline_distance(pp, pn, q->x, q->y) > 1e-5)
-                    fail_msg("level %d cell %u point (%g, %g) is %g mm outside parent %u", level,
-                             c, q->x, q->y, polyline_distance(pp, pn, q->x, q->y), ci.parent);
+                if (winding(pp, pn, q->x, q->y) == 0 &&
+                    polyline_distance(pp, pn, q->x, q->y) > 1e-5)
+                    fail_msg("level %d cell %u point (%g, %g) is %g mm outside parent %u", level, c,
+                             q->x, q->y, polyline_distance(pp, pn, q->x, q->y), ci.parent);
                 checked++;
             }
         }
@@ -316,7 +323,8 @@ static void test_profile_ends(void **state)
             for (size_t i = 0; i < n; i++) {
                 sk_skin_eval(skin, pts[i].x, pts[i].y, &hgt, NULL);
                 if (fabsf(hgt - (-1.0f * scale)) > 2e-4f * scale)
-                    fail_msg("cell %u boundary point %zu: height %g, expected %g", c, i, hgt, -scale);
+                    fail_msg("cell %u boundary point %zu: height %g, expected %g", c, i, hgt,
+                             -scale);
             }
         }
         sk_skin_destroy(skin);
@@ -352,7 +360,8 @@ static void test_normal_is_gradient(void **state)
     }
     /* kinks (furrow lines, polyline corners) are a set of measure zero; float steps leave
        a little noise */
-    if (good < n * 97 / 100) fail_msg("normal matches the height's gradient at %d of %d points", good, n);
+    if (good < n * 97 / 100)
+        fail_msg("normal matches the height's gradient at %d of %d points", good, n);
     sk_skin_destroy(skin);
 }
 
@@ -381,8 +390,10 @@ static double contour_spread(const sk_skin *skin, uint32_t cell)
             double mid = 0.5 * (lo + hi);
             float v;
             sk_skin_eval(skin, ci.centre.x + mid * cos(th), ci.centre.y + mid * sin(th), &v, NULL);
-            if (v < target) hi = mid;
-            else lo = mid;
+            if (v < target)
+                hi = mid;
+            else
+                lo = mid;
         }
         rmin = fmin(rmin, lo), rmax = fmax(rmax, lo);
     }
@@ -410,7 +421,8 @@ static void test_roundness(void **state)
         sk_skin_destroy(skin);
     }
     /* a regular hexagon's similar contour spreads by 1 - cos 30 deg = 0.134 */
-    if (!(spread[0] > 0.10)) fail_msg("roundness 0: contour spread %g, expected about 0.13", spread[0]);
+    if (!(spread[0] > 0.10))
+        fail_msg("roundness 0: contour spread %g, expected about 0.13", spread[0]);
     if (!(spread[1] < 0.02)) fail_msg("roundness 1: contour spread %g, expected < 0.02", spread[1]);
 }
 
@@ -420,7 +432,8 @@ static void render_all(const sk_skin *skin, int w, int h, const int region[4], f
     sk_skin_render_desc r = {0};
     r.width = w, r.height = h;
     if (region) memcpy(r.region, region, sizeof r.region);
-    r.height_mm = height, r.normal = normal, r.furrow = furrow, r.cell_id = ids, r.preview = preview;
+    r.height_mm = height, r.normal = normal, r.furrow = furrow, r.cell_id = ids,
+    r.preview = preview;
     sk_error err = {0};
     if (sk_skin_render(skin, &r, &err) != SK_OK) fail_msg("render: %s", err.message);
 }
@@ -461,7 +474,8 @@ static void test_seamless(void **state)
         wrapy += fabs(hm[x] - hm[(H - 1) * W + x]);
     }
     innery /= (H - 1);
-    if (!(wrapy < 2.0 * innery)) fail_msg("vertical step across the wrap %g vs %g inside", wrapy, innery);
+    if (!(wrapy < 2.0 * innery))
+        fail_msg("vertical step across the wrap %g vs %g inside", wrapy, innery);
     free(hm);
     sk_skin_destroy(skin);
 }
@@ -525,7 +539,8 @@ static void test_furrow_distance(void **state)
         double best = INFINITY;
         for (int my = -1; my <= 1; my++)
             for (int mx = -1; mx <= 1; mx++)
-                best = fmin(best, polyline_distance(o.pts + o.start[c], o.len[c], x + mx * w, y + my * h));
+                best = fmin(
+                    best, polyline_distance(o.pts + o.start[c], o.len[c], x + mx * w, y + my * h));
         assert_float_equal(smp.furrow_mm[0], best, 1e-5);
     }
     free_outlines(&o);
@@ -553,7 +568,8 @@ static void test_bad_parameters(void **state)
     expect_error(&d, "levels[1].spacing_mm = -0.5 is out of range [0, 1000]");
     d = desc_19a(3.2f);
     d.levels[0].segments[0].points[2][0] = 3.0f;
-    expect_error(&d, "levels[0].profile[0].points[2][0] = 3 is less than the previous point's x = 5");
+    expect_error(&d,
+                 "levels[0].profile[0].points[2][0] = 3 is less than the previous point's x = 5");
     d = desc_19a(3.2f);
     d.levels[2].jitter_rate = NAN;
     expect_error(&d, "levels[2].jitter_rate is not a finite number");
@@ -613,7 +629,8 @@ static void test_cli_help_and_errors(void **state)
     } bad[] = {
         {"levels=[]", "levels: array length 0 is out of range [1, 6]"},
         {"levels[0].spacing_mm=-1", "levels[0].spacing_mm = -1 is out of range [0, 1000]"},
-        {"levels[0].profile[0].points[2][0]=2", "levels[0].profile[0].points[2][0] = 2 is less than"},
+        {"levels[0].profile[0].points[2][0]=2",
+         "levels[0].profile[0].points[2][0] = 2 is less than"},
         {"levels[1].jitter_rate=nan", "levels[1].jitter_rate is not a finite number"},
         {"levels[0].layout=hexagonal", "levels[0].layout"},
     };
@@ -627,7 +644,8 @@ static void test_cli_help_and_errors(void **state)
     assert_int_equal(sk_test_cli(&run, "skin --preset no-such-figure -o '%s'", out), 2);
     assert_int_equal(sk_test_cli(&run, "skin --preset fig19a --size 0 -o '%s'", out), 2);
     assert_int_equal(sk_test_cli(&run, "skin maps --preset fig19a --furrow-level 4 -o '%s'",
-                                 sk_test_path("badmaps")), 2);
+                                 sk_test_path("badmaps")),
+                     2);
     assert_false(sk_test_file_exists(out));
 }
 
@@ -635,10 +653,11 @@ static void test_cli_help_and_errors(void **state)
 static void test_presets_build(void **state)
 {
     (void)state;
-    const char *names[] = {"fig13a", "fig13b", "fig13c", "fig14a", "fig14b", "fig14c", "fig15a",
-                           "fig15b", "fig15c", "fig16a", "fig16b", "fig17a", "fig17b", "fig17c",
-                           "fig18a", "fig18b", "fig18c", "fig19a", "fig19b", "fig19c", "fig19d",
-                           "fig19e", "fig19f", "back-of-hand", "wrist", "forearm"};
+    const char *names[] = {"fig13a", "fig13b", "fig13c", "fig14a", "fig14b", "fig14c",
+                           "fig15a", "fig15b", "fig15c", "fig16a", "fig16b", "fig17a",
+                           "fig17b", "fig17c", "fig18a", "fig18b", "fig18c", "fig19a",
+                           "fig19b", "fig19c", "fig19d", "fig19e", "fig19f", "back-of-hand",
+                           "wrist",  "forearm"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         char path[1024];
         snprintf(path, sizeof path, "%s/skin/%s.json", SK_TEST_PRESET_DIR, names[i]);
@@ -646,7 +665,8 @@ static void test_presets_build(void **state)
         sk_error err = {0};
         if (sk_preset_load_file(&p, path, &err) != SK_OK) fail_msg("%s: %s", names[i], err.message);
         sk_skin_desc d = {0};
-        if (sk_preset_bind(p, &sk_skin_schema, &d, &err) != SK_OK) fail_msg("%s: %s", names[i], err.message);
+        if (sk_preset_bind(p, &sk_skin_schema, &d, &err) != SK_OK)
+            fail_msg("%s: %s", names[i], err.message);
         assert_non_null(sk_preset_get_string(p, "source"));
         sk_preset_free(p);
         sk_skin *skin = make(&d);
@@ -660,7 +680,8 @@ static sk_image read_png(const char *path, sk_image_metadata *meta, int *bits)
     sk_image im = {0};
     sk_error err = {0};
     sk_png_read_desc rd = {.encoding = SK_PNG_ENCODING_LINEAR};
-    if (sk_image_read_png(&im, path, &rd, meta, bits, &err) != SK_OK) fail_msg("%s: %s", path, err.message);
+    if (sk_image_read_png(&im, path, &rd, meta, bits, &err) != SK_OK)
+        fail_msg("%s: %s", path, err.message);
     return im;
 }
 
@@ -670,8 +691,16 @@ static void test_cli_maps(void **state)
     (void)state;
     sk_test_run run;
     const char *full = sk_test_path("maps-full"), *part = sk_test_path("maps-part");
-    assert_int_equal(sk_test_cli(&run, "skin maps --preset fig19a --size 96x64 --threads 1 --edges -q -o '%s'", full), 0);
-    assert_int_equal(sk_test_cli(&run, "skin maps --preset fig19a --size 96x64 --threads 2 --region 20,10,30,40 -q -o '%s'", part), 0);
+    assert_int_equal(
+        sk_test_cli(&run, "skin maps --preset fig19a --size 96x64 --threads 1 --edges -q -o '%s'",
+                    full),
+        0);
+    assert_int_equal(
+        sk_test_cli(
+            &run,
+            "skin maps --preset fig19a --size 96x64 --threads 2 --region 20,10,30,40 -q -o '%s'",
+            part),
+        0);
     const char *maps[] = {"height.png", "normal.png", "furrow.png", "cells.png", "preview.png"};
     for (size_t m = 0; m < sizeof maps / sizeof maps[0]; m++) {
         char a[1024], b[1024];
@@ -701,7 +730,8 @@ static void test_cli_maps(void **state)
     assert_int_equal(sk_image_read_exr(&ex, path, &meta, NULL), SK_OK);
     assert_string_equal(sk_image_metadata_get(&meta, "shitsukan:units"), "mm");
     float lo = INFINITY, hi = -INFINITY;
-    for (int i = 0; i < ex.width * ex.height; i++) lo = fminf(lo, ex.data[i]), hi = fmaxf(hi, ex.data[i]);
+    for (int i = 0; i < ex.width * ex.height; i++)
+        lo = fminf(lo, ex.data[i]), hi = fmaxf(hi, ex.data[i]);
     /* Fig. 19a: heights from the furrow floor (0) towards 4, 2, 0.8 tenths of each radius */
     assert_true(lo >= 0.0f && hi > 0.1f && hi < 0.2f);
     sk_image_free(&ex);
@@ -709,8 +739,10 @@ static void test_cli_maps(void **state)
     assert_true(sk_test_file_exists(path));
     /* preview: same bytes for 1 and 2 threads */
     const char *p1 = sk_test_path("t1.png"), *p2 = sk_test_path("t2.png");
-    assert_int_equal(sk_test_cli(&run, "skin --preset back-of-hand --size 80 --threads 1 -q -o '%s'", p1), 0);
-    assert_int_equal(sk_test_cli(&run, "skin --preset back-of-hand --size 80 --threads 2 -q -o '%s'", p2), 0);
+    assert_int_equal(
+        sk_test_cli(&run, "skin --preset back-of-hand --size 80 --threads 1 -q -o '%s'", p1), 0);
+    assert_int_equal(
+        sk_test_cli(&run, "skin --preset back-of-hand --size 80 --threads 2 -q -o '%s'", p2), 0);
     sk_image a = read_png(p1, NULL, NULL), b = read_png(p2, NULL, NULL);
     assert_memory_equal(a.data, b.data, sizeof(float) * 3 * 80 * 80);
     sk_image_free(&a);
@@ -720,20 +752,13 @@ static void test_cli_maps(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_defaults),
-        cmocka_unit_test(test_cells_tile),
-        cmocka_unit_test(test_nearest_centre),
-        cmocka_unit_test(test_shared_edges),
-        cmocka_unit_test(test_children_in_parent),
-        cmocka_unit_test(test_profile_ends),
-        cmocka_unit_test(test_normal_is_gradient),
-        cmocka_unit_test(test_roundness),
-        cmocka_unit_test(test_seamless),
-        cmocka_unit_test(test_region_and_threads),
-        cmocka_unit_test(test_furrow_distance),
-        cmocka_unit_test(test_bad_parameters),
-        cmocka_unit_test(test_presets_build),
-        cmocka_unit_test(test_cli_help_and_errors),
+        cmocka_unit_test(test_defaults),           cmocka_unit_test(test_cells_tile),
+        cmocka_unit_test(test_nearest_centre),     cmocka_unit_test(test_shared_edges),
+        cmocka_unit_test(test_children_in_parent), cmocka_unit_test(test_profile_ends),
+        cmocka_unit_test(test_normal_is_gradient), cmocka_unit_test(test_roundness),
+        cmocka_unit_test(test_seamless),           cmocka_unit_test(test_region_and_threads),
+        cmocka_unit_test(test_furrow_distance),    cmocka_unit_test(test_bad_parameters),
+        cmocka_unit_test(test_presets_build),      cmocka_unit_test(test_cli_help_and_errors),
         cmocka_unit_test(test_cli_maps),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

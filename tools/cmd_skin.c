@@ -28,12 +28,10 @@ static const cli_option k_maps_options[] = {
     {"size", 0, "N|WxH", "map size in pixels; default 1024", false},
     {"mm-per-px", 0, "MM", "pixel size in mm (the tile becomes size x MM); default from size_mm",
      false},
-    {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full map)",
-     false},
+    {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full map)", false},
     {"directx", 0, NULL, "normal map in the DirectX convention (green down); default OpenGL",
      false},
-    {"edges", 0, NULL, "also write edges.png, the preview with every level's furrows drawn",
-     false},
+    {"edges", 0, NULL, "also write edges.png, the preview with every level's furrows drawn", false},
     {"furrow-level", 0, "K", "level whose furrows furrow.png measures; default 1", false},
     {"id-level", 0, "K", "level whose cells cells.png colours; default 1", false},
     {"samples", 0, "N", "preview samples per pixel side, 1..8; default 1", false},
@@ -120,8 +118,10 @@ static int run_preview(const cli_command *command, const cli_args *args)
         sk_progress_bar_begin(&bar, "skin", !args->common.quiet);
         sk_skin_render_desc rd = {.width = w, .height = h, .samples = (int)samples};
         memcpy(rd.region, region, sizeof rd.region);
-        if (cli_has(command, args, "edges")) rd.edges = image.data;
-        else rd.preview = image.data;
+        if (cli_has(command, args, "edges"))
+            rd.edges = image.data;
+        else
+            rd.preview = image.data;
         rd.progress = sk_progress_bar_sink(&bar);
         r = sk_skin_render(skin, &rd, &err);
         sk_progress_bar_end(&bar);
@@ -129,7 +129,8 @@ static int run_preview(const cli_command *command, const cli_args *args)
     if (r == SK_OK) {
         sk_image_metadata meta = {0};
         describe(skin, w, h, &meta);
-        sk_png_write_desc png = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB, .metadata = &meta};
+        sk_png_write_desc png = {
+            .bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB, .metadata = &meta};
         r = sk_image_write_png(&image, output, &png, &err);
     }
     sk_image_free(&image);
@@ -160,8 +161,8 @@ typedef struct map_images {
     sk_image height, normal, furrow, cells, preview, edges;
 } map_images;
 
-static sk_result write_maps(const sk_skin *skin, const map_images *m, const char *dir, int w,
-                            int h, bool directx, bool edges, int furrow_level, float furrow_max,
+static sk_result write_maps(const sk_skin *skin, const map_images *m, const char *dir, int w, int h,
+                            bool directx, bool edges, int furrow_level, float furrow_max,
                             sk_error *err)
 {
     char path[4096];
@@ -183,13 +184,15 @@ static sk_result write_maps(const sk_skin *skin, const map_images *m, const char
     sk_exr_write_desc exr = {.metadata = &hm};
     if ((r = sk_image_write_exr(&m->height, path, &exr, err)) != SK_OK) return r;
     sk_image scaled = {0};
-    if ((r = sk_image_create(&scaled, m->height.width, m->height.height, 1, err)) != SK_OK) return r;
+    if ((r = sk_image_create(&scaled, m->height.width, m->height.height, 1, err)) != SK_OK)
+        return r;
     size_t n = (size_t)m->height.width * (size_t)m->height.height;
     for (size_t i = 0; i < n; i++) scaled.data[i] = (m->height.data[i] - lo) / (hi - lo);
     snprintf(v, sizeof v, "height_mm = %.9g + value * %.9g (value = code / 65535)", lo, hi - lo);
     sk_image_metadata_set(&hm, "shitsukan:decode", v, NULL);
     snprintf(path, sizeof path, "%s/height.png", dir);
-    sk_png_write_desc png16 = {.bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR, .metadata = &hm};
+    sk_png_write_desc png16 = {
+        .bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR, .metadata = &hm};
     r = sk_image_write_png(&scaled, path, &png16, err);
     if (r != SK_OK) {
         sk_image_free(&scaled);
@@ -248,7 +251,8 @@ static int run_maps(const cli_command *command, const cli_args *args)
     if ((status = load_desc(command, args, 1024, &desc, &w, &h))) return status;
     if ((status = get_region(command, args, w, h, region))) return status;
     if ((status = cli_get_int(command, args, "samples", 1, 1, 8, &samples))) return status;
-    if ((status = cli_get_int(command, args, "furrow-level", 1, 1, SK_SKIN_MAX_LEVELS, &furrow_level)))
+    if ((status =
+             cli_get_int(command, args, "furrow-level", 1, 1, SK_SKIN_MAX_LEVELS, &furrow_level)))
         return status;
     if ((status = cli_get_int(command, args, "id-level", 1, 1, SK_SKIN_MAX_LEVELS, &id_level)))
         return status;
@@ -261,8 +265,10 @@ static int run_maps(const cli_command *command, const cli_args *args)
     int level_count = rd_desc->level_count;
     if (furrow_level > level_count || id_level > level_count) {
         sk_skin_destroy(skin);
-        return cli_fail(CLI_EXIT_USAGE, "--furrow-level and --id-level must be at most %d (the "
-                        "skin's levels)", level_count);
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--furrow-level and --id-level must be at most %d (the "
+                        "skin's levels)",
+                        level_count);
     }
     map_images m;
     memset(&m, 0, sizeof m);
@@ -304,7 +310,8 @@ static int run_maps(const cli_command *command, const cli_args *args)
     sk_progress_bar_end(&bar);
     /* furrow.png spans half the furrow level's spacing: the whole ridge, centre to edge */
     float furrow_max = 0.5f * rd_desc->levels[furrow_level - 1].spacing_mm;
-    if (r == SK_OK) r = write_maps(skin, &m, dir, w, h, directx, edges, (int)furrow_level, furrow_max, &err);
+    if (r == SK_OK)
+        r = write_maps(skin, &m, dir, w, h, directx, edges, (int)furrow_level, furrow_max, &err);
     if (r == SK_OK && !args->common.quiet) {
         float lo, hi;
         double tw, th;

@@ -19,8 +19,14 @@ static void power_basis(const float p[4], double c[4])
     c[2] = 3.0 * (p[2] - 2.0 * p[1] + p[0]);
     c[3] = p[3] - 3.0 * p[2] + 3.0 * p[1] - p[0];
 }
-static double poly3(const double c[4], double t) { return ((c[3] * t + c[2]) * t + c[1]) * t + c[0]; }
-static double poly3_d(const double c[4], double t) { return (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1]; }
+static double poly3(const double c[4], double t)
+{
+    return ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+}
+static double poly3_d(const double c[4], double t)
+{
+    return (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
+}
 
 void sk__profile_prepare(sk__profile *p)
 {
@@ -36,8 +42,10 @@ void sk__profile_prepare(sk__profile *p)
             double lo = 0.0, hi = 1.0;
             for (int it = 0; it < 40; it++) {
                 double mid = 0.5 * (lo + hi);
-                if (poly3(xc, mid) < xq) lo = mid;
-                else hi = mid;
+                if (poly3(xc, mid) < xq)
+                    lo = mid;
+                else
+                    hi = mid;
             }
             double t = i == 0 ? 0.0 : (i == SK__PROFILE_TABLE - 1 ? 1.0 : 0.5 * (lo + hi));
             double dx = poly3_d(xc, t), dz = poly3_d(zc, t);
@@ -65,8 +73,10 @@ void sk__profile_prepare(sk__profile *p)
             double xq = 10.0 * i / 128.0, lo = 0.0, hi = 1.0;
             for (int it = 0; it < 32; it++) {
                 double mid = 0.5 * (lo + hi);
-                if (poly3(gc, mid) < xq) lo = mid;
-                else hi = mid;
+                if (poly3(gc, mid) < xq)
+                    lo = mid;
+                else
+                    hi = mid;
             }
             p->t_guess[gi][i] = (float)(0.5 * (lo + hi));
         }

@@ -42,7 +42,8 @@ static void shading_setup(sk_skin *skin)
     double lx = -sin(az) * cos(el), ly = cos(az) * cos(el), lz = sin(el);
     skin->light[0] = (float)lx, skin->light[1] = (float)ly, skin->light[2] = (float)lz;
     double hx = lx, hy = ly, hz = lz + 1.0, hl = sqrt(hx * hx + hy * hy + hz * hz);
-    skin->half[0] = (float)(hx / hl), skin->half[1] = (float)(hy / hl), skin->half[2] = (float)(hz / hl);
+    skin->half[0] = (float)(hx / hl), skin->half[1] = (float)(hy / hl),
+    skin->half[2] = (float)(hz / hl);
     for (int i = 0; i < 3; i++) skin->albedo[i] = sh->albedo[i];
     skin->sun = sh->sun_fraction;
     skin->sky = 1.0f - sh->sun_fraction;
@@ -99,8 +100,9 @@ sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
         if (estimate > 1.05 * SK_SKIN_MAX_CELLS) {
             r = sk_fail(err, SK_ERROR_LIMIT,
                         "levels[%d].spacing_mm = %g makes about %.3g cells on a %g x %g mm "
-                        "tile; at most %d are supported", k, lv->spacing_mm, estimate,
-                        skin->period[0], skin->period[1], SK_SKIN_MAX_CELLS);
+                        "tile; at most %d are supported",
+                        k, lv->spacing_mm, estimate, skin->period[0], skin->period[1],
+                        SK_SKIN_MAX_CELLS);
             goto fail;
         }
     }
@@ -119,8 +121,10 @@ sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
                         k + 1, total + count, SK_SKIN_MAX_CELLS, k);
             goto fail;
         }
-        if (k == 0) r = sk__build_level1(skin, xy, count, err);
-        else r = sk__build_children(skin, k, xy, count, err);
+        if (k == 0)
+            r = sk__build_level1(skin, xy, count, err);
+        else
+            r = sk__build_children(skin, k, xy, count, err);
         free(xy);
         if (r != SK_OK) goto fail;
         sk__finish_uses(&skin->levels[k]);

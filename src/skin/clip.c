@@ -14,8 +14,10 @@ bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag)
     bool any_out = false, any_in = false;
     for (int i = 0; i < n; i++) {
         dist[i] = nx * p->x[i] + ny * p->y[i] - d;
-        if (dist[i] > 0) any_out = true;
-        else any_in = true;
+        if (dist[i] > 0)
+            any_out = true;
+        else
+            any_in = true;
     }
     if (!any_out) return true;
     if (!any_in) {

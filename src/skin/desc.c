@@ -40,8 +40,10 @@ static void default_skin_levels(sk_skin_desc *d)
 sk_skin_desc sk_skin_desc_resolved(const sk_skin_desc *desc)
 {
     sk_skin_desc d;
-    if (desc) d = *desc;
-    else memset(&d, 0, sizeof d);
+    if (desc)
+        d = *desc;
+    else
+        memset(&d, 0, sizeof d);
     for (int i = 0; i < 2; i++)
         if (d.size_mm[i] == 0.0f) d.size_mm[i] = SK__DEFAULT_SIZE_MM;
     if (d.level_count == 0) default_skin_levels(&d);
@@ -112,10 +114,10 @@ static sk_result check_i(sk_error *err, long long v, long long lo, long long hi,
     return sk_check_range_i(err, name, v, lo, hi);
 }
 
-#define TRY(expr)                                                                            \
-    do {                                                                                     \
-        sk_result r_ = (expr);                                                               \
-        if (r_ != SK_OK) return r_;                                                          \
+#define TRY(expr)                                                                                  \
+    do {                                                                                           \
+        sk_result r_ = (expr);                                                                     \
+        if (r_ != SK_OK) return r_;                                                                \
     } while (0)
 
 /* Parameter 5: a chain of cubic Bezier segments whose x runs monotonically from 0 to 10,
@@ -135,13 +137,14 @@ static sk_result validate_profile(const sk_skin_level *lv, int k, sk_error *err)
     if (seg[0].points[0][0] != 0.0f)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "levels[%d].profile[0].points[0][0] = %g: the profile must start at "
-                       "x = 0 (the cell centre)", k, seg[0].points[0][0]);
+                       "x = 0 (the cell centre)",
+                       k, seg[0].points[0][0]);
     const sk_skin_segment *last = &seg[lv->segment_count - 1];
     if (last->points[3][0] != 10.0f)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "levels[%d].profile[%d].points[3][0] = %g: the profile must end at "
-                       "x = 10 (the cell boundary)", k, lv->segment_count - 1,
-                       last->points[3][0]);
+                       "x = 10 (the cell boundary)",
+                       k, lv->segment_count - 1, last->points[3][0]);
     for (int s = 0; s < lv->segment_count; s++) {
         for (int i = 1; i < 4; i++)
             if (seg[s].points[i][0] < seg[s].points[i - 1][0])
@@ -152,24 +155,25 @@ static sk_result validate_profile(const sk_skin_level *lv, int k, sk_error *err)
         if (!(seg[s].points[3][0] > seg[s].points[0][0]))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "levels[%d].profile[%d]: x must increase from its first to its "
-                           "last point (both are %g)", k, s, seg[s].points[0][0]);
+                           "last point (both are %g)",
+                           k, s, seg[s].points[0][0]);
         if (s > 0 && (fabsf(seg[s].points[0][0] - seg[s - 1].points[3][0]) > 1e-4f ||
                       fabsf(seg[s].points[0][1] - seg[s - 1].points[3][1]) > 1e-4f))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "levels[%d].profile[%d].points[0] = (%g, %g) must equal the end "
-                           "of profile[%d], (%g, %g)", k, s, seg[s].points[0][0],
-                           seg[s].points[0][1], s - 1, seg[s - 1].points[3][0],
-                           seg[s - 1].points[3][1]);
+                           "of profile[%d], (%g, %g)",
+                           k, s, seg[s].points[0][0], seg[s].points[0][1], s - 1,
+                           seg[s - 1].points[3][0], seg[s - 1].points[3][1]);
     }
     return SK_OK;
 }
 
 static sk_result validate_level(const sk_skin_level *lv, int k, sk_error *err)
 {
-    TRY(check_i(err, lv->layout, SK_SKIN_LAYOUT_DEFAULT, SK_SKIN_LAYOUT_RANDOM,
-                "levels[%d].layout", k));
-    TRY(check_i(err, lv->jitter, SK_SKIN_JITTER_DEFAULT, SK_SKIN_JITTER_NORMAL,
-                "levels[%d].jitter", k));
+    TRY(check_i(err, lv->layout, SK_SKIN_LAYOUT_DEFAULT, SK_SKIN_LAYOUT_RANDOM, "levels[%d].layout",
+                k));
+    TRY(check_i(err, lv->jitter, SK_SKIN_JITTER_DEFAULT, SK_SKIN_JITTER_NORMAL, "levels[%d].jitter",
+                k));
     TRY(check_f(err, lv->jitter_rate, 0, 1, "levels[%d].jitter_rate", k));
     TRY(check_f(err, lv->spacing_mm, 0, 1000, "levels[%d].spacing_mm", k));
     TRY(check_f(err, lv->perturb_rate, 0, 1, "levels[%d].perturb_rate", k));
@@ -194,8 +198,7 @@ static sk_result validate_pore(const sk_skin_pore_kind *p, const char *name, sk_
 sk_result sk_skin_desc_validate(const sk_skin_desc *desc, sk_error *err)
 {
     if (!desc) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin desc is NULL");
-    for (int i = 0; i < 2; i++)
-        TRY(check_f(err, desc->size_mm[i], 0, 1000, "size_mm[%d]", i));
+    for (int i = 0; i < 2; i++) TRY(check_f(err, desc->size_mm[i], 0, 1000, "size_mm[%d]", i));
     TRY(check_i(err, desc->level_count, 0, SK_SKIN_MAX_LEVELS, "level_count"));
     for (int k = 0; k < desc->level_count; k++) TRY(validate_level(&desc->levels[k], k, err));
     TRY(validate_pore(&desc->pores.hair, "hair", err));

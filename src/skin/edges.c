@@ -27,8 +27,8 @@ static void build_edge(sk_skin *skin, int level, const sk__edge_key *kl, const s
     sk__use *ul = &lv->uses[kl->use], *ur = &lv->uses[kr->use];
     uint32_t cl = use_owner[kl->use], cr = use_owner[kr->use];
     const sk__cell *cell_l = &lv->cells[cl];
-    uint32_t next = kl->use + 1 == cell_l->first_use + cell_l->use_count ? cell_l->first_use
-                                                                          : kl->use + 1;
+    uint32_t next =
+        kl->use + 1 == cell_l->first_use + cell_l->use_count ? cell_l->first_use : kl->use + 1;
     double ax = lv->vxy[2 * kl->use], ay = lv->vxy[2 * kl->use + 1];
     double bx = lv->vxy[2 * next], by = lv->vxy[2 * next + 1];
     /* pre-stretch geometry */
@@ -59,7 +59,8 @@ static void build_edge(sk_skin *skin, int level, const sk__edge_key *kl, const s
         uint64_t key = sk_hash(kl->k0, kl->k1, (uint64_t)level, 0x45444745ULL);
         sk__perturb_edge(skin, level, key, len, t_apex, h_apex, f);
         double raw = 0;
-        for (int k = 0; k < lv->f_count; k++) raw = raw > fabs(f[k] * across) ? raw : fabs(f[k] * across);
+        for (int k = 0; k < lv->f_count; k++)
+            raw = raw > fabs(f[k] * across) ? raw : fabs(f[k] * across);
         /* The support reaches no farther from the edge than a few times the polyline's
            excursion: the warp stays local, so a strongly stretched level does not
            shear its children far from its edges. */
@@ -124,7 +125,7 @@ sk_result sk__build_edges(sk_skin *skin, int level, sk__edge_key *keys, size_t k
         if (keys[i].k0 == keys[i + 1].k0 && keys[i].k1 == keys[i + 1].k1 && keys[i].side == 0 &&
             keys[i + 1].side == 1)
             pair_at[e++] = (uint32_t)i;
-    /* Each edge draws its own random numbers from its key: any order, same result. */
+            /* Each edge draws its own random numbers from its key: any order, same result. */
 #pragma omp parallel for schedule(static)
     for (long q = 0; q < (long)e; q++)
         build_edge(skin, level, &keys[pair_at[q]], &keys[pair_at[q] + 1], (uint32_t)q, use_owner,

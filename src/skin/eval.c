@@ -74,7 +74,8 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
         uint32_t owner = c;
         if (lv->perturbed) owner = sk__unwarp(lv, c, u, &px, &py, jac, &pre_x, &pre_y);
         out->cell[k] = owner;
-        out->furrow_mm[k] = (flags & SK_SKIN_QUERY_FURROW) ? sk__furrow_distance(lv, owner, pre_x, pre_y) : 0.0f;
+        out->furrow_mm[k] =
+            (flags & SK_SKIN_QUERY_FURROW) ? sk__furrow_distance(lv, owner, pre_x, pre_y) : 0.0f;
         float g[2];
         uint32_t sector = owner == c ? hint->sector[k] : UINT32_MAX;
         h += sk__profile_eval(lv, owner, px, py, g, &sector);
@@ -96,12 +97,12 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
 
 void sk_skin_query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_sample *out)
 {
-    for (int k = 0; k < SK_SKIN_MAX_LEVELS; k++) out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0;
+    for (int k = 0; k < SK_SKIN_MAX_LEVELS; k++)
+        out->cell[k] = SK__SKIN_NONE, out->furrow_mm[k] = 0;
     sk__query(skin, x, y, flags, out, NULL);
 }
 
-void sk_skin_eval(const sk_skin *skin, double x_mm, double y_mm, float *height_mm,
-                  sk_vec3f *normal)
+void sk_skin_eval(const sk_skin *skin, double x_mm, double y_mm, float *height_mm, sk_vec3f *normal)
 {
     sk_skin_sample s;
     sk__query(skin, x_mm, y_mm, 0, &s, NULL);

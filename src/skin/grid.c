@@ -7,8 +7,8 @@
 #include "skin/skin_internal.h"
 
 /* Separating-axis test of a convex polygon against a rectangle. */
-static bool poly_meets_rect(const sk__level *lv, const sk__cell *c, double ox, double oy,
-                            double x0, double y0, double x1, double y1)
+static bool poly_meets_rect(const sk__level *lv, const sk__cell *c, double ox, double oy, double x0,
+                            double y0, double x1, double y1)
 {
     for (uint32_t k = 0; k < c->use_count; k++) {
         const sk__use *u = &lv->uses[c->first_use + k];
@@ -30,7 +30,8 @@ static size_t cover_cell(const sk_skin *skin, uint32_t i, uint32_t *start, uint3
     double ox = skin->origin[2 * i], oy = skin->origin[2 * i + 1];
     double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
     for (uint32_t k = 0; k < c->use_count; k++) {
-        double x = ox + lv->vxy[2 * (c->first_use + k)], y = oy + lv->vxy[2 * (c->first_use + k) + 1];
+        double x = ox + lv->vxy[2 * (c->first_use + k)],
+               y = oy + lv->vxy[2 * (c->first_use + k) + 1];
         bx0 = fmin(bx0, x), bx1 = fmax(bx1, x), by0 = fmin(by0, y), by1 = fmax(by1, y);
     }
     double sw = w / g->nx, sh = h / g->ny;
@@ -80,7 +81,8 @@ sk_result sk__build_grid(sk_skin *skin, sk_error *err)
     g->start = calloc(nsq + 1, sizeof(uint32_t));
     if (!g->start) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the grid");
     size_t total = 0;
-    for (uint32_t i = 0; i < lv->cell_count; i++) total += cover_cell(skin, i, g->start, NULL, NULL, false);
+    for (uint32_t i = 0; i < lv->cell_count; i++)
+        total += cover_cell(skin, i, g->start, NULL, NULL, false);
     if (total > 0xffffffffu) return sk_fail(err, SK_ERROR_LIMIT, "level-1 grid too large");
     for (size_t s = 0; s < nsq; s++) g->start[s + 1] += g->start[s];
     g->cell = malloc(sizeof(uint32_t) * (total ? total : 1));
@@ -91,7 +93,8 @@ sk_result sk__build_grid(sk_skin *skin, sk_error *err)
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the grid");
     }
     for (size_t s = 0; s <= nsq; s++) fill[s] = g->start[s];
-    for (uint32_t i = 0; i < lv->cell_count; i++) cover_cell(skin, i, fill, g->cell, g->shift, true);
+    for (uint32_t i = 0; i < lv->cell_count; i++)
+        cover_cell(skin, i, fill, g->cell, g->shift, true);
     free(fill);
     return SK_OK;
 }

@@ -40,9 +40,8 @@ static int dist_cmp(const void *pa, const void *pb)
 }
 
 /* Clips child i (of `n` siblings starting at `first`) to the parent polygon. */
-static bool clip_child(const sk__level *lv, const sk__level *plv, uint32_t parent,
-                       const double *zs, uint32_t first, uint32_t n, uint32_t i,
-                       dist_item *order, sk__poly *poly)
+static bool clip_child(const sk__level *lv, const sk__level *plv, uint32_t parent, const double *zs,
+                       uint32_t first, uint32_t n, uint32_t i, dist_item *order, sk__poly *poly)
 {
     const sk__cell *pc = &plv->cells[parent];
     const double(*mi)[2] = (const double(*)[2])lv->minv;
@@ -120,8 +119,10 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
     free(has);
     if (np + plv->cell_count > SK_SKIN_MAX_CELLS) {
         free(pts);
-        return sk_fail(err, SK_ERROR_LIMIT, "level %d would have %zu cells; at most %d are "
-                       "supported", level + 1, np, SK_SKIN_MAX_CELLS);
+        return sk_fail(err, SK_ERROR_LIMIT,
+                       "level %d would have %zu cells; at most %d are "
+                       "supported",
+                       level + 1, np, SK_SKIN_MAX_CELLS);
     }
     qsort(pts, np, sizeof *pts, child_cmp);
 
@@ -158,8 +159,8 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
             if (!clip_child(lv, plv, p, zs, pc->first_child, pc->child_count, i, order, poly) ||
                 poly->n < 3) {
                 res = sk_fail(err, SK_ERROR_NUMERIC,
-                              "level %d: the cell of centre point %u could not be built",
-                              level + 1, ci);
+                              "level %d: the cell of centre point %u could not be built", level + 1,
+                              ci);
                 goto done;
             }
             if (use_count + (size_t)poly->n > use_cap) {
@@ -222,8 +223,8 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
         if (!keys || !left_site) {
             free(keys);
             free(left_site);
-            res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d edges",
-                          level + 1);
+            res =
+                sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d edges", level + 1);
             goto done;
         }
         for (uint32_t i = 0; i < n_cells; i++) {

@@ -63,7 +63,8 @@ sk_result sk__layout_points(const sk_skin *skin, int level, double **xy_out, uin
     double w = skin->period[0], h = skin->period[1];
     double s = lv->spacing_mm;
     /* Torus periods in pre-stretch space: columns of M^-1 diag(w, h). */
-    double p[2][2] = {{L->minv[0][0] * w, L->minv[0][1] * h}, {L->minv[1][0] * w, L->minv[1][1] * h}};
+    double p[2][2] = {{L->minv[0][0] * w, L->minv[0][1] * h},
+                      {L->minv[1][0] * w, L->minv[1][1] * h}};
     double area = fabs(p[0][0] * p[1][1] - p[0][1] * p[1][0]);
     uint64_t seed = skin->desc.seed;
     *xy_out = NULL;

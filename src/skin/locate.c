@@ -61,8 +61,7 @@ uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, f
     return best;
 }
 
-uint32_t sk__locate_child(const sk__level *lv, uint32_t first, uint32_t count, float px,
-                          float py)
+uint32_t sk__locate_child(const sk__level *lv, uint32_t first, uint32_t count, float px, float py)
 {
     float zx = lv->minvf[0][0] * px + lv->minvf[0][1] * py;
     float zy = lv->minvf[1][0] * px + lv->minvf[1][1] * py;
@@ -103,8 +102,10 @@ static bool edge_frame_at(const sk__level *lv, const sk__edge *e, float rx, floa
     if (!(t > 0.0f && t < 1.0f)) return false;
     float s = e->asx * dx + e->asy * dy;
     float H, Ht;
-    if (t < e->t_apex) H = e->h_apex * t / e->t_apex, Ht = e->h_apex / e->t_apex;
-    else H = e->h_apex * (1.0f - t) / (1.0f - e->t_apex), Ht = -e->h_apex / (1.0f - e->t_apex);
+    if (t < e->t_apex)
+        H = e->h_apex * t / e->t_apex, Ht = e->h_apex / e->t_apex;
+    else
+        H = e->h_apex * (1.0f - t) / (1.0f - e->t_apex), Ht = -e->h_apex / (1.0f - e->t_apex);
     if (!(fabsf(s) < H)) return false;
     const float *f = lv->f + e->f_first;
     float tf = t * (float)(lv->f_count - 1);
@@ -175,15 +176,20 @@ void sk__warp(const sk__level *lv, uint32_t c, uint32_t ui, double *px, double *
     double s0 = ef.s, f = ef.f, H = ef.H;
     /* Solve s0 = s - f (1 - u(s))^2 on the side of the polyline that s0 is on. */
     double lo, hi;
-    if (s0 > 0) lo = f, hi = H;
-    else if (s0 < 0) lo = -H, hi = f;
-    else lo = hi = f;
+    if (s0 > 0)
+        lo = f, hi = H;
+    else if (s0 < 0)
+        lo = -H, hi = f;
+    else
+        lo = hi = f;
     for (int it = 0; it < 60 && hi - lo > 1e-12 * (H + 1e-30); it++) {
         double s = 0.5 * (lo + hi);
         double uu = s > f ? (s - f) / (H - f) : (f - s) / (H + f);
         double val = s - f * (1.0 - uu) * (1.0 - uu);
-        if (val < s0) lo = s;
-        else hi = s;
+        if (val < s0)
+            lo = s;
+        else
+            hi = s;
     }
     double s = 0.5 * (lo + hi);
     *px += (s - s0) * e->dx;

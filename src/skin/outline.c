@@ -126,8 +126,7 @@ size_t sk_skin_cell_outline(const sk_skin *skin, int level, uint32_t cell, int s
 }
 
 size_t sk_skin_cell_edge(const sk_skin *skin, int level, uint32_t cell, uint32_t edge,
-                         int subdivide, uint32_t *neighbour, sk_vec2d *points,
-                         size_t max_points)
+                         int subdivide, uint32_t *neighbour, sk_vec2d *points, size_t max_points)
 {
     if (neighbour) *neighbour = UINT32_MAX;
     if (!skin || level < 1 || level > skin->level_count) return 0;
@@ -141,7 +140,8 @@ size_t sk_skin_cell_edge(const sk_skin *skin, int level, uint32_t cell, uint32_t
 sk_result sk_skin_cell_info_get(const sk_skin *skin, int level, uint32_t cell,
                                 sk_skin_cell_info *out, sk_error *err)
 {
-    if (!skin || !out) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin and out must not be NULL");
+    if (!skin || !out)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin and out must not be NULL");
     if (level < 1 || level > skin->level_count)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "level = %d is out of range [1, %d]", level,
                        skin->level_count);

@@ -11,8 +11,8 @@
 
 #define SK__SUPPORT_FILL 0.8 /* offsets stay within this share of the support height */
 
-void sk__support(double ax, double ay, double bx, double by, double px, double py,
-                 double *t_apex, double *h_apex)
+void sk__support(double ax, double ay, double bx, double by, double px, double py, double *t_apex,
+                 double *h_apex)
 {
     double ex = bx - ax, ey = by - ay, len2 = ex * ex + ey * ey;
     double tp = ((px - ax) * ex + (py - ay) * ey) / len2;
@@ -21,9 +21,12 @@ void sk__support(double ax, double ay, double bx, double by, double px, double p
        inside it so the support vanishes at both ends of the edge. */
     double t = tp < 0.1 ? 0.1 : (tp > 0.9 ? 0.9 : tp);
     double h;
-    if (tp >= 1.0) h = hp * t / tp;
-    else if (tp <= 0.0) h = hp * (1.0 - t) / (1.0 - tp);
-    else h = hp * fmin(t / tp, (1.0 - t) / (1.0 - tp));
+    if (tp >= 1.0)
+        h = hp * t / tp;
+    else if (tp <= 0.0)
+        h = hp * (1.0 - t) / (1.0 - tp);
+    else
+        h = hp * fmin(t / tp, (1.0 - t) / (1.0 - tp));
     *t_apex = t;
     *h_apex = h;
 }

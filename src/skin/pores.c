@@ -84,8 +84,8 @@ static sk_result junctions(const sk_skin *skin, candidate **out, size_t *count, 
     return SK_OK;
 }
 
-static void add_pore(sk__pore *list, uint32_t *n, const sk_skin *skin, const sk_skin_pore_kind *kind,
-                     uint64_t salt, uint64_t id, double x, double y)
+static void add_pore(sk__pore *list, uint32_t *n, const sk_skin *skin,
+                     const sk_skin_pore_kind *kind, uint64_t salt, uint64_t id, double x, double y)
 {
     sk_rng rng = sk_rng_make(skin->desc.seed, SK__SALT_PORE, salt, id);
     if (sk_rng_uniform(&rng) >= kind->density) return;
@@ -163,10 +163,14 @@ void sk__pores_eval(const sk_skin *skin, double x, double y, float *h, float gra
         for (int dx = -1; dx <= 1; dx++) {
             int cx = bx + dx, cy = by + dy;
             double sx = 0, sy = 0;
-            if (cx < 0) cx += g->nx, sx = -w;
-            else if (cx >= g->nx) cx -= g->nx, sx = w;
-            if (cy < 0) cy += g->ny, sy = -hh;
-            else if (cy >= g->ny) cy -= g->ny, sy = hh;
+            if (cx < 0)
+                cx += g->nx, sx = -w;
+            else if (cx >= g->nx)
+                cx -= g->nx, sx = w;
+            if (cy < 0)
+                cy += g->ny, sy = -hh;
+            else if (cy >= g->ny)
+                cy -= g->ny, sy = hh;
             int b = cy * g->nx + cx;
             for (uint32_t i = g->start[b]; i < g->start[b + 1]; i++) {
                 const sk__pore *p = &g->pores[i];

@@ -14,7 +14,8 @@ static const float level_colour[4][3] = {
 
 sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, sk_error *err)
 {
-    if (!skin || !desc) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin and desc must not be NULL");
+    if (!skin || !desc)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin and desc must not be NULL");
     sk_result r;
     if ((r = sk_check_range_i(err, "width", desc->width, 1, 65536)) != SK_OK) return r;
     if ((r = sk_check_range_i(err, "height", desc->height, 1, 65536)) != SK_OK) return r;

@@ -106,7 +106,8 @@ sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_e
 {
     sk__level *L = &skin->levels[0];
     double w = skin->period[0], h = skin->period[1];
-    double p[2][2] = {{L->minv[0][0] * w, L->minv[0][1] * h}, {L->minv[1][0] * w, L->minv[1][1] * h}};
+    double p[2][2] = {{L->minv[0][0] * w, L->minv[0][1] * h},
+                      {L->minv[1][0] * w, L->minv[1][1] * h}};
     double area = fabs(p[0][0] * p[1][1] - p[0][1] * p[1][0]);
     double len1 = hypot(p[0][0], p[1][0]), len2 = hypot(p[0][1], p[1][1]);
     double target = sqrt(area / count) * 1.4;
