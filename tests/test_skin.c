@@ -480,6 +480,28 @@ static void test_seamless(void **state)
     sk_skin_destroy(skin);
 }
 
+/* An aperiodic skin does not wrap inside its tile: the far edge is new ground. */
+static void test_aperiodic(void **state)
+{
+    (void)state;
+    sk_skin_desc d = desc_19a(3.2f);
+    d.aperiodic = true;
+    sk_skin *skin = make(&d);
+    double w, h;
+    sk_skin_tile_size(skin, &w, &h);
+    assert_float_equal(w, 3.2, 1e-6);
+    int differ = 0;
+    for (int i = 0; i < 50; i++) {
+        double y = (i + 0.5) * h / 50;
+        sk_skin_sample a, b;
+        sk_skin_query(skin, 0.05, y, 0, &a);
+        sk_skin_query(skin, w + 0.05, y, 0, &b);
+        differ += a.cell[0] != b.cell[0];
+    }
+    assert_true(differ > 40);
+    sk_skin_destroy(skin);
+}
+
 /* A region renders the same bytes as the same pixels of the whole map, and any thread
  * count gives the same bytes. */
 static void test_region_and_threads(void **state)
@@ -752,13 +774,21 @@ static void test_cli_maps(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_defaults),           cmocka_unit_test(test_cells_tile),
-        cmocka_unit_test(test_nearest_centre),     cmocka_unit_test(test_shared_edges),
-        cmocka_unit_test(test_children_in_parent), cmocka_unit_test(test_profile_ends),
-        cmocka_unit_test(test_normal_is_gradient), cmocka_unit_test(test_roundness),
-        cmocka_unit_test(test_seamless),           cmocka_unit_test(test_region_and_threads),
-        cmocka_unit_test(test_furrow_distance),    cmocka_unit_test(test_bad_parameters),
-        cmocka_unit_test(test_presets_build),      cmocka_unit_test(test_cli_help_and_errors),
+        cmocka_unit_test(test_defaults),
+        cmocka_unit_test(test_cells_tile),
+        cmocka_unit_test(test_nearest_centre),
+        cmocka_unit_test(test_shared_edges),
+        cmocka_unit_test(test_children_in_parent),
+        cmocka_unit_test(test_profile_ends),
+        cmocka_unit_test(test_normal_is_gradient),
+        cmocka_unit_test(test_roundness),
+        cmocka_unit_test(test_seamless),
+        cmocka_unit_test(test_aperiodic),
+        cmocka_unit_test(test_region_and_threads),
+        cmocka_unit_test(test_furrow_distance),
+        cmocka_unit_test(test_bad_parameters),
+        cmocka_unit_test(test_presets_build),
+        cmocka_unit_test(test_cli_help_and_errors),
         cmocka_unit_test(test_cli_maps),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

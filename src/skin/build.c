@@ -81,15 +81,15 @@ sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
     skin->tile[1] = skin->desc.size_mm[1];
     skin->period[0] = skin->tile[0];
     skin->period[1] = skin->tile[1];
-    if (skin->desc.aperiodic) {
-        /* room for two level-1 cells beyond the tile, so nothing wraps into it */
-        const sk_skin_level *l1 = &skin->desc.levels[0];
-        double reach = l1->spacing_mm * (1.0 + 2.0 * l1->jitter_rate) *
-                       fmax(l1->stretch[0], l1->stretch[1]) * 4.0;
-        skin->period[0] += reach;
-        skin->period[1] += reach;
-    }
     for (int k = 0; k < skin->level_count; k++) level_setup(skin, k);
+    if (skin->desc.aperiodic) {
+        /* room for two stretched level-1 cells beyond the tile, so nothing wraps into it */
+        const sk_skin_level *l1 = &skin->desc.levels[0];
+        const double(*m)[2] = (const double(*)[2])skin->levels[0].m;
+        double reach = 4.0 * l1->spacing_mm * (1.0 + 2.0 * l1->jitter_rate);
+        skin->period[0] += reach * hypot(m[0][0], m[0][1]);
+        skin->period[1] += reach * hypot(m[1][0], m[1][1]);
+    }
     /* Refuse absurd sizes before building anything (cells per level ~ area / cell area). */
     double estimate = 0;
     for (int k = 0; k < skin->level_count; k++) {

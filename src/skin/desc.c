@@ -82,36 +82,19 @@ sk_skin_desc sk_skin_desc_resolved(const sk_skin_desc *desc)
     return d;
 }
 
-static sk_result check_f(sk_error *err, double v, double lo, double hi, const char *fmt, ...)
+/* A key path such as "levels[1].jitter_rate", for the range checks' messages. */
+static const char *key(char buf[160], const char *fmt, ...)
 #if defined(__GNUC__)
-    __attribute__((format(printf, 5, 6)))
+    __attribute__((format(printf, 2, 3)))
 #endif
     ;
-static sk_result check_f(sk_error *err, double v, double lo, double hi, const char *fmt, ...)
+static const char *key(char buf[160], const char *fmt, ...)
 {
-    char name[160];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(name, sizeof name, fmt, ap);
+    vsnprintf(buf, 160, fmt, ap);
     va_end(ap);
-    return sk_check_range_f(err, name, v, lo, hi);
-}
-
-static sk_result check_i(sk_error *err, long long v, long long lo, long long hi, const char *fmt,
-                         ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 5, 6)))
-#endif
-    ;
-static sk_result check_i(sk_error *err, long long v, long long lo, long long hi, const char *fmt,
-                         ...)
-{
-    char name[160];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(name, sizeof name, fmt, ap);
-    va_end(ap);
-    return sk_check_range_i(err, name, v, lo, hi);
+    return buf;
 }
 
 #define TRY(expr)                                                                                  \
@@ -124,14 +107,16 @@ static sk_result check_i(sk_error *err, long long v, long long lo, long long hi,
  * so Bx(t) = x' has one solution (sec. 3.2.1 (2)). */
 static sk_result validate_profile(const sk_skin_level *lv, int k, sk_error *err)
 {
-    TRY(check_i(err, lv->segment_count, 0, SK_SKIN_MAX_SEGMENTS, "levels[%d].profile", k));
+    char name[160];
+    TRY(sk_check_range_i(err, key(name, "levels[%d].profile", k), lv->segment_count, 0,
+                         SK_SKIN_MAX_SEGMENTS));
     if (lv->segment_count == 0) return SK_OK;
     for (int s = 0; s < lv->segment_count; s++)
         for (int i = 0; i < 4; i++) {
-            TRY(check_f(err, lv->segments[s].points[i][0], 0, 10,
-                        "levels[%d].profile[%d].points[%d][0]", k, s, i));
-            TRY(check_f(err, lv->segments[s].points[i][1], -1000, 1000,
-                        "levels[%d].profile[%d].points[%d][1]", k, s, i));
+            TRY(sk_check_range_f(err, key(name, "levels[%d].profile[%d].points[%d][0]", k, s, i),
+                                 lv->segments[s].points[i][0], 0, 10));
+            TRY(sk_check_range_f(err, key(name, "levels[%d].profile[%d].points[%d][1]", k, s, i),
+                                 lv->segments[s].points[i][1], -1000, 1000));
         }
     const sk_skin_segment *seg = lv->segments;
     if (seg[0].points[0][0] != 0.0f)
@@ -170,47 +155,56 @@ static sk_result validate_profile(const sk_skin_level *lv, int k, sk_error *err)
 
 static sk_result validate_level(const sk_skin_level *lv, int k, sk_error *err)
 {
-    TRY(check_i(err, lv->layout, SK_SKIN_LAYOUT_DEFAULT, SK_SKIN_LAYOUT_RANDOM, "levels[%d].layout",
-                k));
-    TRY(check_i(err, lv->jitter, SK_SKIN_JITTER_DEFAULT, SK_SKIN_JITTER_NORMAL, "levels[%d].jitter",
-                k));
-    TRY(check_f(err, lv->jitter_rate, 0, 1, "levels[%d].jitter_rate", k));
-    TRY(check_f(err, lv->spacing_mm, 0, 1000, "levels[%d].spacing_mm", k));
-    TRY(check_f(err, lv->perturb_rate, 0, 1, "levels[%d].perturb_rate", k));
-    TRY(check_f(err, lv->perturb_decay, 0, 4, "levels[%d].perturb_decay", k));
-    TRY(check_i(err, lv->perturb_depth, 0, 10, "levels[%d].perturb_depth", k));
+    char name[160];
+    TRY(sk_check_range_i(err, key(name, "levels[%d].layout", k), lv->layout, SK_SKIN_LAYOUT_DEFAULT,
+                         SK_SKIN_LAYOUT_RANDOM));
+    TRY(sk_check_range_i(err, key(name, "levels[%d].jitter", k), lv->jitter, SK_SKIN_JITTER_DEFAULT,
+                         SK_SKIN_JITTER_NORMAL));
+    TRY(sk_check_range_f(err, key(name, "levels[%d].jitter_rate", k), lv->jitter_rate, 0, 1));
+    TRY(sk_check_range_f(err, key(name, "levels[%d].spacing_mm", k), lv->spacing_mm, 0, 1000));
+    TRY(sk_check_range_f(err, key(name, "levels[%d].perturb_rate", k), lv->perturb_rate, 0, 1));
+    TRY(sk_check_range_f(err, key(name, "levels[%d].perturb_decay", k), lv->perturb_decay, 0, 4));
+    TRY(sk_check_range_i(err, key(name, "levels[%d].perturb_depth", k), lv->perturb_depth, 0, 10));
     for (int i = 0; i < 2; i++)
-        TRY(check_f(err, lv->stretch[i], 0, 100, "levels[%d].stretch[%d]", k, i));
-    TRY(check_f(err, lv->stretch_angle, -2 * SK_PI, 2 * SK_PI, "levels[%d].stretch_angle", k));
+        TRY(sk_check_range_f(err, key(name, "levels[%d].stretch[%d]", k, i), lv->stretch[i], 0,
+                             100));
+    TRY(sk_check_range_f(err, key(name, "levels[%d].stretch_angle", k), lv->stretch_angle,
+                         -2 * SK_PI, 2 * SK_PI));
     TRY(validate_profile(lv, k, err));
-    TRY(check_f(err, lv->roundness, 0, 1, "levels[%d].roundness", k));
+    TRY(sk_check_range_f(err, key(name, "levels[%d].roundness", k), lv->roundness, 0, 1));
     return SK_OK;
 }
 
-static sk_result validate_pore(const sk_skin_pore_kind *p, const char *name, sk_error *err)
+static sk_result validate_pore(const sk_skin_pore_kind *p, const char *kind, sk_error *err)
 {
-    TRY(check_f(err, p->depth_mm, 0, 10, "pores.%s.depth_mm", name));
-    TRY(check_f(err, p->radius_mm, 0, 10, "pores.%s.radius_mm", name));
-    TRY(check_f(err, p->density, 0, 1, "pores.%s.density", name));
+    char name[160];
+    TRY(sk_check_range_f(err, key(name, "pores.%s.depth_mm", kind), p->depth_mm, 0, 10));
+    TRY(sk_check_range_f(err, key(name, "pores.%s.radius_mm", kind), p->radius_mm, 0, 10));
+    TRY(sk_check_range_f(err, key(name, "pores.%s.density", kind), p->density, 0, 1));
     return SK_OK;
 }
 
 sk_result sk_skin_desc_validate(const sk_skin_desc *desc, sk_error *err)
 {
+    char name[160];
     if (!desc) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin desc is NULL");
-    for (int i = 0; i < 2; i++) TRY(check_f(err, desc->size_mm[i], 0, 1000, "size_mm[%d]", i));
-    TRY(check_i(err, desc->level_count, 0, SK_SKIN_MAX_LEVELS, "level_count"));
+    for (int i = 0; i < 2; i++)
+        TRY(sk_check_range_f(err, key(name, "size_mm[%d]", i), desc->size_mm[i], 0, 1000));
+    TRY(sk_check_range_i(err, key(name, "level_count"), desc->level_count, 0, SK_SKIN_MAX_LEVELS));
     for (int k = 0; k < desc->level_count; k++) TRY(validate_level(&desc->levels[k], k, err));
     TRY(validate_pore(&desc->pores.hair, "hair", err));
     TRY(validate_pore(&desc->pores.sweat, "sweat", err));
     int levels = desc->level_count ? desc->level_count : 3;
-    TRY(check_i(err, desc->pores.sweat_level, 0, levels, "pores.sweat_level"));
+    TRY(sk_check_range_i(err, key(name, "pores.sweat_level"), desc->pores.sweat_level, 0, levels));
     const sk_skin_shading *sh = &desc->shading;
-    TRY(check_f(err, sh->light_azimuth, -2 * SK_PI, 2 * SK_PI, "shading.light_azimuth"));
-    TRY(check_f(err, sh->light_elevation, 0, SK_PI / 2 + 1e-6, "shading.light_elevation"));
-    for (int i = 0; i < 3; i++) TRY(check_f(err, sh->albedo[i], 0, 1, "shading.albedo[%d]", i));
-    TRY(check_f(err, sh->sun_fraction, 0, 1, "shading.sun_fraction"));
-    TRY(check_f(err, sh->specular, 0, 1, "shading.specular"));
-    TRY(check_f(err, sh->shininess, 0, 1000, "shading.shininess"));
+    TRY(sk_check_range_f(err, key(name, "shading.light_azimuth"), sh->light_azimuth, -2 * SK_PI,
+                         2 * SK_PI));
+    TRY(sk_check_range_f(err, key(name, "shading.light_elevation"), sh->light_elevation, 0,
+                         SK_PI / 2 + 1e-6));
+    for (int i = 0; i < 3; i++)
+        TRY(sk_check_range_f(err, key(name, "shading.albedo[%d]", i), sh->albedo[i], 0, 1));
+    TRY(sk_check_range_f(err, key(name, "shading.sun_fraction"), sh->sun_fraction, 0, 1));
+    TRY(sk_check_range_f(err, key(name, "shading.specular"), sh->specular, 0, 1));
+    TRY(sk_check_range_f(err, key(name, "shading.shininess"), sh->shininess, 0, 1000));
     return SK_OK;
 }
