@@ -39,6 +39,32 @@ static int dist_cmp(const void *pa, const void *pb)
     return a->j < b->j ? -1 : (a->j > b->j);
 }
 
+/* A clipped child polygon kept between the parallel clipping and the layout. */
+typedef struct child_poly {
+    int n;
+    double *x, *y;
+    int64_t *tag;
+} child_poly;
+
+static bool child_poly_keep(child_poly *cp, const sk__poly *p)
+{
+    cp->n = p->n;
+    cp->x = malloc(sizeof(double) * (size_t)p->n);
+    cp->y = malloc(sizeof(double) * (size_t)p->n);
+    cp->tag = malloc(sizeof(int64_t) * (size_t)p->n);
+    if (!cp->x || !cp->y || !cp->tag) return false;
+    memcpy(cp->x, p->x, sizeof(double) * (size_t)p->n);
+    memcpy(cp->y, p->y, sizeof(double) * (size_t)p->n);
+    memcpy(cp->tag, p->tag, sizeof(int64_t) * (size_t)p->n);
+    return true;
+}
+
+static void child_polys_free(child_poly *polys, uint32_t n)
+{
+    for (uint32_t i = 0; i < n; i++) free(polys[i].x), free(polys[i].y), free(polys[i].tag);
+    free(polys);
+}
+
 /* Clips child i (of `n` siblings starting at `first`) to the parent polygon. */
 static bool clip_child(const sk__level *lv, const sk__level *plv, uint32_t parent, const double *zs,
                        uint32_t first, uint32_t n, uint32_t i, dist_item *order, sk__poly *poly)
@@ -152,68 +178,98 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
         if (pc->child_count == 0) pc->first_child = i;
         pc->child_count++;
     }
-    for (uint32_t p = 0; p < plv->cell_count; p++) {
-        const sk__cell *pc = &plv->cells[p];
-        for (uint32_t i = 0; i < pc->child_count; i++) {
-            uint32_t ci = pc->first_child + i;
-            if (!clip_child(lv, plv, p, zs, pc->first_child, pc->child_count, i, order, poly) ||
-                poly->n < 3) {
-                res = sk_fail(err, SK_ERROR_NUMERIC,
-                              "level %d: the cell of centre point %u could not be built", level + 1,
-                              ci);
-                goto done;
-            }
-            if (use_count + (size_t)poly->n > use_cap) {
-                use_cap = (use_count + (size_t)poly->n) * 2;
-                sk__use *nu = realloc(lv->uses, sizeof(sk__use) * use_cap);
-                double *nv = realloc(lv->vxy, sizeof(double) * 2 * use_cap);
-                int64_t *nt = realloc(tags, sizeof(int64_t) * use_cap);
-                if (nu) lv->uses = nu;
-                if (nv) lv->vxy = nv;
-                if (nt) tags = nt;
-                if (!nu || !nv || !nt) {
-                    res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d",
-                                  level + 1);
-                    goto done;
-                }
-            }
-            sk__cell *c = &lv->cells[ci];
-            double zx = zs[2 * ci], zy = zs[2 * ci + 1];
-            for (int k = 0; k < poly->n; k++) {
-                double lx = poly->x[k] + zx, ly = poly->y[k] + zy;
-                poly->x[k] = m[0][0] * lx + m[0][1] * ly;
-                poly->y[k] = m[1][0] * lx + m[1][1] * ly;
-            }
-            double cx, cy;
-            sk__poly_centroid(poly, &cx, &cy);
-            c->cx = (float)cx, c->cy = (float)cy;
-            c->first_use = (uint32_t)use_count;
-            c->use_count = (uint32_t)poly->n;
-            for (int k = 0; k < poly->n; k++) {
-                sk__use *u = &lv->uses[use_count];
-                memset(u, 0, sizeof *u);
-                int k1 = (k + 1) % poly->n;
-                u->vx = (float)poly->x[k], u->vy = (float)poly->y[k];
-                lv->vxy[2 * use_count] = poly->x[k];
-                lv->vxy[2 * use_count + 1] = poly->y[k];
-                u->edge = SK__SKIN_NONE;
-                u->neighbour = SK__SKIN_NONE;
-                if (poly->tag[k] < 0) {
-                    /* a piece of the parent's boundary: the parent's own line */
-                    const sk__use *pu = &plv->uses[(uint32_t)(-poly->tag[k] - 2)];
-                    u->nx = pu->nx, u->ny = pu->ny, u->d = pu->d;
-                } else {
-                    double ex = poly->x[k1] - poly->x[k], ey = poly->y[k1] - poly->y[k];
-                    double len = hypot(ex, ey);
-                    u->nx = (float)(ey / len), u->ny = (float)(-ex / len);
-                    u->d = (float)((ey * poly->x[k] - ex * poly->y[k]) / len);
-                    u->neighbour = (uint32_t)poly->tag[k];
-                }
-                tags[use_count] = poly->tag[k];
-                use_count++;
+    /* Clip every child to its parent in parallel (each child is independent), then lay
+       the polygons out in order. */
+    uint32_t max_family = 0;
+    for (uint32_t p = 0; p < plv->cell_count; p++)
+        if (plv->cells[p].child_count > max_family) max_family = plv->cells[p].child_count;
+    child_poly *polys = calloc(n_cells ? n_cells : 1, sizeof(child_poly));
+    if (!polys) {
+        res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
+        goto done;
+    }
+    int failed = 0;
+#pragma omp parallel
+    {
+        dist_item *ord = malloc(sizeof(dist_item) * (max_family ? max_family : 1));
+        sk__poly *pl = malloc(sizeof(sk__poly));
+#pragma omp for schedule(dynamic, 16)
+        for (long q = 0; q < (long)n_cells; q++) {
+            uint32_t ci = (uint32_t)q, p = lv->cells[ci].parent;
+            const sk__cell *pc = &plv->cells[p];
+            if (!ord || !pl ||
+                !clip_child(lv, plv, p, zs, pc->first_child, pc->child_count, ci - pc->first_child,
+                            ord, pl) ||
+                pl->n < 3 || !child_poly_keep(&polys[ci], pl)) {
+#pragma omp atomic write
+                failed = 1;
             }
         }
+        free(ord);
+        free(pl);
     }
+    if (failed) {
+        res = sk_fail(err, SK_ERROR_NUMERIC, "level %d: a cell could not be built", level + 1);
+        child_polys_free(polys, n_cells);
+        goto done;
+    }
+    size_t total_uses = 0;
+    for (uint32_t ci = 0; ci < n_cells; ci++) total_uses += (size_t)polys[ci].n;
+    if (total_uses > use_cap) {
+        use_cap = total_uses;
+        sk__use *nu = realloc(lv->uses, sizeof(sk__use) * use_cap);
+        double *nv = realloc(lv->vxy, sizeof(double) * 2 * use_cap);
+        int64_t *nt = realloc(tags, sizeof(int64_t) * use_cap);
+        if (nu) lv->uses = nu;
+        if (nv) lv->vxy = nv;
+        if (nt) tags = nt;
+        if (!nu || !nv || !nt) {
+            child_polys_free(polys, n_cells);
+            res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
+            goto done;
+        }
+    }
+    for (uint32_t ci = 0; ci < n_cells; ci++) {
+        const child_poly *cp = &polys[ci];
+        sk__cell *c = &lv->cells[ci];
+        double zx = zs[2 * ci], zy = zs[2 * ci + 1];
+        for (int k = 0; k < cp->n; k++) {
+            double lx = cp->x[k] + zx, ly = cp->y[k] + zy;
+            poly->x[k] = m[0][0] * lx + m[0][1] * ly;
+            poly->y[k] = m[1][0] * lx + m[1][1] * ly;
+            poly->tag[k] = cp->tag[k];
+        }
+        poly->n = cp->n;
+        double cx, cy;
+        sk__poly_centroid(poly, &cx, &cy);
+        c->cx = (float)cx, c->cy = (float)cy;
+        c->first_use = (uint32_t)use_count;
+        c->use_count = (uint32_t)poly->n;
+        for (int k = 0; k < poly->n; k++) {
+            sk__use *u = &lv->uses[use_count];
+            memset(u, 0, sizeof *u);
+            int k1 = (k + 1) % poly->n;
+            u->vx = (float)poly->x[k], u->vy = (float)poly->y[k];
+            lv->vxy[2 * use_count] = poly->x[k];
+            lv->vxy[2 * use_count + 1] = poly->y[k];
+            u->edge = SK__SKIN_NONE;
+            u->neighbour = SK__SKIN_NONE;
+            if (poly->tag[k] < 0) {
+                /* a piece of the parent's boundary: the parent's own line */
+                const sk__use *pu = &plv->uses[(uint32_t)(-poly->tag[k] - 2)];
+                u->nx = pu->nx, u->ny = pu->ny, u->d = pu->d;
+            } else {
+                double ex = poly->x[k1] - poly->x[k], ey = poly->y[k1] - poly->y[k];
+                double len = hypot(ex, ey);
+                u->nx = (float)(ey / len), u->ny = (float)(-ex / len);
+                u->d = (float)((ey * poly->x[k] - ex * poly->y[k]) / len);
+                u->neighbour = (uint32_t)poly->tag[k];
+            }
+            tags[use_count] = poly->tag[k];
+            use_count++;
+        }
+    }
+    child_polys_free(polys, n_cells);
     lv->use_count = (uint32_t)use_count;
 
     {

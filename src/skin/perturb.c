@@ -4,7 +4,8 @@
  * The polyline is kept as offsets f(t) across the straight edge at t = k / 2^depth, so
  * every point keeps its parameter along the edge. The offsets stay inside a support
  * triangle over the edge on each side (within the two cells' fan triangles), which keeps
- * perturbed edges from ever crossing one another. Randomness: hash of (edge key, n, k). */
+ * perturbed edges from ever crossing one another. Randomness: a stream keyed by (seed,
+ * level, the edge's two cells), read in a fixed order. */
 #include <math.h>
 
 #include "skin/skin_internal.h"
@@ -39,15 +40,26 @@ void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double 
     int depth = lv->depth, count = 1 << depth;
     double fd[(1 << 10) + 1];
     fd[0] = 0.0, fd[count] = 0.0;
-    uint64_t key = sk_hash(skin->desc.seed, edge_key, 0x50455254ULL, (uint64_t)level);
+    /* One stream per edge, normals drawn in Box-Muller pairs in a fixed order. */
+    sk_rng rng = sk_rng_make(skin->desc.seed, edge_key, 0x50455254ULL, (uint64_t)level);
+    double spare = 0.0;
+    bool have_spare = false;
     for (int n = 1; n <= depth; n++) {
         int step = count >> n;
-        double amp = p->perturb_rate * pow(2.0, -n * (double)p->perturb_decay);
+        double amp = p->perturb_rate * exp2(-n * (double)p->perturb_decay);
         for (int k = step; k < count; k += 2 * step) {
+            double rnd;
+            if (have_spare) {
+                rnd = spare, have_spare = false;
+            } else {
+                double u1 = 1.0 - sk_rng_uniform(&rng), u2 = sk_rng_uniform(&rng);
+                double r = sqrt(-2.0 * log(u1)), a = 2.0 * SK_PI * u2;
+                rnd = r * cos(a), spare = r * sin(a), have_spare = true;
+            }
             double fl = fd[k - step], fr = fd[k + step];
             double dt = 2.0 * step / (double)count * length;
             double seg = sqrt(dt * dt + (fr - fl) * (fr - fl));
-            double v = amp * sk_rand_normal(key, (uint64_t)n, (uint64_t)k, 0) * seg;
+            double v = amp * rnd * seg;
             double t = (double)k / count;
             double hs = h_apex * fmin(t / t_apex, (1.0 - t) / (1.0 - t_apex)) * SK__SUPPORT_FILL;
             double val = 0.5 * (fl + fr) + v;
