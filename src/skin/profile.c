@@ -73,10 +73,12 @@ float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, floa
         }
         float ss = s1 + s2;
         if (ss > 0.0f) {
-            float iss = 1.0f / ss, t = s1 * iss;
+            /* one division for both 1 / ss and 1 / r */
+            float r = sqrtf(r2), both = 1.0f / (ss * r);
+            float iss = r * both, ir = ss * both, t = s1 * iss;
             float h1 = u[i].hc, h2 = u[i1].hc;
             float R = h1 + t * (h2 - h1);
-            float ir = 1.0f / sqrtf(r2), inv = 0.1f * ir;
+            float inv = 0.1f * ir;
             float kappa = R * xq * inv; /* R / D(phi) */
             if (kappa < 1.0f) {
                 /* grad t = (s2 grad s1 - s1 grad s2) / ss^2 */
