@@ -270,6 +270,16 @@ static int run_maps(const cli_command *command, const cli_args *args)
                         "skin's levels)",
                         level_count);
     }
+    /* All maps are held in memory until written: refuse sizes beyond 8 GiB (split the map
+       with --region instead). */
+    double bytes = (double)region[2] * region[3] * sizeof(float) * (edges ? 14 : 11);
+    if (bytes > 8.0 * (1 << 30)) {
+        sk_skin_destroy(skin);
+        return cli_fail(CLI_EXIT_USAGE,
+                        "a %d x %d region needs %.1f GiB for its maps; at most 8 GiB (render "
+                        "parts with --region)",
+                        region[2], region[3], bytes / (1 << 30));
+    }
     map_images m;
     memset(&m, 0, sizeof m);
     uint32_t *ids = malloc(sizeof(uint32_t) * (size_t)region[2] * SKIN_BAND_ROWS);
