@@ -122,7 +122,8 @@ static float last_segment(const sk__profile *p, float g, float xq, float *dz_dx,
     return ((zc[3] * t + zc[2]) * t + zc[1]) * t + zc[0];
 }
 
-float sk__profile_z(const sk__profile *p, float x, float *dz_dx)
+/* The unscaled profile z(x) and its slope (cubic Hermite on the segment's table). */
+static float profile_z(const sk__profile *p, float x, float *dz_dx)
 {
     int last = p->segment_count - 1, j = 0;
     while (j < last && x > p->x[j][3]) j++;
@@ -150,7 +151,7 @@ float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, fl
     float ls = p->last_start;
     if (g != 1.0f && xq > g * ls) return last_segment(p, g, xq, dz_dx, dz_dg);
     float ig = 1.0f / g, slope;
-    float z = sk__profile_z(p, xq * ig, &slope);
+    float z = profile_z(p, xq * ig, &slope);
     *dz_dx = slope * ig;
     *dz_dg = -slope * xq * ig * ig;
     return z;

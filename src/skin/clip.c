@@ -65,16 +65,6 @@ bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag)
     return true;
 }
 
-double sk__poly_area(const sk__poly *p)
-{
-    double a = 0;
-    for (int i = 0; i < p->n; i++) {
-        int j = (i + 1) % p->n;
-        a += p->x[i] * p->y[j] - p->x[j] * p->y[i];
-    }
-    return 0.5 * a;
-}
-
 void sk__poly_centroid(const sk__poly *p, double *cx, double *cy)
 {
     /* Relative to the first vertex for accuracy far from the origin. */

@@ -155,13 +155,12 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
     uint32_t n_cells = (uint32_t)np;
     lv->cells = calloc(n_cells ? n_cells : 1, sizeof(sk__cell));
     double *zs = malloc(sizeof(double) * 2 * (n_cells ? n_cells : 1));
-    dist_item *order = malloc(sizeof(dist_item) * (n_cells ? n_cells : 1));
     sk__poly *poly = malloc(sizeof(sk__poly));
     size_t use_cap = (size_t)n_cells * 8 + 16, use_count = 0;
     lv->uses = malloc(sizeof(sk__use) * use_cap);
     lv->vxy = malloc(sizeof(double) * 2 * use_cap);
     int64_t *tags = malloc(sizeof(int64_t) * use_cap);
-    if (!lv->cells || !zs || !order || !poly || !lv->uses || !lv->vxy || !tags) {
+    if (!lv->cells || !zs || !poly || !lv->uses || !lv->vxy || !tags) {
         res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
         goto done;
     }
@@ -307,7 +306,6 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
 done:
     free(pts);
     free(zs);
-    free(order);
     free(poly);
     free(tags);
     return res;

@@ -175,7 +175,6 @@ typedef struct sk__poly {
 /* Keeps the part with nx * x + ny * y <= d; new edge tagged `tag`. Returns false when
  * the polygon would overflow SK__POLY_MAX. */
 bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag);
-double sk__poly_area(const sk__poly *p);
 void sk__poly_centroid(const sk__poly *p, double *cx, double *cy);
 
 /* Level 1: periodic Voronoi cells (voronoi.c). */
@@ -261,8 +260,6 @@ float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, floa
                        uint32_t *hint);
 /* Bezier chain helpers (bezier.c). */
 float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg);
-/* The unscaled profile z(x) and its slope. */
-float sk__profile_z(const sk__profile *p, float x, float *dz_dx);
 /* Cells found by the previous query of a row of pixels: tried first, and kept only where
  * the point is inside them by a margin, so results never depend on the hint. */
 typedef struct sk__hint {
