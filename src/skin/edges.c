@@ -78,6 +78,7 @@ static void build_edge(sk_skin *skin, int level, const sk__edge_key *kl, const s
     E->asx = (float)nwx, E->asy = (float)nwy;
     E->dx = (float)nwx, E->dy = (float)nwy;
     E->t_apex = (float)ty_apex, E->h_apex = (float)hy_apex;
+    E->rise = (float)(hy_apex / ty_apex), E->fall = (float)(hy_apex / (1.0 - ty_apex));
     E->bulge = (float)fmax;
     E->shx = ur->shx, E->shy = ur->shy;
     E->left = cl, E->right = cr;

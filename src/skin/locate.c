@@ -103,9 +103,9 @@ static bool edge_frame_at(const sk__level *lv, const sk__edge *e, float rx, floa
     float s = e->asx * dx + e->asy * dy;
     float H, Ht;
     if (t < e->t_apex)
-        H = e->h_apex * t / e->t_apex, Ht = e->h_apex / e->t_apex;
+        H = e->rise * t, Ht = e->rise;
     else
-        H = e->h_apex * (1.0f - t) / (1.0f - e->t_apex), Ht = -e->h_apex / (1.0f - e->t_apex);
+        H = e->fall * (1.0f - t), Ht = -e->fall;
     if (!(fabsf(s) < H)) return false;
     const float *f = lv->f + e->f_first;
     float tf = t * (float)(lv->f_count - 1);
@@ -132,18 +132,18 @@ uint32_t sk__unwarp(const sk__level *lv, uint32_t c, uint32_t ui, float *px, flo
     bool left = ef.s > ef.f;
     uint32_t owner = left ? e->left : e->right;
     float f = ef.f, s = ef.s, H = ef.H;
-    float den = left ? H - f : H + f;
-    float uu = left ? (s - f) / den : (f - s) / den;
+    float k1 = 1.0f / (left ? H - f : H + f);
+    float uu = left ? (s - f) * k1 : (f - s) * k1;
     float om = 1.0f - uu, w = om * om;
     float s0 = s - f * w;
     /* gradient of u (y space) */
     float gux, guy;
     if (left) {
-        float k1 = 1.0f / den, k2 = (s - f) * (ef.Ht - ef.ft) / (den * den);
+        float k2 = uu * (ef.Ht - ef.ft) * k1;
         gux = (e->asx - ef.ft * e->atx) * k1 - k2 * e->atx;
         guy = (e->asy - ef.ft * e->aty) * k1 - k2 * e->aty;
     } else {
-        float k1 = 1.0f / den, k2 = (f - s) * (ef.Ht + ef.ft) / (den * den);
+        float k2 = uu * (ef.Ht + ef.ft) * k1;
         gux = (ef.ft * e->atx - e->asx) * k1 - k2 * e->atx;
         guy = (ef.ft * e->aty - e->asy) * k1 - k2 * e->aty;
     }

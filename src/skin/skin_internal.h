@@ -53,6 +53,7 @@ typedef struct sk__edge {
     float asx, asy;      /* gradient of s: the unit normal towards the left site */
     float dx, dy;        /* displacement per unit of s (the same unit normal) */
     float t_apex, h_apex;
+    float rise, fall;    /* slopes of H: h_apex / t_apex and h_apex / (1 - t_apex) */
     float bulge;         /* max |f| times |d|: how far the polyline strays (y units) */
     float shx, shy;      /* right frame = left frame - shift */
     uint32_t left, right;
