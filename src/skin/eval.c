@@ -51,8 +51,12 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
         hint->cell[0] = c, hint->shift[0] = shift[0], hint->shift[1] = shift[1];
         hint->fan[0] = u - l1->cells[c].first_use;
     }
+    /* First the cells of every level (each level's point comes from the level above),
+       then the profiles, which are independent of one another: their long arithmetic
+       chains can overlap in the processor. */
     float jac[2][2] = {{1, 0}, {0, 1}};
-    float h = 0, gx = 0, gy = 0;
+    float lx[SK_SKIN_MAX_LEVELS], ly[SK_SKIN_MAX_LEVELS], lj[SK_SKIN_MAX_LEVELS][4];
+    uint32_t same[SK_SKIN_MAX_LEVELS];
     for (int k = 0; k < L; k++) {
         const sk__level *lv = &skin->levels[k];
         if (k > 0) {
@@ -76,14 +80,20 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
         out->cell[k] = owner;
         out->furrow_mm[k] =
             (flags & SK_SKIN_QUERY_FURROW) ? sk__furrow_distance(lv, owner, pre_x, pre_y) : 0.0f;
-        float g[2];
-        uint32_t sector = owner == c ? hint->sector[k] : UINT32_MAX;
-        h += sk__profile_eval(lv, owner, px, py, g, &sector);
-        if (owner == c) hint->sector[k] = sector;
-        /* gradient in the world = jac^T g */
-        gx += jac[0][0] * g[0] + jac[1][0] * g[1];
-        gy += jac[0][1] * g[0] + jac[1][1] * g[1];
+        same[k] = owner == c;
+        lx[k] = px, ly[k] = py;
+        lj[k][0] = jac[0][0], lj[k][1] = jac[0][1], lj[k][2] = jac[1][0], lj[k][3] = jac[1][1];
         c = owner;
+    }
+    float h = 0, gx = 0, gy = 0;
+    for (int k = 0; k < L; k++) {
+        float g[2];
+        uint32_t sector = same[k] ? hint->sector[k] : UINT32_MAX;
+        h += sk__profile_eval(&skin->levels[k], out->cell[k], lx[k], ly[k], g, &sector);
+        if (same[k]) hint->sector[k] = sector;
+        /* gradient in the world = jac^T g */
+        gx += lj[k][0] * g[0] + lj[k][2] * g[1];
+        gy += lj[k][1] * g[0] + lj[k][3] * g[1];
     }
     if (skin->pores.count) {
         float pg[2] = {0, 0}, ph = 0;
