@@ -12,7 +12,9 @@
 
 #include "skin/skin_internal.h"
 
-float sk__gauge_site(const sk__level *lv, uint32_t c, float px, float py, uint32_t *use)
+/* Gauge of p in cell c seen from its site (<= 1 inside the straight cell) and the use that
+ * attains it (the fan triangle). */
+static float gauge_site(const sk__level *lv, uint32_t c, float px, float py, uint32_t *use)
 {
     const sk__cell *cell = &lv->cells[c];
     const sk__use *u = lv->uses + cell->first_use;
@@ -30,7 +32,7 @@ float sk__gauge_site(const sk__level *lv, uint32_t c, float px, float py, uint32
 uint32_t sk__fan_use(const sk__level *lv, uint32_t c, float px, float py)
 {
     uint32_t u;
-    sk__gauge_site(lv, c, px, py, &u);
+    gauge_site(lv, c, px, py, &u);
     return u;
 }
 
@@ -50,7 +52,7 @@ uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, f
     for (uint32_t e = g->start[sq]; e < g->start[sq + 1]; e++) {
         uint32_t c = g->cell[e], u;
         float lx = (float)(x - g->shift[2 * e]), ly = (float)(y - g->shift[2 * e + 1]);
-        float gauge = sk__gauge_site(lv, c, lx, ly, &u);
+        float gauge = gauge_site(lv, c, lx, ly, &u);
         if (gauge < best_g) best_g = gauge, best = c, best_use = u, best_e = e;
         if (gauge <= 1.0f) break;
     }
@@ -164,9 +166,10 @@ uint32_t sk__unwarp(const sk__level *lv, uint32_t c, uint32_t ui, float *px, flo
     return owner;
 }
 
-void sk__warp(const sk__level *lv, uint32_t c, uint32_t ui, double *px, double *py)
+/* The inverse of the unwarp: moves a point of the straight cell (at use ui's fan) onto the
+ * perturbed geometry (outlines and pore positions; not a per-pixel path). */
+static void warp(const sk__level *lv, uint32_t ui, double *px, double *py)
 {
-    (void)c;
     const sk__use *u = &lv->uses[ui];
     if (!lv->perturbed || u->edge == SK__SKIN_NONE) return;
     const sk__edge *e = &lv->edges[u->edge];
@@ -202,7 +205,7 @@ void sk__to_world(const sk_skin *skin, int k, uint32_t c, double px, double py, 
     for (int j = k; j >= 0; j--) {
         const sk__level *lv = &skin->levels[j];
         uint32_t u = sk__fan_use(lv, c, (float)px, (float)py);
-        sk__warp(lv, c, u, &px, &py);
+        warp(lv, u, &px, &py);
         if (j > 0) c = lv->cells[c].parent;
     }
     *wx = px + skin->origin[2 * c];

@@ -224,12 +224,6 @@ uint32_t sk__fan_use(const sk__level *lv, uint32_t c, float px, float py);
  * jac by the unwarp's Jacobian. */
 uint32_t sk__unwarp(const sk__level *lv, uint32_t c, uint32_t u, float *px, float *py,
                     float jac[2][2], float *pre_x, float *pre_y);
-/* The inverse: moves a point of the straight cell c (at use u's fan) onto the perturbed
- * geometry (outlines and pore positions; not a per-pixel path). */
-void sk__warp(const sk__level *lv, uint32_t c, uint32_t u, double *px, double *py);
-/* Gauge of p in cell c seen from its site (<= 1 inside the straight cell) and the use
- * that attains it (the fan triangle). */
-float sk__gauge_site(const sk__level *lv, uint32_t c, float px, float py, uint32_t *use);
 /* Relative margin of the sector tests (far above float rounding). */
 #define SK__SECTOR_MARGIN 1e-4f
 
