@@ -28,6 +28,20 @@ static double poly3_d(const double c[4], double t)
     return (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
 }
 
+/* t in [0, 1] with Bx(t) = xq for a monotone Bx (bisection, for the tables). */
+static double solve_t(const double xc[4], double xq, int iterations)
+{
+    double lo = 0.0, hi = 1.0;
+    for (int it = 0; it < iterations; it++) {
+        double mid = 0.5 * (lo + hi);
+        if (poly3(xc, mid) < xq)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
 void sk__profile_prepare(sk__profile *p)
 {
     for (int s = 0; s < p->segment_count; s++) {
@@ -39,15 +53,7 @@ void sk__profile_prepare(sk__profile *p)
         p->seg_inv_w[s] = (float)((SK__PROFILE_TABLE - 1) / (x3 - x0));
         for (int i = 0; i < SK__PROFILE_TABLE; i++) {
             double xq = x0 + (x3 - x0) * i / (SK__PROFILE_TABLE - 1);
-            double lo = 0.0, hi = 1.0;
-            for (int it = 0; it < 40; it++) {
-                double mid = 0.5 * (lo + hi);
-                if (poly3(xc, mid) < xq)
-                    lo = mid;
-                else
-                    hi = mid;
-            }
-            double t = i == 0 ? 0.0 : (i == SK__PROFILE_TABLE - 1 ? 1.0 : 0.5 * (lo + hi));
+            double t = i == 0 ? 0.0 : (i == SK__PROFILE_TABLE - 1 ? 1.0 : solve_t(xc, xq, 40));
             double dx = poly3_d(xc, t), dz = poly3_d(zc, t);
             if (dx < 1e-9) {
                 /* vertical tangent of x (repeated control x): chord slope */
@@ -69,17 +75,7 @@ void sk__profile_prepare(sk__profile *p)
     for (int gi = 0; gi < 9; gi++) {
         double g = p->g_min + (1.0 - p->g_min) * gi / 8.0;
         double gc[4] = {g * xc[0], g * xc[1], g * xc[2], g * xc[3] + (1.0 - g) * 10.0};
-        for (int i = 0; i < 129; i++) {
-            double xq = 10.0 * i / 128.0, lo = 0.0, hi = 1.0;
-            for (int it = 0; it < 32; it++) {
-                double mid = 0.5 * (lo + hi);
-                if (poly3(gc, mid) < xq)
-                    lo = mid;
-                else
-                    hi = mid;
-            }
-            p->t_guess[gi][i] = (float)(0.5 * (lo + hi));
-        }
+        for (int i = 0; i < 129; i++) p->t_guess[gi][i] = (float)solve_t(gc, 10.0 * i / 128.0, 32);
     }
     p->g_step_inv = p->g_min < 1.0f ? 8.0f / (1.0f - p->g_min) : 0.0f;
 }
