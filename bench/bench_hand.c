@@ -1,7 +1,7 @@
 /* Benchmarks of the hand posture model (thesis 3.2): the equilibrium solve (3.17) with a
  * cached Cholesky factorisation, a full pose update (solve + forward kinematics of every
  * joint), and the iterative solve with lookup-table potentials (3.2.3). Medians over
- * many poses. Targets: 5 us, 20 us, 200 us. */
+ * many poses. Targets: 5 us, 20 us, 200 us. Also the stick-figure picture's drawing time. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -113,6 +113,24 @@ int main(void)
            "%d/%d converged to 1e-6, mean %.1f Newton steps, worst residual %.2g\n",
            median_us(t_lut, POSES), converged, POSES, (double)iterations / POSES, worst_residual);
     printf("hand: lookup table build from %d samples: %.2f ms per pair\n", N, build_ms);
+
+    /* stick figures: the default two-view 800 x 480 picture from a layout fitted once */
+    enum { DRAWS = 200 };
+    static double t_draw[DRAWS];
+    sk_hand_relaxed(&skel, q);
+    sk_hand_draw_layout layout;
+    if (sk_hand_draw_layout_fit(&skel, q, 1, NULL, &layout, &err) != SK_OK) fail(&err);
+    for (int p = 0; p < DRAWS; p++) {
+        make_input(&in, p);
+        if (sk_hand_solve(solver, &in, q, NULL, &err) != SK_OK) fail(&err);
+        sk_image img;
+        double t0 = sk_time_seconds();
+        if (sk_hand_draw(&skel, q, NULL, &layout, &img, &err) != SK_OK) fail(&err);
+        t_draw[p] = sk_time_seconds() - t0;
+        checksum += img.data[(size_t)img.width * 3 * (img.height / 2)];
+        sk_image_free(&img);
+    }
+    printf("hand: stick figure, 2 views, 800 x 480 (sk_hand_draw): median %.2f ms\n", median_us(t_draw, DRAWS) / 1e3);
     printf("hand: (checksum %.6f)\n", checksum);
     sk_hand_solver_destroy(lsolver);
     sk_hand_solver_destroy(solver);

@@ -99,6 +99,84 @@ static int write_positions(const sk_hand_skeleton *skel, const double *dofs, int
     return 0;
 }
 
+/* Fails when one of `options` (NULL-terminated) is given without `needed`. */
+static int require_option(const cli_command *cmd, const cli_args *args, const char *needed,
+                          const char *const *options)
+{
+    if (cli_has(cmd, args, needed)) return 0;
+    for (int i = 0; options[i]; i++)
+        if (cli_has(cmd, args, options[i])) return cli_fail(CLI_EXIT_USAGE, "--%s needs --%s", options[i], needed);
+    return 0;
+}
+
+/* --views, --png-size and --labels into a picture desc. */
+static int parse_draw_options(const cli_command *cmd, const cli_args *args, sk_hand_draw_desc *d)
+{
+    memset(d, 0, sizeof *d);
+    const char *views = cli_get(cmd, args, "views");
+    if (views) {
+        static const char *const names[] = {"dorsal", "palmar", "radial", "ulnar"};
+        static const sk_hand_view values[] = {SK_HAND_VIEW_DORSAL, SK_HAND_VIEW_PALMAR, SK_HAND_VIEW_RADIAL,
+                                              SK_HAND_VIEW_ULNAR};
+        const char *p = views;
+        while (*p) {
+            size_t n = strcspn(p, ",");
+            int found = -1;
+            for (int i = 0; i < 4; i++)
+                if (strlen(names[i]) == n && strncmp(p, names[i], n) == 0) found = i;
+            if (found < 0 || d->view_count == SK_HAND_DRAW_MAX_VIEWS)
+                return cli_fail(CLI_EXIT_USAGE,
+                                "--views '%s': expected 1 to 4 of dorsal, palmar, radial, ulnar, comma-separated",
+                                views);
+            d->views[d->view_count++] = values[found];
+            p += n;
+            if (*p == ',') p++;
+        }
+        if (d->view_count == 0) return cli_fail(CLI_EXIT_USAGE, "--views is empty");
+    }
+    int rc = 0;
+    if (cli_has(cmd, args, "png-size")) {
+        rc = cli_get_size(cmd, args, "png-size", 0, 0, 8192, &d->width, &d->height);
+        if (!rc && (d->width < 64 || d->height < 64))
+            rc = cli_fail(CLI_EXIT_USAGE, "--png-size %dx%d: each side must be at least 64 pixels", d->width,
+                          d->height);
+    }
+    d->label_points = cli_has(cmd, args, "labels");
+    /* the stick figure alone, for figure sheets that say the view and the frame */
+    d->hide_panel_titles = d->hide_cues = cli_has(cmd, args, "bare");
+    return rc;
+}
+
+/* The inputs that drive a pose, with the angles they produced: "L.MCP.flex = 60.0 deg
+ * (pinned), ..." (the caption of the pictures). */
+static void describe_inputs(const sk_hand_input *in, const double *q, char *buf, size_t size)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < SK_HAND_DOF_COUNT && used < size; i++) {
+        if (!in->pinned[i] && in->torque[i] == 0.0) continue;
+        const sk_hand_dof_info *info = sk_hand_dof(i);
+        double v = info->translation ? q[i] : q[i] * SK_RAD_TO_DEG;
+        char how[48];
+        if (in->pinned[i]) snprintf(how, sizeof how, "pinned");
+        else snprintf(how, sizeof how, "torque %.2f", in->torque[i]);
+        used += (size_t)snprintf(buf + used, size - used, "%s%s = %.1f %s (%s)", used ? ", " : "", info->name, v,
+                                 info->translation ? "mm" : "deg", how);
+    }
+    if (!buf[0]) snprintf(buf, size, "relaxed posture (no input)");
+}
+
+static int write_pose_png(const sk_hand_skeleton *skel, const double *q, const sk_hand_draw_desc *desc,
+                          const char *path)
+{
+    sk_error err = {0};
+    sk_image img;
+    if (sk_hand_draw(skel, q, desc, NULL, &img, &err) != SK_OK) return cli_fail_error(&err);
+    sk_result r = sk_image_write_png(&img, path, NULL, &err);
+    sk_image_free(&img);
+    return r == SK_OK ? 0 : cli_fail_error(&err);
+}
+
 /* Lookup tables from --samples and --pairs (3.2.3). */
 static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut *luts, int *count)
 {
@@ -167,12 +245,21 @@ static const cli_option pose_options[] = {
     {"anatomy", 0, "FILE", "anatomy JSON (limits, relaxed posture, proportions; default built in)", false},
     {"bvh", 0, "FILE", "also write the pose as a one-frame BVH", false},
     {"positions", 0, "FILE", "also write joint positions (.csv or .json)", false},
+    {"png", 0, "FILE", "also draw the pose as a stick figure (PNG, dorsal and radial views)", false},
+    {"views", 0, "LIST", "views of the picture: 1-4 of dorsal, palmar, radial, ulnar (default dorsal,radial)", false},
+    {"png-size", 0, "WxH", "picture size in pixels (default 400 per view x 480)", false},
+    {"labels", 0, NULL, "write the joint names in the picture", false},
+    {"bare", 0, NULL, "the stick figure alone: no view titles, direction arrows, scale bar or caption", false},
+    {"caption", 0, "TEXT", "line under the picture (default: the inputs and the angles they gave; '' = none)", false},
 };
 
 static int run_pose(const cli_command *cmd, const cli_args *args)
 {
+    static const char *const picture_options[] = {"views", "png-size", "labels", "bare", "caption", NULL};
+    int rc = require_option(cmd, args, "png", picture_options);
+    if (rc) return rc;
     sk_hand_skeleton skel;
-    int rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
     const char *set = cli_get(cmd, args, "constraints");
     sk_hand_constraints *c = malloc(sizeof *c);
@@ -212,6 +299,16 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     if (!rc && lut_count > 0 && !info.converged)
         fprintf(stderr, "shitsukan: note: the iterative solve stopped at residual %.3g after %d steps\n",
                 info.residual, info.newton_iterations);
+    sk_hand_draw_desc draw;
+    char caption[512];
+    const char *png = cli_get(cmd, args, "png");
+    if (!rc && png && !(rc = parse_draw_options(cmd, args, &draw))) {
+        const char *given = cli_get(cmd, args, "caption");
+        if (given || draw.hide_cues) snprintf(caption, sizeof caption, "%s", given ? given : "");
+        else describe_inputs(&in, q, caption, sizeof caption);
+        draw.caption = caption;
+        rc = write_pose_png(&skel, q, &draw, png);
+    }
     const char *out = args->common.output;
     if (!rc && out && sk_hand_pose_write_json(&skel, q, &info, out, &err) != SK_OK) rc = cli_fail_error(&err);
     const char *bvh = cli_get(cmd, args, "bvh");
@@ -240,9 +337,10 @@ const cli_command cmd_hand_pose = {
         "T.CMC.flex T.CMC.abd T.MCP.flex T.MCP.abd T.IP.flex, and for F in I M R L:\n"
         "F.CMC.flex F.CMC.abd F.MCP.flex F.MCP.abd F.PIP.flex F.DIP.flex (flexion positive;\n"
         "docs/hand.md has axes, signs and ranges). Writes the pose as JSON with -o, else\n"
-        "prints the DOF values in degrees. With --samples and --pairs, lookup-table\n"
+        "prints the DOF values in degrees; --png draws it as a stick figure (orthographic\n"
+        "views, dorsal and radial by default). With --samples and --pairs, lookup-table\n"
         "potentials built from the samples join the linear rows (thesis 3.2.3).",
-    .examples = "  shitsukan hand pose --pin L.MCP.flex=60 -o pose.json\n"
+    .examples = "  shitsukan hand pose --pin L.MCP.flex=60 -o pose.json --png pose.png\n"
                 "  shitsukan hand pose --torque I.MCP.flex=0.8 --constraints yasumuro-table-3.2\n"
                 "  shitsukan hand pose --samples angles.csv --pairs I.MCP.flex:I.PIP.flex --pin I.MCP.flex=50",
     .options = pose_options,
@@ -264,13 +362,104 @@ static const cli_option animate_options[] = {
     {"hand-length", 0, "MM", "override the hand length", false},
     {"hand-breadth", 0, "MM", "override the hand breadth", false},
     {"anatomy", 0, "FILE", "anatomy JSON (default built in)", false},
+    {"frames-dir", 0, "DIR", "draw every frame as a stick figure: DIR/frame_0000.png, ...", false},
+    {"views", 0, "LIST", "views of the frames: 1-4 of dorsal, palmar, radial, ulnar (default dorsal,radial)", false},
+    {"png-size", 0, "WxH", "frame size in pixels (default 400 per view x 480)", false},
+    {"labels", 0, NULL, "write the joint names in the frames", false},
+    {"bare", 0, NULL, "the stick figures alone: no view titles, direction arrows, scale bar or captions", false},
+    {"plot", 0, "FILE", "joint-angle plot (PNG) of the driven DOFs and those that follow them", false},
+    {"plot-dofs", 0, "LIST", "DOFs to plot, comma-separated (default: the driven ones, then the most moving)", false},
+    {"plot-title", 0, "TEXT", "title of the plot (default: the animation file's name)", false},
+    {"plot-size", 0, "WxH", "plot size in pixels (default 800x560)", false},
 };
+
+/* --plot: the listed DOFs (or the driven ones and those that move most) over the frames. */
+static int write_angle_plot(const cli_command *cmd, const cli_args *args, const sk_hand_animation *anim,
+                            const double *dofs, int frames, const char *path)
+{
+    bool driven[SK_HAND_DOF_COUNT];
+    sk_hand_animation_driven(anim, driven);
+    int list[SK_HAND_DOF_COUNT], n = 0;
+    const char *given = cli_get(cmd, args, "plot-dofs");
+    if (given) {
+        const char *p = given;
+        while (*p) {
+            size_t len = strcspn(p, ",");
+            char name[64];
+            snprintf(name, sizeof name, "%.*s", (int)(len < sizeof name ? len : sizeof name - 1), p);
+            int d = sk_hand_dof_find(name);
+            if (d < 0) return cli_fail(CLI_EXIT_USAGE, "--plot-dofs: unknown DOF \"%s\"", name);
+            if (n == SK_HAND_DOF_COUNT) return cli_fail(CLI_EXIT_USAGE, "--plot-dofs: too many DOFs");
+            list[n++] = d;
+            p += len;
+            if (*p == ',') p++;
+        }
+        if (n == 0) return cli_fail(CLI_EXIT_USAGE, "--plot-dofs is empty");
+    } else {
+        /* the driven DOFs, then the others that move most (at least half a degree): five
+           lines keep the legend small */
+        n = sk_hand_moving_dofs(dofs, frames, driven, 0.5 * SK_DEG_TO_RAD, list, 5);
+    }
+    char title[256];
+    const char *given_title = cli_get(cmd, args, "plot-title");
+    const char *base = strrchr(args->positional[0], '/');
+    snprintf(title, sizeof title, "%s", given_title ? given_title : base ? base + 1 : args->positional[0]);
+    sk_plot_desc pd = {.title = title[0] ? title : NULL};
+    int rc = cli_get_size(cmd, args, "plot-size", 800, 560, 16384, &pd.width, &pd.height);
+    if (rc) return rc;
+    if (pd.width < 64 || pd.height < 64)
+        return cli_fail(CLI_EXIT_USAGE, "--plot-size %dx%d: each side must be at least 64 pixels", pd.width, pd.height);
+    sk_error err = {0};
+    sk_image img;
+    if (sk_hand_plot_angles(dofs, frames, list, n, driven, &pd, &img, &err) != SK_OK) return cli_fail_error(&err);
+    sk_result r = sk_image_write_png(&img, path, NULL, &err);
+    sk_image_free(&img);
+    return r == SK_OK ? 0 : cli_fail_error(&err);
+}
+
+/* --frames-dir: every frame as a stick figure, captioned with its inputs. */
+static int write_frames(const sk_hand_skeleton *skel, const sk_hand_animation *anim, const double *dofs,
+                        int frames, const sk_hand_draw_desc *draw, const char *dir, bool quiet)
+{
+    char (*text)[160] = malloc(sizeof *text * (size_t)frames);
+    const char **captions = malloc(sizeof *captions * (size_t)frames);
+    if (!text || !captions) {
+        free(text);
+        free(captions);
+        return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    }
+    for (int f = 0; f < frames; f++) {
+        sk_hand_input in;
+        sk_hand_animation_input(anim, f, &in);
+        int n = snprintf(text[f], sizeof text[f], "frame %d/%d: ", f, frames - 1);
+        describe_inputs(&in, dofs + (size_t)f * SK_HAND_DOF_COUNT, text[f] + n, sizeof text[f] - (size_t)n);
+        captions[f] = text[f];
+    }
+    sk_progress_bar bar;
+    sk_progress_bar_begin(&bar, "frames", !quiet);
+    sk_error err = {0};
+    sk_result r = sk_hand_frames_write_png(skel, dofs, frames, draw, draw->hide_cues ? NULL : captions, dir,
+                                           sk_progress_bar_sink(&bar), &err);
+    sk_progress_bar_end(&bar);
+    free(text);
+    free(captions);
+    return r == SK_OK ? 0 : cli_fail_error(&err);
+}
 
 static int run_animate(const cli_command *cmd, const cli_args *args)
 {
     const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
     const char *angles = cli_get(cmd, args, "angles");
-    if (!bvh && !positions && !angles) return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions or --angles");
+    const char *frames_dir = cli_get(cmd, args, "frames-dir"), *plot = cli_get(cmd, args, "plot");
+    if (!bvh && !positions && !angles && !frames_dir && !plot)
+        return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions, --angles, --plot or --frames-dir");
+    static const char *const frame_options[] = {"views", "png-size", "labels", "bare", NULL};
+    static const char *const plot_options[] = {"plot-dofs", "plot-title", "plot-size", NULL};
+    sk_hand_draw_desc draw;
+    int draw_rc = require_option(cmd, args, "frames-dir", frame_options);
+    if (!draw_rc) draw_rc = require_option(cmd, args, "plot", plot_options);
+    if (!draw_rc) draw_rc = parse_draw_options(cmd, args, &draw);
+    if (draw_rc) return draw_rc;
     sk_error err = {0};
     sk_hand_animation *anim = malloc(sizeof *anim);
     sk_hand_constraints *c = malloc(sizeof *c);
@@ -303,6 +492,8 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!rc && positions) rc = write_positions(&skel, dofs, frames, positions);
     if (!rc && angles && sk_hand_angles_write_csv(dofs, frames, frame_time, angles, &err) != SK_OK)
         rc = cli_fail_error(&err);
+    if (!rc && plot) rc = write_angle_plot(cmd, args, anim, dofs, frames, plot);
+    if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
     sk_hand_solver_destroy(solver);
     free(dofs);
@@ -314,16 +505,19 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
 const cli_command cmd_hand_animate = {
     .name = "hand animate",
     .summary = "keyframe animation of the hand with the equilibrium solved every frame",
-    .usage = "shitsukan hand animate FILE [--bvh OUT.bvh] [--positions OUT.csv] [--angles OUT.csv]",
+    .usage = "shitsukan hand animate FILE [--bvh OUT.bvh] [--positions OUT.csv] [--angles OUT.csv]\n"
+             "       [--plot ANGLES.png] [--frames-dir DIR]",
     .description =
         "Reads an animation file (keys of partial inputs: \"pin\" angles in degrees and\n"
         "\"torque\" values per DOF), interpolates every input between keys by cubic Bezier\n"
         "curves (thesis 4.2.2) or Catmull-Rom, solves the natural posture at every frame and\n"
         "writes BVH (root with 6 channels, joints Zrotation Yrotation Xrotation, offsets in\n"
-        "mm), joint positions and joint angles. Shipped examples: presets/hand/little-mcp.json\n"
+        "mm), joint positions and joint angles, a joint-angle plot, and stick-figure frames\n"
+        "(dorsal and radial views by default). Shipped examples: presets/hand/little-mcp.json\n"
         "(Fig. 4.19), little-dip.json (Fig. 4.20), piano-key.json.",
     .examples = "  shitsukan hand animate presets/hand/little-mcp.json --bvh little-mcp.bvh\n"
-                "  shitsukan hand animate presets/hand/piano-key.json --positions keys.json --side left",
+                "  shitsukan hand animate presets/hand/piano-key.json --positions keys.json --side left\n"
+                "  shitsukan hand animate presets/hand/little-dip.json --plot angles.png --frames-dir frames",
     .options = animate_options,
     .option_count = (int)(sizeof animate_options / sizeof animate_options[0]),
     .common = CLI_COMMON_QUIET,

@@ -9,6 +9,8 @@ extern const cli_command cmd_hand_animate;
 extern const cli_command cmd_hand_calibrate;
 extern const cli_command cmd_skin;
 extern const cli_command cmd_skin_maps;
+extern const cli_command cmd_wood_cut;
+extern const cli_command cmd_wood_sweep;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -19,5 +21,7 @@ const cli_command *const cli_commands[] = {
     &cmd_hand_calibrate,
     &cmd_skin,
     &cmd_skin_maps,
+    &cmd_wood_cut,
+    &cmd_wood_sweep,
     NULL,
 };

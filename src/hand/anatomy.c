@@ -19,24 +19,27 @@ static const dof_row default_dofs[SK_HAND_DOF_COUNT] = {
     {-1000, 1000, 0, 1}, {-1000, 1000, 0, 1}, {-1000, 1000, 0, 1},
     {-180, 180, 0, 1}, {-180, 180, 0, 1}, {-180, 180, 0, 1},
     /* thumb: AAOS active ranges (CMC extension 20 / flexion 15, abduction 70; MCP 0-50;
-       IP -20..80); relaxed CMC abduction at mid-range, MCP and IP at a third of the
-       functional means of Hume et al. 1990 (21, 18) */
-    {-20, 15, 0, 1}, {0, 70, 35, 2}, {0, 50, 7, 1}, {-5, 5, 0, 4}, {-20, 80, 6, 1},
+       IP -20..80); relaxed so that the thumb rests slightly flexed and palmar-abducted
+       beside the index finger, its pad radial and palmar of the index's proximal
+       phalanx (the resting pattern of Taylor & Schwarz 1955) */
+    {-20, 15, 10, 1}, {0, 70, 25, 2}, {0, 50, 10, 1}, {-5, 5, 0, 4}, {-20, 80, 10, 1},
     /* index: CMC nearly rigid; MCP -45..90, abduction +-20 (AAOS); PIP 0-100, DIP 0-90
-       (AAOS); relaxed at the lower bounds of Bain et al. 2015's functional ranges */
+       (AAOS); relaxed at the lower bounds of Bain et al. 2015's functional ranges (19,
+       23, 10), each finger toward the little one 5, 5 and 3 degrees more flexed: the
+       flexion cascade of the resting hand (Taylor & Schwarz 1955) */
     {-2, 2, 0, 50}, {-2, 2, 0, 50}, {-45, 90, 19, 1}, {-20, 20, 0, 2}, {0, 100, 23, 1}, {0, 90, 10, 1},
     /* middle */
-    {-2, 2, 0, 50}, {-2, 2, 0, 50}, {-45, 90, 19, 1}, {-20, 20, 0, 2}, {0, 100, 23, 1}, {0, 90, 10, 1},
+    {-2, 2, 0, 50}, {-2, 2, 0, 50}, {-45, 90, 24, 1}, {-20, 20, 0, 2}, {0, 100, 28, 1}, {0, 90, 13, 1},
     /* ring: CMC flexion about 10 degrees (Batmanabane & Malathi 1985) */
-    {0, 10, 0, 5}, {-5, 5, 0, 10}, {-45, 90, 19, 1}, {-20, 20, 0, 2}, {0, 100, 23, 1}, {0, 90, 10, 1},
+    {0, 10, 0, 5}, {-5, 5, 0, 10}, {-45, 90, 29, 1}, {-20, 20, 0, 2}, {0, 100, 33, 1}, {0, 90, 16, 1},
     /* little: CMC flexion about 20 degrees (same source) */
-    {0, 20, 0, 3}, {-5, 5, 0, 10}, {-45, 90, 19, 1}, {-20, 20, 0, 2}, {0, 100, 23, 1}, {0, 90, 10, 1},
+    {0, 20, 0, 3}, {-5, 5, 0, 10}, {-45, 90, 34, 1}, {-20, 20, 0, 2}, {0, 100, 38, 1}, {0, 90, 19, 1},
 };
 
 /* Buchholz et al. 1992: CMC centres 0.073 HL distal of the wrist centre, lateral offsets
  * in hand breadths; metacarpal and phalanx lengths in hand lengths. The thumb's mount is
- * its metacarpal's rest direction (adducted beside the index, pad turned toward the
- * fingers, i.e. rolled about 90 degrees against the fingers' frames). */
+ * its metacarpal's direction at zero CMC angles (35 degrees radial in the palm plane, pad
+ * turned toward the fingers, i.e. rolled 90 degrees against the fingers' frames). */
 static const sk_hand_finger_data default_fingers[SK_HAND_FINGER_COUNT] = {
     {0.196, 0.073, 0.0, 0.0, 0.251, {0.196, 0.158, 0.0}, 0, 0, 0},
     {0.126, 0.073, 0.0, 0.126, 0.374, {0.265, 0.143, 0.097}, 0, 0, 0},

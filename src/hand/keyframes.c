@@ -68,6 +68,15 @@ void sk_hand_animation_input(const sk_hand_animation *a, int frame, sk_hand_inpu
     }
 }
 
+void sk_hand_animation_driven(const sk_hand_animation *a, bool driven[SK_HAND_DOF_COUNT])
+{
+    for (int d = 0; d < SK_HAND_DOF_COUNT; d++) {
+        driven[d] = false;
+        for (int k = 0; k < a->key_count; k++)
+            driven[d] |= a->keys[k].has_pin[d] || (a->keys[k].has_torque[d] && a->keys[k].torque[d] != 0.0);
+    }
+}
+
 static sk_result parse_values(const cJSON *obj, const char *path, bool file_units, bool *has,
                               double *val, sk_error *err)
 {
