@@ -161,83 +161,114 @@ typedef struct map_images {
     sk_image height, normal, furrow, cells, preview, edges;
 } map_images;
 
-static sk_result write_maps(const sk_skin *skin, const map_images *m, const char *dir, int w, int h,
+/* One file to write: PNG (with its desc) or EXR. */
+typedef struct map_file {
+    const sk_image *image;
+    char path[4096];
+    bool exr;
+    sk_png_write_desc png;
+    sk_image_metadata meta;
+} map_file;
+
+/* Converts the rendered maps to their file encodings and writes the files, several at a
+ * time (each compression runs on its own thread). Converts m in place. */
+static sk_result write_maps(const sk_skin *skin, map_images *m, const char *dir, int w, int h,
                             bool directx, bool edges, int furrow_level, float furrow_max,
                             sk_error *err)
 {
-    char path[4096];
     float lo, hi;
     sk_skin_height_range(skin, &lo, &hi);
     sk_image_metadata meta = {0};
     describe(skin, w, h, &meta);
-    char v[128];
-    sk_result r;
-
-    /* height: float EXR in mm, and 16-bit PNG over the skin's height range */
-    sk_image_metadata hm = meta;
-    sk_image_metadata_set(&hm, "shitsukan:units", "mm", NULL);
-    snprintf(v, sizeof v, "%.9g", lo);
-    sk_image_metadata_set(&hm, "shitsukan:height_min_mm", v, NULL);
-    snprintf(v, sizeof v, "%.9g", hi);
-    sk_image_metadata_set(&hm, "shitsukan:height_max_mm", v, NULL);
-    snprintf(path, sizeof path, "%s/height.exr", dir);
-    sk_exr_write_desc exr = {.metadata = &hm};
-    if ((r = sk_image_write_exr(&m->height, path, &exr, err)) != SK_OK) return r;
+    char v[160];
     sk_image scaled = {0};
-    if ((r = sk_image_create(&scaled, m->height.width, m->height.height, 1, err)) != SK_OK)
-        return r;
+    sk_result r = sk_image_create(&scaled, m->height.width, m->height.height, 1, err);
+    if (r != SK_OK) return r;
     size_t n = (size_t)m->height.width * (size_t)m->height.height;
+    /* height: 16-bit PNG over the skin's height range (the EXR keeps mm) */
     for (size_t i = 0; i < n; i++) scaled.data[i] = (m->height.data[i] - lo) / (hi - lo);
-    snprintf(v, sizeof v, "height_mm = %.9g + value * %.9g (value = code / 65535)", lo, hi - lo);
-    sk_image_metadata_set(&hm, "shitsukan:decode", v, NULL);
-    snprintf(path, sizeof path, "%s/height.png", dir);
-    sk_png_write_desc png16 = {
-        .bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR, .metadata = &hm};
-    r = sk_image_write_png(&scaled, path, &png16, err);
-    if (r != SK_OK) {
-        sk_image_free(&scaled);
-        return r;
-    }
-
     /* furrow distance, 16-bit over [0, furrow_max] */
     for (size_t i = 0; i < n; i++) {
         float d = m->furrow.data[i] / furrow_max;
-        scaled.data[i] = d > 1.0f ? 1.0f : d;
+        m->furrow.data[i] = d > 1.0f ? 1.0f : d;
     }
-    sk_image_metadata fm = meta;
-    snprintf(v, sizeof v, "%d", furrow_level);
-    sk_image_metadata_set(&fm, "shitsukan:furrow_level", v, NULL);
-    snprintf(v, sizeof v, "distance_mm = value * %.9g (clamped there)", furrow_max);
-    sk_image_metadata_set(&fm, "shitsukan:decode", v, NULL);
-    snprintf(path, sizeof path, "%s/furrow.png", dir);
-    png16.metadata = &fm;
-    r = sk_image_write_png(&scaled, path, &png16, err);
-    sk_image_free(&scaled);
-    if (r != SK_OK) return r;
-
     /* tangent-space normals, 8-bit: OpenGL (green up) or DirectX (green down) */
     for (size_t i = 0; i < n; i++) {
         float *p = m->normal.data + 3 * i;
         if (directx) p[1] = -p[1];
         for (int c = 0; c < 3; c++) p[c] = 0.5f * p[c] + 0.5f;
     }
-    sk_image_metadata nm = meta;
-    sk_image_metadata_set(&nm, "shitsukan:normal_convention", directx ? "directx" : "opengl", NULL);
-    snprintf(path, sizeof path, "%s/normal.png", dir);
-    sk_png_write_desc png8 = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_LINEAR, .metadata = &nm};
-    if ((r = sk_image_write_png(&m->normal, path, &png8, err)) != SK_OK) return r;
 
-    snprintf(path, sizeof path, "%s/cells.png", dir);
-    png8.metadata = &meta;
-    if ((r = sk_image_write_png(&m->cells, path, &png8, err)) != SK_OK) return r;
+    map_file files[7];
+    int count = 0;
+    sk_png_write_desc png16 = {.bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR};
+    sk_png_write_desc png8 = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_LINEAR};
+    sk_png_write_desc srgb = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB};
+    map_file *f;
 
-    sk_png_write_desc srgb = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB, .metadata = &meta};
-    snprintf(path, sizeof path, "%s/preview.png", dir);
-    if ((r = sk_image_write_png(&m->preview, path, &srgb, err)) != SK_OK) return r;
+    f = &files[count++];
+    *f = (map_file){.image = &m->height, .exr = true, .meta = meta};
+    snprintf(f->path, sizeof f->path, "%s/height.exr", dir);
+    sk_image_metadata_set(&f->meta, "shitsukan:units", "mm", NULL);
+    snprintf(v, sizeof v, "%.9g", lo);
+    sk_image_metadata_set(&f->meta, "shitsukan:height_min_mm", v, NULL);
+    snprintf(v, sizeof v, "%.9g", hi);
+    sk_image_metadata_set(&f->meta, "shitsukan:height_max_mm", v, NULL);
+
+    f = &files[count++];
+    *f = (map_file){.image = &scaled, .png = png16, .meta = files[0].meta};
+    snprintf(f->path, sizeof f->path, "%s/height.png", dir);
+    snprintf(v, sizeof v, "height_mm = %.9g + value * %.9g (value = code / 65535)", lo, hi - lo);
+    sk_image_metadata_set(&f->meta, "shitsukan:decode", v, NULL);
+
+    f = &files[count++];
+    *f = (map_file){.image = &m->furrow, .png = png16, .meta = meta};
+    snprintf(f->path, sizeof f->path, "%s/furrow.png", dir);
+    snprintf(v, sizeof v, "%d", furrow_level);
+    sk_image_metadata_set(&f->meta, "shitsukan:furrow_level", v, NULL);
+    snprintf(v, sizeof v, "distance_mm = value * %.9g (clamped there)", furrow_max);
+    sk_image_metadata_set(&f->meta, "shitsukan:decode", v, NULL);
+
+    f = &files[count++];
+    *f = (map_file){.image = &m->normal, .png = png8, .meta = meta};
+    snprintf(f->path, sizeof f->path, "%s/normal.png", dir);
+    sk_image_metadata_set(&f->meta, "shitsukan:normal_convention", directx ? "directx" : "opengl",
+                          NULL);
+
+    f = &files[count++];
+    *f = (map_file){.image = &m->cells, .png = png8, .meta = meta};
+    snprintf(f->path, sizeof f->path, "%s/cells.png", dir);
+
+    f = &files[count++];
+    *f = (map_file){.image = &m->preview, .png = srgb, .meta = meta};
+    snprintf(f->path, sizeof f->path, "%s/preview.png", dir);
+
     if (edges) {
-        snprintf(path, sizeof path, "%s/edges.png", dir);
-        if ((r = sk_image_write_png(&m->edges, path, &srgb, err)) != SK_OK) return r;
+        f = &files[count++];
+        *f = (map_file){.image = &m->edges, .png = srgb, .meta = meta};
+        snprintf(f->path, sizeof f->path, "%s/edges.png", dir);
     }
+
+    sk_result results[7];
+    sk_error errors[7];
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int i = 0; i < count; i++) {
+        map_file *mf = &files[i];
+        sk_error_clear(&errors[i]);
+        if (mf->exr) {
+            sk_exr_write_desc exr = {.metadata = &mf->meta};
+            results[i] = sk_image_write_exr(mf->image, mf->path, &exr, &errors[i]);
+        } else {
+            mf->png.metadata = &mf->meta;
+            results[i] = sk_image_write_png(mf->image, mf->path, &mf->png, &errors[i]);
+        }
+    }
+    sk_image_free(&scaled);
+    for (int i = 0; i < count; i++)
+        if (results[i] != SK_OK) {
+            if (err) *err = errors[i];
+            return results[i];
+        }
     return SK_OK;
 }
 

@@ -79,7 +79,9 @@ void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_
         if (lv->perturbed) owner = sk__unwarp(lv, c, u, &px, &py, jac, &pre_x, &pre_y);
         out->cell[k] = owner;
         out->furrow_mm[k] =
-            (flags & SK_SKIN_QUERY_FURROW) ? sk__furrow_distance(lv, owner, pre_x, pre_y) : 0.0f;
+            (flags & (SK_SKIN_QUERY_FURROW | (1u << (SK__FURROW_LEVEL_SHIFT + k))))
+                ? sk__furrow_distance(lv, owner, pre_x, pre_y)
+                : 0.0f;
         same[k] = owner == c;
         lx[k] = px, ly[k] = py;
         lj[k][0] = jac[0][0], lj[k][1] = jac[0][1], lj[k][2] = jac[1][0], lj[k][3] = jac[1][1];

@@ -36,7 +36,10 @@ sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, s
     double mm_x = skin->tile[0] / desc->width, mm_y = skin->tile[1] / desc->height;
     double top = skin->tile[1];
     bool want_furrow = desc->furrow || desc->edges;
-    unsigned flags = want_furrow ? SK_SKIN_QUERY_FURROW : 0;
+    /* furrow distances: every level for the overlay, else only the one asked for */
+    unsigned flags = desc->edges    ? SK_SKIN_QUERY_FURROW
+                     : want_furrow ? 1u << (SK__FURROW_LEVEL_SHIFT + furrow_level - 1)
+                                   : 0u;
     float line_mm = (float)(0.75 * fmax(mm_x, mm_y));
     sk__loop_progress lp;
     sk__loop_progress_init(&lp, &desc->progress, rh);

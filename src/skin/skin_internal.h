@@ -264,6 +264,9 @@ typedef struct sk__hint {
     double shift[2];
 } sk__hint;
 void sk__hint_reset(sk__hint *hint);
+/* Internal query flag: furrow distance of level k only when bit (SK__FURROW_LEVEL_SHIFT + k)
+ * is set (SK_SKIN_QUERY_FURROW asks for every level). */
+#define SK__FURROW_LEVEL_SHIFT 8
 /* The query behind sk_skin_query, with an optional hint (eval.c). */
 void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_sample *out,
                sk__hint *hint);
