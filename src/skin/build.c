@@ -49,6 +49,7 @@ static void shading_setup(sk_skin *skin)
     skin->sky = 1.0f - sh->sun_fraction;
     skin->spec = sh->no_specular ? 0.0f : sh->specular;
     skin->shininess = sh->shininess;
+    skin->shininess_int = sh->shininess == floorf(sh->shininess) ? (int)sh->shininess : 0;
 }
 
 static void height_range(sk_skin *skin)

@@ -12,7 +12,19 @@ sk_vec3f sk_skin_shade(const sk_skin *skin, sk_vec3f n)
     float spec = 0.0f;
     if (nl > 0.0f && skin->spec > 0.0f) {
         float nh = n.x * skin->half[0] + n.y * skin->half[1] + n.z * skin->half[2];
-        if (nh > 0.0f) spec = skin->spec * skin->sun * powf(nh, skin->shininess);
+        if (nh > 0.0f) {
+            float pw;
+            if (skin->shininess_int > 0) {
+                /* integer exponent: repeated squaring */
+                pw = 1.0f;
+                float b = nh;
+                for (int e = skin->shininess_int; e; e >>= 1, b *= b)
+                    if (e & 1) pw *= b;
+            } else {
+                pw = powf(nh, skin->shininess);
+            }
+            spec = skin->spec * skin->sun * pw;
+        }
     }
     sk_vec3f c;
     c.x = sk_clampf(skin->albedo[0] * diffuse + spec, 0.0f, 1.0f);

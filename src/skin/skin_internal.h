@@ -148,6 +148,7 @@ struct sk_skin {
     float height_min, height_max;
     /* shading, resolved */
     float light[3], half[3], albedo[3], sun, sky, spec, shininess;
+    int shininess_int;     /* the exponent if it is a whole number up to 1000, else 0 */
 };
 
 /* Wraps a coordinate into [0, period). */
