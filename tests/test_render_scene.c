@@ -64,6 +64,41 @@ static void test_scene_file_with_relative_mesh(void **state)
     free(d);
 }
 
+/* A PLY mesh (written by the mesh writer) instanced twice, the second mirrored. */
+static void test_ply_mesh_instances(void **state)
+{
+    (void)state;
+    sk_render_object_desc box = {.shape = SK_RENDER_SHAPE_BOX, .size = {2, 2, 2}};
+    sk_mesh m;
+    sk_error err = {0};
+    assert_int_equal(sk_render_make_primitive(&box, &m, &err), SK_OK);
+    const char *ply = sk_test_path("ply/box.ply");
+    assert_int_equal(sk_mesh_write(&m, ply, &err), SK_OK);
+    sk_mesh_free(&m);
+    const char *json =
+        "{\"objects\": [{\"file\": \"box.ply\", \"transform\": {\"translate\": [-3, 0, 0]}},\n"
+        "  {\"file\": \"box.ply\", \"transform\": {\"translate\": [3, 0, 0], \"scale\": [-1, 1, 2]}}]}";
+    const char *path = sk_test_path("ply/scene.json");
+    write_text(path, json);
+    sk_render_scene_desc *d = calloc(1, sizeof *d);
+    if (sk_render_scene_desc_load(path, d, &err) != SK_OK) fail_msg("%s", err.message);
+    sk_render_scene *s = NULL;
+    if (sk_render_scene_create(d, &s, &err) != SK_OK) fail_msg("%s", err.message);
+    sk_render_hit h;
+    sk_render_scene_intersect(s, sk_v3f(-3, 0.5f, 10), sk_v3f(0, 0, -1), 0, &h);
+    assert_int_equal(h.object, 0);
+    assert_true(fabsf(h.distance - 9) < 1e-5f);
+    assert_true(fabsf(h.normal.z - 1) < 1e-5f);
+    /* mirrored in x and stretched in z: the front face at z = 2 still faces +z */
+    sk_render_scene_intersect(s, sk_v3f(3.2f, 0.5f, 10), sk_v3f(0, 0, -1), 0, &h);
+    assert_int_equal(h.object, 1);
+    assert_true(fabsf(h.distance - 8) < 1e-5f);
+    assert_true(fabsf(h.normal.z - 1) < 1e-5f);
+    assert_true(fabsf(h.geometric_normal.z - 1) < 1e-5f);
+    sk_render_scene_destroy(s);
+    free(d);
+}
+
 /* Binds a scene text with one replacement of `from` by `to` and returns the message. */
 static const char *bind_error(const char *from, const char *to)
 {
@@ -227,6 +262,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scene_file_with_relative_mesh),
+        cmocka_unit_test(test_ply_mesh_instances),
         cmocka_unit_test(test_bad_scenes_name_the_key),
         cmocka_unit_test(test_bad_desc_from_c),
         cmocka_unit_test(test_cli_render),

@@ -187,7 +187,10 @@ static void test_blinn_phong_energy(void **state)
     for (int e = 0; e < 4; e++) {
         for (int v = 0; v < 3; v++) {
             sk__shading sh;
+            sk__material blinn_phong;
             memset(&sh, 0, sizeof sh);
+            memset(&blinn_phong, 0, sizeof blinn_phong);
+            sh.material = &blinn_phong;
             sh.shading_normal = sk_v3f(0, 0, 1);
             double a = view_deg[v] * SK_DEG_TO_RAD;
             sh.to_viewer = sk_v3f((float)sin(a), 0, (float)cos(a));
@@ -313,6 +316,39 @@ static void test_texture_blend(void **state)
         assert_near(pixel(&img, 1, 0)[c], 0.3 * 2 / SK_PI + 0.7 * d->materials[0].albedo[c] * 0.5, 1e-6);
     sk_image_free(&img);
     free(d);
+}
+
+/* An image texture by UV: texel centres come back exactly (decoded from sRGB), with the
+ * image's top row at t = 1 (v runs up the image as OpenGL and Blender have it). */
+static void test_albedo_texture_orientation(void **state)
+{
+    (void)state;
+    sk_image tex;
+    sk_error err = {0};
+    assert_int_equal(sk_image_create(&tex, 2, 2, 3, &err), SK_OK);
+    const float texels[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}; /* red green / blue white */
+    memcpy(tex.data, texels, sizeof texels);
+    const char *path = sk_test_path("albedo.png");
+    assert_int_equal(sk_image_write_png(&tex, path, NULL, &err), SK_OK);
+    sk_image_free(&tex);
+    /* the 100-unit plane with uv_scale 1/100: st = (x + 50, 50 - z) / 100 */
+    const struct { float x, z; float rgb[3]; } at[] = {
+        {-25, -25, {1, 0, 0}}, {25, -25, {0, 1, 0}}, {-25, 25, {0, 0, 1}}, {25, 25, {1, 1, 1}}};
+    for (int i = 0; i < 4; i++) {
+        sk_render_scene_desc *d = plane_scene(1, 4, 1e-4f);
+        add_directional(d, sk_v3f(0, 1, 0), 1);
+        sk_render_material_desc *m = &d->materials[0];
+        m->albedo[0] = m->albedo[1] = m->albedo[2] = 1;
+        snprintf(m->albedo_texture, sizeof m->albedo_texture, "%s", path);
+        m->uv_scale[0] = m->uv_scale[1] = 0.01f;
+        d->camera.position[0] = d->camera.target[0] = at[i].x;
+        d->camera.position[2] = d->camera.target[2] = at[i].z;
+        sk_image img;
+        render(d, &img);
+        for (int c = 0; c < 3; c++) assert_near(pixel(&img, 0, 0)[c], at[i].rgb[c] / SK_PI, 1e-5);
+        sk_image_free(&img);
+        free(d);
+    }
 }
 
 /* Far from the origin, tilted, lit at a grazing 85 degrees: every point is lit exactly
@@ -461,6 +497,7 @@ int main(void)
         cmocka_unit_test(test_bump_matches_tilted_plane),
         cmocka_unit_test(test_normal_map_matches_tilted_plane),
         cmocka_unit_test(test_texture_blend),
+        cmocka_unit_test(test_albedo_texture_orientation),
         cmocka_unit_test(test_no_self_shadowing),
         cmocka_unit_test(test_tonemap_curves),
         cmocka_unit_test(test_stratified_patterns),

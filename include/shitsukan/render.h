@@ -31,12 +31,14 @@
 #include "shitsukan/image.h"
 #include "shitsukan/mesh.h"
 #include "shitsukan/preset.h"
+#include "shitsukan/skin.h"
+#include "shitsukan/wood.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-#define SK_RENDER_MAX_OBJECTS 64
+#define SK_RENDER_MAX_OBJECTS 256
 #define SK_RENDER_MAX_MATERIALS 32
 #define SK_RENDER_MAX_LIGHTS 16
 #define SK_RENDER_NAME_SIZE 32
@@ -170,15 +172,26 @@ typedef struct sk_render_environment_desc {
 typedef enum sk_render_material_type {
     SK_RENDER_MATERIAL_DEFAULT = 0,  /* = STANDARD */
     SK_RENDER_MATERIAL_STANDARD = 0, /* "standard": diffuse + Blinn-Phong */
+    SK_RENDER_MATERIAL_SKIN,         /* "skin": standard, bump-mapped by the skin microrelief
+                                        (Ishii 1991) evaluated at st in mm */
+    SK_RENDER_MATERIAL_WOOD,         /* "wood": the wood solid texture (Kawai 2000) at the
+                                        object-frame point in mm, with its reflection model */
     SK_RENDER_MATERIAL_TYPE_COUNT
 } sk_render_material_type;
 
+/* One "key.path=value" edit of a referenced preset (as with --set on the command line). */
+#define SK_RENDER_MAX_PRESET_SETS 8
+typedef struct sk_render_preset_set {
+    char text[128];
+} sk_render_preset_set;
 
 /* A shading point as a texture callback sees it. Vectors are unit length, in the scene
  * frame unless named `object_`. */
 typedef struct sk_render_surface {
     sk_vec3f point;          /* scene position */
-    sk_vec3f object_point;   /* position in the object's own (untransformed) frame */
+    sk_vec3f object_point;   /* position in the object's frame: the object's translation and
+                                rotation undone, its scale kept (true scene lengths), so a
+                                solid texture moves with the object */
     sk_vec3f normal;         /* interpolated normal, facing the viewer */
     sk_vec3f object_normal;  /* the same in the object's frame */
     sk_vec3f tangent;        /* along increasing u (orthogonal to `normal`) */
@@ -228,6 +241,24 @@ typedef struct sk_render_material_desc {
        texture_radiance. */
     float texture_weight;   /* w; default 0 (off: albedo multiplies the shading); [0, 1] */
     float texture_radiance; /* radiance of an albedo of 1 in the blend; 0 = 1 */
+    /* skin: sk_skin_eval(st.x, st.y) in mm gives the height gradient of the bump map, so
+       with the built-in primitives' length UVs in a scene in mm (uv_scale 1) the relief has
+       its true size on the surface and stays sharp at any distance. */
+    char skin_preset[SK_RENDER_PATH_SIZE]; /* a shipped skin preset ("fig19f") or a JSON file
+                                              relative to the scene; resolved into `skin` by
+                                              sk_render_scene_desc_bind */
+    int skin_set_count;
+    sk_render_preset_set skin_set[SK_RENDER_MAX_PRESET_SETS]; /* edits of skin_preset */
+    sk_skin_desc skin;    /* the skin (preset key "skin"; used as is from C) */
+    /* wood: sk_wood_eval at the point in the object's frame (in mm) gives the albedo (rings,
+       fibre streaks, vessels) that replaces `albedo`, and sk_wood_shade the reflection: the
+       figure sheen of eq. (4) (diffuse on the true normal, specular on the normal tilted by
+       the fibre's dive angle) or the 3D fibre highlight, by the wood's shading model. */
+    char wood_preset[SK_RENDER_PATH_SIZE]; /* a shipped wood preset ("fig9", "oak") or a JSON
+                                              file relative to the scene */
+    int wood_set_count;
+    sk_render_preset_set wood_set[SK_RENDER_MAX_PRESET_SETS]; /* edits of wood_preset */
+    sk_wood_desc wood;    /* the wood (preset key "wood"; used as is from C) */
     /* C API only: a procedural texture applied after the image textures. */
     sk_render_texture_fn texture;
     void *texture_user;
@@ -286,9 +317,11 @@ typedef struct sk_render_scene_desc {
     char base_dir[SK_RENDER_PATH_SIZE];
 } sk_render_scene_desc;
 
-/* The desc with zero defaults filled in (camera framing stays as given; it needs the
- * geometry and is resolved by sk_render_scene_create). */
-sk_render_scene_desc sk_render_scene_desc_resolved(const sk_render_scene_desc *desc);
+/* Writes the desc with zero defaults filled in to `out` (which may be `desc` itself; the
+ * desc is large, so it is not returned by value). Camera framing and light intensities
+ * stay as given: they need the geometry and are resolved by sk_render_scene_create (see
+ * sk_render_scene_get_desc). */
+void sk_render_scene_desc_resolve(const sk_render_scene_desc *desc, sk_render_scene_desc *out);
 
 /* Checks ranges, NaN and the rules the schema cannot state (unique material names,
  * objects naming existing materials, a camera that is not degenerate). Messages name the

@@ -15,18 +15,24 @@
 
 #include "render/render_internal.h"
 
-/* Index of the texture loaded from `name` (loading it on first use), or -1 on failure. */
-static int texture_index(sk_render_scene *scene, const char *name, bool srgb, sk_error *err)
+/* Sets *index to the texture loaded from `name` (loading it on first use). */
+static sk_result texture_index(sk_render_scene *scene, const char *name, bool srgb, int *index,
+                               sk_error *err)
 {
     for (int i = 0; i < scene->texture_count; i++)
-        if (strcmp(scene->textures[i].name, name) == 0 && scene->textures[i].srgb == srgb) return i;
+        if (strcmp(scene->textures[i].name, name) == 0 && scene->textures[i].srgb == srgb) {
+            *index = i;
+            return SK_OK;
+        }
     char path[2 * SK_RENDER_PATH_SIZE];
     sk__join_path(scene->desc.base_dir, name, path, sizeof path);
     sk__texture *tex = &scene->textures[scene->texture_count];
-    if (sk__texture_load(tex, path, srgb, err) != SK_OK) return -1;
+    sk_result r = sk__texture_load(tex, path, srgb, err);
+    if (r != SK_OK) return r;
     snprintf(tex->name, sizeof tex->name, "%s", name);
     tex->srgb = srgb;
-    return scene->texture_count++;
+    *index = scene->texture_count++;
+    return SK_OK;
 }
 
 sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
@@ -42,25 +48,20 @@ sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
         m->desc = d->materials[i];
         m->brdf = SK__BRDF_BLINN_PHONG;
         m->albedo_texture = m->normal_map = -1;
-        if (m->desc.albedo_texture[0]) {
-            m->albedo_texture = texture_index(scene, m->desc.albedo_texture, true, err);
-            if (m->albedo_texture < 0)
-                r = sk_error_prefix(err, "materials[%d].albedo_texture = \"%s\"", i,
-                                    m->desc.albedo_texture);
-        }
-        if (r == SK_OK && m->desc.normal_map[0]) {
-            m->normal_map = texture_index(scene, m->desc.normal_map, false, err);
-            if (m->normal_map < 0)
-                r = sk_error_prefix(err, "materials[%d].normal_map = \"%s\"", i, m->desc.normal_map);
-        }
+        if (m->desc.albedo_texture[0] &&
+            (r = texture_index(scene, m->desc.albedo_texture, true, &m->albedo_texture, err)) != SK_OK)
+            sk__prefix(r, err, "materials[%d].albedo_texture = \"%s\"", i, m->desc.albedo_texture);
+        if (r == SK_OK && m->desc.normal_map[0] &&
+            (r = texture_index(scene, m->desc.normal_map, false, &m->normal_map, err)) != SK_OK)
+            sk__prefix(r, err, "materials[%d].normal_map = \"%s\"", i, m->desc.normal_map);
+        if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_SKIN) r = sk__skin_material_build(m, i, err);
+        if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_WOOD) r = sk__wood_material_build(m, i, err);
     }
     if (r != SK_OK) return r;
     /* the default material of objects without one: grey diffuse */
     sk__material *def = &scene->materials[d->material_count];
     memset(def, 0, sizeof *def);
-    sk_render_scene_desc tmp = {0};
-    tmp.material_count = 1;
-    def->desc = sk_render_scene_desc_resolved(&tmp).materials[0];
+    sk__material_desc_resolve(&def->desc);
     def->albedo_texture = def->normal_map = -1;
     scene->material_count = d->material_count + 1;
     return SK_OK;
@@ -68,6 +69,10 @@ sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
 
 void sk__materials_destroy(sk_render_scene *scene)
 {
+    for (int i = 0; i < scene->material_count; i++) {
+        sk__skin_material_destroy(&scene->materials[i]);
+        sk__wood_material_destroy(&scene->materials[i]);
+    }
     for (int i = 0; i < scene->texture_count; i++) sk_image_free(&scene->textures[i].image);
     free(scene->textures);
 }
@@ -99,6 +104,8 @@ void sk__material_eval(const sk_render_scene *scene, sk__shading *sh)
         float nx = 2 * c[0] - 1, ny = 2 * c[1] - 1, nz = 2 * c[2] - 1;
         if (nz > 1e-3f) tilt = sk_v2f(-nx / nz, -ny / nz);
     }
+    if (m->skin) sk__skin_material_texel(m, s, tx);
+    if (m->wood) sk__wood_material_texel(scene, sh);
     if (d->texture) d->texture(d->texture_user, s, tx);
     tilt.x += tx->slope.x * s->st_per_mm.x;
     tilt.y += tx->slope.y * s->st_per_mm.y;
@@ -117,7 +124,7 @@ void sk__material_eval(const sk_render_scene *scene, sk__shading *sh)
     sh->lobe_norm = sk__blinn_phong_norm(tx->shininess);
     /* the hand thesis blend: shade a white surface, add the unlit texture afterwards */
     sh->texture_color = tx->albedo;
-    if (d->texture_weight > 0) tx->albedo = sk_v3f(1, 1, 1);
+    if (d->texture_weight > 0) tx->albedo = sh->wood.albedo = sk_v3f(1, 1, 1);
 }
 
 float sk__blinn_phong_norm(float n)
@@ -127,6 +134,7 @@ float sk__blinn_phong_norm(float n)
 
 sk_vec3f sk__material_reflect(const sk__shading *sh, sk_vec3f wi)
 {
+    if (sh->material->brdf == SK__BRDF_WOOD) return sk__wood_material_reflect(sh, wi);
     sk_vec3f n = sh->shading_normal;
     float cos_i = sk_v3f_dot(n, wi);
     if (cos_i <= 0) return sk_v3f(0, 0, 0);
@@ -148,6 +156,7 @@ sk_vec3f sk__material_reflect(const sk__shading *sh, sk_vec3f wi)
 sk_vec3f sk__material_ambient_albedo(const sk__shading *sh)
 {
     const sk_render_texel *tx = &sh->texel;
+    if (sh->material->brdf == SK__BRDF_WOOD) return sk_v3f_scale(tx->albedo, sh->material->wood_kd);
     float ks = tx->specular;
     sk_vec3f a = sk_v3f_scale(tx->albedo, 1.0f - ks);
     return sk_v3f_add(a, sk_v3f(ks, ks, ks));

@@ -22,6 +22,7 @@ typedef struct sk__instance {
     sk_mat4f to_world;        /* object -> scene */
     sk_mat4f to_object;       /* scene -> object */
     sk_mat3f normal_matrix;   /* inverse transpose of the linear part */
+    sk_mat3f rotation;        /* the rotation alone (the object frame of solid textures) */
     float handedness;         /* sign of the linear part's determinant */
 } sk__instance;
 
@@ -33,6 +34,7 @@ typedef struct sk__texture {
 
 typedef enum sk__brdf_kind {
     SK__BRDF_BLINN_PHONG = 0, /* diffuse + normalised Blinn-Phong */
+    SK__BRDF_WOOD             /* sk_wood_shade: figure sheen or fibre highlight */
 } sk__brdf_kind;
 
 typedef struct sk__material {
@@ -40,6 +42,9 @@ typedef struct sk__material {
     sk__brdf_kind brdf;
     int albedo_texture; /* index into scene->textures, or -1 */
     int normal_map;     /* index into scene->textures, or -1 */
+    sk_skin *skin;      /* type skin: the microrelief */
+    sk_wood *wood;      /* type wood: the solid texture */
+    float wood_kd;      /* type wood: diffuse weight (lights the environment term) */
 } sk__material;
 
 typedef struct sk__camera {
@@ -94,6 +99,7 @@ typedef struct sk__shading {
     const sk__material *material;
     sk_render_texel texel;
     float lobe_norm;             /* K(shininess) of the Blinn-Phong lobe */
+    sk_wood_sample wood;         /* wood: the solid texture at the point (object frame) */
     sk_vec3f texture_color;      /* the texture/shading blend's unlit colour */
 } sk__shading;
 
@@ -156,6 +162,18 @@ float sk__blinn_phong_norm(float n);
 /* Albedo seen by the uniform environment (diffuse part + the lobe's directional albedo). */
 sk_vec3f sk__material_ambient_albedo(const sk__shading *sh);
 
+/* Type-specific parts (material_skin.c). */
+sk_result sk__skin_material_build(sk__material *m, int index, sk_error *err);
+void sk__skin_material_destroy(sk__material *m);
+/* Adds the skin's height gradient at st (mm) to the texel's slope. */
+void sk__skin_material_texel(const sk__material *m, const sk_render_surface *s, sk_render_texel *tx);
+/* (material_wood.c) */
+sk_result sk__wood_material_build(sk__material *m, int index, sk_error *err);
+void sk__wood_material_destroy(sk__material *m);
+/* Evaluates the wood at the shading point: sh->wood and the texel's albedo. */
+void sk__wood_material_texel(const sk_render_scene *scene, sk__shading *sh);
+sk_vec3f sk__wood_material_reflect(const sk__shading *sh, sk_vec3f wi);
+
 sk_result sk__texture_load(sk__texture *tex, const char *path, bool srgb, sk_error *err);
 /* Bilinear lookup with repeat wrapping; t = 0 at the image bottom. Writes 4 channels
  * (missing ones: grey replicated, alpha 1). */
@@ -180,10 +198,20 @@ bool sk__light_sample(const sk__light *l, sk_vec3f p, sk_vec2f u, sk_vec3f *wi, 
 /* ---- small helpers */
 static inline sk_vec3f sk__v3f_from(const float a[3]) { return sk_v3f(a[0], a[1], a[2]); }
 static inline bool sk__v3f_is_zero(const float a[3]) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
-/* Object-to-scene matrix of a transform desc (resolved scale). */
+/* Fills a material desc's zero defaults in place. */
+void sk__material_desc_resolve(sk_render_material_desc *m);
+/* Object-to-scene matrix of a transform desc (resolved scale), and its rotation alone. */
 sk_mat4f sk__transform_matrix(const sk_render_transform *t);
+sk_mat3f sk__transform_rotation(const sk_render_transform *t);
 /* `name` resolved against the folder `base` ("" = as is; absolute names stay as they are). */
 void sk__join_path(const char *base, const char *name, char *out, size_t size);
+/* Prefixes err's message with the formatted key path (if err is not NULL) and returns
+ * `result` (sk_error_prefix alone returns SK_OK for a NULL err). */
+sk_result sk__prefix(sk_result result, sk_error *err, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
 /* True if `path` ends in `ext` (".png"), ignoring case. */
 bool sk__has_extension(const char *path, const char *ext);
 

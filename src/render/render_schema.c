@@ -11,7 +11,7 @@ const char *const sk_render_shape_names[] = {"mesh", "plane", "box", "sphere", "
 const char *const sk_render_uv_mode_names[] = {"length", "unit", NULL};
 const char *const sk_render_projection_names[] = {"perspective", "orthographic", NULL};
 const char *const sk_render_light_type_names[] = {"directional", "point", "rect", NULL};
-const char *const sk_render_material_type_names[] = {"standard", NULL};
+const char *const sk_render_material_type_names[] = {"standard", "skin", "wood", NULL};
 const char *const sk_render_tonemap_names[] = {"clamp", "reinhard", "filmic", NULL};
 
 #define FLOAT3(k, T, field, lo, hi, d)                                                             \
@@ -60,11 +60,17 @@ static const sk_schema object_schema = {"object", object_fields,
                                         sizeof object_fields / sizeof object_fields[0]};
 
 /* ---- materials */
+static const sk_schema_field preset_set_fields[] = {
+    {.key = NULL, .type = SK_FIELD_STRING, .offset = offsetof(sk_render_preset_set, text),
+     .count = sizeof(((sk_render_preset_set *)0)->text), .doc = "key.path=value"},
+};
+static const sk_schema preset_set_schema = {"preset_set", preset_set_fields, 1};
+
 static const sk_schema_field material_fields[] = {
     {.key = "name", .type = SK_FIELD_STRING, .offset = offsetof(sk_render_material_desc, name),
      .count = SK_RENDER_NAME_SIZE, .doc = "unique name objects refer to"},
     {.key = "type", .type = SK_FIELD_ENUM, .offset = offsetof(sk_render_material_desc, type),
-     .names = sk_render_material_type_names, .doc = "standard (diffuse + Blinn-Phong); default standard"},
+     .names = sk_render_material_type_names, .doc = "standard (diffuse + Blinn-Phong), skin or wood; default standard"},
     FLOAT3("albedo", sk_render_material_desc, albedo, 0, 1, "linear diffuse reflectance; all 0 = 0.8"),
     {.key = "albedo_texture", .type = SK_FIELD_STRING,
      .offset = offsetof(sk_render_material_desc, albedo_texture), .count = SK_RENDER_PATH_SIZE,
@@ -85,6 +91,22 @@ static const sk_schema_field material_fields[] = {
     {.key = "texture_radiance", .type = SK_FIELD_FLOAT,
      .offset = offsetof(sk_render_material_desc, texture_radiance), .min = 0, .max = BIG,
      .doc = "radiance of albedo 1 in the blend; 0 = 1"},
+    {.key = "skin_preset", .type = SK_FIELD_STRING, .offset = offsetof(sk_render_material_desc, skin_preset),
+     .count = SK_RENDER_PATH_SIZE, .doc = "skin: a skin preset name or JSON file (instead of `skin`)"},
+    {.key = "skin_set", .type = SK_FIELD_ARRAY, .offset = offsetof(sk_render_material_desc, skin_set),
+     .count = SK_RENDER_MAX_PRESET_SETS, .count_offset = offsetof(sk_render_material_desc, skin_set_count),
+     .elem_size = sizeof(sk_render_preset_set), .schema = &preset_set_schema,
+     .doc = "skin: edits of skin_preset, e.g. [\"seed=3\"]"},
+    {.key = "skin", .type = SK_FIELD_OBJECT, .offset = offsetof(sk_render_material_desc, skin),
+     .schema = &sk_skin_schema, .doc = "skin: the skin desc itself (keys as in presets/skin)"},
+    {.key = "wood_preset", .type = SK_FIELD_STRING, .offset = offsetof(sk_render_material_desc, wood_preset),
+     .count = SK_RENDER_PATH_SIZE, .doc = "wood: a wood preset name or JSON file (instead of `wood`)"},
+    {.key = "wood_set", .type = SK_FIELD_ARRAY, .offset = offsetof(sk_render_material_desc, wood_set),
+     .count = SK_RENDER_MAX_PRESET_SETS, .count_offset = offsetof(sk_render_material_desc, wood_set_count),
+     .elem_size = sizeof(sk_render_preset_set), .schema = &preset_set_schema,
+     .doc = "wood: edits of wood_preset, e.g. [\"shading.specular=0.2\"]"},
+    {.key = "wood", .type = SK_FIELD_OBJECT, .offset = offsetof(sk_render_material_desc, wood),
+     .schema = &sk_wood_schema, .doc = "wood: the wood desc itself (keys as in presets/wood)"},
 };
 static const sk_schema material_schema = {"material", material_fields,
                                           sizeof material_fields / sizeof material_fields[0]};

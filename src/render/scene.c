@@ -1,5 +1,6 @@
 /* A renderable scene: validated desc, materials and their textures, geometry in Embree,
  * the camera (framed on the geometry if asked) and the lights. */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +14,17 @@ void sk__join_path(const char *base, const char *name, char *out, size_t size)
         snprintf(out, size, "%s", name);
     else
         snprintf(out, size, "%s/%s", base, name);
+}
+
+sk_result sk__prefix(sk_result result, sk_error *err, const char *fmt, ...)
+{
+    char prefix[SK_ERROR_MESSAGE_SIZE];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(prefix, sizeof prefix, fmt, ap);
+    va_end(ap);
+    sk_error_prefix(err, "%s", prefix);
+    return result;
 }
 
 bool sk__has_extension(const char *path, const char *ext)
@@ -29,7 +41,7 @@ sk_result sk_render_scene_create(const sk_render_scene_desc *desc, sk_render_sce
     if (r != SK_OK) return r;
     sk_render_scene *scene = calloc(1, sizeof *scene);
     if (!scene) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the scene");
-    scene->desc = sk_render_scene_desc_resolved(desc);
+    sk_render_scene_desc_resolve(desc, &scene->desc);
     if ((r = sk__materials_build(scene, err)) == SK_OK && (r = sk__geometry_build(scene, err)) == SK_OK) {
         sk__camera_setup(scene);
         sk__lights_setup(scene);

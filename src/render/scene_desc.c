@@ -10,44 +10,65 @@
 #define BIG 1e9
 #define PATH 96
 
-sk_render_scene_desc sk_render_scene_desc_resolved(const sk_render_scene_desc *desc)
+void sk__material_desc_resolve(sk_render_material_desc *m)
 {
-    sk_render_scene_desc d = *desc;
-    if (d.unit_mm == 0) d.unit_mm = 1.0f;
-    if (d.image.width == 0) d.image.width = 640;
-    if (d.image.height == 0) d.image.height = 360;
-    if (d.image.samples == 0) d.image.samples = 16;
-    if (sk__v3f_is_zero(d.camera.up)) d.camera.up[1] = 1.0f;
-    if (d.camera.fov == 0) d.camera.fov = (float)(40.0 * SK_DEG_TO_RAD);
-    if (d.environment.ao_samples == 0) d.environment.ao_samples = 1;
-    for (int i = 0; i < d.material_count && i < SK_RENDER_MAX_MATERIALS; i++) {
-        sk_render_material_desc *m = &d.materials[i];
-        if (sk__v3f_is_zero(m->albedo)) m->albedo[0] = m->albedo[1] = m->albedo[2] = 0.8f;
-        if (m->shininess == 0) m->shininess = 64.0f;
-        if (m->bump_scale == 0) m->bump_scale = 1.0f;
-        if (m->uv_scale[0] == 0 && m->uv_scale[1] == 0) m->uv_scale[0] = m->uv_scale[1] = 1.0f;
-        if (m->texture_radiance == 0) m->texture_radiance = 1.0f;
-    }
-    for (int i = 0; i < d.object_count && i < SK_RENDER_MAX_OBJECTS; i++) {
-        sk_render_object_desc *o = &d.objects[i];
-        if (sk__v3f_is_zero(o->size)) o->size[0] = o->size[1] = o->size[2] = 1.0f;
-        if (o->radius == 0) o->radius = 0.5f;
-        if (o->height == 0) o->height = 1.0f;
-        if (o->segments == 0) o->segments = 64;
-        if (o->rings == 0) o->rings = 32;
-        float *s = o->transform.scale;
-        if (sk__v3f_is_zero(s)) s[0] = s[1] = s[2] = 1.0f;
-    }
-    for (int i = 0; i < d.light_count && i < SK_RENDER_MAX_LIGHTS; i++) {
-        sk_render_light_desc *l = &d.lights[i];
-        if (sk__v3f_is_zero(l->color)) l->color[0] = l->color[1] = l->color[2] = 1.0f;
-        if (l->type == SK_RENDER_LIGHT_DIRECTIONAL && sk__v3f_is_zero(l->direction))
-            l->direction[1] = -1.0f;
-        if (l->size[0] == 0 && l->size[1] == 0) l->size[0] = l->size[1] = 1.0f;
-        if (sk__v3f_is_zero(l->up)) l->up[1] = 1.0f;
-        if (l->samples == 0) l->samples = 1;
-    }
-    return d;
+    if (sk__v3f_is_zero(m->albedo)) m->albedo[0] = m->albedo[1] = m->albedo[2] = 0.8f;
+    if (m->shininess == 0) m->shininess = 64.0f;
+    if (m->bump_scale == 0) m->bump_scale = 1.0f;
+    if (m->uv_scale[0] == 0 && m->uv_scale[1] == 0) m->uv_scale[0] = m->uv_scale[1] = 1.0f;
+    if (m->texture_radiance == 0) m->texture_radiance = 1.0f;
+}
+
+static void object_resolve(sk_render_object_desc *o)
+{
+    if (sk__v3f_is_zero(o->size)) o->size[0] = o->size[1] = o->size[2] = 1.0f;
+    if (o->radius == 0) o->radius = 0.5f;
+    if (o->height == 0) o->height = 1.0f;
+    if (o->segments == 0) o->segments = 64;
+    if (o->rings == 0) o->rings = 32;
+    float *s = o->transform.scale;
+    if (sk__v3f_is_zero(s)) s[0] = s[1] = s[2] = 1.0f;
+}
+
+static void light_resolve(sk_render_light_desc *l)
+{
+    if (sk__v3f_is_zero(l->color)) l->color[0] = l->color[1] = l->color[2] = 1.0f;
+    if (l->type == SK_RENDER_LIGHT_DIRECTIONAL && sk__v3f_is_zero(l->direction)) l->direction[1] = -1.0f;
+    if (l->size[0] == 0 && l->size[1] == 0) l->size[0] = l->size[1] = 1.0f;
+    if (sk__v3f_is_zero(l->up)) l->up[1] = 1.0f;
+    if (l->samples == 0) l->samples = 1;
+}
+
+static void image_resolve(sk_render_image_desc *image)
+{
+    if (image->width == 0) image->width = 640;
+    if (image->height == 0) image->height = 360;
+    if (image->samples == 0) image->samples = 16;
+}
+
+static void camera_resolve(sk_render_camera_desc *camera)
+{
+    if (sk__v3f_is_zero(camera->up)) camera->up[1] = 1.0f;
+    if (camera->fov == 0) camera->fov = (float)(40.0 * SK_DEG_TO_RAD);
+}
+
+static void environment_resolve(sk_render_environment_desc *env)
+{
+    if (env->ao_samples == 0) env->ao_samples = 1;
+}
+
+void sk_render_scene_desc_resolve(const sk_render_scene_desc *desc, sk_render_scene_desc *out)
+{
+    if (out != desc) memcpy(out, desc, sizeof *out);
+    if (out->unit_mm == 0) out->unit_mm = 1.0f;
+    image_resolve(&out->image);
+    camera_resolve(&out->camera);
+    environment_resolve(&out->environment);
+    for (int i = 0; i < out->material_count && i < SK_RENDER_MAX_MATERIALS; i++)
+        sk__material_desc_resolve(&out->materials[i]);
+    for (int i = 0; i < out->object_count && i < SK_RENDER_MAX_OBJECTS; i++)
+        object_resolve(&out->objects[i]);
+    for (int i = 0; i < out->light_count && i < SK_RENDER_MAX_LIGHTS; i++) light_resolve(&out->lights[i]);
 }
 
 /* ---- checks with formatted key paths */
@@ -120,9 +141,11 @@ static int find_material(const sk_render_scene_desc *d, const char *name)
     return -1;
 }
 
-static sk_result validate_material(const sk_render_material_desc *m, int i, sk_error *err)
+static sk_result validate_material(const sk_render_material_desc *given, int i, sk_error *err)
 {
     char p[PATH];
+    sk_render_material_desc resolved = *given, *m = &resolved;
+    sk__material_desc_resolve(m);
     if (!bounded_string(m->name, sizeof m->name) || !bounded_string(m->albedo_texture, sizeof m->albedo_texture) ||
         !bounded_string(m->normal_map, sizeof m->normal_map))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d]: a string is not terminated", i);
@@ -140,13 +163,23 @@ static sk_result validate_material(const sk_render_material_desc *m, int i, sk_e
     TRY(check_v(err, m->uv_offset, 2, -BIG, BIG, p));
     TRY(check_f(err, m->texture_weight, 0, 1, "materials[%d].texture_weight", i));
     TRY(check_f(err, m->texture_radiance, 0, BIG, "materials[%d].texture_radiance", i));
+    if (!bounded_string(m->skin_preset, sizeof m->skin_preset) ||
+        !bounded_string(m->wood_preset, sizeof m->wood_preset))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d]: a preset name is not terminated", i);
+    sk_result r;
+    if (m->type == SK_RENDER_MATERIAL_SKIN && (r = sk_skin_desc_validate(&m->skin, err)) != SK_OK)
+        return sk__prefix(r, err, "materials[%d].skin", i);
+    if (m->type == SK_RENDER_MATERIAL_WOOD && (r = sk_wood_desc_validate(&m->wood, err)) != SK_OK)
+        return sk__prefix(r, err, "materials[%d].wood", i);
     return SK_OK;
 }
 
-static sk_result validate_object(const sk_render_scene_desc *d, const sk_render_object_desc *o,
+static sk_result validate_object(const sk_render_scene_desc *d, const sk_render_object_desc *given,
                                  int i, sk_error *err)
 {
     char p[PATH];
+    sk_render_object_desc resolved = *given, *o = &resolved;
+    object_resolve(o);
     if (!bounded_string(o->name, sizeof o->name) || !bounded_string(o->file, sizeof o->file) ||
         !bounded_string(o->material, sizeof o->material))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "objects[%d]: a string is not terminated", i);
@@ -187,9 +220,11 @@ static sk_result validate_object(const sk_render_scene_desc *d, const sk_render_
     return validate_transform(&o->transform, p, err);
 }
 
-static sk_result validate_light(const sk_render_light_desc *l, int i, sk_error *err)
+static sk_result validate_light(const sk_render_light_desc *given, int i, sk_error *err)
 {
     char p[PATH];
+    sk_render_light_desc resolved = *given, *l = &resolved;
+    light_resolve(l);
     TRY(check_i(err, l->type, 0, SK_RENDER_LIGHT_COUNT - 1, "lights[%d].type", i));
     snprintf(p, sizeof p, "lights[%d].color", i);
     TRY(check_v(err, l->color, 3, 0, BIG, p));
@@ -218,17 +253,25 @@ static sk_result validate_light(const sk_render_light_desc *l, int i, sk_error *
 
 sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_error *err)
 {
-    sk_render_scene_desc d = sk_render_scene_desc_resolved(desc);
-    TRY(check_f(err, d.unit_mm, 1e-6, 1e9, "unit_mm"));
-    TRY(check_i(err, d.image.width, 1, SK_RENDER_MAX_DIMENSION, "image.width"));
-    TRY(check_i(err, d.image.height, 1, SK_RENDER_MAX_DIMENSION, "image.height"));
-    TRY(check_i(err, d.image.samples, 1, SK_RENDER_MAX_SAMPLES, "image.samples"));
-    TRY(check_f(err, d.film.exposure, -30, 30, "film.exposure"));
-    TRY(check_i(err, d.film.tonemap, 0, SK_RENDER_TONEMAP_COUNT - 1, "film.tonemap"));
-    TRY(check_f(err, d.film.white, 0, 1e6, "film.white"));
-    TRY(check_v(err, d.film.background, 3, 0, BIG, "film.background"));
+    /* resolved part by part on the stack (the whole desc is large) */
+    const sk_render_scene_desc *d = desc;
+    float unit_mm = d->unit_mm == 0 ? 1.0f : d->unit_mm;
+    sk_render_image_desc image = d->image;
+    sk_render_camera_desc camera = d->camera;
+    sk_render_environment_desc environment = d->environment;
+    image_resolve(&image);
+    camera_resolve(&camera);
+    environment_resolve(&environment);
+    TRY(check_f(err, unit_mm, 1e-6, 1e9, "unit_mm"));
+    TRY(check_i(err, image.width, 1, SK_RENDER_MAX_DIMENSION, "image.width"));
+    TRY(check_i(err, image.height, 1, SK_RENDER_MAX_DIMENSION, "image.height"));
+    TRY(check_i(err, image.samples, 1, SK_RENDER_MAX_SAMPLES, "image.samples"));
+    TRY(check_f(err, d->film.exposure, -30, 30, "film.exposure"));
+    TRY(check_i(err, d->film.tonemap, 0, SK_RENDER_TONEMAP_COUNT - 1, "film.tonemap"));
+    TRY(check_f(err, d->film.white, 0, 1e6, "film.white"));
+    TRY(check_v(err, d->film.background, 3, 0, BIG, "film.background"));
 
-    const sk_render_camera_desc *c = &d.camera;
+    const sk_render_camera_desc *c = &camera;
     TRY(check_i(err, c->projection, 0, SK_RENDER_PROJECTION_COUNT - 1, "camera.projection"));
     TRY(check_v(err, c->position, 3, -BIG, BIG, "camera.position"));
     TRY(check_v(err, c->target, 3, -BIG, BIG, "camera.target"));
@@ -249,25 +292,25 @@ sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_err
                            c->up[1], c->up[2]);
     }
 
-    const sk_render_environment_desc *e = &d.environment;
+    const sk_render_environment_desc *e = &environment;
     TRY(check_v(err, e->radiance, 3, 0, BIG, "environment.radiance"));
     TRY(check_f(err, e->ao_distance, 0, BIG, "environment.ao_distance"));
     TRY(check_i(err, e->ao_samples, 1, 256, "environment.ao_samples"));
 
-    TRY(check_i(err, d.material_count, 0, SK_RENDER_MAX_MATERIALS, "materials (count)"));
-    TRY(check_i(err, d.object_count, 0, SK_RENDER_MAX_OBJECTS, "objects (count)"));
-    TRY(check_i(err, d.light_count, 0, SK_RENDER_MAX_LIGHTS, "lights (count)"));
-    for (int i = 0; i < d.material_count; i++) {
-        TRY(validate_material(&d.materials[i], i, err));
+    TRY(check_i(err, d->material_count, 0, SK_RENDER_MAX_MATERIALS, "materials (count)"));
+    TRY(check_i(err, d->object_count, 0, SK_RENDER_MAX_OBJECTS, "objects (count)"));
+    TRY(check_i(err, d->light_count, 0, SK_RENDER_MAX_LIGHTS, "lights (count)"));
+    for (int i = 0; i < d->material_count; i++) {
+        TRY(validate_material(&d->materials[i], i, err));
         for (int k = 0; k < i; k++)
-            if (strcmp(d.materials[k].name, d.materials[i].name) == 0)
+            if (strcmp(d->materials[k].name, d->materials[i].name) == 0)
                 return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                                "materials[%d].name = \"%s\" is already the name of materials[%d]",
-                               i, d.materials[i].name, k);
+                               i, d->materials[i].name, k);
     }
-    for (int i = 0; i < d.object_count; i++) TRY(validate_object(&d, &d.objects[i], i, err));
-    for (int i = 0; i < d.light_count; i++) TRY(validate_light(&d.lights[i], i, err));
-    if (!bounded_string(d.base_dir, sizeof d.base_dir))
+    for (int i = 0; i < d->object_count; i++) TRY(validate_object(d, &d->objects[i], i, err));
+    for (int i = 0; i < d->light_count; i++) TRY(validate_light(&d->lights[i], i, err));
+    if (!bounded_string(d->base_dir, sizeof d->base_dir))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "base_dir is not terminated");
     return SK_OK;
 }

@@ -9,13 +9,18 @@
 
 #include "render/render_internal.h"
 
+sk_mat3f sk__transform_rotation(const sk_render_transform *t)
+{
+    sk_mat3d rot = sk_m3d_mul(sk_m3d_rot_z(t->rotate[2]),
+                              sk_m3d_mul(sk_m3d_rot_y(t->rotate[1]), sk_m3d_rot_x(t->rotate[0])));
+    return sk_m3d_to_f(rot);
+}
+
 sk_mat4f sk__transform_matrix(const sk_render_transform *t)
 {
     float sx = t->scale[0], sy = t->scale[1], sz = t->scale[2];
     if (sx == 0 && sy == 0 && sz == 0) sx = sy = sz = 1.0f;
-    sk_mat3d rot = sk_m3d_mul(sk_m3d_rot_z(t->rotate[2]),
-                              sk_m3d_mul(sk_m3d_rot_y(t->rotate[1]), sk_m3d_rot_x(t->rotate[0])));
-    sk_mat3f lin = sk_m3d_to_f(rot);
+    sk_mat3f lin = sk__transform_rotation(t);
     for (int i = 0; i < 3; i++) {
         lin.m[i][0] *= sx;
         lin.m[i][1] *= sy;
@@ -52,14 +57,13 @@ static sk_result object_mesh(const sk_render_scene *scene, int i, sk_mesh *mesh,
     sk_result r;
     if (o->shape != SK_RENDER_SHAPE_MESH) {
         r = sk_render_make_primitive(o, mesh, err);
-        if (r != SK_OK) return sk_error_prefix(err, "objects[%d]", i);
-        return SK_OK;
+        return r == SK_OK ? r : sk__prefix(r, err, "objects[%d]", i);
     }
     if (o->file[0]) {
         char path[2 * SK_RENDER_PATH_SIZE];
         sk__join_path(scene->desc.base_dir, o->file, path, sizeof path);
         r = sk_mesh_read(mesh, path, NULL, err);
-        if (r != SK_OK) return sk_error_prefix(err, "objects[%d].file = \"%s\"", i, o->file);
+        if (r != SK_OK) return sk__prefix(r, err, "objects[%d].file = \"%s\"", i, o->file);
         if (mesh->triangle_count == 0) {
             sk_mesh_free(mesh);
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
@@ -67,12 +71,12 @@ static sk_result object_mesh(const sk_render_scene *scene, int i, sk_mesh *mesh,
         }
     } else {
         if ((r = sk_mesh_validate(o->mesh, err)) != SK_OK)
-            return sk_error_prefix(err, "objects[%d].mesh", i);
+            return sk__prefix(r, err, "objects[%d].mesh", i);
         if (o->mesh->triangle_count == 0)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "objects[%d].mesh has no triangles", i);
         if ((r = copy_mesh(o->mesh, mesh, err)) != SK_OK) {
             sk_mesh_free(mesh);
-            return sk_error_prefix(err, "objects[%d].mesh", i);
+            return sk__prefix(r, err, "objects[%d].mesh", i);
         }
     }
     if (mesh->vertex_count > UINT32_MAX) {
@@ -82,7 +86,7 @@ static sk_result object_mesh(const sk_render_scene *scene, int i, sk_mesh *mesh,
     }
     if ((r = sk_render_compute_tangents(mesh, err)) != SK_OK) {
         sk_mesh_free(mesh);
-        return sk_error_prefix(err, "objects[%d]", i);
+        return sk__prefix(r, err, "objects[%d]", i);
     }
     return SK_OK;
 }
@@ -190,7 +194,7 @@ sk_result sk__geometry_build(sk_render_scene *scene, sk_error *err)
         sk_result r = object_mesh(scene, i, &m->mesh, err);
         if (r != SK_OK) return r;
         scene->mesh_count++;
-        if ((r = build_mesh(scene, m, err)) != SK_OK) return sk_error_prefix(err, "objects[%d]", i);
+        if ((r = build_mesh(scene, m, err)) != SK_OK) return sk__prefix(r, err, "objects[%d]", i);
         mesh_of[i] = scene->mesh_count - 1;
     }
     scene->top = rtcNewScene(scene->device);
@@ -201,6 +205,7 @@ sk_result sk__geometry_build(sk_render_scene *scene, sk_error *err)
         in->mesh = mesh_of[i];
         in->material = material_index(scene, d->objects[i].material);
         in->to_world = sk__transform_matrix(&d->objects[i].transform);
+        in->rotation = sk__transform_rotation(&d->objects[i].transform);
         if (!sk_m4f_affine_inverse(in->to_world, &in->to_object))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "objects[%d].transform is singular", i);
         sk_mat3f inv;
@@ -287,10 +292,14 @@ void sk__geometry_hit(const sk_render_scene *scene, unsigned instance, unsigned 
     float w = TG[4 * ix[0] + 3];
 
     sk_render_surface *s = &sh->surface;
-    s->object_point = p_obj;
-    s->object_normal = n_obj;
     s->point = sk_m4f_apply_point(in->to_world, p_obj);
     s->normal = sk_v3f_normalize(sk_m3f_apply(in->normal_matrix, n_obj));
+    /* the object frame of solid textures: translation and rotation undone, scale kept */
+    sk_mat3f unrotate = sk_m3f_transpose(in->rotation);
+    s->object_point = sk_m3f_apply(unrotate, sk_v3f(s->point.x - in->to_world.m[0][3],
+                                                    s->point.y - in->to_world.m[1][3],
+                                                    s->point.z - in->to_world.m[2][3]));
+    s->object_normal = sk_m3f_apply(unrotate, s->normal);
     sh->geometric_normal = sk_v3f_normalize(sk_m3f_apply(in->normal_matrix, ng_obj));
     sk_vec3f t = apply_linear(&in->to_world, t_obj);
     t = sk_v3f_sub(t, sk_v3f_scale(s->normal, sk_v3f_dot(s->normal, t)));
