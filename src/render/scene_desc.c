@@ -73,6 +73,7 @@ void sk_render_scene_desc_resolve(const sk_render_scene_desc *desc, sk_render_sc
 
 /* ---- checks with formatted key paths */
 
+/* Range and NaN check of an int or float value; the key path is formatted only on failure. */
 static sk_result check_f(sk_error *err, double v, double lo, double hi, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
 static sk_result check_f(sk_error *err, double v, double lo, double hi, const char *fmt, ...)
@@ -84,19 +85,6 @@ static sk_result check_f(sk_error *err, double v, double lo, double hi, const ch
     vsnprintf(name, sizeof name, fmt, ap);
     va_end(ap);
     return sk_check_range_f(err, name, v, lo, hi);
-}
-
-static sk_result check_i(sk_error *err, long long v, long long lo, long long hi, const char *fmt, ...)
-    __attribute__((format(printf, 5, 6)));
-static sk_result check_i(sk_error *err, long long v, long long lo, long long hi, const char *fmt, ...)
-{
-    if (v >= lo && v <= hi) return SK_OK;
-    char name[PATH];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(name, sizeof name, fmt, ap);
-    va_end(ap);
-    return sk_check_range_i(err, name, v, lo, hi);
 }
 
 static sk_result check_v(sk_error *err, const float *v, int n, double lo, double hi,
@@ -151,7 +139,7 @@ static sk_result validate_material(const sk_render_material_desc *given, int i, 
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d]: a string is not terminated", i);
     if (m->name[0] == '\0')
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d].name is empty (objects refer to materials by name)", i);
-    TRY(check_i(err, m->type, 0, SK_RENDER_MATERIAL_TYPE_COUNT - 1, "materials[%d].type", i));
+    TRY(check_f(err, m->type, 0, SK_RENDER_MATERIAL_TYPE_COUNT - 1, "materials[%d].type", i));
     snprintf(p, sizeof p, "materials[%d].albedo", i);
     TRY(check_v(err, m->albedo, 3, 0, 1, p));
     TRY(check_f(err, m->specular, 0, 1, "materials[%d].specular", i));
@@ -183,8 +171,8 @@ static sk_result validate_object(const sk_render_scene_desc *d, const sk_render_
     if (!bounded_string(o->name, sizeof o->name) || !bounded_string(o->file, sizeof o->file) ||
         !bounded_string(o->material, sizeof o->material))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "objects[%d]: a string is not terminated", i);
-    TRY(check_i(err, o->shape, 0, SK_RENDER_SHAPE_COUNT - 1, "objects[%d].shape", i));
-    TRY(check_i(err, o->uv, 0, SK_RENDER_UV_COUNT - 1, "objects[%d].uv", i));
+    TRY(check_f(err, o->shape, 0, SK_RENDER_SHAPE_COUNT - 1, "objects[%d].shape", i));
+    TRY(check_f(err, o->uv, 0, SK_RENDER_UV_COUNT - 1, "objects[%d].uv", i));
     if (o->shape == SK_RENDER_SHAPE_MESH && o->file[0] == '\0' && !o->mesh)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "objects[%d].file is empty: shape \"mesh\" needs a mesh file (or choose a "
@@ -201,8 +189,8 @@ static sk_result validate_object(const sk_render_scene_desc *d, const sk_render_
                        o->size[1], o->size[2]);
     TRY(check_f(err, o->radius, 1e-30, BIG, "objects[%d].radius", i));
     TRY(check_f(err, o->height, 1e-30, BIG, "objects[%d].height", i));
-    TRY(check_i(err, o->segments, 3, 4096, "objects[%d].segments", i));
-    TRY(check_i(err, o->rings, 2, 4096, "objects[%d].rings", i));
+    TRY(check_f(err, o->segments, 3, 4096, "objects[%d].segments", i));
+    TRY(check_f(err, o->rings, 2, 4096, "objects[%d].rings", i));
     if (o->material[0] && find_material(d, o->material) < 0) {
         char names[256] = "";
         size_t used = 0;
@@ -225,7 +213,7 @@ static sk_result validate_light(const sk_render_light_desc *given, int i, sk_err
     char p[PATH];
     sk_render_light_desc resolved = *given, *l = &resolved;
     light_resolve(l);
-    TRY(check_i(err, l->type, 0, SK_RENDER_LIGHT_COUNT - 1, "lights[%d].type", i));
+    TRY(check_f(err, l->type, 0, SK_RENDER_LIGHT_COUNT - 1, "lights[%d].type", i));
     snprintf(p, sizeof p, "lights[%d].color", i);
     TRY(check_v(err, l->color, 3, 0, BIG, p));
     TRY(check_f(err, l->intensity, 0, BIG, "lights[%d].intensity", i));
@@ -237,7 +225,7 @@ static sk_result validate_light(const sk_render_light_desc *given, int i, sk_err
     TRY(check_v(err, l->size, 2, 0, BIG, p));
     snprintf(p, sizeof p, "lights[%d].up", i);
     TRY(check_v(err, l->up, 3, -BIG, BIG, p));
-    TRY(check_i(err, l->samples, 1, 256, "lights[%d].samples", i));
+    TRY(check_f(err, l->samples, 1, 256, "lights[%d].samples", i));
     if (l->type == SK_RENDER_LIGHT_DIRECTIONAL && sk__v3f_is_zero(l->direction))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "lights[%d].direction is zero", i);
     if (l->type == SK_RENDER_LIGHT_RECT) {
@@ -263,16 +251,16 @@ sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_err
     camera_resolve(&camera);
     environment_resolve(&environment);
     TRY(check_f(err, unit_mm, 1e-6, 1e9, "unit_mm"));
-    TRY(check_i(err, image.width, 1, SK_RENDER_MAX_DIMENSION, "image.width"));
-    TRY(check_i(err, image.height, 1, SK_RENDER_MAX_DIMENSION, "image.height"));
-    TRY(check_i(err, image.samples, 1, SK_RENDER_MAX_SAMPLES, "image.samples"));
+    TRY(check_f(err, image.width, 1, SK_RENDER_MAX_DIMENSION, "image.width"));
+    TRY(check_f(err, image.height, 1, SK_RENDER_MAX_DIMENSION, "image.height"));
+    TRY(check_f(err, image.samples, 1, SK_RENDER_MAX_SAMPLES, "image.samples"));
     TRY(check_f(err, d->film.exposure, -30, 30, "film.exposure"));
-    TRY(check_i(err, d->film.tonemap, 0, SK_RENDER_TONEMAP_COUNT - 1, "film.tonemap"));
+    TRY(check_f(err, d->film.tonemap, 0, SK_RENDER_TONEMAP_COUNT - 1, "film.tonemap"));
     TRY(check_f(err, d->film.white, 0, 1e6, "film.white"));
     TRY(check_v(err, d->film.background, 3, 0, BIG, "film.background"));
 
     const sk_render_camera_desc *c = &camera;
-    TRY(check_i(err, c->projection, 0, SK_RENDER_PROJECTION_COUNT - 1, "camera.projection"));
+    TRY(check_f(err, c->projection, 0, SK_RENDER_PROJECTION_COUNT - 1, "camera.projection"));
     TRY(check_v(err, c->position, 3, -BIG, BIG, "camera.position"));
     TRY(check_v(err, c->target, 3, -BIG, BIG, "camera.target"));
     TRY(check_v(err, c->up, 3, -BIG, BIG, "camera.up"));
@@ -295,11 +283,11 @@ sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_err
     const sk_render_environment_desc *e = &environment;
     TRY(check_v(err, e->radiance, 3, 0, BIG, "environment.radiance"));
     TRY(check_f(err, e->ao_distance, 0, BIG, "environment.ao_distance"));
-    TRY(check_i(err, e->ao_samples, 1, 256, "environment.ao_samples"));
+    TRY(check_f(err, e->ao_samples, 1, 256, "environment.ao_samples"));
 
-    TRY(check_i(err, d->material_count, 0, SK_RENDER_MAX_MATERIALS, "materials (count)"));
-    TRY(check_i(err, d->object_count, 0, SK_RENDER_MAX_OBJECTS, "objects (count)"));
-    TRY(check_i(err, d->light_count, 0, SK_RENDER_MAX_LIGHTS, "lights (count)"));
+    TRY(check_f(err, d->material_count, 0, SK_RENDER_MAX_MATERIALS, "materials (count)"));
+    TRY(check_f(err, d->object_count, 0, SK_RENDER_MAX_OBJECTS, "objects (count)"));
+    TRY(check_f(err, d->light_count, 0, SK_RENDER_MAX_LIGHTS, "lights (count)"));
     for (int i = 0; i < d->material_count; i++) {
         TRY(validate_material(&d->materials[i], i, err));
         for (int k = 0; k < i; k++)
