@@ -253,7 +253,8 @@ typedef struct sk_render_material_desc {
     /* wood: sk_wood_eval at the point in the object's frame (in mm) gives the albedo (rings,
        fibre streaks, vessels) that replaces `albedo`, and sk_wood_shade the reflection: the
        figure sheen of eq. (4) (diffuse on the true normal, specular on the normal tilted by
-       the fibre's dive angle) or the 3D fibre highlight, by the wood's shading model. */
+       the fibre's dive angle) or the 3D fibre highlight, by the wood's shading model (so
+       `specular` and `shininess` are not used). The environment lights its diffuse part. */
     char wood_preset[SK_RENDER_PATH_SIZE]; /* a shipped wood preset ("fig9", "oak") or a JSON
                                               file relative to the scene */
     int wood_set_count;
