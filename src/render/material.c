@@ -50,10 +50,10 @@ sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
         m->albedo_texture = m->normal_map = -1;
         if (m->desc.albedo_texture[0] &&
             (r = texture_index(scene, m->desc.albedo_texture, true, &m->albedo_texture, err)) != SK_OK)
-            sk__prefix(r, err, "materials[%d].albedo_texture = \"%s\"", i, m->desc.albedo_texture);
+            sk_error_prefix(err, r, "materials[%d].albedo_texture = \"%s\"", i, m->desc.albedo_texture);
         if (r == SK_OK && m->desc.normal_map[0] &&
             (r = texture_index(scene, m->desc.normal_map, false, &m->normal_map, err)) != SK_OK)
-            sk__prefix(r, err, "materials[%d].normal_map = \"%s\"", i, m->desc.normal_map);
+            sk_error_prefix(err, r, "materials[%d].normal_map = \"%s\"", i, m->desc.normal_map);
         if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_SKIN) r = sk__skin_material_build(m, i, err);
         if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_WOOD) r = sk__wood_material_build(m, i, err);
     }

@@ -8,7 +8,7 @@
 sk_result sk__skin_material_build(sk__material *m, int index, sk_error *err)
 {
     sk_result r = sk_skin_create(&m->skin, &m->desc.skin, err);
-    return r == SK_OK ? r : sk__prefix(r, err, "materials[%d].skin", index);
+    return r == SK_OK ? r : sk_error_prefix(err, r, "materials[%d].skin", index);
 }
 
 void sk__skin_material_destroy(sk__material *m)

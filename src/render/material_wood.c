@@ -11,7 +11,7 @@
 sk_result sk__wood_material_build(sk__material *m, int index, sk_error *err)
 {
     sk_result r = sk_wood_create(&m->desc.wood, &m->wood, err);
-    if (r != SK_OK) return sk__prefix(r, err, "materials[%d].wood", index);
+    if (r != SK_OK) return sk_error_prefix(err, r, "materials[%d].wood", index);
     m->brdf = SK__BRDF_WOOD;
     m->wood_kd = sk_wood_get_desc(m->wood)->shading.diffuse;
     return SK_OK;

@@ -205,13 +205,6 @@ sk_mat4f sk__transform_matrix(const sk_render_transform *t);
 sk_mat3f sk__transform_rotation(const sk_render_transform *t);
 /* `name` resolved against the folder `base` ("" = as is; absolute names stay as they are). */
 void sk__join_path(const char *base, const char *name, char *out, size_t size);
-/* Prefixes err's message with the formatted key path (if err is not NULL) and returns
- * `result` (sk_error_prefix alone returns SK_OK for a NULL err). */
-sk_result sk__prefix(sk_result result, sk_error *err, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
 /* True if `path` ends in `ext` (".png"), ignoring case. */
 bool sk__has_extension(const char *path, const char *ext);
 

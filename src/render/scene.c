@@ -1,6 +1,5 @@
 /* A renderable scene: validated desc, materials and their textures, geometry in Embree,
  * the camera (framed on the geometry if asked) and the lights. */
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,17 +13,6 @@ void sk__join_path(const char *base, const char *name, char *out, size_t size)
         snprintf(out, size, "%s", name);
     else
         snprintf(out, size, "%s/%s", base, name);
-}
-
-sk_result sk__prefix(sk_result result, sk_error *err, const char *fmt, ...)
-{
-    char prefix[SK_ERROR_MESSAGE_SIZE];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(prefix, sizeof prefix, fmt, ap);
-    va_end(ap);
-    sk_error_prefix(err, "%s", prefix);
-    return result;
 }
 
 bool sk__has_extension(const char *path, const char *ext)

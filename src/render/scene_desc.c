@@ -156,9 +156,9 @@ static sk_result validate_material(const sk_render_material_desc *given, int i, 
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d]: a preset name is not terminated", i);
     sk_result r;
     if (m->type == SK_RENDER_MATERIAL_SKIN && (r = sk_skin_desc_validate(&m->skin, err)) != SK_OK)
-        return sk__prefix(r, err, "materials[%d].skin", i);
+        return sk_error_prefix(err, r, "materials[%d].skin", i);
     if (m->type == SK_RENDER_MATERIAL_WOOD && (r = sk_wood_desc_validate(&m->wood, err)) != SK_OK)
-        return sk__prefix(r, err, "materials[%d].wood", i);
+        return sk_error_prefix(err, r, "materials[%d].wood", i);
     return SK_OK;
 }
 

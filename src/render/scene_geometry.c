@@ -57,13 +57,13 @@ static sk_result object_mesh(const sk_render_scene *scene, int i, sk_mesh *mesh,
     sk_result r;
     if (o->shape != SK_RENDER_SHAPE_MESH) {
         r = sk_render_make_primitive(o, mesh, err);
-        return r == SK_OK ? r : sk__prefix(r, err, "objects[%d]", i);
+        return r == SK_OK ? r : sk_error_prefix(err, r, "objects[%d]", i);
     }
     if (o->file[0]) {
         char path[2 * SK_RENDER_PATH_SIZE];
         sk__join_path(scene->desc.base_dir, o->file, path, sizeof path);
         r = sk_mesh_read(mesh, path, NULL, err);
-        if (r != SK_OK) return sk__prefix(r, err, "objects[%d].file = \"%s\"", i, o->file);
+        if (r != SK_OK) return sk_error_prefix(err, r, "objects[%d].file = \"%s\"", i, o->file);
         if (mesh->triangle_count == 0) {
             sk_mesh_free(mesh);
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
@@ -71,12 +71,12 @@ static sk_result object_mesh(const sk_render_scene *scene, int i, sk_mesh *mesh,
         }
     } else {
         if ((r = sk_mesh_validate(o->mesh, err)) != SK_OK)
-            return sk__prefix(r, err, "objects[%d].mesh", i);
+            return sk_error_prefix(err, r, "objects[%d].mesh", i);
         if (o->mesh->triangle_count == 0)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "objects[%d].mesh has no triangles", i);
         if ((r = copy_mesh(o->mesh, mesh, err)) != SK_OK) {
             sk_mesh_free(mesh);
-            return sk__prefix(r, err, "objects[%d].mesh", i);
+            return sk_error_prefix(err, r, "objects[%d].mesh", i);
         }
     }
     if (mesh->vertex_count > UINT32_MAX) {
@@ -86,7 +86,7 @@ static sk_result object_mesh(const sk_render_scene *scene, int i, sk_mesh *mesh,
     }
     if ((r = sk_render_compute_tangents(mesh, err)) != SK_OK) {
         sk_mesh_free(mesh);
-        return sk__prefix(r, err, "objects[%d]", i);
+        return sk_error_prefix(err, r, "objects[%d]", i);
     }
     return SK_OK;
 }
@@ -194,7 +194,7 @@ sk_result sk__geometry_build(sk_render_scene *scene, sk_error *err)
         sk_result r = object_mesh(scene, i, &m->mesh, err);
         if (r != SK_OK) return r;
         scene->mesh_count++;
-        if ((r = build_mesh(scene, m, err)) != SK_OK) return sk__prefix(r, err, "objects[%d]", i);
+        if ((r = build_mesh(scene, m, err)) != SK_OK) return sk_error_prefix(err, r, "objects[%d]", i);
         mesh_of[i] = scene->mesh_count - 1;
     }
     scene->top = rtcNewScene(scene->device);

@@ -80,12 +80,12 @@ static sk_result resolve_preset(const sk_render_load_desc *load, const char *bas
                        "'shitsukan presets %s')", index, m, ref->name, m, m);
     sk_preset *preset = NULL;
     sk_result r = sk_preset_load_file(&preset, path, err);
-    if (r != SK_OK) return sk__prefix(r, err, "materials[%d].%s_preset = \"%s\"", index, m, ref->name);
+    if (r != SK_OK) return sk_error_prefix(err, r, "materials[%d].%s_preset = \"%s\"", index, m, ref->name);
     for (int k = 0; r == SK_OK && k < ref->set_count; k++)
         if ((r = sk_preset_set(preset, ref->sets[k].text, err)) != SK_OK)
-            sk__prefix(r, err, "materials[%d].%s_set[%d]", index, m, k);
+            sk_error_prefix(err, r, "materials[%d].%s_set[%d]", index, m, k);
     if (r == SK_OK && (r = sk_preset_bind(preset, ref->schema, ref->desc, err)) != SK_OK)
-        sk__prefix(r, err, "materials[%d].%s_preset = \"%s\"", index, m, ref->name);
+        sk_error_prefix(err, r, "materials[%d].%s_preset = \"%s\"", index, m, ref->name);
     sk_preset_free(preset);
     return r;
 }
