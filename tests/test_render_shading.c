@@ -273,6 +273,39 @@ static void test_bump_matches_tilted_plane(void **state)
     }
 }
 
+/* The shadow terminator: a bumped surface lit almost edge-on to its actual plane fades to
+ * black continuously as the light reaches the geometric horizon (no hard edge of light),
+ * and is exact again (equal to the tilted plane) once the light is 0.15 in cosine above it. */
+static void test_bump_terminator_is_soft(void **state)
+{
+    (void)state;
+    float g[2] = {0.5f, 0}; /* normal tilted by atan(0.5) towards -x */
+    const float cosines[] = {0.001f, 0.01f, 0.05f, 0.1f, 0.15f, 0.2f};
+    float prev = -1, first = 0, last = 0;
+    for (size_t i = 0; i < sizeof cosines / sizeof cosines[0]; i++) {
+        float c = cosines[i];
+        sk_render_scene_desc *d = plane_scene(1, 1, 1);
+        add_directional(d, sk_v3f(-sqrtf(1 - c * c), c, 0), 1);
+        d->materials[0].texture = constant_slope;
+        d->materials[0].texture_user = g;
+        float rad[3];
+        centre_radiance(d, rad);
+        assert_true(rad[0] > prev); /* rises steadily from the horizon */
+        prev = rad[0];
+        if (i == 0) first = rad[0];
+        last = rad[0];
+        if (c >= 0.15f) { /* beyond the fade: the exact tilted-plane value */
+            float tilted[3];
+            d->materials[0].texture = NULL;
+            d->objects[0].transform.rotate[2] = (float)atan(0.5);
+            centre_radiance(d, tilted);
+            assert_near(rad[0], tilted[0], 2e-5 + 1e-4 * tilted[0]);
+        }
+        free(d);
+    }
+    assert_true(first < 0.01f * last);
+}
+
 /* A constant normal map (16-bit PNG, linear) equals the tilted plane too. */
 static void test_normal_map_matches_tilted_plane(void **state)
 {
@@ -495,6 +528,7 @@ int main(void)
         cmocka_unit_test(test_environment_and_occlusion),
         cmocka_unit_test(test_blinn_phong_energy),
         cmocka_unit_test(test_bump_matches_tilted_plane),
+        cmocka_unit_test(test_bump_terminator_is_soft),
         cmocka_unit_test(test_normal_map_matches_tilted_plane),
         cmocka_unit_test(test_texture_blend),
         cmocka_unit_test(test_albedo_texture_orientation),

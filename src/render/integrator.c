@@ -29,6 +29,18 @@ static bool occluded(const sk_render_scene *scene, sk__worker *w, sk_vec3f o, sk
     return blocked;
 }
 
+/* Bumped and interpolated normals are lit right up to the geometric terminator, where
+ * the shadow ray is cut off by the surface itself: a hard edge of light (the "shadow
+ * terminator" problem). The light is faded out over the last few degrees before the
+ * terminator (geometric cosine 0.15 .. 0) so the edge is soft. Where the shading normal
+ * is the geometric one nothing changes, so flat and exactly tilted surfaces keep their
+ * exact radiance. */
+static inline float terminator_fade(float cos_geometric, sk_vec3f ns, sk_vec3f ng)
+{
+    if (ns.x == ng.x && ns.y == ng.y && ns.z == ng.z) return 1.0f;
+    return sk_smoothstepf(0.0f, 0.15f, cos_geometric);
+}
+
 /* Direct light from every light source. */
 static sk_vec3f direct_light(const sk_render_scene *scene, sk__worker *w, const sk__shading *sh,
                              const sk__sample_id *id)
@@ -46,8 +58,10 @@ static sk_vec3f direct_light(const sk_render_scene *scene, sk__worker *w, const 
             sk_vec3f wi, weight;
             float dist;
             if (!sk__light_sample(l, p, u, &wi, &dist, &weight)) continue;
-            if (sk_v3f_dot(ng, wi) <= 0) continue; /* behind the actual surface */
-            sk_vec3f f = sk__material_reflect(sh, wi);
+            float cos_g = sk_v3f_dot(ng, wi);
+            if (cos_g <= 0) continue; /* behind the actual surface */
+            sk_vec3f f = sk_v3f_scale(sk__material_reflect(sh, wi),
+                                      terminator_fade(cos_g, sh->shading_normal, ng));
             if (f.x == 0 && f.y == 0 && f.z == 0) continue;
             if (l->shadows) {
                 sk_vec3f o = sk__offset_origin(p, ng, wi);
