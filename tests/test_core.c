@@ -34,17 +34,18 @@ static void test_fail_and_prefix(void **state)
     assert_int_equal(sk_fail(&err, SK_ERROR_PARSE, "line %d: bad", 7), SK_ERROR_PARSE);
     assert_int_equal(err.result, SK_ERROR_PARSE);
     assert_string_equal(err.message, "line 7: bad");
-    assert_int_equal(sk_error_prefix(&err, "file.obj"), SK_ERROR_PARSE);
+    assert_int_equal(sk_error_prefix(&err, SK_ERROR_PARSE, "file.obj"), SK_ERROR_PARSE);
     assert_string_equal(err.message, "file.obj: line 7: bad");
-    /* NULL err is accepted everywhere */
+    /* NULL err is accepted everywhere, and the result still passes up */
     assert_int_equal(sk_fail(NULL, SK_ERROR_IO, "x"), SK_ERROR_IO);
+    assert_int_equal(sk_error_prefix(NULL, SK_ERROR_LIMIT, "ctx"), SK_ERROR_LIMIT);
     /* a long message is truncated, never overflows */
     char big[2000];
     memset(big, 'a', sizeof big - 1);
     big[sizeof big - 1] = '\0';
     sk_fail(&err, SK_ERROR_IO, "%s", big);
     assert_int_equal(strlen(err.message), SK_ERROR_MESSAGE_SIZE - 1);
-    sk_error_prefix(&err, "p");
+    sk_error_prefix(&err, SK_ERROR_IO, "p");
     assert_int_equal(strlen(err.message), SK_ERROR_MESSAGE_SIZE - 1);
     sk_error_clear(&err);
     assert_int_equal(err.result, SK_OK);

@@ -180,6 +180,37 @@ static void test_png_roundtrip_all_layouts(void **state)
         }
 }
 
+/* The zlib level changes the file size, never the pixels; out-of-range levels are refused. */
+static void test_png_compression_level(void **state)
+{
+    (void)state;
+    sk_image img = {0};
+    assert_int_equal(sk_image_create(&img, 256, 128, 3, NULL), SK_OK);
+    for (int i = 0; i < 256 * 128 * 3; i++) img.data[i] = (float)((i * 7) % 256) / 255.0f;
+    const char *fast = sk_test_path("image/level1.png"), *small = sk_test_path("image/level9.png");
+    sk_png_write_desc d1 = {.compression_level = 1}, d9 = {.compression_level = 9};
+    assert_int_equal(sk_image_write_png(&img, fast, &d1, NULL), SK_OK);
+    assert_int_equal(sk_image_write_png(&img, small, &d9, NULL), SK_OK);
+    char *a, *b;
+    size_t sa, sb;
+    assert_int_equal(sk_read_file(fast, 0, &a, &sa, NULL), SK_OK);
+    assert_int_equal(sk_read_file(small, 0, &b, &sb, NULL), SK_OK);
+    assert_true(sb < sa);
+    free(a);
+    free(b);
+    sk_image ra = {0}, rb = {0};
+    assert_int_equal(sk_image_read_png(&ra, fast, NULL, NULL, NULL, NULL), SK_OK);
+    assert_int_equal(sk_image_read_png(&rb, small, NULL, NULL, NULL, NULL), SK_OK);
+    assert_memory_equal(ra.data, rb.data, sizeof(float) * 256 * 128 * 3);
+    sk_error err = {0};
+    sk_png_write_desc bad = {.compression_level = 10};
+    assert_int_equal(sk_image_write_png(&img, fast, &bad, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "compression_level = 10 is out of range [1, 9]"));
+    sk_image_free(&ra);
+    sk_image_free(&rb);
+    sk_image_free(&img);
+}
+
 static void test_png_16bit_gradient_exact(void **state)
 {
     (void)state;
@@ -908,6 +939,7 @@ int main(void)
         cmocka_unit_test(test_srgb_curve),
         cmocka_unit_test(test_png_roundtrip_all_layouts),
         cmocka_unit_test(test_png_16bit_gradient_exact),
+        cmocka_unit_test(test_png_compression_level),
         cmocka_unit_test(test_png_16bit_srgb_table),
         cmocka_unit_test(test_png_srgb_encoding_known_code),
         cmocka_unit_test(test_png_metadata_roundtrip),

@@ -200,7 +200,7 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
     sk_error err = {0};
     int pairs[16][2], n = 0;
     if (sk_hand_parse_pairs(pairs_text, pairs, 16, &n, &err) != SK_OK) {
-        sk_error_prefix(&err, "--pairs");
+        sk_error_prefix(&err, err.result, "--pairs");
         return cli_fail_error(&err);
     }
     sk_hand_samples samples;
@@ -546,7 +546,7 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
     sk_error err = {0};
     int pairs[64][2], n = 0;
     if (sk_hand_parse_pairs(pairs_text, pairs, 64, &n, &err) != SK_OK) {
-        sk_error_prefix(&err, "--pairs");
+        sk_error_prefix(&err, err.result, "--pairs");
         return cli_fail_error(&err);
     }
     sk_hand_samples samples;
@@ -556,7 +556,7 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
     int rc = 0;
     if (sk_hand_calibrate((const double *const *)samples.column, samples.count, (const int(*)[2])pairs, n, rule,
                           fits, &err) != SK_OK) {
-        sk_error_prefix(&err, "%s", path);
+        sk_error_prefix(&err, err.result, "%s", path);
         rc = cli_fail_error(&err);
     }
     char note[512];

@@ -7,8 +7,11 @@ extern const cli_command cmd_sheet;
 extern const cli_command cmd_hand_pose;
 extern const cli_command cmd_hand_animate;
 extern const cli_command cmd_hand_calibrate;
+extern const cli_command cmd_skin;
+extern const cli_command cmd_skin_maps;
 extern const cli_command cmd_wood_cut;
 extern const cli_command cmd_wood_sweep;
+extern const cli_command cmd_render;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -17,7 +20,10 @@ const cli_command *const cli_commands[] = {
     &cmd_hand_pose,
     &cmd_hand_animate,
     &cmd_hand_calibrate,
+    &cmd_skin,
+    &cmd_skin_maps,
     &cmd_wood_cut,
     &cmd_wood_sweep,
+    &cmd_render,
     NULL,
 };

@@ -58,11 +58,12 @@ sk_result sk_fail(sk_error *err, sk_result result, const char *fmt, ...)
     ;
 sk_result sk_failv(sk_error *err, sk_result result, const char *fmt, va_list args);
 
-/* Prefixes the message already in `err` with "prefix: " (for adding context such as a
- * file name or key path on the way up). Returns err->result (SK_OK if err is NULL). */
-sk_result sk_error_prefix(sk_error *err, const char *fmt, ...)
+/* Prefixes the message in `err` (if not NULL) with "prefix: " and sets err->result to
+ * `result`, for adding context (a file name, a key path) on the way up. Returns `result`,
+ * so a failure passes up in one line: `return sk_error_prefix(err, r, "%s", path);`. */
+sk_result sk_error_prefix(sk_error *err, sk_result result, const char *fmt, ...)
 #if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
+    __attribute__((format(printf, 3, 4)))
 #endif
     ;
 

@@ -41,9 +41,10 @@ sk_result sk_fail(sk_error *err, sk_result result, const char *fmt, ...)
     return result;
 }
 
-sk_result sk_error_prefix(sk_error *err, const char *fmt, ...)
+sk_result sk_error_prefix(sk_error *err, sk_result result, const char *fmt, ...)
 {
-    if (!err) return SK_OK;
+    if (!err) return result;
+    err->result = result;
     char prefix[SK_ERROR_MESSAGE_SIZE];
     va_list args;
     va_start(args, fmt);
@@ -57,7 +58,7 @@ sk_result sk_error_prefix(sk_error *err, const char *fmt, ...)
         for (const char *c = parts[i]; *c && pos + 1 < sizeof joined; c++) joined[pos++] = *c;
     joined[pos] = '\0';
     memcpy(err->message, joined, sizeof joined);
-    return err->result;
+    return result;
 }
 
 void sk_error_clear(sk_error *err)

@@ -148,7 +148,7 @@ sk_result sk_contact_sheet(const sk_image *const *tiles, const char *const *labe
             r = sk_image_resize_filter(tiles[i], w, h, d.tile_filter, &scaled, err);
             if (r != SK_OK) {
                 free(sheet.data);
-                return sk_error_prefix(err, "tiles[%d]", i);
+                return sk_error_prefix(err, r, "tiles[%d]", i);
             }
             sk_draw_blit(&sheet, &scaled, tx, ty);
             free(scaled.data);

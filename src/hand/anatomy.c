@@ -204,7 +204,7 @@ sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *sou
         }
     }
     cJSON_Delete(root);
-    if (r != SK_OK) sk_error_prefix(err, "%s", source_name);
+    if (r != SK_OK) sk_error_prefix(err, r, "%s", source_name);
     return r;
 }
 

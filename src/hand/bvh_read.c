@@ -159,7 +159,7 @@ sk_result sk_bvh_parse(const char *text, size_t length, const char *source_name,
     sk_result r = parse(&lx, out, err);
     if (r != SK_OK) {
         sk_bvh_free(out);
-        sk_error_prefix(err, "%s", source_name);
+        sk_error_prefix(err, r, "%s", source_name);
     }
     return r;
 }

@@ -208,7 +208,7 @@ sk_result sk_hand_constraints_parse(const char *text, size_t length, const char 
     /* K + A'WA must be positive definite (negative weights may break it) */
     if (r == SK_OK) r = sk_hand__check_positive_definite(s, out, err);
     if (r != SK_OK) {
-        sk_error_prefix(err, "%s", source_name);
+        sk_error_prefix(err, r, "%s", source_name);
         memset(out, 0, sizeof *out);
     }
     return r;

@@ -65,7 +65,7 @@ sk_result sk_hand_frames_write_png(const sk_hand_skeleton *skeleton, const doubl
     }
     if (first_result != SK_OK) {
         if (err) *err = first;
-        sk_error_prefix(err, "frame %d", failed_frame);
+        sk_error_prefix(err, first_result, "frame %d", failed_frame);
         return first_result;
     }
     return SK_OK;

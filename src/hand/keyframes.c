@@ -171,7 +171,7 @@ sk_result sk_hand_animation_parse(const char *text, size_t length, const char *n
         r = parse_animation(root, out, err);
         cJSON_Delete(root);
     }
-    if (r != SK_OK) sk_error_prefix(err, "%s", name);
+    if (r != SK_OK) sk_error_prefix(err, r, "%s", name);
     return r;
 }
 

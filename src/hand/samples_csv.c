@@ -124,7 +124,7 @@ sk_result sk_hand_samples_parse(const char *text, size_t length, const char *nam
     if (r == SK_OK && out->count == 0) r = sk_fail(err, SK_ERROR_PARSE, "no samples after the header");
     if (r != SK_OK) {
         sk_hand_samples_free(out);
-        sk_error_prefix(err, "%s", name);
+        sk_error_prefix(err, r, "%s", name);
     }
     return r;
 }

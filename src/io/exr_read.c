@@ -229,7 +229,7 @@ static sk_result read_image(exr_reader *r, sk_image_metadata *meta)
                        r->window.min.x, r->window.min.y, r->window.max.x, r->window.max.y);
     res = sk__image_check_size(w, h, r->channels, r->err);
     if (res != SK_OK) {
-        sk_error_prefix(r->err, "%s: data window", p);
+        sk_error_prefix(r->err, res, "%s: data window", p);
         return res;
     }
     res = check_file_holds_pixels(r, w, h);

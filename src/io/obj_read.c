@@ -360,7 +360,7 @@ static sk_result build_mesh(obj_reader *r, sk_mesh *mesh)
         /* Only v lines: a point cloud. */
         sk_result res = sk__mesh_create_capped(mesh, r->v.count, 0, has_colors ? SK_MESH_COLORS : 0,
                                                cap, r->err);
-        if (res != SK_OK) return sk_error_prefix(r->err, "%s", r->path);
+        if (res != SK_OK) return sk_error_prefix(r->err, res, "%s", r->path);
         if (r->v.count) memcpy(mesh->positions, v, r->v.count * 3 * sizeof(float));
         if (has_colors) memcpy(mesh->colors, colors, r->v.count * 3 * sizeof(float));
         return SK_OK;
@@ -375,7 +375,7 @@ static sk_result build_mesh(obj_reader *r, sk_mesh *mesh)
     int flags = (has_uv ? SK_MESH_UVS : 0) | (has_normal ? SK_MESH_NORMALS : 0) |
                 (has_colors ? SK_MESH_COLORS : 0);
     sk_result res = sk__mesh_create_capped(mesh, count, r->tris.count, flags, cap, r->err);
-    if (res != SK_OK) return sk_error_prefix(r->err, "%s", r->path);
+    if (res != SK_OK) return sk_error_prefix(r->err, res, "%s", r->path);
     memcpy(mesh->indices, r->tris.data, r->tris.count * 3 * sizeof(uint32_t));
     bool missing_normal = false;
     for (size_t i = 0; i < count; i++) {

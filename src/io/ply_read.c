@@ -712,13 +712,13 @@ static sk_result create_mesh(ply_reader *r)
     int flags = (r->normals ? SK_MESH_NORMALS : 0) | (r->uvs ? SK_MESH_UVS : 0) |
                 (r->colors ? SK_MESH_COLORS : 0);
     sk_result res = sk__mesh_create_capped(r->mesh, vertex_count, 0, flags, r->budget.max, r->err);
-    if (res != SK_OK) return sk_error_prefix(r->err, "%s", r->path);
+    if (res != SK_OK) return sk_error_prefix(r->err, res, "%s", r->path);
     size_t bytes;
     sk__mesh_bytes(vertex_count, 0, flags, 0, &bytes);
     r->budget.used += bytes;
     for (int a = 0; a < r->attribute_count; a++) {
         res = sk_mesh_add_attribute(r->mesh, r->attr_names[a], r->attr_components[a], NULL, r->err);
-        if (res != SK_OK) return sk_error_prefix(r->err, "%s", r->path);
+        if (res != SK_OK) return sk_error_prefix(r->err, res, "%s", r->path);
         r->budget.used += vertex_count * (size_t)r->attr_components[a] * sizeof(float);
     }
     return SK_OK;

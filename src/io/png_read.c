@@ -134,7 +134,7 @@ static bool read_body(png_reader *r)
     sk_result size_ok = sk__image_check_size(width, height, channels, r->err);
     if (size_ok != SK_OK) {
         r->result = size_ok;
-        sk_error_prefix(r->err, "%s", r->path);
+        sk_error_prefix(r->err, size_ok, "%s", r->path);
         return false;
     }
     /* Deflate cannot compress better than 1032:1, so the file must hold at least its
@@ -164,7 +164,7 @@ static bool read_body(png_reader *r)
     sk_result created = sk_image_create(r->image, (int)width, (int)height, channels, r->err);
     if (created != SK_OK) {
         r->result = created;
-        sk_error_prefix(r->err, "%s", r->path);
+        sk_error_prefix(r->err, created, "%s", r->path);
         return false;
     }
     size_t buffer_rows = passes > 1 ? (size_t)height : 1;

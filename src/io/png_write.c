@@ -17,6 +17,7 @@ typedef struct png_writer {
     sk__png_error error;
     const sk_image *image;
     int bit_depth;
+    int compression_level;
     sk_png_encoding encoding;
     FILE *fp;
     png_structp png;
@@ -88,6 +89,7 @@ static bool write_body(png_writer *w)
     static const int color_types[5] = {0, PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA,
                                        PNG_COLOR_TYPE_RGB, PNG_COLOR_TYPE_RGB_ALPHA};
     png_init_io(w->png, w->fp);
+    png_set_compression_level(w->png, w->compression_level);
     png_set_IHDR(w->png, w->info, (png_uint_32)w->image->width, (png_uint_32)w->image->height,
                  w->bit_depth, color_types[w->image->channels], PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -210,6 +212,9 @@ sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_p
     if (d.bit_depth != 8 && d.bit_depth != 16)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "bit_depth = %d: must be 8 or 16",
                        d.bit_depth);
+    if (d.compression_level == 0) d.compression_level = 6;
+    r = sk_check_range_i(err, "compression_level", d.compression_level, 1, 9);
+    if (r != SK_OK) return r;
     if (d.encoding == SK_PNG_ENCODING_DEFAULT) d.encoding = SK_PNG_ENCODING_SRGB;
     if (d.encoding != SK_PNG_ENCODING_SRGB && d.encoding != SK_PNG_ENCODING_LINEAR)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "encoding = %d is not a sk_png_encoding",
@@ -220,6 +225,7 @@ sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_p
     w->image = image;
     w->bit_depth = d.bit_depth;
     w->encoding = d.encoding;
+    w->compression_level = d.compression_level;
     r = prepare_texts(w, d.metadata, err);
     if (r != SK_OK) {
         free(w);

@@ -32,6 +32,8 @@ int sk_test_cli(sk_test_run *run, const char *args_fmt, ...)
 /* Number of lines in a NUL-terminated text (a final line without newline counts). */
 int sk_test_count_lines(const char *text);
 bool sk_test_file_exists(const char *path);
+/* True if both files exist and hold the same bytes. */
+bool sk_test_same_file(const char *a, const char *b);
 /* Writes `size` bytes to path (for malformed-input tests). */
 void sk_test_write_file(const char *path, const void *data, size_t size);
 /* Lists names in folder containing `needle` (e.g. ".tmp"), returns the count. */

@@ -1,0 +1,312 @@
+/* Hierarchy (paper sec. 3.2.3 (1), Figs. 8 and 9): inside every cell of a level, the
+ * centre points of the next level that fall in it are Voronoi-divided among themselves
+ * and clipped to the (straight) parent polygon, with parent-child links kept. The points
+ * come from one lattice per level over the whole tile, so children of neighbouring
+ * parents continue one another's layout; a parent that catches no point gets one child at
+ * its centre. Children take the parent's boundary unchanged; the parent's perturbation
+ * carries them (see skin_internal.h, Frames), so they tile the perturbed parent. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "skin/skin_internal.h"
+
+/* Boundary tags are negative: -(parent use index) - 2. */
+static int64_t parent_tag(uint32_t use) { return -(int64_t)use - 2; }
+
+typedef struct child_point {
+    uint32_t parent;
+    uint32_t order; /* lattice index, or UINT32_MAX for a parent's fallback centre */
+    double x, y;    /* y space, frame of the level-1 ancestor */
+} child_point;
+
+static int child_cmp(const void *pa, const void *pb)
+{
+    const child_point *a = pa, *b = pb;
+    if (a->parent != b->parent) return a->parent < b->parent ? -1 : 1;
+    return a->order < b->order ? -1 : (a->order > b->order);
+}
+
+typedef struct dist_item {
+    double d2;
+    uint32_t j;
+} dist_item;
+
+static int dist_cmp(const void *pa, const void *pb)
+{
+    const dist_item *a = pa, *b = pb;
+    if (a->d2 != b->d2) return a->d2 < b->d2 ? -1 : 1;
+    return a->j < b->j ? -1 : (a->j > b->j);
+}
+
+/* A clipped child polygon kept between the parallel clipping and the layout. */
+typedef struct child_poly {
+    int n;
+    double *x, *y;
+    int64_t *tag;
+} child_poly;
+
+static bool child_poly_keep(child_poly *cp, const sk__poly *p)
+{
+    cp->n = p->n;
+    cp->x = malloc(sizeof(double) * (size_t)p->n);
+    cp->y = malloc(sizeof(double) * (size_t)p->n);
+    cp->tag = malloc(sizeof(int64_t) * (size_t)p->n);
+    if (!cp->x || !cp->y || !cp->tag) return false;
+    memcpy(cp->x, p->x, sizeof(double) * (size_t)p->n);
+    memcpy(cp->y, p->y, sizeof(double) * (size_t)p->n);
+    memcpy(cp->tag, p->tag, sizeof(int64_t) * (size_t)p->n);
+    return true;
+}
+
+static void child_polys_free(child_poly *polys, uint32_t n)
+{
+    for (uint32_t i = 0; i < n; i++) free(polys[i].x), free(polys[i].y), free(polys[i].tag);
+    free(polys);
+}
+
+/* Clips child i (of `n` siblings starting at `first`) to the parent polygon. */
+static bool clip_child(const sk__level *lv, const sk__level *plv, uint32_t parent, const double *zs,
+                       uint32_t first, uint32_t n, uint32_t i, dist_item *order, sk__poly *poly)
+{
+    const sk__cell *pc = &plv->cells[parent];
+    const double(*mi)[2] = (const double(*)[2])lv->minv;
+    double zx = zs[2 * (first + i)], zy = zs[2 * (first + i) + 1];
+    poly->n = (int)pc->use_count;
+    if (poly->n > SK__POLY_MAX) return false;
+    for (uint32_t k = 0; k < pc->use_count; k++) {
+        uint32_t u = pc->first_use + k;
+        double x = plv->vxy[2 * u], y = plv->vxy[2 * u + 1];
+        poly->x[k] = mi[0][0] * x + mi[0][1] * y - zx;
+        poly->y[k] = mi[1][0] * x + mi[1][1] * y - zy;
+        poly->tag[k] = parent_tag(u);
+    }
+    uint32_t m = 0;
+    for (uint32_t j = 0; j < n; j++) {
+        if (j == i) continue;
+        double vx = zs[2 * (first + j)] - zx, vy = zs[2 * (first + j) + 1] - zy;
+        order[m].d2 = vx * vx + vy * vy;
+        order[m].j = j;
+        m++;
+    }
+    if (m > 16) qsort(order, m, sizeof *order, dist_cmp);
+    for (uint32_t q = 0; q < m; q++) {
+        uint32_t j = order[q].j;
+        if (m > 16) {
+            double rmax2 = 0;
+            for (int k = 0; k < poly->n; k++) {
+                double d2 = poly->x[k] * poly->x[k] + poly->y[k] * poly->y[k];
+                if (d2 > rmax2) rmax2 = d2;
+            }
+            if (order[q].d2 > 4.0 * rmax2) break; /* security radius reached */
+        }
+        double vx = zs[2 * (first + j)] - zx, vy = zs[2 * (first + j) + 1] - zy;
+        double vv = vx * vx + vy * vy;
+        if (vv <= 0.0) continue;
+        if (!sk__poly_clip(poly, vx, vy, 0.5 * vv, (int64_t)(first + j))) return false;
+    }
+    return true;
+}
+
+sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_t count,
+                             sk_error *err)
+{
+    sk__level *lv = &skin->levels[level];
+    sk__level *plv = &skin->levels[level - 1];
+    sk_result res = SK_OK;
+    size_t total = (size_t)count + plv->cell_count;
+    child_point *pts = malloc(sizeof(child_point) * total);
+    uint32_t *has = calloc(plv->cell_count, sizeof(uint32_t));
+    if (!pts || !has) {
+        free(pts);
+        free(has);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
+    }
+    /* Which straight parent holds each point (frame F(level), where the levels above are
+       straight and nested). */
+    size_t np = 0;
+    for (uint32_t i = 0; i < count; i++) {
+        float px, py;
+        uint32_t parent = sk__locate_straight(skin, level - 1, xy[2 * i], xy[2 * i + 1], &px, &py);
+        if (parent == SK__SKIN_NONE) continue;
+        pts[np].parent = parent;
+        pts[np].order = i;
+        pts[np].x = px, pts[np].y = py;
+        has[parent] = 1;
+        np++;
+    }
+    for (uint32_t p = 0; p < plv->cell_count; p++)
+        if (!has[p]) {
+            pts[np].parent = p;
+            pts[np].order = UINT32_MAX;
+            pts[np].x = plv->cells[p].cx, pts[np].y = plv->cells[p].cy;
+            np++;
+        }
+    free(has);
+    if (np + plv->cell_count > SK_SKIN_MAX_CELLS) {
+        free(pts);
+        return sk_fail(err, SK_ERROR_LIMIT,
+                       "level %d would have %zu cells; at most %d are "
+                       "supported",
+                       level + 1, np, SK_SKIN_MAX_CELLS);
+    }
+    qsort(pts, np, sizeof *pts, child_cmp);
+
+    uint32_t n_cells = (uint32_t)np;
+    lv->cells = calloc(n_cells ? n_cells : 1, sizeof(sk__cell));
+    double *zs = malloc(sizeof(double) * 2 * (n_cells ? n_cells : 1));
+    sk__poly *poly = malloc(sizeof(sk__poly));
+    size_t use_cap = (size_t)n_cells * 8 + 16, use_count = 0;
+    lv->uses = malloc(sizeof(sk__use) * use_cap);
+    lv->vxy = malloc(sizeof(double) * 2 * use_cap);
+    int64_t *tags = malloc(sizeof(int64_t) * use_cap);
+    if (!lv->cells || !zs || !poly || !lv->uses || !lv->vxy || !tags) {
+        res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
+        goto done;
+    }
+    lv->cell_count = n_cells;
+    double(*m)[2] = lv->m, (*mi)[2] = lv->minv;
+    for (uint32_t i = 0; i < n_cells; i++) {
+        sk__cell *c = &lv->cells[i];
+        c->parent = pts[i].parent;
+        c->sx = (float)pts[i].x, c->sy = (float)pts[i].y;
+        zs[2 * i] = mi[0][0] * pts[i].x + mi[0][1] * pts[i].y;
+        zs[2 * i + 1] = mi[1][0] * pts[i].x + mi[1][1] * pts[i].y;
+        c->zx = (float)zs[2 * i], c->zy = (float)zs[2 * i + 1];
+        sk__cell *pc = &plv->cells[c->parent];
+        if (pc->child_count == 0) pc->first_child = i;
+        pc->child_count++;
+    }
+    /* Clip every child to its parent in parallel (each child is independent), then lay
+       the polygons out in order. */
+    uint32_t max_family = 0;
+    for (uint32_t p = 0; p < plv->cell_count; p++)
+        if (plv->cells[p].child_count > max_family) max_family = plv->cells[p].child_count;
+    child_poly *polys = calloc(n_cells ? n_cells : 1, sizeof(child_poly));
+    if (!polys) {
+        res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
+        goto done;
+    }
+    int failed = 0;
+#pragma omp parallel
+    {
+        dist_item *ord = malloc(sizeof(dist_item) * (max_family ? max_family : 1));
+        sk__poly *pl = malloc(sizeof(sk__poly));
+#pragma omp for schedule(dynamic, 16)
+        for (long q = 0; q < (long)n_cells; q++) {
+            uint32_t ci = (uint32_t)q, p = lv->cells[ci].parent;
+            const sk__cell *pc = &plv->cells[p];
+            if (!ord || !pl ||
+                !clip_child(lv, plv, p, zs, pc->first_child, pc->child_count, ci - pc->first_child,
+                            ord, pl) ||
+                pl->n < 3 || !child_poly_keep(&polys[ci], pl)) {
+#pragma omp atomic write
+                failed = 1;
+            }
+        }
+        free(ord);
+        free(pl);
+    }
+    if (failed) {
+        res = sk_fail(err, SK_ERROR_NUMERIC, "level %d: a cell could not be built", level + 1);
+        child_polys_free(polys, n_cells);
+        goto done;
+    }
+    size_t total_uses = 0;
+    for (uint32_t ci = 0; ci < n_cells; ci++) total_uses += (size_t)polys[ci].n;
+    if (total_uses > use_cap) {
+        use_cap = total_uses;
+        sk__use *nu = realloc(lv->uses, sizeof(sk__use) * use_cap);
+        double *nv = realloc(lv->vxy, sizeof(double) * 2 * use_cap);
+        int64_t *nt = realloc(tags, sizeof(int64_t) * use_cap);
+        if (nu) lv->uses = nu;
+        if (nv) lv->vxy = nv;
+        if (nt) tags = nt;
+        if (!nu || !nv || !nt) {
+            child_polys_free(polys, n_cells);
+            res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
+            goto done;
+        }
+    }
+    for (uint32_t ci = 0; ci < n_cells; ci++) {
+        const child_poly *cp = &polys[ci];
+        sk__cell *c = &lv->cells[ci];
+        double zx = zs[2 * ci], zy = zs[2 * ci + 1];
+        for (int k = 0; k < cp->n; k++) {
+            double lx = cp->x[k] + zx, ly = cp->y[k] + zy;
+            poly->x[k] = m[0][0] * lx + m[0][1] * ly;
+            poly->y[k] = m[1][0] * lx + m[1][1] * ly;
+            poly->tag[k] = cp->tag[k];
+        }
+        poly->n = cp->n;
+        double cx, cy;
+        sk__poly_centroid(poly, &cx, &cy);
+        c->cx = (float)cx, c->cy = (float)cy;
+        c->first_use = (uint32_t)use_count;
+        c->use_count = (uint32_t)poly->n;
+        for (int k = 0; k < poly->n; k++) {
+            sk__use *u = &lv->uses[use_count];
+            memset(u, 0, sizeof *u);
+            int k1 = (k + 1) % poly->n;
+            u->vx = (float)poly->x[k], u->vy = (float)poly->y[k];
+            lv->vxy[2 * use_count] = poly->x[k];
+            lv->vxy[2 * use_count + 1] = poly->y[k];
+            u->edge = SK__SKIN_NONE;
+            u->neighbour = SK__SKIN_NONE;
+            if (poly->tag[k] < 0) {
+                /* a piece of the parent's boundary: the parent's own line */
+                const sk__use *pu = &plv->uses[(uint32_t)(-poly->tag[k] - 2)];
+                u->nx = pu->nx, u->ny = pu->ny, u->d = pu->d;
+            } else {
+                double ex = poly->x[k1] - poly->x[k], ey = poly->y[k1] - poly->y[k];
+                double len = hypot(ex, ey);
+                u->nx = (float)(ey / len), u->ny = (float)(-ex / len);
+                u->d = (float)((ey * poly->x[k] - ex * poly->y[k]) / len);
+                u->neighbour = (uint32_t)poly->tag[k];
+            }
+            tags[use_count] = poly->tag[k];
+            use_count++;
+        }
+    }
+    child_polys_free(polys, n_cells);
+    lv->use_count = (uint32_t)use_count;
+
+    {
+        sk__edge_key *keys = malloc(sizeof(sk__edge_key) * (use_count ? use_count : 1));
+        double *left_site = malloc(sizeof(double) * 2 * (use_count ? use_count : 1));
+        size_t nk = 0;
+        if (!keys || !left_site) {
+            free(keys);
+            free(left_site);
+            res =
+                sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d edges", level + 1);
+            goto done;
+        }
+        for (uint32_t i = 0; i < n_cells; i++) {
+            const sk__cell *c = &lv->cells[i];
+            for (uint32_t k = 0; k < c->use_count; k++) {
+                uint32_t ui = c->first_use + k;
+                if (tags[ui] < 0) continue;
+                uint32_t j = (uint32_t)tags[ui];
+                bool left = i < j;
+                keys[nk].k0 = left ? ((uint64_t)i << 32 | j) : ((uint64_t)j << 32 | i);
+                keys[nk].k1 = 0;
+                keys[nk].use = ui;
+                keys[nk].side = left ? 0 : 1;
+                left_site[2 * ui] = left ? c->sx : lv->cells[j].sx;
+                left_site[2 * ui + 1] = left ? c->sy : lv->cells[j].sy;
+                nk++;
+            }
+        }
+        res = sk__build_edges(skin, level, keys, nk, left_site, err);
+        free(keys);
+        free(left_site);
+    }
+
+done:
+    free(pts);
+    free(zs);
+    free(poly);
+    free(tags);
+    return res;
+}

@@ -1,0 +1,278 @@
+/* Private data of the skin model (Ishii et al. 1991): the cell hierarchy, shared edges
+ * with their midpoint-displacement polylines, and the per-level query structures.
+ *
+ * Frames. Level k is built in the frame F(k-1) in which the levels above it are
+ * unperturbed: its cells are straight convex polygons there (Voronoi cells of its centre
+ * points, clipped to the straight parent). Its perturbation is a homeomorphism of F(k-1)
+ * supported in small triangles around its edges ("supports"): it moves each straight
+ * edge onto its perturbed polyline. Undoing it ("unwarp") gives F(k), where level k is
+ * straight again and level k + 1 lives. F(0) is the world. A query walks down the levels:
+ * locate the cell in F(k-1), unwarp into F(k), evaluate level k's section profile there.
+ * Children therefore tile their perturbed parent exactly, with no clipping of curves.
+ *
+ * Each level is built in its own pre-stretch space z = M^-1 y (M = that level's stretch)
+ * and stored in y coordinates; lines and perturbation vectors fold M in.
+ * Level-1 cells are stored around their site in a canonical tile period; all their
+ * descendants use the same frame (no wrapping below level 1). */
+#ifndef SK_SKIN_INTERNAL_H
+#define SK_SKIN_INTERNAL_H
+
+#include <math.h>
+#include <stdint.h>
+
+#include "shitsukan/skin.h"
+
+#define SK__SKIN_NONE UINT32_MAX
+
+/* One side of an edge as seen by a cell (cells list their uses counter-clockwise). */
+typedef struct sk__use {
+    float vx, vy;     /* start vertex of the edge (y space, cell frame) */
+    float nx, ny, d;  /* outward unit normal and offset: inside is n . y <= d */
+    float asx, asy;   /* gauge from the site: n / (d - n . site) */
+    float acx, acy;   /* gauge from the profile centre: n / (d - n . centre) */
+    float hc;         /* distance from the centre to the line, d - n . centre */
+    float svx, svy;   /* start vertex relative to the site (fan sectors) */
+    float cvx, cvy;   /* start vertex relative to the centre (profile sectors) */
+    float svn, cvn;   /* |svx| + |svy| and |cvx| + |cvy| times the sector margin */
+    float shx, shy;   /* add to a point of this cell's frame to get the edge's frame */
+    uint32_t edge;    /* edge record of this level, or SK__SKIN_NONE (a piece of the
+                         parent's boundary, or an unpaired degenerate edge) */
+    uint32_t neighbour; /* cell across the edge at this level, or SK__SKIN_NONE */
+} sk__use;
+
+/* A shared edge, perturbed once (paper sec. 3.2.1 (1), midpoint displacement). Geometry
+ * in y space in the frame of its left cell. With s the signed distance from the straight
+ * edge (positive towards the left site) and t in [0, 1] along it:
+ *   t = at . (y - a), s = as . (y - a); the polyline is s = f(t);
+ * the perturbation lives in the support |s| < H(t) (a triangle over the edge on each side,
+ * inside the two cells' fan triangles), H(t) = h_apex min(t / t_apex, (1-t) / (1-t_apex)). */
+typedef struct sk__edge {
+    float ax, ay;        /* start point a */
+    float bx, by;        /* end point b */
+    float atx, aty;      /* gradient of t */
+    float asx, asy;      /* gradient of s: the unit normal towards the left site */
+    float dx, dy;        /* displacement per unit of s (the same unit normal) */
+    float t_apex, h_apex;
+    float rise, fall;    /* slopes of H: h_apex / t_apex and h_apex / (1 - t_apex) */
+    float bulge;         /* max |f| times |d|: how far the polyline strays (y units) */
+    float shx, shy;      /* right frame = left frame - shift */
+    uint32_t left, right;
+    uint32_t f_first;    /* first of the level's f values for this edge (f_count of them) */
+} sk__edge;
+
+typedef struct sk__cell {
+    float sx, sy;          /* site (centre point of the Voronoi division), y space */
+    float zx, zy;          /* site in pre-stretch space (nearest-sibling search) */
+    float cx, cy;          /* centre of the section profile: centroid of the straight cell */
+    uint32_t parent;
+    uint32_t first_child, child_count;
+    uint32_t first_use, use_count;
+} sk__cell;
+
+/* A cubic Bezier chain in (x, z) (paper sec. 3.2.1 (2), parameter 5). */
+#define SK__PROFILE_TABLE 256
+typedef struct sk__profile {
+    int segment_count;
+    float x[SK_SKIN_MAX_SEGMENTS][4];
+    float z[SK_SKIN_MAX_SEGMENTS][4];
+    /* z(x) and dz/dx times the step of each segment at SK__PROFILE_TABLE even steps of x
+       (exact values from the Bezier), interpolated as cubic Hermite */
+    float zx[SK_SKIN_MAX_SEGMENTS][SK__PROFILE_TABLE][2];
+    float last_start;      /* x where the last segment starts */
+    /* The last segment under roundness (its end stays at 10, so it is not a scaled copy):
+       power-basis coefficients of Bx and Bz, and t at (g, x) grid points as a first guess
+       for Newton's method, g from 1 - roundness to 1. */
+    float last_xc[4], last_zc[4];
+    float g_min, g_step_inv;
+    float t_guess[9][129]; /* g = g_min .. 1 (9 steps) x x' = 0 .. 10 (129 steps) */
+    float seg_x0[SK_SKIN_MAX_SEGMENTS], seg_inv_w[SK_SKIN_MAX_SEGMENTS]; /* table mapping */
+    float z_min, z_max;    /* bounds of the control points */
+} sk__profile;
+/* Fills the tables of a profile whose control points are set. */
+void sk__profile_prepare(sk__profile *p);
+
+/* Level-1 lookup grid over the tile: each square lists the (cell, tile shift) pairs whose
+ * straight polygon meets it. */
+typedef struct sk__grid {
+    int nx, ny;
+    double inv_w, inv_h;   /* squares per mm */
+    uint32_t *start;       /* nx * ny + 1 */
+    uint32_t *cell;
+    double *shift;         /* 2 per entry: origin of the cell's frame in this tile period */
+} sk__grid;
+
+typedef struct sk__level {
+    uint32_t cell_count, use_count, edge_count;
+    sk__cell *cells;
+    sk__use *uses;
+ sk__edge *edges;
+    double *vxy;           /* use start vertices in double (2 per use), for clipping */
+    float *f;              /* perturbation offsets, f_count per edge */
+    int depth;             /* division depths; f_count = 2^depth + 1 */
+    int f_count;
+    bool perturbed;
+    double m[2][2], minv[2][2]; /* stretch and its inverse */
+    float minvf[2][2];
+    sk__profile profile;
+    float roundness;
+    float z_scale;         /* mm per profile z unit: spacing / 20 */
+    float spacing;         /* nominal spacing (mm, before stretch) */
+} sk__level;
+
+typedef struct sk__pore {
+    float x, y;            /* world, inside the tile period */
+    float radius, depth;
+} sk__pore;
+
+/* Pores bucketed on a grid over the tile period (bucket size >= the largest radius). */
+typedef struct sk__pore_grid {
+    int nx, ny;
+    double inv_w, inv_h;
+    uint32_t *start;
+    sk__pore *pores;
+    uint32_t count;
+    float max_radius;
+} sk__pore_grid;
+
+struct sk_skin {
+    sk_skin_desc desc;     /* resolved */
+    int level_count;
+    double period[2];      /* repeat period in mm (the tile, or more when aperiodic) */
+    double tile[2];        /* the tile (the map's extent) */
+    sk__level levels[SK_SKIN_MAX_LEVELS];
+    sk__grid grid;         /* level 1 */
+    double *origin;        /* level-1 cell frames: the site in the tile period (2 per cell);
+                              cells of every level store coordinates relative to the site
+                              of their level-1 ancestor */
+    sk__pore_grid pores;
+    float height_min, height_max;
+    /* shading, resolved */
+    float light[3], half[3], albedo[3], sun, sky, spec, shininess;
+    int shininess_int;     /* the exponent if it is a whole number up to 1000, else 0 */
+};
+
+/* Wraps a coordinate into [0, period). */
+static inline double sk__wrap(double v, double period)
+{
+    if (v >= 0.0 && v < period) return v;
+    double r = v - period * floor(v / period);
+    return (r >= period || r < 0.0) ? 0.0 : r;
+}
+
+/* ---- construction pieces (one file each) */
+/* Centre points of a level over the period torus (layout.c). Returns the points in y
+ * space, wrapped into [0, period). */
+sk_result sk__layout_points(const sk_skin *skin, int level, double **xy, uint32_t *count,
+                            sk_error *err);
+/* Stretch matrix M = R(angle) diag(sx, sy) R(-angle) and its inverse (stretch.c). */
+void sk__stretch_matrices(const sk_skin_level *lv, double m[2][2], double minv[2][2]);
+
+/* Convex polygon with a tag per edge (edge i runs from v[i] to v[i+1]) (clip.c). */
+#define SK__POLY_MAX 256
+typedef struct sk__poly {
+    int n;
+    double x[SK__POLY_MAX], y[SK__POLY_MAX];
+    int64_t tag[SK__POLY_MAX];
+} sk__poly;
+/* Keeps the part with nx * x + ny * y <= d; new edge tagged `tag`. Returns false when
+ * the polygon would overflow SK__POLY_MAX. */
+bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag);
+void sk__poly_centroid(const sk__poly *p, double *cx, double *cy);
+
+/* Level 1: periodic Voronoi cells (voronoi.c). */
+sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_error *err);
+/* Levels 2..: children of every parent, clipped to it (hierarchy.c). */
+sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_t count,
+                             sk_error *err);
+/* Shared edge tables: pairs the two uses of every edge and fills the edge records and
+ * their perturbation (edges.c). `keys` holds per use (a, b, c) integers identifying the
+ * edge (same triple from both sides, `side` 0 for the left use, 1 for the right). */
+typedef struct sk__edge_key {
+    uint64_t k0, k1;     /* identity of the edge (same from both sides) */
+    uint32_t use;        /* use index */
+    uint8_t side;        /* 0 = left, 1 = right */
+} sk__edge_key;
+sk_result sk__build_edges(sk_skin *skin, int level, sk__edge_key *keys, size_t key_count,
+                          const double *site_left_z, sk_error *err);
+/* Fills the gauge vectors of every use from the lines, sites and centres (edges.c). */
+void sk__finish_uses(sk__level *lv);
+/* Midpoint displacement of one edge (perturb.c). */
+void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double length,
+                      double t_apex, double h_apex, float *f);
+/* The perturbation support of an edge from its left site (perturb.c). */
+void sk__support(double ax, double ay, double bx, double by, double px, double py,
+                 double *t_apex, double *h_apex);
+
+/* Level-1 lookup grid (grid.c). */
+sk_result sk__build_grid(sk_skin *skin, sk_error *err);
+/* Pores (pores.c). */
+sk_result sk__build_pores(sk_skin *skin, sk_error *err);
+void sk__pores_eval(const sk_skin *skin, double x, double y, float *h, float grad[2]);
+
+/* ---- queries */
+/* Locates the level-1 cell of world point (x, y) (straight cells, no perturbation):
+ * returns the cell and the point in its frame (locate.c). */
+uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, float *py,
+                           uint32_t *use, double shift[2]);
+/* Nearest sibling among the children of `parent` at level `level` (0-based). */
+uint32_t sk__locate_child(const sk__level *lv, uint32_t first, uint32_t count, float px,
+                          float py);
+/* Fan triangle of point p in cell c: the use whose line the ray from the site through p
+ * meets first. */
+uint32_t sk__fan_use(const sk__level *lv, uint32_t c, float px, float py);
+/* Unwarps point p (frame of cell c) across the fan edge of use u: returns the owner cell
+ * (c or its neighbour), moves p into the owner's frame and straight cell, and multiplies
+ * jac by the unwarp's Jacobian. */
+uint32_t sk__unwarp(const sk__level *lv, uint32_t c, uint32_t u, float *px, float *py,
+                    float jac[2][2], float *pre_x, float *pre_y);
+/* Relative margin of the sector tests (far above float rounding). */
+#define SK__SECTOR_MARGIN 1e-4f
+
+/* True if p is inside fan triangle k of cell c (site, vertex k, vertex k + 1) by a margin:
+ * then the cell holds p and k is its fan, exactly as the full gauge would find. */
+static inline bool sk__in_fan(const sk__level *lv, uint32_t c, uint32_t k, float px, float py)
+{
+    const sk__cell *cell = &lv->cells[c];
+    if (k >= cell->use_count) return false;
+    const sk__use *u = lv->uses + cell->first_use;
+    const sk__use *a = &u[k], *b = &u[k + 1 == cell->use_count ? 0 : k + 1];
+    float qx = px - cell->sx, qy = py - cell->sy;
+    float q1 = fabsf(qx) + fabsf(qy);
+    return a->svx * qy - a->svy * qx > q1 * a->svn && qx * b->svy - qy * b->svx > q1 * b->svn &&
+           a->asx * qx + a->asy * qy < 1.0f - SK__SECTOR_MARGIN;
+}
+/* The straight cell of `level` (0-based) containing a point of the tile period, going down
+ * the levels without perturbation (frame F(level)); writes the point in the cell's frame. */
+uint32_t sk__locate_straight(const sk_skin *skin, int level, double x, double y, float *px,
+                             float *py);
+/* Moves a point of the straight cell c of level index k (frame F(k+1)) to the world:
+ * the warps of level k and every level above; returns world coordinates (not wrapped). */
+void sk__to_world(const sk_skin *skin, int k, uint32_t c, double px, double py, double *wx,
+                  double *wy);
+
+/* Section profile of level lv at point p of cell c (straight frame): height in mm and
+ * gradient (mm per mm, in that frame) (profile.c). */
+float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, float grad[2],
+                       uint32_t *hint);
+/* Bezier chain helpers (bezier.c). */
+float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg);
+/* Cells found by the previous query of a row of pixels: tried first, and kept only where
+ * the point is inside them by a margin, so results never depend on the hint. */
+typedef struct sk__hint {
+    uint32_t cell[SK_SKIN_MAX_LEVELS];
+    uint32_t fan[SK_SKIN_MAX_LEVELS];    /* use (index in the cell) of the site's fan */
+    uint32_t sector[SK_SKIN_MAX_LEVELS]; /* use of the centre's sector (profile) */
+    double shift[2];
+} sk__hint;
+void sk__hint_reset(sk__hint *hint);
+/* Internal query flag: furrow distance of level k only when bit (SK__FURROW_LEVEL_SHIFT + k)
+ * is set (SK_SKIN_QUERY_FURROW asks for every level). */
+#define SK__FURROW_LEVEL_SHIFT 8
+/* The query behind sk_skin_query, with an optional hint (eval.c). */
+void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_sample *out,
+               sk__hint *hint);
+
+/* Distance from p (frame of cell c, F(k-1)) to the perturbed boundary of c (furrow.c). */
+float sk__furrow_distance(const sk__level *lv, uint32_t c, float px, float py);
+
+#endif /* SK_SKIN_INTERNAL_H */
