@@ -80,11 +80,11 @@ void sk__profile_prepare(sk__profile *p)
     p->g_step_inv = p->g_min < 1.0f ? 8.0f / (1.0f - p->g_min) : 0.0f;
 }
 
-/* The last segment with its inner control points scaled by g (Newton from the table). */
-static float last_segment(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg)
+void sk__last_segment_guess(const sk__profile *p, float g, float xq, sk__newton *s)
 {
-    const float *xc = p->last_xc, *zc = p->last_zc;
-    float c[4] = {g * xc[0], g * xc[1], g * xc[2], g * xc[3] + (1.0f - g) * 10.0f};
+    const float *xc = p->last_xc;
+    float *c = s->c;
+    c[0] = g * xc[0], c[1] = g * xc[1], c[2] = g * xc[2], c[3] = g * xc[3] + (1.0f - g) * 10.0f;
     float gu = (g - p->g_min) * p->g_step_inv;
     if (!(gu > 0.0f)) gu = 0.0f;
     if (gu > 7.999f) gu = 7.999f;
@@ -98,11 +98,19 @@ static float last_segment(const sk__profile *p, float g, float xq, float *dz_dx,
     const float *r0 = p->t_guess[gi], *r1 = p->t_guess[gi + 1];
     float t0 = r0[xi] + (r0[xi + 1] - r0[xi]) * xf, t1 = r1[xi] + (r1[xi + 1] - r1[xi]) * xf;
     float t = p->g_step_inv > 0.0f ? t0 + (t1 - t0) * gf : t0;
-    /* One Newton step from the table's guess (error ~1e-3) leaves ~1e-6; the reciprocal
-       of Bx' is refined for the new t instead of dividing again (relative error ~1e-6). */
     float dx = (3.0f * c[3] * t + 2.0f * c[2]) * t + c[1];
     if (dx < 1e-6f) dx = 1e-6f;
-    float inv = 1.0f / dx;
+    s->t = t;
+    s->inv = 1.0f / dx;
+}
+
+float sk__last_segment_finish(const sk__profile *p, float xq, const sk__newton *s,
+                              float *dz_dx, float *dz_dg)
+{
+    const float *xc = p->last_xc, *zc = p->last_zc, *c = s->c;
+    /* One Newton step from the table's guess (error ~1e-3) leaves ~1e-6; the reciprocal
+       of Bx' is refined for the new t instead of dividing again (relative error ~1e-6). */
+    float t = s->t, inv = s->inv;
     float v = ((c[3] * t + c[2]) * t + c[1]) * t + c[0] - xq;
     t -= v * inv;
     t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
@@ -142,11 +150,9 @@ static float profile_z(const sk__profile *p, float x, float *dz_dx)
     return z;
 }
 
-float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg)
+float sk__profile_scaled(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg)
 {
-    float ls = p->last_start;
-    if (g != 1.0f && xq > g * ls) return last_segment(p, g, xq, dz_dx, dz_dg);
-    float ig = 1.0f / g, slope;
+    float ig = g == 1.0f ? 1.0f : 1.0f / g, slope;
     float z = profile_z(p, xq * ig, &slope);
     *dz_dx = slope * ig;
     *dz_dg = -slope * xq * ig * ig;

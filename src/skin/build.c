@@ -128,7 +128,8 @@ sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
             r = sk__build_children(skin, k, xy, count, err);
         free(xy);
         if (r != SK_OK) goto fail;
-        sk__finish_uses(&skin->levels[k]);
+        r = sk__build_query_records(&skin->levels[k], err);
+        if (r != SK_OK) goto fail;
         if (k == 0) {
             r = sk__build_grid(skin, err);
             if (r != SK_OK) goto fail;
@@ -158,6 +159,8 @@ void sk_skin_destroy(sk_skin *skin)
         free(lv->edges);
         free(lv->vxy);
         free(lv->f);
+        free(lv->fans);
+        free(lv->sectors);
     }
     free(skin->grid.start);
     free(skin->grid.cell);

@@ -1,6 +1,6 @@
 /* Shared edges (paper sec. 3.2.1 (1), Fig. 4): an edge between two cells is perturbed
  * once, keyed by the pair of cells, and both cells use the same record, so the perturbed
- * polygons have no gaps and no overlaps. Also the per-use gauge vectors of the queries. */
+ * polygons have no gaps and no overlaps. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -135,25 +135,4 @@ sk_result sk__build_edges(sk_skin *skin, int level, sk__edge_key *keys, size_t k
     lv->edge_count = e;
     free(use_owner);
     return SK_OK;
-}
-
-void sk__finish_uses(sk__level *lv)
-{
-    for (uint32_t c = 0; c < lv->cell_count; c++) {
-        const sk__cell *cell = &lv->cells[c];
-        for (uint32_t k = 0; k < cell->use_count; k++) {
-            sk__use *u = &lv->uses[cell->first_use + k];
-            double hs = (double)u->d - ((double)u->nx * cell->sx + (double)u->ny * cell->sy);
-            double hc = (double)u->d - ((double)u->nx * cell->cx + (double)u->ny * cell->cy);
-            if (hs < 1e-12) hs = 1e-12;
-            if (hc < 1e-12) hc = 1e-12;
-            u->asx = (float)(u->nx / hs), u->asy = (float)(u->ny / hs);
-            u->acx = (float)(u->nx / hc), u->acy = (float)(u->ny / hc);
-            u->hc = (float)hc;
-            u->svx = u->vx - cell->sx, u->svy = u->vy - cell->sy;
-            u->cvx = u->vx - cell->cx, u->cvy = u->vy - cell->cy;
-            u->svn = (fabsf(u->svx) + fabsf(u->svy)) * SK__SECTOR_MARGIN;
-            u->cvn = (fabsf(u->cvx) + fabsf(u->cvy)) * SK__SECTOR_MARGIN;
-        }
-    }
 }

@@ -49,51 +49,57 @@ sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, s
         int gy = ry + j;
         sk__hint hint;
         sk__hint_reset(&hint);
-        for (int i = 0; i < rw; i++) {
-            int gx = rx + i;
-            size_t o = (size_t)j * (size_t)rw + (size_t)i;
-            double x = (gx + 0.5) * mm_x, y = top - (gy + 0.5) * mm_y;
-            sk_skin_sample s;
-            sk__query(skin, x, y, flags, &s, &hint);
-            if (desc->height_mm) desc->height_mm[o] = s.height_mm;
-            if (desc->normal) {
-                desc->normal[3 * o] = s.normal.x;
-                desc->normal[3 * o + 1] = s.normal.y;
-                desc->normal[3 * o + 2] = s.normal.z;
-            }
-            if (desc->furrow) desc->furrow[o] = s.furrow_mm[furrow_level - 1];
-            if (desc->cell_id) desc->cell_id[o] = s.cell[id_level - 1];
-            if (!desc->preview && !desc->edges) continue;
-            sk_vec3f c = sk_skin_shade(skin, s.normal);
-            if (samples > 1) {
-                c = sk_v3f(0, 0, 0);
-                for (int sy = 0; sy < samples; sy++)
-                    for (int sx = 0; sx < samples; sx++) {
-                        double xs = (gx + (sx + 0.5) / samples) * mm_x;
-                        double ys = top - (gy + (sy + 0.5) / samples) * mm_y;
-                        sk_vec3f n;
-                        sk_skin_eval(skin, xs, ys, NULL, &n);
-                        c = sk_v3f_add(c, sk_skin_shade(skin, n));
-                    }
-                c = sk_v3f_scale(c, 1.0f / (float)(samples * samples));
-            }
-            if (desc->preview) {
-                desc->preview[3 * o] = c.x;
-                desc->preview[3 * o + 1] = c.y;
-                desc->preview[3 * o + 2] = c.z;
-            }
-            if (desc->edges) {
-                float e[3] = {c.x, c.y, c.z};
-                for (int k = L - 1; k >= 0; k--) {
-                    float d = s.furrow_mm[k];
-                    if (d >= line_mm) continue;
-                    float a = 1.0f - d / line_mm;
-                    const float *lc = level_colour[k < 3 ? k : 3];
-                    for (int q = 0; q < 3; q++) e[q] += (lc[q] - e[q]) * a;
+        for (int i0 = 0; i0 < rw; i0 += SK__QUERY_BATCH) {
+            int n = rw - i0 < SK__QUERY_BATCH ? rw - i0 : SK__QUERY_BATCH;
+            double xs[SK__QUERY_BATCH], ys[SK__QUERY_BATCH];
+            sk_skin_sample batch[SK__QUERY_BATCH];
+            for (int b = 0; b < n; b++)
+                xs[b] = (rx + i0 + b + 0.5) * mm_x, ys[b] = top - (gy + 0.5) * mm_y;
+            sk__query(skin, n, xs, ys, flags, batch, &hint);
+            for (int b = 0; b < n; b++) {
+                int i = i0 + b, gx = rx + i;
+                size_t o = (size_t)j * (size_t)rw + (size_t)i;
+                const sk_skin_sample *sp = &batch[b];
+                if (desc->height_mm) desc->height_mm[o] = sp->height_mm;
+                if (desc->normal) {
+                    desc->normal[3 * o] = sp->normal.x;
+                    desc->normal[3 * o + 1] = sp->normal.y;
+                    desc->normal[3 * o + 2] = sp->normal.z;
                 }
-                desc->edges[3 * o] = e[0];
-                desc->edges[3 * o + 1] = e[1];
-                desc->edges[3 * o + 2] = e[2];
+                if (desc->furrow) desc->furrow[o] = sp->furrow_mm[furrow_level - 1];
+                if (desc->cell_id) desc->cell_id[o] = sp->cell[id_level - 1];
+                if (!desc->preview && !desc->edges) continue;
+                sk_vec3f c = sk_skin_shade(skin, sp->normal);
+                if (samples > 1) {
+                    c = sk_v3f(0, 0, 0);
+                    for (int sy = 0; sy < samples; sy++)
+                        for (int sx = 0; sx < samples; sx++) {
+                            double xs1 = (gx + (sx + 0.5) / samples) * mm_x;
+                            double ys1 = top - (gy + (sy + 0.5) / samples) * mm_y;
+                            sk_vec3f nn;
+                            sk_skin_eval(skin, xs1, ys1, NULL, &nn);
+                            c = sk_v3f_add(c, sk_skin_shade(skin, nn));
+                        }
+                    c = sk_v3f_scale(c, 1.0f / (float)(samples * samples));
+                }
+                if (desc->preview) {
+                    desc->preview[3 * o] = c.x;
+                    desc->preview[3 * o + 1] = c.y;
+                    desc->preview[3 * o + 2] = c.z;
+                }
+                if (desc->edges) {
+                    float e[3] = {c.x, c.y, c.z};
+                    for (int k = L - 1; k >= 0; k--) {
+                        float d = sp->furrow_mm[k];
+                        if (d >= line_mm) continue;
+                        float a = 1.0f - d / line_mm;
+                        const float *lc = level_colour[k < 3 ? k : 3];
+                        for (int q = 0; q < 3; q++) e[q] += (lc[q] - e[q]) * a;
+                    }
+                    desc->edges[3 * o] = e[0];
+                    desc->edges[3 * o + 1] = e[1];
+                    desc->edges[3 * o + 2] = e[2];
+                }
             }
         }
         sk__loop_progress_tick(&lp);
