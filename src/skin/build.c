@@ -15,6 +15,8 @@ static void level_setup(sk_skin *skin, int k)
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++) lv->minvf[i][j] = (float)lv->minv[i][j];
     lv->depth = d->perturb_depth;
+    for (int n = 1; n <= lv->depth; n++)
+        lv->amp[n] = d->perturb_rate * exp2(-n * (double)d->perturb_decay);
     lv->perturbed = d->perturb_rate > 0.0f;
     lv->roundness = d->roundness;
     lv->spacing = d->spacing_mm;

@@ -74,7 +74,6 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
     /* Down the levels, the points side by side: the cell (each level's point comes from
        the level above) and the unwarp. Item i = k * m + p holds point p at level k. */
     enum { ITEMS = SK__QUERY_BATCH * SK_SKIN_MAX_LEVELS };
-    int level[ITEMS];
     uint32_t cell[ITEMS];
     float lx[ITEMS], ly[ITEMS], lj[ITEMS][4];
     for (int k = 0; k < L; k++) {
@@ -93,13 +92,13 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
             o->cell[k] = owner;
             if (furrow >> k & 1u) o->furrow_mm[k] = sk__furrow_distance(lv, owner, pre_x, pre_y);
             int i = k * m + p;
-            level[i] = k, cell[i] = owner, lx[i] = px[p], ly[i] = py[p];
+            cell[i] = owner, lx[i] = px[p], ly[i] = py[p];
             for (int q = 0; q < 4; q++) lj[i][q] = jac[p][q];
         }
     }
     /* The profiles of every item at once (independent of one another). */
     float z[ITEMS], g[ITEMS][2];
-    sk__profile_eval(skin, L * m, level, cell, lx, ly, hint->sector, z, g);
+    sk__profile_eval(skin, L, m, cell, lx, ly, hint->sector, z, g);
     for (int p = 0; p < m; p++) {
         float h = 0, gx = 0, gy = 0;
         for (int k = 0; k < L; k++) {

@@ -35,49 +35,55 @@ static int centre_edge(const sk__sector *sec, int n, float qx, float qy, uint32_
     return arg;
 }
 
-/* What a level's profile needs after the first step. */
+/* What an item's profile needs after the first step. */
 enum { FLAT, SCALED, LAST_SEGMENT };
 
 enum { ITEMS = SK__QUERY_BATCH * SK_SKIN_MAX_LEVELS };
 
-void sk__profile_eval(const sk_skin *skin, int count, const int *level, const uint32_t *cell,
-                      const float *px, const float *py, uint32_t *sector, float *z,
-                      float (*grad)[2])
+void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, const float *px,
+                      const float *py, uint32_t *sector, float *z, float (*grad)[2])
 {
     float qx[ITEMS], qy[ITEMS], xq[ITEMS], gxq[ITEMS], gyq[ITEMS], r2[ITEMS];
     float s1[ITEMS], s2[ITEMS], g[ITEMS], ggx[ITEMS], ggy[ITEMS];
+    float dzdx[ITEMS], dzdg[ITEMS];
     const sk__sector *pair[ITEMS];
     int path[ITEMS];
     sk__newton newton[ITEMS];
 
     /* Step 1: the sector (x' and its gradient) and the pair of normals around q. */
-    for (int k = 0; k < count; k++) {
-        const sk__level *lv = &skin->levels[level[k]];
-        const sk__cell *c = &lv->cells[cell[k]];
-        const sk__sector *sec = lv->sectors + c->first_use;
-        int n = (int)c->use_count;
-        float x = px[k] - sec->cx, y = py[k] - sec->cy;
-        float best;
-        int arg = centre_edge(sec, n, x, y, &sector[level[k]], &best);
-        float xk = 10.0f * best;
-        g[k] = 1.0f, ggx[k] = 0.0f, ggy[k] = 0.0f;
-        pair[k] = NULL;
-        if (!(xk < 10.0f)) {
-            path[k] = FLAT;
-            continue;
-        }
-        if (xk < 0.0f) xk = 0.0f;
-        qx[k] = x, qy[k] = y, xq[k] = xk;
-        gxq[k] = 10.0f * sec[arg].gx, gyq[k] = 10.0f * sec[arg].gy; /* gradient of x' */
-        float rr = x * x + y * y;
-        r2[k] = rr;
-        if (lv->roundness > 0.0f && rr > 0.0f && xk > 0.0f) {
+    for (int k = 0; k < L; k++) {
+        const sk__level *lv = &skin->levels[k];
+        bool round = lv->roundness > 0.0f;
+        for (int i = k * m; i < (k + 1) * m; i++) {
+            const sk__cell *c = &lv->cells[cell[i]];
+            const sk__sector *sec = lv->sectors + c->first_use;
+            int n = (int)c->use_count;
+            float x = px[i] - sec->cx, y = py[i] - sec->cy;
+            float best;
+            int arg = centre_edge(sec, n, x, y, &sector[k], &best);
+            float xk = 10.0f * best;
+            pair[i] = NULL;
+            if (!(xk < 10.0f)) {
+                path[i] = FLAT;
+                continue;
+            }
+            path[i] = SCALED;
+            if (xk < 0.0f) xk = 0.0f;
+            qx[i] = x, qy[i] = y, xq[i] = xk;
+            gxq[i] = 10.0f * sec[arg].gx, gyq[i] = 10.0f * sec[arg].gy; /* gradient of x' */
+            float rr = x * x + y * y;
+            r2[i] = rr;
+            if (!(round && rr > 0.0f && xk > 0.0f)) continue;
             /* The pair of consecutive edge normals whose angle holds q: the edge the ray
                meets (arg) has its normal next to the ray, on one side or the other. */
-            int i = arg;
-            if (sec[arg].nx * y - sec[arg].ny * x < 0.0f) i = arg == 0 ? n - 1 : arg - 1;
-            const sk__sector *pr = &sec[i];
-            float a1 = pr->nx * y - pr->ny * x, a2 = x * pr->my - y * pr->mx;
+            const sk__sector *pr = &sec[arg];
+            float a1 = pr->nx * y - pr->ny * x, a2;
+            if (a1 < 0.0f) {
+                pr = &sec[arg == 0 ? n - 1 : arg - 1];
+                a2 = -a1, a1 = pr->nx * y - pr->ny * x;
+            } else {
+                a2 = x * pr->my - y * pr->mx;
+            }
             if (!(a1 >= 0.0f && a2 > 0.0f)) {
                 /* a normal outside its edge's span (obtuse corner): search */
                 for (int j = 0; j < n; j++) {
@@ -88,61 +94,64 @@ void sk__profile_eval(const sk_skin *skin, int count, const int *level, const ui
                     }
                 }
             }
-            if (a1 + a2 > 0.0f) pair[k] = pr, s1[k] = a1, s2[k] = a2;
+            if (a1 + a2 > 0.0f) pair[i] = pr, s1[i] = a1, s2[i] = a2;
         }
-        path[k] = SCALED;
     }
     /* Step 2: the roundness scale g and its gradient. */
-    for (int k = 0; k < count; k++) {
-        const sk__sector *pr = pair[k];
+    int count = L * m;
+    for (int i = 0; i < count; i++) {
+        g[i] = 1.0f, ggx[i] = 0.0f, ggy[i] = 0.0f;
+        const sk__sector *pr = pair[i];
         if (!pr) continue;
-        float rho = skin->levels[level[k]].roundness;
-        float a1 = s1[k], a2 = s2[k], ss = a1 + a2, xk = xq[k];
+        float rho = skin->levels[i / m].roundness;
+        float a1 = s1[i], a2 = s2[i], ss = a1 + a2, xk = xq[i];
         /* one division for both 1 / ss and 1 / r */
-        float r = sqrtf(r2[k]), both = 1.0f / (ss * r);
+        float r = sqrtf(r2[i]), both = 1.0f / (ss * r);
         float iss = r * both, ir = ss * both, t = a1 * iss;
         float h1 = pr->h, h2 = pr->hm;
         float R = h1 + t * (h2 - h1);
         float inv = 0.1f * ir;
         float kappa = R * xk * inv; /* R / D(phi) */
         if (kappa < 1.0f) {
-            /* grad t = (s2 grad s1 - s1 grad s2) / ss^2 */
-            float g1x = -pr->ny, g1y = pr->nx, g2x = pr->my, g2y = -pr->mx;
+            /* grad t = (s2 grad s1 - s1 grad s2) / ss^2, grad s1 = (-ny, nx) of normal 1,
+               grad s2 = (my, -mx) of normal 2 */
             float dh = (h2 - h1) * iss * iss;
-            float Rx = dh * (a2 * g1x - a1 * g2x), Ry = dh * (a2 * g1y - a1 * g2y);
+            float Rx = dh * (-a2 * pr->ny - a1 * pr->my), Ry = dh * (a2 * pr->nx + a1 * pr->mx);
             float k0 = kappa * ir * ir;
-            float kx = (Rx * xk + R * gxq[k]) * inv - k0 * qx[k];
-            float ky = (Ry * xk + R * gyq[k]) * inv - k0 * qy[k];
-            g[k] = 1.0f - rho + rho * kappa;
-            ggx[k] = rho * kx, ggy[k] = rho * ky;
+            float kx = (Rx * xk + R * gxq[i]) * inv - k0 * qx[i];
+            float ky = (Ry * xk + R * gyq[i]) * inv - k0 * qy[i];
+            g[i] = 1.0f - rho + rho * kappa;
+            ggx[i] = rho * kx, ggy[i] = rho * ky;
         }
     }
     /* Step 3: z(x', g): the Newton guess in the last segment, else the scaled profile. */
-    float dzdx[ITEMS], dzdg[ITEMS];
-    for (int k = 0; k < count; k++) {
-        const sk__profile *pr = &skin->levels[level[k]].profile;
-        if (path[k] == FLAT) {
-            z[k] = pr->z[pr->segment_count - 1][3];
-            continue;
-        }
-        if (g[k] != 1.0f && xq[k] > g[k] * pr->last_start) {
-            path[k] = LAST_SEGMENT;
-            sk__last_segment_guess(pr, g[k], xq[k], &newton[k]);
-        } else {
-            z[k] = sk__profile_scaled(pr, g[k], xq[k], &dzdx[k], &dzdg[k]);
+    for (int k = 0; k < L; k++) {
+        const sk__profile *pr = &skin->levels[k].profile;
+        for (int i = k * m; i < (k + 1) * m; i++) {
+            if (path[i] == FLAT) {
+                z[i] = pr->z[pr->segment_count - 1][3];
+            } else if (g[i] != 1.0f && xq[i] > g[i] * pr->last_start) {
+                path[i] = LAST_SEGMENT;
+                sk__last_segment_guess(pr, g[i], xq[i], &newton[i]);
+            } else {
+                z[i] = sk__profile_scaled(pr, g[i], xq[i], &dzdx[i], &dzdg[i]);
+            }
         }
     }
     /* Step 4: the Newton step; heights and gradients in mm. */
-    for (int k = 0; k < count; k++) {
-        const sk__level *lv = &skin->levels[level[k]];
-        if (path[k] == LAST_SEGMENT)
-            z[k] = sk__last_segment_finish(&lv->profile, xq[k], &newton[k], &dzdx[k], &dzdg[k]);
-        if (path[k] == FLAT) {
-            grad[k][0] = grad[k][1] = 0.0f;
-        } else {
-            grad[k][0] = (dzdx[k] * gxq[k] + dzdg[k] * ggx[k]) * lv->z_scale;
-            grad[k][1] = (dzdx[k] * gyq[k] + dzdg[k] * ggy[k]) * lv->z_scale;
+    for (int k = 0; k < L; k++) {
+        const sk__level *lv = &skin->levels[k];
+        float zs = lv->z_scale;
+        for (int i = k * m; i < (k + 1) * m; i++) {
+            if (path[i] == LAST_SEGMENT)
+                z[i] = sk__last_segment_finish(&lv->profile, xq[i], &newton[i], &dzdx[i], &dzdg[i]);
+            if (path[i] == FLAT) {
+                grad[i][0] = grad[i][1] = 0.0f;
+            } else {
+                grad[i][0] = (dzdx[i] * gxq[i] + dzdg[i] * ggx[i]) * zs;
+                grad[i][1] = (dzdx[i] * gyq[i] + dzdg[i] * ggy[i]) * zs;
+            }
+            z[i] *= zs;
         }
-        z[k] *= lv->z_scale;
     }
 }

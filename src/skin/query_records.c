@@ -16,7 +16,9 @@ sk_result sk__build_query_records(sk__level *lv, sk_error *err)
     lv->sectors = aligned_alloc(64, sizeof(sk__sector) * n);
     if (!lv->fans || !lv->sectors)
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the query records");
-    for (uint32_t c = 0; c < lv->cell_count; c++) {
+#pragma omp parallel for schedule(static)
+    for (long ci = 0; ci < (long)lv->cell_count; ci++) {
+        uint32_t c = (uint32_t)ci;
         const sk__cell *cell = &lv->cells[c];
         uint32_t first = cell->first_use, count = cell->use_count;
         for (uint32_t k = 0; k < count; k++) {

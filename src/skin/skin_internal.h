@@ -95,20 +95,24 @@ typedef struct sk__cell {
 
 /* A cubic Bezier chain in (x, z) (paper sec. 3.2.1 (2), parameter 5). */
 #define SK__PROFILE_TABLE 256
+#define SK__GUESS_G 8     /* steps of g in the Newton guess table */
+#define SK__GUESS_X 128   /* steps of x' in it */
 typedef struct sk__profile {
     int segment_count;
     float x[SK_SKIN_MAX_SEGMENTS][4];
     float z[SK_SKIN_MAX_SEGMENTS][4];
-    /* z(x) and dz/dx times the step of each segment at SK__PROFILE_TABLE even steps of x
-       (exact values from the Bezier), interpolated as cubic Hermite */
-    float zx[SK_SKIN_MAX_SEGMENTS][SK__PROFILE_TABLE][2];
+    /* z(x) of each segment at SK__PROFILE_TABLE even steps of x (exact values and slopes
+       from the Bezier), as the cubic Hermite curve of each step in power form:
+       z = a0 + u (a1 + u (a2 + u a3)), u in [0, 1] across the step */
+    float zpoly[SK_SKIN_MAX_SEGMENTS][SK__PROFILE_TABLE - 1][4];
     float last_start;      /* x where the last segment starts */
     /* The last segment under roundness (its end stays at 10, so it is not a scaled copy):
-       power-basis coefficients of Bx and Bz, and t at (g, x) grid points as a first guess
-       for Newton's method, g from 1 - roundness to 1. */
-    float last_xc[4], last_zc[4];
+       power-basis coefficients of Bx and Bz (xd3 = xc3 - 10, zd = the derivative's), and
+       a first guess of t for Newton's method over (g, x'), g from 1 - roundness to 1,
+       bilinear in each cell: t = b0 + b1 xf + gf (b2 + b3 xf). */
+    float last_xc[4], last_xd3, last_zc[4], last_zd[3];
     float g_min, g_step_inv;
-    float t_guess[9][129]; /* g = g_min .. 1 (9 steps) x x' = 0 .. 10 (129 steps) */
+    float t_guess[SK__GUESS_G][SK__GUESS_X][4];
     float seg_x0[SK_SKIN_MAX_SEGMENTS], seg_inv_w[SK_SKIN_MAX_SEGMENTS]; /* table mapping */
     float z_min, z_max;    /* bounds of the control points */
 } sk__profile;
@@ -135,6 +139,7 @@ typedef struct sk__level {
     double *vxy;           /* use start vertices in double (2 per use), for clipping */
     float *f;              /* perturbation offsets, f_count per edge */
     int depth;             /* division depths; f_count = 2^depth + 1 */
+    double amp[11];        /* midpoint displacement amplitude A 2^(-n h) at depth n */
     int f_count;
     bool perturbed;
     double m[2][2], minv[2][2]; /* stretch and its inverse */
@@ -177,6 +182,9 @@ struct sk_skin {
     int shininess_int;     /* the exponent if it is a whole number up to 1000, else 0 */
 };
 
+/* The smaller of two numbers that are not NaN (fmin is a library call without fast-math). */
+static inline double sk__min(double a, double b) { return b < a ? b : a; }
+
 /* Wraps a coordinate into [0, period). */
 static inline double sk__wrap(double v, double period)
 {
@@ -203,7 +211,8 @@ typedef struct sk__poly {
 /* Keeps the part with nx * x + ny * y <= d; new edge tagged `tag`. Returns false when
  * the polygon would overflow SK__POLY_MAX. */
 bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag);
-void sk__poly_centroid(const sk__poly *p, double *cx, double *cy);
+/* Centroid of the polygon (x[i], y[i]), i < n. */
+void sk__polygon_centroid(const double *x, const double *y, int n, double *cx, double *cy);
 
 /* Level 1: periodic Voronoi cells (voronoi.c). */
 sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_error *err);
@@ -211,15 +220,15 @@ sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_e
 sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_t count,
                              sk_error *err);
 /* Shared edge tables: pairs the two uses of every edge and fills the edge records and
- * their perturbation (edges.c). `keys` holds per use (a, b, c) integers identifying the
- * edge (same triple from both sides, `side` 0 for the left use, 1 for the right). */
+ * their perturbation (edges.c). `keys` holds per use the integers identifying its edge:
+ * k0 = (left cell << 32 | right cell) and k1, the same from both sides, and its side. */
+enum { SK__SIDE_LEFT, SK__SIDE_RIGHT, SK__SIDE_NONE };
 typedef struct sk__edge_key {
     uint64_t k0, k1;     /* identity of the edge (same from both sides) */
-    uint32_t use;        /* use index */
-    uint8_t side;        /* 0 = left, 1 = right */
+    uint8_t side;        /* SK__SIDE_LEFT / RIGHT, or NONE for a use that is no shared edge */
 } sk__edge_key;
-sk_result sk__build_edges(sk_skin *skin, int level, sk__edge_key *keys, size_t key_count,
-                          const double *site_left_z, sk_error *err);
+sk_result sk__build_edges(sk_skin *skin, int level, const sk__edge_key *keys,
+                          const double *site_left_y, sk_error *err);
 /* Builds the fan and sector records of a finished level (query_records.c). */
 sk_result sk__build_query_records(sk__level *lv, sk_error *err);
 /* Midpoint displacement of one edge (perturb.c). */
@@ -273,15 +282,14 @@ uint32_t sk__locate_straight(const sk_skin *skin, int level, double x, double y,
 void sk__to_world(const sk_skin *skin, int k, uint32_t c, double px, double py, double *wx,
                   double *wy);
 
-/* Section profiles of n items, item i at point (px[i], py[i]) of cell cell[i] of level
- * level[i] (straight frame of that level): height z[i] in mm and gradient grad[i] (mm per
- * mm, in that frame). sector[k] is the hinted sector of level k (UINT32_MAX for none),
- * updated to the sector found. The items run side by side, step by step: their long
- * dependency chains (square root, divisions, Newton step) overlap in the processor
- * (profile.c). */
-void sk__profile_eval(const sk_skin *skin, int n, const int *level, const uint32_t *cell,
-                      const float *px, const float *py, uint32_t *sector, float *z,
-                      float (*grad)[2]);
+/* Section profiles of m points at each of levels 0 .. L-1: item i = k m + p is point p at
+ * level k, at (px[i], py[i]) of cell cell[i] (straight frame of that level): height z[i]
+ * in mm and gradient grad[i] (mm per mm, in that frame). sector[k] is the hinted sector of
+ * level k (UINT32_MAX for none), updated to the sector found. The items run side by side,
+ * step by step: their long dependency chains (square root, divisions, Newton step) overlap
+ * in the processor (profile.c). */
+void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, const float *px,
+                      const float *py, uint32_t *sector, float *z, float (*grad)[2]);
 /* Bezier chain helpers (bezier.c). Where the roundness scale g < 1 moves x' into the last
  * segment: a Newton solve of Bx(t) = x' in two halves, the table's guess (with 1 / Bx'),
  * then the step, z and its slopes; elsewhere the scaled copy of the profile, z(x' / g). */
