@@ -13,6 +13,8 @@
 
 #define SKIN_DEFAULT_SIZE 400
 #define SKIN_BAND_ROWS 64
+/* Maps of at least this many pixels are written with a fast zlib level. */
+#define SKIN_FAST_PNG_PIXELS (2048 * 2048)
 
 static const cli_option k_preview_options[] = {
     {"size", 0, "N|WxH", "image size in pixels; default 400 (the paper's)", false},
@@ -201,9 +203,15 @@ static sk_result write_maps(const sk_skin *skin, map_images *m, const char *dir,
 
     map_file files[7];
     int count = 0;
-    sk_png_write_desc png16 = {.bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR};
-    sk_png_write_desc png8 = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_LINEAR};
-    sk_png_write_desc srgb = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB};
+    /* Big maps spend most of their time in zlib: level 2 writes a 4096 x 4096 set about
+       three times faster than the default 6, for files 2-20 % larger. */
+    int level = n >= SKIN_FAST_PNG_PIXELS ? 2 : 0;
+    sk_png_write_desc png16 = {.bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR,
+                               .compression_level = level};
+    sk_png_write_desc png8 = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_LINEAR,
+                              .compression_level = level};
+    sk_png_write_desc srgb = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB,
+                              .compression_level = level};
     map_file *f;
 
     f = &files[count++];
@@ -214,6 +222,23 @@ static sk_result write_maps(const sk_skin *skin, map_images *m, const char *dir,
     sk_image_metadata_set(&f->meta, "shitsukan:height_min_mm", v, NULL);
     snprintf(v, sizeof v, "%.9g", hi);
     sk_image_metadata_set(&f->meta, "shitsukan:height_max_mm", v, NULL);
+
+    /* then the slowest encodings first, so the threads finish together */
+    f = &files[count++];
+    *f = (map_file){.image = &m->preview, .png = srgb, .meta = meta};
+    snprintf(f->path, sizeof f->path, "%s/preview.png", dir);
+
+    if (edges) {
+        f = &files[count++];
+        *f = (map_file){.image = &m->edges, .png = srgb, .meta = meta};
+        snprintf(f->path, sizeof f->path, "%s/edges.png", dir);
+    }
+
+    f = &files[count++];
+    *f = (map_file){.image = &m->normal, .png = png8, .meta = meta};
+    snprintf(f->path, sizeof f->path, "%s/normal.png", dir);
+    sk_image_metadata_set(&f->meta, "shitsukan:normal_convention", directx ? "directx" : "opengl",
+                          NULL);
 
     f = &files[count++];
     *f = (map_file){.image = &scaled, .png = png16, .meta = files[0].meta};
@@ -230,24 +255,8 @@ static sk_result write_maps(const sk_skin *skin, map_images *m, const char *dir,
     sk_image_metadata_set(&f->meta, "shitsukan:decode", v, NULL);
 
     f = &files[count++];
-    *f = (map_file){.image = &m->normal, .png = png8, .meta = meta};
-    snprintf(f->path, sizeof f->path, "%s/normal.png", dir);
-    sk_image_metadata_set(&f->meta, "shitsukan:normal_convention", directx ? "directx" : "opengl",
-                          NULL);
-
-    f = &files[count++];
     *f = (map_file){.image = &m->cells, .png = png8, .meta = meta};
     snprintf(f->path, sizeof f->path, "%s/cells.png", dir);
-
-    f = &files[count++];
-    *f = (map_file){.image = &m->preview, .png = srgb, .meta = meta};
-    snprintf(f->path, sizeof f->path, "%s/preview.png", dir);
-
-    if (edges) {
-        f = &files[count++];
-        *f = (map_file){.image = &m->edges, .png = srgb, .meta = meta};
-        snprintf(f->path, sizeof f->path, "%s/edges.png", dir);
-    }
 
     sk_result results[7];
     sk_error errors[7];

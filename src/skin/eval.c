@@ -58,17 +58,21 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
     unsigned furrow = flags & SK_SKIN_QUERY_FURROW ? ~0u : flags >> SK__FURROW_LEVEL_SHIFT;
     /* Points that lie in the skin, with their fan and position at the current level. */
     int idx[SK__QUERY_BATCH], m = 0;
-    uint32_t u[SK__QUERY_BATCH];
+    uint32_t u[SK__QUERY_BATCH], owner[SK__QUERY_BATCH];
     float px[SK__QUERY_BATCH], py[SK__QUERY_BATCH], jac[SK__QUERY_BATCH][4];
+    int warped[SK__QUERY_BATCH]; /* first level whose unwarp moved the point (else L) */
     for (int j = 0; j < n; j++) {
         sk_skin_sample *o = &out[j];
         o->height_mm = 0.0f;
         o->normal = sk_v3f(0, 0, 1);
-        for (int k = 0; k < L; k++) o->cell[k] = SK__SKIN_NONE, o->furrow_mm[k] = 0.0f;
-        if (!isfinite(x[j]) || !isfinite(y[j])) continue;
         double wx = sk__wrap(x[j], skin->period[0]), wy = sk__wrap(y[j], skin->period[1]);
-        if (!locate_level1(skin, wx, wy, hint, &u[m], &px[m], &py[m])) continue;
+        if (!isfinite(x[j]) || !isfinite(y[j]) ||
+            !locate_level1(skin, wx, wy, hint, &u[m], &px[m], &py[m])) {
+            for (int k = 0; k < L; k++) o->cell[k] = SK__SKIN_NONE, o->furrow_mm[k] = 0.0f;
+            continue;
+        }
         jac[m][0] = 1, jac[m][1] = 0, jac[m][2] = 0, jac[m][3] = 1;
+        warped[m] = L;
         idx[m++] = j;
     }
     /* Down the levels, the points side by side: the cell (each level's point comes from
@@ -79,21 +83,25 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
     for (int k = 0; k < L; k++) {
         const sk__level *lv = &skin->levels[k];
         for (int p = 0; p < m; p++) {
-            sk_skin_sample *o = &out[idx[p]];
-            if (k > 0) u[p] = locate_child(skin, k, o->cell[k - 1], px[p], py[p], hint);
+            if (k > 0) u[p] = locate_child(skin, k, owner[p], px[p], py[p], hint);
             const sk__fan *fan = &lv->fans[u[p]];
             float pre_x = px[p], pre_y = py[p];
-            uint32_t owner = fan->cell;
-            if (fan->edge != SK__SKIN_NONE) {
+            uint32_t c = fan->cell;
+            if (fan->edge != SK__SKIN_NONE &&
+                !(fan->gx * (px[p] - fan->sx) + fan->gy * (py[p] - fan->sy) < fan->gcut)) {
                 float J[2][2] = {{jac[p][0], jac[p][1]}, {jac[p][2], jac[p][3]}};
-                owner = sk__unwarp(lv, fan, &px[p], &py[p], J, &pre_x, &pre_y);
+                c = sk__unwarp(lv, fan, &px[p], &py[p], J, &pre_x, &pre_y);
                 jac[p][0] = J[0][0], jac[p][1] = J[0][1], jac[p][2] = J[1][0], jac[p][3] = J[1][1];
+                if (warped[p] == L) warped[p] = k;
             }
-            o->cell[k] = owner;
-            if (furrow >> k & 1u) o->furrow_mm[k] = sk__furrow_distance(lv, owner, pre_x, pre_y);
+            owner[p] = c;
+            sk_skin_sample *o = &out[idx[p]];
+            o->cell[k] = c;
+            o->furrow_mm[k] = furrow >> k & 1u ? sk__furrow_distance(lv, c, pre_x, pre_y) : 0.0f;
             int i = k * m + p;
-            cell[i] = owner, lx[i] = px[p], ly[i] = py[p];
-            for (int q = 0; q < 4; q++) lj[i][q] = jac[p][q];
+            cell[i] = c, lx[i] = px[p], ly[i] = py[p];
+            if (warped[p] <= k)
+                for (int q = 0; q < 4; q++) lj[i][q] = jac[p][q];
         }
     }
     /* The profiles of every item at once (independent of one another). */
@@ -101,10 +109,14 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
     sk__profile_eval(skin, L, m, cell, lx, ly, hint->sector, z, g);
     for (int p = 0; p < m; p++) {
         float h = 0, gx = 0, gy = 0;
-        for (int k = 0; k < L; k++) {
+        /* gradient in the world = jac^T g (jac = I above the first unwarp) */
+        for (int k = 0; k < warped[p]; k++) {
+            int i = k * m + p;
+            h += z[i], gx += g[i][0], gy += g[i][1];
+        }
+        for (int k = warped[p]; k < L; k++) {
             int i = k * m + p;
             h += z[i];
-            /* gradient in the world = jac^T g */
             gx += lj[i][0] * g[i][0] + lj[i][2] * g[i][1];
             gy += lj[i][1] * g[i][0] + lj[i][3] * g[i][1];
         }

@@ -43,17 +43,18 @@ enum { ITEMS = SK__QUERY_BATCH * SK_SKIN_MAX_LEVELS };
 void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, const float *px,
                       const float *py, uint32_t *sector, float *z, float (*grad)[2])
 {
-    float qx[ITEMS], qy[ITEMS], xq[ITEMS], gxq[ITEMS], gyq[ITEMS], r2[ITEMS];
-    float s1[ITEMS], s2[ITEMS], g[ITEMS], ggx[ITEMS], ggy[ITEMS];
+    float xq[ITEMS], gxq[ITEMS], gyq[ITEMS];
+    float g[ITEMS], ggx[ITEMS], ggy[ITEMS];
     float dzdx[ITEMS], dzdg[ITEMS];
-    const sk__sector *pair[ITEMS];
     int path[ITEMS];
     sk__newton newton[ITEMS];
 
-    /* Step 1: the sector (x' and its gradient) and the pair of normals around q. */
+    /* Step 1: the sector (x' and its gradient), the pair of normals around q and the
+       roundness scale g. */
     for (int k = 0; k < L; k++) {
         const sk__level *lv = &skin->levels[k];
-        bool round = lv->roundness > 0.0f;
+        float rho = lv->roundness;
+        bool round = rho > 0.0f;
         for (int i = k * m; i < (k + 1) * m; i++) {
             const sk__cell *c = &lv->cells[cell[i]];
             const sk__sector *sec = lv->sectors + c->first_use;
@@ -62,17 +63,16 @@ void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, c
             float best;
             int arg = centre_edge(sec, n, x, y, &sector[k], &best);
             float xk = 10.0f * best;
-            pair[i] = NULL;
+            g[i] = 1.0f, ggx[i] = 0.0f, ggy[i] = 0.0f;
             if (!(xk < 10.0f)) {
                 path[i] = FLAT;
                 continue;
             }
             path[i] = SCALED;
             if (xk < 0.0f) xk = 0.0f;
-            qx[i] = x, qy[i] = y, xq[i] = xk;
+            xq[i] = xk;
             gxq[i] = 10.0f * sec[arg].gx, gyq[i] = 10.0f * sec[arg].gy; /* gradient of x' */
             float rr = x * x + y * y;
-            r2[i] = rr;
             if (!(round && rr > 0.0f && xk > 0.0f)) continue;
             /* The pair of consecutive edge normals whose angle holds q: the edge the ray
                meets (arg) has its normal next to the ray, on one side or the other. */
@@ -94,51 +94,41 @@ void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, c
                     }
                 }
             }
-            if (a1 + a2 > 0.0f) pair[i] = pr, s1[i] = a1, s2[i] = a2;
+            float ss = a1 + a2;
+            if (!(ss > 0.0f)) continue;
+            /* the roundness scale g and its gradient; one division for 1 / ss and 1 / r */
+            float r = sqrtf(rr), both = 1.0f / (ss * r);
+            float iss = r * both, ir = ss * both, t = a1 * iss;
+            float h1 = pr->h, h2 = pr->hm;
+            float R = h1 + t * (h2 - h1);
+            float inv = 0.1f * ir;
+            float kappa = R * xk * inv; /* R / D(phi) */
+            if (kappa < 1.0f) {
+                /* grad t = (s2 grad s1 - s1 grad s2) / ss^2, grad s1 = (-ny, nx) of normal 1,
+                   grad s2 = (my, -mx) of normal 2 */
+                float dh = (h2 - h1) * iss * iss;
+                float Rx = dh * (-a2 * pr->ny - a1 * pr->my), Ry = dh * (a2 * pr->nx + a1 * pr->mx);
+                float k0 = kappa * ir * ir;
+                float kx = (Rx * xk + R * gxq[i]) * inv - k0 * x;
+                float ky = (Ry * xk + R * gyq[i]) * inv - k0 * y;
+                g[i] = 1.0f - rho + rho * kappa;
+                ggx[i] = rho * kx, ggy[i] = rho * ky;
+            }
         }
-    }
-    /* Step 2: the roundness scale g and its gradient. */
-    int count = L * m;
-    for (int i = 0; i < count; i++) {
-        g[i] = 1.0f, ggx[i] = 0.0f, ggy[i] = 0.0f;
-        const sk__sector *pr = pair[i];
-        if (!pr) continue;
-        float rho = skin->levels[i / m].roundness;
-        float a1 = s1[i], a2 = s2[i], ss = a1 + a2, xk = xq[i];
-        /* one division for both 1 / ss and 1 / r */
-        float r = sqrtf(r2[i]), both = 1.0f / (ss * r);
-        float iss = r * both, ir = ss * both, t = a1 * iss;
-        float h1 = pr->h, h2 = pr->hm;
-        float R = h1 + t * (h2 - h1);
-        float inv = 0.1f * ir;
-        float kappa = R * xk * inv; /* R / D(phi) */
-        if (kappa < 1.0f) {
-            /* grad t = (s2 grad s1 - s1 grad s2) / ss^2, grad s1 = (-ny, nx) of normal 1,
-               grad s2 = (my, -mx) of normal 2 */
-            float dh = (h2 - h1) * iss * iss;
-            float Rx = dh * (-a2 * pr->ny - a1 * pr->my), Ry = dh * (a2 * pr->nx + a1 * pr->mx);
-            float k0 = kappa * ir * ir;
-            float kx = (Rx * xk + R * gxq[i]) * inv - k0 * qx[i];
-            float ky = (Ry * xk + R * gyq[i]) * inv - k0 * qy[i];
-            g[i] = 1.0f - rho + rho * kappa;
-            ggx[i] = rho * kx, ggy[i] = rho * ky;
-        }
-    }
-    /* Step 3: z(x', g): the Newton guess in the last segment, else the scaled profile. */
-    for (int k = 0; k < L; k++) {
-        const sk__profile *pr = &skin->levels[k].profile;
+        /* z(x', g): the Newton guess in the last segment, else the scaled profile */
+        const sk__profile *prof = &lv->profile;
         for (int i = k * m; i < (k + 1) * m; i++) {
             if (path[i] == FLAT) {
-                z[i] = pr->z[pr->segment_count - 1][3];
-            } else if (g[i] != 1.0f && xq[i] > g[i] * pr->last_start) {
+                z[i] = prof->z[prof->segment_count - 1][3];
+            } else if (g[i] != 1.0f && xq[i] > g[i] * prof->last_start) {
                 path[i] = LAST_SEGMENT;
-                sk__last_segment_guess(pr, g[i], xq[i], &newton[i]);
+                sk__last_segment_guess(prof, g[i], xq[i], &newton[i]);
             } else {
-                z[i] = sk__profile_scaled(pr, g[i], xq[i], &dzdx[i], &dzdg[i]);
+                z[i] = sk__profile_scaled(prof, g[i], xq[i], &dzdx[i], &dzdg[i]);
             }
         }
     }
-    /* Step 4: the Newton step; heights and gradients in mm. */
+    /* Step 3: the Newton step; heights and gradients in mm. */
     for (int k = 0; k < L; k++) {
         const sk__level *lv = &skin->levels[k];
         float zs = lv->z_scale;

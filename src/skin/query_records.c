@@ -43,7 +43,11 @@ sk_result sk__build_query_records(sk__level *lv, sk_error *err)
             f->edge = lv->perturbed ? u->edge : SK__SKIN_NONE;
             f->cell = c;
             f->parent = cell->parent;
-            f->pad = 0;
+            /* The support lies within h_apex of the edge's line, which is (1 - gauge) hs
+               away: clear of it below 1 - h_apex / hs, here with 1 % and 1e-5 hs to spare. */
+            f->gcut = -1.0f;
+            if (f->edge != SK__SKIN_NONE)
+                f->gcut = (float)(1.0 - 1e-5 - 1.01 * lv->edges[f->edge].h_apex / hs);
 
             sk__sector *s = &lv->sectors[first + k];
             s->cx = cell->cx, s->cy = cell->cy;

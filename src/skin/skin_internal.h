@@ -49,7 +49,8 @@ typedef struct sk__fan {
     uint32_t edge;        /* perturbed edge record, or SK__SKIN_NONE (nothing to unwarp) */
     uint32_t cell;        /* the cell */
     uint32_t parent;      /* its parent (SK__SKIN_NONE at level 1) */
-    uint32_t pad;
+    float gcut;           /* below this gauge a point is clear of the edge's perturbation
+                             support (with a margin far above rounding) */
 } sk__fan;
 
 /* Sector k of a cell seen from its profile centre (centre, vertex k, vertex k + 1), where
