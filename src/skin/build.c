@@ -169,7 +169,7 @@ void sk_skin_destroy(sk_skin *skin)
     free(skin->grid.shift);
     free(skin->origin);
     free(skin->pores.start);
-    free(skin->pores.pores);
+    free(skin->pores.near);
     free(skin);
 }
 

@@ -156,13 +156,22 @@ typedef struct sk__pore {
     float radius, depth;
 } sk__pore;
 
-/* Pores bucketed on a grid over the tile period (bucket size >= the largest radius). */
+/* A pore as a bucket's point sees it: its centre moved by the period where it lies across
+ * the wrap from the bucket. */
+typedef struct sk__pore_near {
+    double x, y;
+    float radius, depth;
+} sk__pore_near;
+
+/* Pores bucketed on a grid over the tile period (bucket size >= the largest radius): each
+ * bucket lists the pores of itself and its 8 neighbours, neighbour by neighbour (rows from
+ * below, left to right), each neighbour's in its own order. */
 typedef struct sk__pore_grid {
     int nx, ny;
     double inv_w, inv_h;
-    uint32_t *start;
-    sk__pore *pores;
-    uint32_t count;
+    uint32_t *start;       /* nx * ny + 1 */
+    sk__pore_near *near;
+    uint32_t count;        /* pores */
     float max_radius;
 } sk__pore_grid;
 
