@@ -323,7 +323,7 @@ void sk__hint_reset(sk__hint *hint);
  * is set (SK_SKIN_QUERY_FURROW asks for every level). */
 #define SK__FURROW_LEVEL_SHIFT 8
 /* Points a query runs side by side (their long dependency chains overlap). */
-#define SK__QUERY_BATCH 4
+#define SK__QUERY_BATCH 32
 /* The query behind sk_skin_query for n <= SK__QUERY_BATCH points, with an optional hint
  * (eval.c). Each point's result is the same as on its own. */
 void sk__query(const sk_skin *skin, int n, const double *x, const double *y, unsigned flags,
