@@ -63,7 +63,7 @@ static void build_edge(sk_skin *skin, int level, const sk__edge_key *key, const 
         hy_apex = sk__min(hy_apex, SK__SUPPORT_REACH * raw);
         for (int k = 0; k < lv->f_count; k++) {
             double t = (double)k / (lv->f_count - 1);
-            double hs = 0.8 * hy_apex * sk__min(t / ty_apex, (1.0 - t) / (1.0 - ty_apex));
+            double hs = 0.8 * hy_apex * sk__tent(t, ty_apex);
             double v = f[k] * across;
             f[k] = (float)(v > hs ? hs : (v < -hs ? -hs : v));
             fmax = fmax > fabs(f[k]) ? fmax : fabs(f[k]);

@@ -14,15 +14,35 @@ void sk__hint_reset(sk__hint *hint)
     hint->shift[0] = hint->shift[1] = 0.0;
 }
 
-/* Level-1 fan of a point of the tile period: the hinted fan triangle, else the grid.
- * Returns false if no cell holds the point. */
+/* When the point has left the hinted fan hf: a fan beside it in the same cell, or for a
+ * child level (sibling cells share their parent's frame) the fan of the cell across hf's
+ * edge, if it holds the point by the margin; else SK__SKIN_NONE. */
+static uint32_t fan_nearby(const sk__level *lv, int k, uint32_t hf, float px, float py)
+{
+    const sk__cell *c = &lv->cells[lv->fans[hf].cell];
+    uint32_t i = hf - c->first_use, n = c->use_count;
+    uint32_t next = c->first_use + (i + 1 == n ? 0 : i + 1);
+    uint32_t prev = c->first_use + (i == 0 ? n - 1 : i - 1);
+    if (sk__in_fan(&lv->fans[next], px, py)) return next;
+    if (sk__in_fan(&lv->fans[prev], px, py)) return prev;
+    uint32_t nb = lv->uses[hf].neighbour;
+    if (k == 0 || nb == SK__SKIN_NONE) return SK__SKIN_NONE;
+    uint32_t f = sk__fan_use(lv, nb, px, py);
+    return sk__in_fan(&lv->fans[f], px, py) ? f : SK__SKIN_NONE;
+}
+
+/* Level-1 fan of a point of the tile period: the hinted fan or one beside it, else from
+ * the grid. Returns false if no cell holds the point. */
 static bool locate_level1(const sk_skin *skin, double wx, double wy, sk__hint *hint, uint32_t *u,
                           float *px, float *py)
 {
-    if (hint->fan[0] != SK__SKIN_NONE) {
+    const sk__level *lv = &skin->levels[0];
+    uint32_t hf = hint->fan[0];
+    if (hf != SK__SKIN_NONE) {
         float lx = (float)(wx - hint->shift[0]), ly = (float)(wy - hint->shift[1]);
-        if (sk__in_fan(&skin->levels[0].fans[hint->fan[0]], lx, ly)) {
-            *u = hint->fan[0], *px = lx, *py = ly;
+        if (!sk__in_fan(&lv->fans[hf], lx, ly)) hf = fan_nearby(lv, 0, hf, lx, ly);
+        if (hf != SK__SKIN_NONE) {
+            *u = hint->fan[0] = hf, *px = lx, *py = ly;
             return true;
         }
     }
@@ -32,15 +52,18 @@ static bool locate_level1(const sk_skin *skin, double wx, double wy, sk__hint *h
     return true;
 }
 
-/* Fan of a point of level k >= 1 inside parent cell `parent`: the hinted one, else the
- * nearest sibling's. */
+/* Fan of a point of level k >= 1 inside parent cell `parent`: the hinted fan or one near
+ * it, else the nearest sibling's. */
 static uint32_t locate_child(const sk_skin *skin, int k, uint32_t parent, float px, float py,
                              sk__hint *hint)
 {
     const sk__level *lv = &skin->levels[k];
     uint32_t hf = hint->fan[k];
-    if (hf != SK__SKIN_NONE && lv->fans[hf].parent == parent && sk__in_fan(&lv->fans[hf], px, py))
-        return hf;
+    if (hf != SK__SKIN_NONE && lv->fans[hf].parent == parent) {
+        if (sk__in_fan(&lv->fans[hf], px, py)) return hf;
+        uint32_t f = fan_nearby(lv, k, hf, px, py);
+        if (f != SK__SKIN_NONE) return hint->fan[k] = f;
+    }
     const sk__cell *pc = &skin->levels[k - 1].cells[parent];
     uint32_t c = sk__locate_child(lv, pc->first_child, pc->child_count, px, py);
     return hint->fan[k] = sk__fan_use(lv, c, px, py);

@@ -27,7 +27,7 @@ void sk__support(double ax, double ay, double bx, double by, double px, double p
     else if (tp <= 0.0)
         h = hp * (1.0 - t) / (1.0 - tp);
     else
-        h = hp * sk__min(t / tp, (1.0 - t) / (1.0 - tp));
+        h = hp * sk__tent(t, tp);
     *t_apex = t;
     *h_apex = h;
 }
@@ -60,7 +60,7 @@ void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double 
             double seg = sqrt(dt * dt + (fr - fl) * (fr - fl));
             double v = amp * rnd * seg;
             double t = (double)k / count;
-            double hs = h_apex * sk__min(t / t_apex, (1.0 - t) / (1.0 - t_apex)) * SK__SUPPORT_FILL;
+            double hs = h_apex * sk__tent(t, t_apex) * SK__SUPPORT_FILL;
             double val = 0.5 * (fl + fr) + v;
             fd[k] = val > hs ? hs : (val < -hs ? -hs : val);
         }

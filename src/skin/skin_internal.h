@@ -194,6 +194,12 @@ struct sk_skin {
 
 /* The smaller of two numbers that are not NaN (fmin is a library call without fast-math). */
 static inline double sk__min(double a, double b) { return b < a ? b : a; }
+/* min(t / apex, (1 - t) / (1 - apex)) for apex in (0, 1): the tent over [0, 1] peaking at
+ * 1 at the apex; the smaller quotient is the one on t's side of the apex (one division). */
+static inline double sk__tent(double t, double apex)
+{
+    return t < apex ? t / apex : (1.0 - t) / (1.0 - apex);
+}
 
 /* Wraps a coordinate into [0, period). */
 static inline double sk__wrap(double v, double period)
