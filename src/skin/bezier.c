@@ -28,18 +28,22 @@ static double poly3_d(const double c[4], double t)
     return (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
 }
 
-/* t in [0, 1] with Bx(t) = xq for a monotone Bx (bisection, for the tables). */
-static double solve_t(const double xc[4], double xq, int iterations)
+/* t[i] in [0, 1] with Bx(t[i]) = xq[i] for a monotone Bx, i < n (bisection, for the tables;
+ * the n searches run side by side, their steps independent of one another). */
+static void solve_t(const double xc[4], const double *xq, int n, int iterations, double *t)
 {
-    double lo = 0.0, hi = 1.0;
-    for (int it = 0; it < iterations; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (poly3(xc, mid) < xq)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return 0.5 * (lo + hi);
+    enum { MAX = SK__PROFILE_TABLE };
+    double lo[MAX], hi[MAX];
+    for (int i = 0; i < n; i++) lo[i] = 0.0, hi[i] = 1.0;
+    for (int it = 0; it < iterations; it++)
+        for (int i = 0; i < n; i++) {
+            double mid = 0.5 * (lo[i] + hi[i]);
+            if (poly3(xc, mid) < xq[i])
+                lo[i] = mid;
+            else
+                hi[i] = mid;
+        }
+    for (int i = 0; i < n; i++) t[i] = 0.5 * (lo[i] + hi[i]);
 }
 
 void sk__profile_prepare(sk__profile *p)
@@ -51,10 +55,13 @@ void sk__profile_prepare(sk__profile *p)
         double x0 = p->x[s][0], x3 = p->x[s][3];
         p->seg_x0[s] = (float)x0;
         p->seg_inv_w[s] = (float)((SK__PROFILE_TABLE - 1) / (x3 - x0));
-        double zs[SK__PROFILE_TABLE], ms[SK__PROFILE_TABLE];
+        double zs[SK__PROFILE_TABLE], ms[SK__PROFILE_TABLE], xs[SK__PROFILE_TABLE];
+        double ts[SK__PROFILE_TABLE];
+        for (int i = 0; i < SK__PROFILE_TABLE; i++)
+            xs[i] = x0 + (x3 - x0) * i / (SK__PROFILE_TABLE - 1);
+        solve_t(xc, xs, SK__PROFILE_TABLE, 40, ts);
         for (int i = 0; i < SK__PROFILE_TABLE; i++) {
-            double xq = x0 + (x3 - x0) * i / (SK__PROFILE_TABLE - 1);
-            double t = i == 0 ? 0.0 : (i == SK__PROFILE_TABLE - 1 ? 1.0 : solve_t(xc, xq, 40));
+            double t = i == 0 ? 0.0 : (i == SK__PROFILE_TABLE - 1 ? 1.0 : ts[i]);
             double dx = poly3_d(xc, t), dz = poly3_d(zc, t);
             if (dx < 1e-9) {
                 /* vertical tangent of x (repeated control x): chord slope */
@@ -89,8 +96,9 @@ void sk__profile_prepare(sk__profile *p)
     for (int gi = 0; gi <= SK__GUESS_G; gi++) {
         double g = p->g_min + (1.0 - p->g_min) * gi / SK__GUESS_G;
         double gc[4] = {g * xc[0], g * xc[1], g * xc[2], g * xc[3] + (1.0 - g) * 10.0};
-        for (int i = 0; i <= SK__GUESS_X; i++)
-            tg[gi][i] = solve_t(gc, 10.0 * i / SK__GUESS_X, 32);
+        double xs[SK__GUESS_X + 1];
+        for (int i = 0; i <= SK__GUESS_X; i++) xs[i] = 10.0 * i / SK__GUESS_X;
+        solve_t(gc, xs, SK__GUESS_X + 1, 32, tg[gi]);
     }
     for (int gi = 0; gi < SK__GUESS_G; gi++)
         for (int i = 0; i < SK__GUESS_X; i++) {
