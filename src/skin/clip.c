@@ -6,6 +6,18 @@
 
 #include "skin/skin_internal.h"
 
+/* Appends pending vertex (hx, hy) unless the next one (vx, vy) coincides with it (the edge
+ * between them would have zero length). False when the polygon would overflow. */
+static bool keep_vertex(sk__poly *q, double hx, double hy, int64_t htag, double vx, double vy)
+{
+    double scale = fabs(hx) + fabs(hy) + 1e-300;
+    if (fabs(vx - hx) + fabs(vy - hy) <= 1e-13 * scale) return true;
+    if (q->n >= SK__POLY_MAX) return false;
+    q->x[q->n] = hx, q->y[q->n] = hy, q->tag[q->n] = htag;
+    q->n++;
+    return true;
+}
+
 bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag)
 {
     int n = p->n;
@@ -27,7 +39,7 @@ bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag)
     /* The kept polygon, dropping every vertex that coincides with the next one (a
        zero-length edge): a vertex is only written once its successor is known. */
     sk__poly q;
-    int m = 0;
+    q.n = 0;
     double first_x = 0, first_y = 0;
     bool have = false;   /* a vertex is pending */
     double hx = 0, hy = 0;
@@ -49,29 +61,16 @@ bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag)
                 /* Entering: the rest of edge i keeps its tag; leaving: the clip line. */
                 vtag = in_i ? tag : p->tag[i];
             }
-            if (!have) {
+            if (!have)
                 first_x = vx, first_y = vy;
-            } else {
-                double ex = vx - hx, ey = vy - hy;
-                double scale = fabs(hx) + fabs(hy) + 1e-300;
-                if (!(fabs(ex) + fabs(ey) <= 1e-13 * scale)) {
-                    if (m >= SK__POLY_MAX) return false;
-                    q.x[m] = hx, q.y[m] = hy, q.tag[m] = htag;
-                    m++;
-                }
-            }
+            else if (!keep_vertex(&q, hx, hy, htag, vx, vy))
+                return false;
             hx = vx, hy = vy, htag = vtag, have = true;
         }
     }
     /* the last vertex against the first one as produced */
-    double ex = first_x - hx, ey = first_y - hy;
-    double scale = fabs(hx) + fabs(hy) + 1e-300;
-    if (!(fabs(ex) + fabs(ey) <= 1e-13 * scale)) {
-        if (m >= SK__POLY_MAX) return false;
-        q.x[m] = hx, q.y[m] = hy, q.tag[m] = htag;
-        m++;
-    }
-    if (m < 3) m = 0;
+    if (!keep_vertex(&q, hx, hy, htag, first_x, first_y)) return false;
+    int m = q.n < 3 ? 0 : q.n;
     memcpy(p->x, q.x, sizeof(double) * (size_t)m);
     memcpy(p->y, q.y, sizeof(double) * (size_t)m);
     memcpy(p->tag, q.tag, sizeof(int64_t) * (size_t)m);

@@ -8,6 +8,14 @@
 
 #include "skin/skin_internal.h"
 
+/* The rays from origin o to the use's start vertex (a) and the next use's (b), with the
+ * margins of the tests against them. */
+static void rays(float ox, float oy, const sk__use *u, const sk__use *v, float *a, float *b)
+{
+    a[0] = u->vx - ox, a[1] = u->vy - oy, a[2] = (fabsf(a[0]) + fabsf(a[1])) * SK__SECTOR_MARGIN;
+    b[0] = v->vx - ox, b[1] = v->vy - oy, b[2] = (fabsf(b[0]) + fabsf(b[1])) * SK__SECTOR_MARGIN;
+}
+
 sk_result sk__build_query_records(sk__level *lv, sk_error *err)
 {
     size_t n = lv->use_count ? lv->use_count : 1;
@@ -33,11 +41,10 @@ sk_result sk__build_query_records(sk__level *lv, sk_error *err)
             if (hv < 1e-12) hv = 1e-12;
 
             sk__fan *f = &lv->fans[first + k];
+            float a[3], b[3];
             f->sx = cell->sx, f->sy = cell->sy;
-            f->ax = u->vx - cell->sx, f->ay = u->vy - cell->sy;
-            f->bx = v->vx - cell->sx, f->by = v->vy - cell->sy;
-            f->an = (fabsf(f->ax) + fabsf(f->ay)) * SK__SECTOR_MARGIN;
-            f->bn = (fabsf(f->bx) + fabsf(f->by)) * SK__SECTOR_MARGIN;
+            rays(cell->sx, cell->sy, u, v, a, b);
+            f->ax = a[0], f->ay = a[1], f->an = a[2], f->bx = b[0], f->by = b[1], f->bn = b[2];
             f->gx = (float)(u->nx / hs), f->gy = (float)(u->ny / hs);
             f->shx = u->shx, f->shy = u->shy;
             f->edge = lv->perturbed ? u->edge : SK__SKIN_NONE;
@@ -51,10 +58,8 @@ sk_result sk__build_query_records(sk__level *lv, sk_error *err)
 
             sk__sector *s = &lv->sectors[first + k];
             s->cx = cell->cx, s->cy = cell->cy;
-            s->ax = u->vx - cell->cx, s->ay = u->vy - cell->cy;
-            s->bx = v->vx - cell->cx, s->by = v->vy - cell->cy;
-            s->an = (fabsf(s->ax) + fabsf(s->ay)) * SK__SECTOR_MARGIN;
-            s->bn = (fabsf(s->bx) + fabsf(s->by)) * SK__SECTOR_MARGIN;
+            rays(cell->cx, cell->cy, u, v, a, b);
+            s->ax = a[0], s->ay = a[1], s->an = a[2], s->bx = b[0], s->by = b[1], s->bn = b[2];
             s->gx = (float)(u->nx / hc), s->gy = (float)(u->ny / hc);
             s->nx = u->nx, s->ny = u->ny, s->h = (float)hc;
             s->mx = v->nx, s->my = v->ny, s->hm = (float)hv;
