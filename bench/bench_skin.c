@@ -2,6 +2,7 @@
  * paper's 400 x 400, against the paper's 25 minutes on an IRIS 4D/60G; and 4096 x 4096
  * height + normal maps of the same skin, with ns per pixel per level and peak memory. */
 #define _POSIX_C_SOURCE 200809L
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -111,6 +112,14 @@ int main(void)
     sk_skin_render_desc rd = {.width = n, .height = n, .height_mm = height, .normal = normal};
     sk_skin_render(skin, &rd, &err);
     double t2 = sk_time_seconds(), cpu2 = cpu_seconds();
+    /* again into the same maps: without the system's first touch of their memory */
+    double again = INFINITY;
+    for (int r = 0; r < 2; r++) {
+        double a0 = sk_time_seconds();
+        sk_skin_render(skin, &rd, &err);
+        double a = sk_time_seconds() - a0;
+        if (a < again) again = a;
+    }
     int levels = sk_skin_get_desc(skin)->level_count;
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
@@ -120,6 +129,9 @@ int main(void)
     printf("    CPU %.3f s (all threads): %.3f s on 2 idle cores\n", cpu2 - cpu0, (cpu2 - cpu0) / 2);
     printf("    %.1f ns per pixel wall, %.1f ns per pixel per level (thread time: %.1f)\n",
            (t2 - t1) * 1e9 / px, (t2 - t1) * 1e9 / px / levels, 2 * (t2 - t1) * 1e9 / px / levels);
+    printf("    rendered again into the same maps (their memory already touched): %.1f ms,\n"
+           "    %.1f ns per pixel per level (thread time: %.1f)\n",
+           again * 1e3, again * 1e9 / px / levels, 2 * again * 1e9 / px / levels);
     printf("    peak memory %.0f MiB (maps %.0f MiB)   target < 1024 MiB\n", ru.ru_maxrss / 1024.0,
            (double)px * 16 / (1 << 20));
     sk_skin_destroy(skin);

@@ -144,7 +144,8 @@ const sk_skin_desc *sk_skin_get_desc(const sk_skin *skin);
  * pores) and unit surface normal at (x_mm, y_mm). Any coordinates are accepted: the tile
  * repeats (aperiodic tiles repeat with a larger period). The normal is the exact normal of
  * the height field (normalize(-dh/dx, -dh/dy, 1)). Either output may be NULL. Non-finite
- * coordinates give height 0 and normal (0, 0, 1). Allocation-free and thread-safe. */
+ * coordinates give height 0 and normal (0, 0, 1). Allocation-free (about 24 KB of stack) and
+ * thread-safe. */
 void sk_skin_eval(const sk_skin *skin, double x_mm, double y_mm, float *height_mm,
                   sk_vec3f *normal);
 

@@ -28,18 +28,22 @@ static double poly3_d(const double c[4], double t)
     return (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
 }
 
-/* t in [0, 1] with Bx(t) = xq for a monotone Bx (bisection, for the tables). */
-static double solve_t(const double xc[4], double xq, int iterations)
+/* t[i] in [0, 1] with Bx(t[i]) = xq[i] for a monotone Bx, i < n (bisection, for the tables;
+ * the n searches run side by side, their steps independent of one another). */
+static void solve_t(const double xc[4], const double *xq, int n, int iterations, double *t)
 {
-    double lo = 0.0, hi = 1.0;
-    for (int it = 0; it < iterations; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (poly3(xc, mid) < xq)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return 0.5 * (lo + hi);
+    enum { MAX = SK__PROFILE_TABLE };
+    double lo[MAX], hi[MAX];
+    for (int i = 0; i < n; i++) lo[i] = 0.0, hi[i] = 1.0;
+    for (int it = 0; it < iterations; it++)
+        for (int i = 0; i < n; i++) {
+            double mid = 0.5 * (lo[i] + hi[i]);
+            if (poly3(xc, mid) < xq[i])
+                lo[i] = mid;
+            else
+                hi[i] = mid;
+        }
+    for (int i = 0; i < n; i++) t[i] = 0.5 * (lo[i] + hi[i]);
 }
 
 void sk__profile_prepare(sk__profile *p)
@@ -51,9 +55,13 @@ void sk__profile_prepare(sk__profile *p)
         double x0 = p->x[s][0], x3 = p->x[s][3];
         p->seg_x0[s] = (float)x0;
         p->seg_inv_w[s] = (float)((SK__PROFILE_TABLE - 1) / (x3 - x0));
+        double zs[SK__PROFILE_TABLE], ms[SK__PROFILE_TABLE], xs[SK__PROFILE_TABLE];
+        double ts[SK__PROFILE_TABLE];
+        for (int i = 0; i < SK__PROFILE_TABLE; i++)
+            xs[i] = x0 + (x3 - x0) * i / (SK__PROFILE_TABLE - 1);
+        solve_t(xc, xs, SK__PROFILE_TABLE, 40, ts);
         for (int i = 0; i < SK__PROFILE_TABLE; i++) {
-            double xq = x0 + (x3 - x0) * i / (SK__PROFILE_TABLE - 1);
-            double t = i == 0 ? 0.0 : (i == SK__PROFILE_TABLE - 1 ? 1.0 : solve_t(xc, xq, 40));
+            double t = i == 0 ? 0.0 : (i == SK__PROFILE_TABLE - 1 ? 1.0 : ts[i]);
             double dx = poly3_d(xc, t), dz = poly3_d(zc, t);
             if (dx < 1e-9) {
                 /* vertical tangent of x (repeated control x): chord slope */
@@ -62,8 +70,16 @@ void sk__profile_prepare(sk__profile *p)
                 dz = poly3(zc, t2) - poly3(zc, t);
                 if (fabs(dx) < 1e-12) dx = 1e-12;
             }
-            p->zx[s][i][0] = (float)poly3(zc, t);
-            p->zx[s][i][1] = (float)(dz / dx * (x3 - x0) / (SK__PROFILE_TABLE - 1));
+            zs[i] = poly3(zc, t);
+            ms[i] = dz / dx * (x3 - x0) / (SK__PROFILE_TABLE - 1);
+        }
+        for (int i = 0; i + 1 < SK__PROFILE_TABLE; i++) {
+            /* Hermite curve through (z, m) at both ends of the step, in power form */
+            float *a = p->zpoly[s][i];
+            a[0] = (float)zs[i];
+            a[1] = (float)ms[i];
+            a[2] = (float)(3.0 * (zs[i + 1] - zs[i]) - 2.0 * ms[i] - ms[i + 1]);
+            a[3] = (float)(2.0 * (zs[i] - zs[i + 1]) + ms[i] + ms[i + 1]);
         }
     }
     int last = p->segment_count - 1;
@@ -72,53 +88,72 @@ void sk__profile_prepare(sk__profile *p)
     power_basis(p->x[last], xc);
     power_basis(p->z[last], zc);
     for (int i = 0; i < 4; i++) p->last_xc[i] = (float)xc[i], p->last_zc[i] = (float)zc[i];
-    for (int gi = 0; gi < 9; gi++) {
-        double g = p->g_min + (1.0 - p->g_min) * gi / 8.0;
+    p->last_xd3 = (float)(xc[3] - 10.0);
+    p->last_zd[0] = (float)zc[1], p->last_zd[1] = (float)(2.0 * zc[2]);
+    p->last_zd[2] = (float)(3.0 * zc[3]);
+    /* t at the grid points (g, x'), then the bilinear coefficients of every cell */
+    double tg[SK__GUESS_G + 1][SK__GUESS_X + 1];
+    for (int gi = 0; gi <= SK__GUESS_G; gi++) {
+        double g = p->g_min + (1.0 - p->g_min) * gi / SK__GUESS_G;
         double gc[4] = {g * xc[0], g * xc[1], g * xc[2], g * xc[3] + (1.0 - g) * 10.0};
-        for (int i = 0; i < 129; i++) p->t_guess[gi][i] = (float)solve_t(gc, 10.0 * i / 128.0, 32);
+        double xs[SK__GUESS_X + 1];
+        for (int i = 0; i <= SK__GUESS_X; i++) xs[i] = 10.0 * i / SK__GUESS_X;
+        solve_t(gc, xs, SK__GUESS_X + 1, 32, tg[gi]);
     }
-    p->g_step_inv = p->g_min < 1.0f ? 8.0f / (1.0f - p->g_min) : 0.0f;
+    for (int gi = 0; gi < SK__GUESS_G; gi++)
+        for (int i = 0; i < SK__GUESS_X; i++) {
+            float *b = p->t_guess[gi][i];
+            b[0] = (float)tg[gi][i];
+            b[1] = (float)(tg[gi][i + 1] - tg[gi][i]);
+            b[2] = (float)(tg[gi + 1][i] - tg[gi][i]);
+            b[3] = (float)(tg[gi + 1][i + 1] - tg[gi + 1][i] - tg[gi][i + 1] + tg[gi][i]);
+        }
+    p->g_step_inv = p->g_min < 1.0f ? (float)SK__GUESS_G / (1.0f - p->g_min) : 0.0f;
 }
 
-/* The last segment with its inner control points scaled by g (Newton from the table). */
-static float last_segment(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg)
+void sk__last_segment_guess(const sk__profile *p, float g, float xq, sk__newton *s)
 {
-    const float *xc = p->last_xc, *zc = p->last_zc;
-    float c[4] = {g * xc[0], g * xc[1], g * xc[2], g * xc[3] + (1.0f - g) * 10.0f};
-    float gu = (g - p->g_min) * p->g_step_inv;
+    const float *xc = p->last_xc;
+    float *c = s->c;
+    c[0] = g * xc[0], c[1] = g * xc[1], c[2] = g * xc[2], c[3] = 10.0f + g * p->last_xd3;
+    /* g in [1 - roundness, 1) and x' in [0, 10) here; the clamps only guard rounding */
+    float gu = (g - p->g_min) * p->g_step_inv, xu = xq * (SK__GUESS_X / 10.0f);
     if (!(gu > 0.0f)) gu = 0.0f;
-    if (gu > 7.999f) gu = 7.999f;
-    int gi = (int)gu;
-    float gf = gu - (float)gi;
-    float xu = xq * 12.8f;
+    if (gu > SK__GUESS_G - 0.001f) gu = SK__GUESS_G - 0.001f;
     if (!(xu > 0.0f)) xu = 0.0f;
-    if (xu > 127.999f) xu = 127.999f;
-    int xi = (int)xu;
-    float xf = xu - (float)xi;
-    const float *r0 = p->t_guess[gi], *r1 = p->t_guess[gi + 1];
-    float t0 = r0[xi] + (r0[xi + 1] - r0[xi]) * xf, t1 = r1[xi] + (r1[xi + 1] - r1[xi]) * xf;
-    float t = p->g_step_inv > 0.0f ? t0 + (t1 - t0) * gf : t0;
-    /* One Newton step from the table's guess (error ~1e-3) leaves ~1e-6; the reciprocal
-       of Bx' is refined for the new t instead of dividing again (relative error ~1e-6). */
+    if (xu > SK__GUESS_X - 0.001f) xu = SK__GUESS_X - 0.001f;
+    int gi = (int)gu, xi = (int)xu;
+    float gf = gu - (float)gi, xf = xu - (float)xi;
+    const float *b = p->t_guess[gi][xi];
+    float t = b[0] + b[1] * xf + gf * (b[2] + b[3] * xf);
     float dx = (3.0f * c[3] * t + 2.0f * c[2]) * t + c[1];
     if (dx < 1e-6f) dx = 1e-6f;
-    float inv = 1.0f / dx;
+    s->t = t;
+    s->inv = 1.0f / dx;
+}
+
+float sk__last_segment_finish(const sk__profile *p, float xq, const sk__newton *s,
+                              float *dz_dx, float *dz_dg)
+{
+    const float *xc = p->last_xc, *zc = p->last_zc, *zd = p->last_zd, *c = s->c;
+    /* One Newton step from the table's guess (error ~1e-3) leaves ~1e-6; the reciprocal
+       of Bx' is refined for the new t instead of dividing again (relative error ~1e-6). */
+    float t = s->t, inv = s->inv;
     float v = ((c[3] * t + c[2]) * t + c[1]) * t + c[0] - xq;
     t -= v * inv;
     t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
     float dx1 = (3.0f * c[3] * t + 2.0f * c[2]) * t + c[1];
     if (dx1 < 1e-6f) dx1 = 1e-6f;
     inv = inv * (2.0f - dx1 * inv);
-    float dz = (3.0f * zc[3] * t + 2.0f * zc[2]) * t + zc[1];
-    float slope = dz * inv;
+    float slope = ((zd[2] * t + zd[1]) * t + zd[0]) * inv;
     *dz_dx = slope;
     /* dBx/dg at fixed t = Bx(t) - 10 t^3 */
-    float xg = ((xc[3] * t + xc[2]) * t + xc[1]) * t + xc[0] - 10.0f * t * t * t;
+    float xg = ((p->last_xd3 * t + xc[2]) * t + xc[1]) * t + xc[0];
     *dz_dg = -slope * xg;
     return ((zc[3] * t + zc[2]) * t + zc[1]) * t + zc[0];
 }
 
-/* The unscaled profile z(x) and its slope (cubic Hermite on the segment's table). */
+/* The unscaled profile z(x) and its slope (the Hermite curve of the step holding x). */
 static float profile_z(const sk__profile *p, float x, float *dz_dx)
 {
     int last = p->segment_count - 1, j = 0;
@@ -129,24 +164,13 @@ static float profile_z(const sk__profile *p, float x, float *dz_dx)
     int i = (int)u;
     if (i > SK__PROFILE_TABLE - 2) i = SK__PROFILE_TABLE - 2;
     float t = u - (float)i;
-    const float(*tab)[2] = p->zx[j];
-    float ih = p->seg_inv_w[j];
-    float z0 = tab[i][0], z1 = tab[i + 1][0], m0 = tab[i][1], m1 = tab[i + 1][1];
-    /* cubic Hermite on [0, 1] */
-    float t2 = t * t, t3 = t2 * t;
-    float z = (2 * t3 - 3 * t2 + 1) * z0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * z1 +
-              (t3 - t2) * m1;
-    float dz = (6 * t2 - 6 * t) * z0 + (3 * t2 - 4 * t + 1) * m0 + (-6 * t2 + 6 * t) * z1 +
-               (3 * t2 - 2 * t) * m1;
-    *dz_dx = dz * ih;
-    return z;
+    const float *a = p->zpoly[j][i];
+    *dz_dx = ((3.0f * a[3] * t + 2.0f * a[2]) * t + a[1]) * p->seg_inv_w[j];
+    return ((a[3] * t + a[2]) * t + a[1]) * t + a[0];
 }
-
-float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg)
+float sk__profile_scaled(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg)
 {
-    float ls = p->last_start;
-    if (g != 1.0f && xq > g * ls) return last_segment(p, g, xq, dz_dx, dz_dg);
-    float ig = 1.0f / g, slope;
+    float ig = g == 1.0f ? 1.0f : 1.0f / g, slope;
     float z = profile_z(p, xq * ig, &slope);
     *dz_dx = slope * ig;
     *dz_dg = -slope * xq * ig * ig;

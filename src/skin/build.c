@@ -15,6 +15,8 @@ static void level_setup(sk_skin *skin, int k)
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++) lv->minvf[i][j] = (float)lv->minv[i][j];
     lv->depth = d->perturb_depth;
+    for (int n = 1; n <= lv->depth; n++)
+        lv->amp[n] = d->perturb_rate * exp2(-n * (double)d->perturb_decay);
     lv->perturbed = d->perturb_rate > 0.0f;
     lv->roundness = d->roundness;
     lv->spacing = d->spacing_mm;
@@ -128,7 +130,8 @@ sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
             r = sk__build_children(skin, k, xy, count, err);
         free(xy);
         if (r != SK_OK) goto fail;
-        sk__finish_uses(&skin->levels[k]);
+        r = sk__build_query_records(&skin->levels[k], err);
+        if (r != SK_OK) goto fail;
         if (k == 0) {
             r = sk__build_grid(skin, err);
             if (r != SK_OK) goto fail;
@@ -158,13 +161,15 @@ void sk_skin_destroy(sk_skin *skin)
         free(lv->edges);
         free(lv->vxy);
         free(lv->f);
+        free(lv->fans);
+        free(lv->sectors);
     }
     free(skin->grid.start);
     free(skin->grid.cell);
     free(skin->grid.shift);
     free(skin->origin);
     free(skin->pores.start);
-    free(skin->pores.pores);
+    free(skin->pores.near);
     free(skin);
 }
 

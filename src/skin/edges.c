@@ -1,6 +1,6 @@
 /* Shared edges (paper sec. 3.2.1 (1), Fig. 4): an edge between two cells is perturbed
  * once, keyed by the pair of cells, and both cells use the same record, so the perturbed
- * polygons have no gaps and no overlaps. Also the per-use gauge vectors of the queries. */
+ * polygons have no gaps and no overlaps. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,32 +9,28 @@
 
 #define SK__SUPPORT_REACH 3.0
 
-static int key_cmp(const void *pa, const void *pb)
-{
-    const sk__edge_key *a = pa, *b = pb;
-    if (a->k0 != b->k0) return a->k0 < b->k0 ? -1 : 1;
-    if (a->k1 != b->k1) return a->k1 < b->k1 ? -1 : 1;
-    if (a->side != b->side) return a->side < b->side ? -1 : 1;
-    return a->use < b->use ? -1 : (a->use > b->use);
-}
+/* One shared edge: its record and perturbation, and both uses' lines. */
+/* The two uses of edge e and their cells. */
+typedef struct edge_pair {
+    uint32_t use_left, use_right, cell_left, cell_right;
+} edge_pair;
 
 /* One shared edge: its record and perturbation, and both uses' lines. */
-static void build_edge(sk_skin *skin, int level, const sk__edge_key *kl, const sk__edge_key *kr,
-                       uint32_t e, const uint32_t *use_owner, const double *site_left_y)
+static void build_edge(sk_skin *skin, int level, const sk__edge_key *key, const edge_pair *ep,
+                       uint32_t e, const double *site_left_y)
 {
     sk__level *lv = &skin->levels[level];
     double(*m)[2] = lv->m, (*mi)[2] = lv->minv;
-    sk__use *ul = &lv->uses[kl->use], *ur = &lv->uses[kr->use];
-    uint32_t cl = use_owner[kl->use], cr = use_owner[kr->use];
+    uint32_t ui = ep->use_left, cl = ep->cell_left, cr = ep->cell_right;
+    sk__use *ul = &lv->uses[ui], *ur = &lv->uses[ep->use_right];
     const sk__cell *cell_l = &lv->cells[cl];
-    uint32_t next =
-        kl->use + 1 == cell_l->first_use + cell_l->use_count ? cell_l->first_use : kl->use + 1;
-    double ax = lv->vxy[2 * kl->use], ay = lv->vxy[2 * kl->use + 1];
+    uint32_t next = ui + 1 == cell_l->first_use + cell_l->use_count ? cell_l->first_use : ui + 1;
+    double ax = lv->vxy[2 * ui], ay = lv->vxy[2 * ui + 1];
     double bx = lv->vxy[2 * next], by = lv->vxy[2 * next + 1];
     /* pre-stretch geometry */
     double azx = mi[0][0] * ax + mi[0][1] * ay, azy = mi[1][0] * ax + mi[1][1] * ay;
     double bzx = mi[0][0] * bx + mi[0][1] * by, bzy = mi[1][0] * bx + mi[1][1] * by;
-    double px = site_left_y[2 * kl->use], py = site_left_y[2 * kl->use + 1];
+    double px = site_left_y[2 * ui], py = site_left_y[2 * ui + 1];
     double pzx = mi[0][0] * px + mi[0][1] * py, pzy = mi[1][0] * px + mi[1][1] * py;
     double ex = bzx - azx, ey = bzy - azy, len2 = ex * ex + ey * ey, len = sqrt(len2);
     sk__edge *E = &lv->edges[e];
@@ -56,18 +52,18 @@ static void build_edge(sk_skin *skin, int level, const sk__edge_key *kl, const s
     sk__support(ax, ay, bx, by, px, py, &ty_apex, &hy_apex);
     double fmax = 0;
     if (lv->perturbed) {
-        uint64_t key = sk_hash(kl->k0, kl->k1, (uint64_t)level, 0x45444745ULL);
-        sk__perturb_edge(skin, level, key, len, t_apex, h_apex, f);
+        uint64_t hash = sk_hash(key->k0, key->k1, (uint64_t)level, 0x45444745ULL);
+        sk__perturb_edge(skin, level, hash, len, t_apex, h_apex, f);
         double raw = 0;
         for (int k = 0; k < lv->f_count; k++)
             raw = raw > fabs(f[k] * across) ? raw : fabs(f[k] * across);
         /* The support reaches no farther from the edge than a few times the polyline's
            excursion: the warp stays local, so a strongly stretched level does not
            shear its children far from its edges. */
-        hy_apex = fmin(hy_apex, SK__SUPPORT_REACH * raw);
+        hy_apex = sk__min(hy_apex, SK__SUPPORT_REACH * raw);
         for (int k = 0; k < lv->f_count; k++) {
             double t = (double)k / (lv->f_count - 1);
-            double hs = 0.8 * hy_apex * fmin(t / ty_apex, (1.0 - t) / (1.0 - ty_apex));
+            double hs = 0.8 * hy_apex * sk__tent(t, ty_apex);
             double v = f[k] * across;
             f[k] = (float)(v > hs ? hs : (v < -hs ? -hs : v));
             fmax = fmax > fabs(f[k]) ? fmax : fabs(f[k]);
@@ -93,67 +89,45 @@ static void build_edge(sk_skin *skin, int level, const sk__edge_key *kl, const s
     ul->neighbour = cr, ur->neighbour = cl;
 }
 
-sk_result sk__build_edges(sk_skin *skin, int level, sk__edge_key *keys, size_t key_count,
+sk_result sk__build_edges(sk_skin *skin, int level, const sk__edge_key *keys,
                           const double *site_left_y, sk_error *err)
 {
     sk__level *lv = &skin->levels[level];
-    qsort(keys, key_count, sizeof *keys, key_cmp);
-    uint32_t *use_owner = malloc(sizeof(uint32_t) * (lv->use_count ? lv->use_count : 1));
-    if (!use_owner) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for edges");
-    for (uint32_t c = 0; c < lv->cell_count; c++)
-        for (uint32_t k = 0; k < lv->cells[c].use_count; k++)
-            use_owner[lv->cells[c].first_use + k] = c;
-
-    size_t pairs = 0;
-    for (size_t i = 0; i + 1 < key_count; i++)
-        if (keys[i].k0 == keys[i + 1].k0 && keys[i].k1 == keys[i + 1].k1 && keys[i].side == 0 &&
-            keys[i + 1].side == 1)
-            pairs++;
-    lv->f_count = (1 << lv->depth) + 1;
-    lv->edges = calloc(pairs ? pairs : 1, sizeof(sk__edge));
-    lv->f = calloc((pairs ? pairs : 1) * (size_t)lv->f_count, sizeof(float));
-    if (!lv->edges || !lv->f) {
-        free(use_owner);
-        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu edges", pairs);
-    }
-    uint32_t *pair_at = malloc(sizeof(uint32_t) * (pairs ? pairs : 1));
-    if (!pair_at) {
-        free(use_owner);
-        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu edges", pairs);
-    }
+    /* Each left use finds its right use among the uses of the right cell (k0 holds both
+       cells); edges are numbered in the order of their left uses. */
+    edge_pair *pairs = malloc(sizeof(edge_pair) * (lv->use_count ? lv->use_count : 1));
+    if (!pairs) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for edges");
     uint32_t e = 0;
-    for (size_t i = 0; i + 1 < key_count; i++)
-        if (keys[i].k0 == keys[i + 1].k0 && keys[i].k1 == keys[i + 1].k1 && keys[i].side == 0 &&
-            keys[i + 1].side == 1)
-            pair_at[e++] = (uint32_t)i;
-            /* Each edge draws its own random numbers from its key: any order, same result. */
-#pragma omp parallel for schedule(static)
-    for (long q = 0; q < (long)e; q++)
-        build_edge(skin, level, &keys[pair_at[q]], &keys[pair_at[q] + 1], (uint32_t)q, use_owner,
-                   site_left_y);
-    free(pair_at);
-    lv->edge_count = e;
-    free(use_owner);
-    return SK_OK;
-}
-
-void sk__finish_uses(sk__level *lv)
-{
     for (uint32_t c = 0; c < lv->cell_count; c++) {
         const sk__cell *cell = &lv->cells[c];
-        for (uint32_t k = 0; k < cell->use_count; k++) {
-            sk__use *u = &lv->uses[cell->first_use + k];
-            double hs = (double)u->d - ((double)u->nx * cell->sx + (double)u->ny * cell->sy);
-            double hc = (double)u->d - ((double)u->nx * cell->cx + (double)u->ny * cell->cy);
-            if (hs < 1e-12) hs = 1e-12;
-            if (hc < 1e-12) hc = 1e-12;
-            u->asx = (float)(u->nx / hs), u->asy = (float)(u->ny / hs);
-            u->acx = (float)(u->nx / hc), u->acy = (float)(u->ny / hc);
-            u->hc = (float)hc;
-            u->svx = u->vx - cell->sx, u->svy = u->vy - cell->sy;
-            u->cvx = u->vx - cell->cx, u->cvy = u->vy - cell->cy;
-            u->svn = (fabsf(u->svx) + fabsf(u->svy)) * SK__SECTOR_MARGIN;
-            u->cvn = (fabsf(u->cvx) + fabsf(u->cvy)) * SK__SECTOR_MARGIN;
+        for (uint32_t u = cell->first_use; u < cell->first_use + cell->use_count; u++) {
+            const sk__edge_key *kl = &keys[u];
+            if (kl->side != SK__SIDE_LEFT) continue;
+            uint32_t right = (uint32_t)(kl->k0 & 0xffffffffu);
+            const sk__cell *rc = &lv->cells[right];
+            for (uint32_t v = rc->first_use; v < rc->first_use + rc->use_count; v++) {
+                const sk__edge_key *kr = &keys[v];
+                if (kr->side == SK__SIDE_RIGHT && kr->k0 == kl->k0 && kr->k1 == kl->k1) {
+                    pairs[e].use_left = u, pairs[e].use_right = v;
+                    pairs[e].cell_left = c, pairs[e].cell_right = right;
+                    e++;
+                    break;
+                }
+            }
         }
     }
+    lv->f_count = (1 << lv->depth) + 1;
+    lv->edges = calloc(e ? e : 1, sizeof(sk__edge));
+    lv->f = calloc((e ? e : 1) * (size_t)lv->f_count, sizeof(float));
+    if (!lv->edges || !lv->f) {
+        free(pairs);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %u edges", e);
+    }
+    /* Each edge draws its own random numbers from its key: any order, same result. */
+#pragma omp parallel for schedule(static)
+    for (long q = 0; q < (long)e; q++)
+        build_edge(skin, level, &keys[pairs[q].use_left], &pairs[q], (uint32_t)q, site_left_y);
+    free(pairs);
+    lv->edge_count = e;
+    return SK_OK;
 }

@@ -20,13 +20,6 @@ typedef struct child_point {
     double x, y;    /* y space, frame of the level-1 ancestor */
 } child_point;
 
-static int child_cmp(const void *pa, const void *pb)
-{
-    const child_point *a = pa, *b = pb;
-    if (a->parent != b->parent) return a->parent < b->parent ? -1 : 1;
-    return a->order < b->order ? -1 : (a->order > b->order);
-}
-
 typedef struct dist_item {
     double d2;
     uint32_t j;
@@ -39,30 +32,46 @@ static int dist_cmp(const void *pa, const void *pb)
     return a->j < b->j ? -1 : (a->j > b->j);
 }
 
-/* A clipped child polygon kept between the parallel clipping and the layout. */
+/* A clipped child polygon kept between the parallel clipping and the layout: in its own
+ * slot of a shared slab when it has few vertices (almost always), else on the heap. */
+#define SK__CHILD_SLOT 16
 typedef struct child_poly {
     int n;
     double *x, *y;
     int64_t *tag;
+    bool heap;
 } child_poly;
 
-static bool child_poly_keep(child_poly *cp, const sk__poly *p)
+typedef struct child_slab {
+    double *x, *y;
+    int64_t *tag;
+} child_slab;
+
+static bool child_poly_keep(child_poly *cp, const child_slab *slab, uint32_t ci, const sk__poly *p)
 {
     cp->n = p->n;
-    cp->x = malloc(sizeof(double) * (size_t)p->n);
-    cp->y = malloc(sizeof(double) * (size_t)p->n);
-    cp->tag = malloc(sizeof(int64_t) * (size_t)p->n);
-    if (!cp->x || !cp->y || !cp->tag) return false;
+    cp->heap = p->n > SK__CHILD_SLOT;
+    if (cp->heap) {
+        cp->x = malloc(sizeof(double) * (size_t)p->n);
+        cp->y = malloc(sizeof(double) * (size_t)p->n);
+        cp->tag = malloc(sizeof(int64_t) * (size_t)p->n);
+        if (!cp->x || !cp->y || !cp->tag) return false;
+    } else {
+        size_t o = (size_t)ci * SK__CHILD_SLOT;
+        cp->x = slab->x + o, cp->y = slab->y + o, cp->tag = slab->tag + o;
+    }
     memcpy(cp->x, p->x, sizeof(double) * (size_t)p->n);
     memcpy(cp->y, p->y, sizeof(double) * (size_t)p->n);
     memcpy(cp->tag, p->tag, sizeof(int64_t) * (size_t)p->n);
     return true;
 }
 
-static void child_polys_free(child_poly *polys, uint32_t n)
+static void child_polys_free(child_poly *polys, uint32_t n, child_slab *slab)
 {
-    for (uint32_t i = 0; i < n; i++) free(polys[i].x), free(polys[i].y), free(polys[i].tag);
+    for (uint32_t i = 0; i < n; i++)
+        if (polys[i].heap) free(polys[i].x), free(polys[i].y), free(polys[i].tag);
     free(polys);
+    free(slab->x), free(slab->y), free(slab->tag);
 }
 
 /* Clips child i (of `n` siblings starting at `first`) to the parent polygon. */
@@ -116,33 +125,48 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
     sk_result res = SK_OK;
     size_t total = (size_t)count + plv->cell_count;
     child_point *pts = malloc(sizeof(child_point) * total);
-    uint32_t *has = calloc(plv->cell_count, sizeof(uint32_t));
-    if (!pts || !has) {
+    uint32_t *slot = calloc(plv->cell_count, sizeof(uint32_t));
+    if (!pts || !slot) {
         free(pts);
-        free(has);
+        free(slot);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
     }
     /* Which straight parent holds each point (frame F(level), where the levels above are
-       straight and nested). */
-    size_t np = 0;
-    for (uint32_t i = 0; i < count; i++) {
-        float px, py;
-        uint32_t parent = sk__locate_straight(skin, level - 1, xy[2 * i], xy[2 * i + 1], &px, &py);
-        if (parent == SK__SKIN_NONE) continue;
-        pts[np].parent = parent;
-        pts[np].order = i;
-        pts[np].x = px, pts[np].y = py;
-        has[parent] = 1;
-        np++;
+       straight and nested); points are independent. */
+    uint32_t *parent_of = malloc(sizeof(uint32_t) * (count ? count : 1));
+    float *local = malloc(sizeof(float) * 2 * (count ? count : 1));
+    if (!parent_of || !local) {
+        free(pts), free(slot), free(parent_of), free(local);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
     }
-    for (uint32_t p = 0; p < plv->cell_count; p++)
-        if (!has[p]) {
-            pts[np].parent = p;
-            pts[np].order = UINT32_MAX;
-            pts[np].x = plv->cells[p].cx, pts[np].y = plv->cells[p].cy;
-            np++;
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < (long)count; i++)
+        parent_of[i] = sk__locate_straight(skin, level - 1, xy[2 * i], xy[2 * i + 1], &local[2 * i],
+                                           &local[2 * i + 1]);
+    /* Sorted by parent, then by lattice index (a counting sort); a parent that catches no
+       point gets one child at its centre. */
+    for (uint32_t i = 0; i < count; i++)
+        if (parent_of[i] != SK__SKIN_NONE) slot[parent_of[i]]++;
+    size_t np = 0;
+    for (uint32_t p = 0; p < plv->cell_count; p++) {
+        uint32_t n = slot[p];
+        slot[p] = (uint32_t)np; /* first slot of parent p */
+        np += n ? n : 1;
+        if (!n) {
+            pts[slot[p]].parent = p;
+            pts[slot[p]].order = UINT32_MAX;
+            pts[slot[p]].x = plv->cells[p].cx, pts[slot[p]].y = plv->cells[p].cy;
         }
-    free(has);
+    }
+    for (uint32_t i = 0; i < count; i++) {
+        uint32_t p = parent_of[i];
+        if (p == SK__SKIN_NONE) continue;
+        child_point *cp = &pts[slot[p]++];
+        cp->parent = p;
+        cp->order = i;
+        cp->x = local[2 * i], cp->y = local[2 * i + 1];
+    }
+    free(slot), free(parent_of), free(local);
     if (np + plv->cell_count > SK_SKIN_MAX_CELLS) {
         free(pts);
         return sk_fail(err, SK_ERROR_LIMIT,
@@ -150,17 +174,15 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
                        "supported",
                        level + 1, np, SK_SKIN_MAX_CELLS);
     }
-    qsort(pts, np, sizeof *pts, child_cmp);
 
     uint32_t n_cells = (uint32_t)np;
     lv->cells = calloc(n_cells ? n_cells : 1, sizeof(sk__cell));
     double *zs = malloc(sizeof(double) * 2 * (n_cells ? n_cells : 1));
-    sk__poly *poly = malloc(sizeof(sk__poly));
     size_t use_cap = (size_t)n_cells * 8 + 16, use_count = 0;
     lv->uses = malloc(sizeof(sk__use) * use_cap);
     lv->vxy = malloc(sizeof(double) * 2 * use_cap);
     int64_t *tags = malloc(sizeof(int64_t) * use_cap);
-    if (!lv->cells || !zs || !poly || !lv->uses || !lv->vxy || !tags) {
+    if (!lv->cells || !zs || !lv->uses || !lv->vxy || !tags) {
         res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
         goto done;
     }
@@ -183,7 +205,12 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
     for (uint32_t p = 0; p < plv->cell_count; p++)
         if (plv->cells[p].child_count > max_family) max_family = plv->cells[p].child_count;
     child_poly *polys = calloc(n_cells ? n_cells : 1, sizeof(child_poly));
-    if (!polys) {
+    child_slab slab;
+    size_t slab_n = (size_t)(n_cells ? n_cells : 1) * SK__CHILD_SLOT;
+    slab.x = malloc(sizeof(double) * slab_n), slab.y = malloc(sizeof(double) * slab_n);
+    slab.tag = malloc(sizeof(int64_t) * slab_n);
+    if (!polys || !slab.x || !slab.y || !slab.tag) {
+        child_polys_free(polys, 0, &slab);
         res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
         goto done;
     }
@@ -199,7 +226,7 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
             if (!ord || !pl ||
                 !clip_child(lv, plv, p, zs, pc->first_child, pc->child_count, ci - pc->first_child,
                             ord, pl) ||
-                pl->n < 3 || !child_poly_keep(&polys[ci], pl)) {
+                pl->n < 3 || !child_poly_keep(&polys[ci], &slab, ci, pl)) {
 #pragma omp atomic write
                 failed = 1;
             }
@@ -209,7 +236,7 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
     }
     if (failed) {
         res = sk_fail(err, SK_ERROR_NUMERIC, "level %d: a cell could not be built", level + 1);
-        child_polys_free(polys, n_cells);
+        child_polys_free(polys, n_cells, &slab);
         goto done;
     }
     size_t total_uses = 0;
@@ -223,58 +250,67 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
         if (nv) lv->vxy = nv;
         if (nt) tags = nt;
         if (!nu || !nv || !nt) {
-            child_polys_free(polys, n_cells);
+            child_polys_free(polys, n_cells, &slab);
             res = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
             goto done;
         }
     }
     for (uint32_t ci = 0; ci < n_cells; ci++) {
-        const child_poly *cp = &polys[ci];
-        sk__cell *c = &lv->cells[ci];
-        double zx = zs[2 * ci], zy = zs[2 * ci + 1];
-        for (int k = 0; k < cp->n; k++) {
-            double lx = cp->x[k] + zx, ly = cp->y[k] + zy;
-            poly->x[k] = m[0][0] * lx + m[0][1] * ly;
-            poly->y[k] = m[1][0] * lx + m[1][1] * ly;
-            poly->tag[k] = cp->tag[k];
-        }
-        poly->n = cp->n;
-        double cx, cy;
-        sk__poly_centroid(poly, &cx, &cy);
-        c->cx = (float)cx, c->cy = (float)cy;
-        c->first_use = (uint32_t)use_count;
-        c->use_count = (uint32_t)poly->n;
-        for (int k = 0; k < poly->n; k++) {
-            sk__use *u = &lv->uses[use_count];
-            memset(u, 0, sizeof *u);
-            int k1 = (k + 1) % poly->n;
-            u->vx = (float)poly->x[k], u->vy = (float)poly->y[k];
-            lv->vxy[2 * use_count] = poly->x[k];
-            lv->vxy[2 * use_count + 1] = poly->y[k];
-            u->edge = SK__SKIN_NONE;
-            u->neighbour = SK__SKIN_NONE;
-            if (poly->tag[k] < 0) {
-                /* a piece of the parent's boundary: the parent's own line */
-                const sk__use *pu = &plv->uses[(uint32_t)(-poly->tag[k] - 2)];
-                u->nx = pu->nx, u->ny = pu->ny, u->d = pu->d;
-            } else {
-                double ex = poly->x[k1] - poly->x[k], ey = poly->y[k1] - poly->y[k];
-                double len = hypot(ex, ey);
-                u->nx = (float)(ey / len), u->ny = (float)(-ex / len);
-                u->d = (float)((ey * poly->x[k] - ex * poly->y[k]) / len);
-                u->neighbour = (uint32_t)poly->tag[k];
+        lv->cells[ci].first_use = (uint32_t)use_count;
+        lv->cells[ci].use_count = (uint32_t)polys[ci].n;
+        use_count += (size_t)polys[ci].n;
+    }
+    /* Lay the polygons out (in y space), each child on its own. */
+#pragma omp parallel
+    {
+        double px[SK__POLY_MAX], py[SK__POLY_MAX];
+#pragma omp for schedule(static)
+        for (long q = 0; q < (long)n_cells; q++) {
+            uint32_t ci = (uint32_t)q;
+            const child_poly *cp = &polys[ci];
+            sk__cell *c = &lv->cells[ci];
+            double zx = zs[2 * ci], zy = zs[2 * ci + 1];
+            int n = cp->n;
+            for (int k = 0; k < n; k++) {
+                double lx = cp->x[k] + zx, ly = cp->y[k] + zy;
+                px[k] = m[0][0] * lx + m[0][1] * ly;
+                py[k] = m[1][0] * lx + m[1][1] * ly;
             }
-            tags[use_count] = poly->tag[k];
-            use_count++;
+            double cx, cy;
+            sk__polygon_centroid(px, py, n, &cx, &cy);
+            c->cx = (float)cx, c->cy = (float)cy;
+            for (int k = 0; k < n; k++) {
+                size_t ui = c->first_use + (size_t)k;
+                sk__use *u = &lv->uses[ui];
+                memset(u, 0, sizeof *u);
+                int k1 = (k + 1) % n;
+                int64_t tag = cp->tag[k];
+                u->vx = (float)px[k], u->vy = (float)py[k];
+                lv->vxy[2 * ui] = px[k];
+                lv->vxy[2 * ui + 1] = py[k];
+                u->edge = SK__SKIN_NONE;
+                u->neighbour = SK__SKIN_NONE;
+                if (tag < 0) {
+                    /* a piece of the parent's boundary: the parent's own line */
+                    const sk__use *pu = &plv->uses[(uint32_t)(-tag - 2)];
+                    u->nx = pu->nx, u->ny = pu->ny, u->d = pu->d;
+                } else {
+                    double ex = px[k1] - px[k], ey = py[k1] - py[k];
+                    double len = hypot(ex, ey);
+                    u->nx = (float)(ey / len), u->ny = (float)(-ex / len);
+                    u->d = (float)((ey * px[k] - ex * py[k]) / len);
+                    u->neighbour = (uint32_t)tag;
+                }
+                tags[ui] = tag;
+            }
         }
     }
-    child_polys_free(polys, n_cells);
+    child_polys_free(polys, n_cells, &slab);
     lv->use_count = (uint32_t)use_count;
 
     {
         sk__edge_key *keys = malloc(sizeof(sk__edge_key) * (use_count ? use_count : 1));
         double *left_site = malloc(sizeof(double) * 2 * (use_count ? use_count : 1));
-        size_t nk = 0;
         if (!keys || !left_site) {
             free(keys);
             free(left_site);
@@ -286,19 +322,20 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
             const sk__cell *c = &lv->cells[i];
             for (uint32_t k = 0; k < c->use_count; k++) {
                 uint32_t ui = c->first_use + k;
-                if (tags[ui] < 0) continue;
+                if (tags[ui] < 0) {
+                    keys[ui].side = SK__SIDE_NONE;
+                    continue;
+                }
                 uint32_t j = (uint32_t)tags[ui];
                 bool left = i < j;
-                keys[nk].k0 = left ? ((uint64_t)i << 32 | j) : ((uint64_t)j << 32 | i);
-                keys[nk].k1 = 0;
-                keys[nk].use = ui;
-                keys[nk].side = left ? 0 : 1;
+                keys[ui].k0 = left ? ((uint64_t)i << 32 | j) : ((uint64_t)j << 32 | i);
+                keys[ui].k1 = 0;
+                keys[ui].side = left ? SK__SIDE_LEFT : SK__SIDE_RIGHT;
                 left_site[2 * ui] = left ? c->sx : lv->cells[j].sx;
                 left_site[2 * ui + 1] = left ? c->sy : lv->cells[j].sy;
-                nk++;
             }
         }
-        res = sk__build_edges(skin, level, keys, nk, left_site, err);
+        res = sk__build_edges(skin, level, keys, left_site, err);
         free(keys);
         free(left_site);
     }
@@ -306,7 +343,6 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
 done:
     free(pts);
     free(zs);
-    free(poly);
     free(tags);
     return res;
 }

@@ -17,12 +17,12 @@
 static float gauge_site(const sk__level *lv, uint32_t c, float px, float py, uint32_t *use)
 {
     const sk__cell *cell = &lv->cells[c];
-    const sk__use *u = lv->uses + cell->first_use;
+    const sk__fan *f = lv->fans + cell->first_use;
     float qx = px - cell->sx, qy = py - cell->sy;
     float best = -INFINITY;
     uint32_t arg = 0;
     for (uint32_t k = 0; k < cell->use_count; k++) {
-        float g = u[k].asx * qx + u[k].asy * qy;
+        float g = f[k].gx * qx + f[k].gy * qy;
         if (g > best) best = g, arg = k;
     }
     if (use) *use = cell->first_use + arg;
@@ -122,15 +122,12 @@ static bool edge_frame_at(const sk__level *lv, const sk__edge *e, float rx, floa
     return true;
 }
 
-uint32_t sk__unwarp(const sk__level *lv, uint32_t c, uint32_t ui, float *px, float *py,
+uint32_t sk__unwarp(const sk__level *lv, const sk__fan *fan, float *px, float *py,
                     float jac[2][2], float *pre_x, float *pre_y)
 {
-    *pre_x = *px, *pre_y = *py;
-    const sk__use *u = &lv->uses[ui];
-    if (!lv->perturbed || u->edge == SK__SKIN_NONE) return c;
-    const sk__edge *e = &lv->edges[u->edge];
+    const sk__edge *e = &lv->edges[fan->edge];
     edge_frame ef;
-    if (!edge_frame_at(lv, e, *px + u->shx, *py + u->shy, &ef)) return c;
+    if (!edge_frame_at(lv, e, *px + fan->shx, *py + fan->shy, &ef)) return fan->cell;
     bool left = ef.s > ef.f;
     uint32_t owner = left ? e->left : e->right;
     float f = ef.f, s = ef.s, H = ef.H;
@@ -170,11 +167,11 @@ uint32_t sk__unwarp(const sk__level *lv, uint32_t c, uint32_t ui, float *px, flo
  * perturbed geometry (outlines and pore positions; not a per-pixel path). */
 static void warp(const sk__level *lv, uint32_t ui, double *px, double *py)
 {
-    const sk__use *u = &lv->uses[ui];
-    if (!lv->perturbed || u->edge == SK__SKIN_NONE) return;
-    const sk__edge *e = &lv->edges[u->edge];
+    const sk__fan *fan = &lv->fans[ui];
+    if (fan->edge == SK__SKIN_NONE) return;
+    const sk__edge *e = &lv->edges[fan->edge];
     edge_frame ef;
-    double rx = *px + u->shx, ry = *py + u->shy;
+    double rx = *px + fan->shx, ry = *py + fan->shy;
     if (!edge_frame_at(lv, e, (float)rx, (float)ry, &ef)) return;
     double s0 = ef.s, f = ef.f, H = ef.H;
     /* Solve s0 = s - f (1 - u(s))^2 on the side of the polyline that s0 is on. */

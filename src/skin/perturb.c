@@ -27,7 +27,7 @@ void sk__support(double ax, double ay, double bx, double by, double px, double p
     else if (tp <= 0.0)
         h = hp * (1.0 - t) / (1.0 - tp);
     else
-        h = hp * fmin(t / tp, (1.0 - t) / (1.0 - tp));
+        h = hp * sk__tent(t, tp);
     *t_apex = t;
     *h_apex = h;
 }
@@ -36,7 +36,6 @@ void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double 
                       double t_apex, double h_apex, float *f)
 {
     const sk__level *lv = &skin->levels[level];
-    const sk_skin_level *p = &skin->desc.levels[level];
     int depth = lv->depth, count = 1 << depth;
     double fd[(1 << 10) + 1];
     fd[0] = 0.0, fd[count] = 0.0;
@@ -46,7 +45,7 @@ void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double 
     bool have_spare = false;
     for (int n = 1; n <= depth; n++) {
         int step = count >> n;
-        double amp = p->perturb_rate * exp2(-n * (double)p->perturb_decay);
+        double amp = lv->amp[n];
         for (int k = step; k < count; k += 2 * step) {
             double rnd;
             if (have_spare) {
@@ -61,7 +60,7 @@ void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double 
             double seg = sqrt(dt * dt + (fr - fl) * (fr - fl));
             double v = amp * rnd * seg;
             double t = (double)k / count;
-            double hs = h_apex * fmin(t / t_apex, (1.0 - t) / (1.0 - t_apex)) * SK__SUPPORT_FILL;
+            double hs = h_apex * sk__tent(t, t_apex) * SK__SUPPORT_FILL;
             double val = 0.5 * (fl + fr) + v;
             fd[k] = val > hs ? hs : (val < -hs ? -hs : val);
         }

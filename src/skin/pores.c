@@ -132,58 +132,79 @@ sk_result sk__build_pores(sk_skin *skin, sk_error *err)
     g->ny = (int)fmax(1, fmin(2048, floor(h / rmax)));
     g->inv_w = g->nx / w, g->inv_h = g->ny / h;
     size_t nb = (size_t)g->nx * g->ny;
+    /* each bucket's own pores first (a counting sort) */
+    uint32_t *own = calloc(nb + 1, sizeof(uint32_t)), *fill = malloc(sizeof(uint32_t) * (nb + 1));
+    sk__pore *sorted = malloc(sizeof(sk__pore) * (n ? n : 1));
     g->start = calloc(nb + 1, sizeof(uint32_t));
-    g->pores = malloc(sizeof(sk__pore) * (n ? n : 1));
-    uint32_t *fill = malloc(sizeof(uint32_t) * (nb + 1));
-    if (!g->start || !g->pores || !fill) {
-        free(list), free(fill);
+    g->near = malloc(sizeof(sk__pore_near) * (9 * (size_t)n + 1));
+    if (!own || !fill || !sorted || !g->start || !g->near) {
+        free(list), free(own), free(fill), free(sorted);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for pores");
     }
-    for (uint32_t i = 0; i < n; i++) g->start[bucket_of(g, list[i].x, list[i].y) + 1]++;
-    for (size_t b = 0; b < nb; b++) g->start[b + 1] += g->start[b];
-    memcpy(fill, g->start, sizeof(uint32_t) * (nb + 1));
-    for (uint32_t i = 0; i < n; i++) g->pores[fill[bucket_of(g, list[i].x, list[i].y)]++] = list[i];
-    g->count = n;
-    free(fill);
+    for (uint32_t i = 0; i < n; i++) own[bucket_of(g, list[i].x, list[i].y) + 1]++;
+    for (size_t b = 0; b < nb; b++) own[b + 1] += own[b];
+    memcpy(fill, own, sizeof(uint32_t) * (nb + 1));
+    for (uint32_t i = 0; i < n; i++) sorted[fill[bucket_of(g, list[i].x, list[i].y)]++] = list[i];
     free(list);
+    /* Then every bucket's list of its neighbours' pores: bucket t sees neighbour t + d (one
+       wrap at most) with its pores moved by the period crossed. Neighbours in a fixed
+       order, so a point sums its pores in the same order wherever it is. */
+    for (int pass = 0; pass < 2; pass++) {
+        for (int r = 0; r < 9; r++) {
+            int dx = r % 3 - 1, dy = r / 3 - 1;
+            for (uint32_t i = 0; i < n; i++) {
+                int sb = bucket_of(g, sorted[i].x, sorted[i].y);
+                int tx = sb % g->nx - dx, ty = sb / g->nx - dy;
+                double ox = 0, oy = 0;
+                if (tx < 0)
+                    tx += g->nx, ox = w; /* t sees the pore across its right edge */
+                else if (tx >= g->nx)
+                    tx -= g->nx, ox = -w;
+                if (ty < 0)
+                    ty += g->ny, oy = h;
+                else if (ty >= g->ny)
+                    ty -= g->ny, oy = -h;
+                size_t t = (size_t)ty * g->nx + tx;
+                if (pass == 0) {
+                    g->start[t + 1]++;
+                } else {
+                    sk__pore_near *q = &g->near[fill[t]++];
+                    q->x = sorted[i].x + ox, q->y = sorted[i].y + oy;
+                    q->radius = sorted[i].radius, q->depth = sorted[i].depth;
+                }
+            }
+        }
+        if (pass == 0) {
+            for (size_t b = 0; b < nb; b++) g->start[b + 1] += g->start[b];
+            memcpy(fill, g->start, sizeof(uint32_t) * (nb + 1));
+        }
+    }
+    g->count = n;
+    free(own), free(fill), free(sorted);
     return SK_OK;
 }
 
 void sk__pores_eval(const sk_skin *skin, double x, double y, float *h, float grad[2])
 {
     const sk__pore_grid *g = &skin->pores;
-    double w = skin->period[0], hh = skin->period[1];
-    x = sk__wrap(x, w);
-    y = sk__wrap(y, hh);
+    x = sk__wrap(x, skin->period[0]);
+    y = sk__wrap(y, skin->period[1]);
     int bx = (int)(x * g->inv_w), by = (int)(y * g->inv_h);
     if (bx >= g->nx) bx = g->nx - 1;
     if (by >= g->ny) by = g->ny - 1;
+    size_t b = (size_t)by * g->nx + bx;
     float sum = 0, gx = 0, gy = 0;
-    for (int dy = -1; dy <= 1; dy++)
-        for (int dx = -1; dx <= 1; dx++) {
-            int cx = bx + dx, cy = by + dy;
-            double sx = 0, sy = 0;
-            if (cx < 0)
-                cx += g->nx, sx = -w;
-            else if (cx >= g->nx)
-                cx -= g->nx, sx = w;
-            if (cy < 0)
-                cy += g->ny, sy = -hh;
-            else if (cy >= g->ny)
-                cy -= g->ny, sy = hh;
-            int b = cy * g->nx + cx;
-            for (uint32_t i = g->start[b]; i < g->start[b + 1]; i++) {
-                const sk__pore *p = &g->pores[i];
-                float qx = (float)(x - (p->x + sx)), qy = (float)(y - (p->y + sy));
-                float r2 = qx * qx + qy * qy, R2 = p->radius * p->radius;
-                if (r2 >= R2) continue;
-                float u = r2 / R2, om = 1.0f - u;
-                sum -= p->depth * om * om;
-                /* d/dq of -D (1 - u)^2 = 4 D (1 - u) q / R^2 */
-                gx += 4.0f * p->depth * om * qx / R2;
-                gy += 4.0f * p->depth * om * qy / R2;
-            }
-        }
+    for (uint32_t i = g->start[b]; i < g->start[b + 1]; i++) {
+        const sk__pore_near *p = &g->near[i];
+        float qx = (float)(x - p->x), qy = (float)(y - p->y);
+        float r2 = qx * qx + qy * qy, R2 = p->radius * p->radius;
+        if (r2 >= R2) continue;
+        float u = r2 / R2, om = 1.0f - u;
+        sum -= p->depth * om * om;
+        /* d/dq of -D (1 - u)^2 = 4 D (1 - u) q / R^2 */
+        gx += 4.0f * p->depth * om * qx / R2;
+        gy += 4.0f * p->depth * om * qy / R2;
+    }
     *h = sum;
     grad[0] = gx, grad[1] = gy;
 }

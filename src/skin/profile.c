@@ -13,21 +13,21 @@
 
 /* The edge the ray from the centre through q meets: the hinted one if q lies inside its
  * sector by a margin (the same answer the full search gives), else the full gauge. */
-static int centre_edge(const sk__use *u, int n, float qx, float qy, uint32_t *hint, float *gauge)
+static int centre_edge(const sk__sector *sec, int n, float qx, float qy, uint32_t *hint,
+                       float *gauge)
 {
     if (*hint < (uint32_t)n) {
-        int k = (int)*hint;
-        const sk__use *a = &u[k], *b = &u[k + 1 == n ? 0 : k + 1];
+        const sk__sector *a = &sec[*hint];
         float q1 = fabsf(qx) + fabsf(qy);
-        if (a->cvx * qy - a->cvy * qx > q1 * a->cvn && qx * b->cvy - qy * b->cvx > q1 * b->cvn) {
-            *gauge = a->acx * qx + a->acy * qy;
-            return k;
+        if (a->ax * qy - a->ay * qx > q1 * a->an && qx * a->by - qy * a->bx > q1 * a->bn) {
+            *gauge = a->gx * qx + a->gy * qy;
+            return (int)*hint;
         }
     }
     float best = -INFINITY;
     int arg = 0;
     for (int j = 0; j < n; j++) {
-        float gk = u[j].acx * qx + u[j].acy * qy;
+        float gk = sec[j].gx * qx + sec[j].gy * qy;
         if (gk > best) best = gk, arg = j;
     }
     *hint = (uint32_t)arg;
@@ -35,67 +35,113 @@ static int centre_edge(const sk__use *u, int n, float qx, float qy, uint32_t *hi
     return arg;
 }
 
-float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, float grad[2],
-                       uint32_t *hint)
+/* What an item's profile needs after the first step. */
+enum { FLAT, SCALED, LAST_SEGMENT };
+
+enum { ITEMS = SK__QUERY_BATCH * SK_SKIN_MAX_LEVELS };
+
+void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, const float *px,
+                      const float *py, uint32_t *sector, float *z, float (*grad)[2])
 {
-    const sk__cell *cell = &lv->cells[c];
-    const sk__use *u = lv->uses + cell->first_use;
-    int n = (int)cell->use_count;
-    float qx = px - cell->cx, qy = py - cell->cy;
-    float best;
-    int arg = centre_edge(u, n, qx, qy, hint, &best);
-    float xq = 10.0f * best;
-    const sk__profile *pr = &lv->profile;
-    grad[0] = grad[1] = 0.0f;
-    if (!(xq < 10.0f)) return pr->z[pr->segment_count - 1][3] * lv->z_scale;
-    if (xq < 0.0f) xq = 0.0f;
-    float gxq = 10.0f * u[arg].acx, gyq = 10.0f * u[arg].acy; /* gradient of x' */
-    float g = 1.0f, ggx = 0.0f, ggy = 0.0f;                   /* roundness scale */
-    float rho = lv->roundness;
-    float r2 = qx * qx + qy * qy;
-    if (rho > 0.0f && r2 > 0.0f && xq > 0.0f) {
-        /* The pair of consecutive edge normals whose angle holds q: the edge the ray
-           meets (arg) has its normal next to the ray, on one side or the other. */
-        int i = arg;
-        if (u[arg].nx * qy - u[arg].ny * qx < 0.0f) i = arg == 0 ? n - 1 : arg - 1;
-        int i1 = i + 1 == n ? 0 : i + 1;
-        float s1 = u[i].nx * qy - u[i].ny * qx, s2 = qx * u[i1].ny - qy * u[i1].nx;
-        if (!(s1 >= 0.0f && s2 > 0.0f)) {
-            /* a normal outside its edge's span (obtuse corner): search */
-            for (int k = 0; k < n; k++) {
-                int k1 = k + 1 == n ? 0 : k + 1;
-                float c1 = u[k].nx * qy - u[k].ny * qx, c2 = qx * u[k1].ny - qy * u[k1].nx;
-                if (c1 >= 0.0f && c2 > 0.0f) {
-                    i = k, i1 = k1, s1 = c1, s2 = c2;
-                    break;
+    float xq[ITEMS], gxq[ITEMS], gyq[ITEMS];
+    float g[ITEMS], ggx[ITEMS], ggy[ITEMS];
+    float dzdx[ITEMS], dzdg[ITEMS];
+    int path[ITEMS];
+    sk__newton newton[ITEMS];
+
+    /* Step 1: the sector (x' and its gradient), the pair of normals around q and the
+       roundness scale g. */
+    for (int k = 0; k < L; k++) {
+        const sk__level *lv = &skin->levels[k];
+        float rho = lv->roundness;
+        bool round = rho > 0.0f;
+        for (int i = k * m; i < (k + 1) * m; i++) {
+            const sk__cell *c = &lv->cells[cell[i]];
+            const sk__sector *sec = lv->sectors + c->first_use;
+            int n = (int)c->use_count;
+            float x = px[i] - sec->cx, y = py[i] - sec->cy;
+            float best;
+            int arg = centre_edge(sec, n, x, y, &sector[k], &best);
+            float xk = 10.0f * best;
+            g[i] = 1.0f, ggx[i] = 0.0f, ggy[i] = 0.0f;
+            if (!(xk < 10.0f)) {
+                path[i] = FLAT;
+                continue;
+            }
+            path[i] = SCALED;
+            if (xk < 0.0f) xk = 0.0f;
+            xq[i] = xk;
+            gxq[i] = 10.0f * sec[arg].gx, gyq[i] = 10.0f * sec[arg].gy; /* gradient of x' */
+            float rr = x * x + y * y;
+            if (!(round && rr > 0.0f && xk > 0.0f)) continue;
+            /* The pair of consecutive edge normals whose angle holds q: the edge the ray
+               meets (arg) has its normal next to the ray, on one side or the other. */
+            const sk__sector *pr = &sec[arg];
+            float a1 = pr->nx * y - pr->ny * x, a2;
+            if (a1 < 0.0f) {
+                pr = &sec[arg == 0 ? n - 1 : arg - 1];
+                a2 = -a1, a1 = pr->nx * y - pr->ny * x;
+            } else {
+                a2 = x * pr->my - y * pr->mx;
+            }
+            if (!(a1 >= 0.0f && a2 > 0.0f)) {
+                /* a normal outside its edge's span (obtuse corner): search */
+                for (int j = 0; j < n; j++) {
+                    float c1 = sec[j].nx * y - sec[j].ny * x, c2 = x * sec[j].my - y * sec[j].mx;
+                    if (c1 >= 0.0f && c2 > 0.0f) {
+                        pr = &sec[j], a1 = c1, a2 = c2;
+                        break;
+                    }
                 }
             }
-        }
-        float ss = s1 + s2;
-        if (ss > 0.0f) {
-            /* one division for both 1 / ss and 1 / r */
-            float r = sqrtf(r2), both = 1.0f / (ss * r);
-            float iss = r * both, ir = ss * both, t = s1 * iss;
-            float h1 = u[i].hc, h2 = u[i1].hc;
+            float ss = a1 + a2;
+            if (!(ss > 0.0f)) continue;
+            /* the roundness scale g and its gradient; one division for 1 / ss and 1 / r */
+            float r = sqrtf(rr), both = 1.0f / (ss * r);
+            float iss = r * both, ir = ss * both, t = a1 * iss;
+            float h1 = pr->h, h2 = pr->hm;
             float R = h1 + t * (h2 - h1);
             float inv = 0.1f * ir;
-            float kappa = R * xq * inv; /* R / D(phi) */
+            float kappa = R * xk * inv; /* R / D(phi) */
             if (kappa < 1.0f) {
-                /* grad t = (s2 grad s1 - s1 grad s2) / ss^2 */
-                float g1x = -u[i].ny, g1y = u[i].nx, g2x = u[i1].ny, g2y = -u[i1].nx;
+                /* grad t = (s2 grad s1 - s1 grad s2) / ss^2, grad s1 = (-ny, nx) of normal 1,
+                   grad s2 = (my, -mx) of normal 2 */
                 float dh = (h2 - h1) * iss * iss;
-                float Rx = dh * (s2 * g1x - s1 * g2x), Ry = dh * (s2 * g1y - s1 * g2y);
+                float Rx = dh * (-a2 * pr->ny - a1 * pr->my), Ry = dh * (a2 * pr->nx + a1 * pr->mx);
                 float k0 = kappa * ir * ir;
-                float kx = (Rx * xq + R * gxq) * inv - k0 * qx;
-                float ky = (Ry * xq + R * gyq) * inv - k0 * qy;
-                g = 1.0f - rho + rho * kappa;
-                ggx = rho * kx, ggy = rho * ky;
+                float kx = (Rx * xk + R * gxq[i]) * inv - k0 * x;
+                float ky = (Ry * xk + R * gyq[i]) * inv - k0 * y;
+                g[i] = 1.0f - rho + rho * kappa;
+                ggx[i] = rho * kx, ggy[i] = rho * ky;
+            }
+        }
+        /* z(x', g): the Newton guess in the last segment, else the scaled profile */
+        const sk__profile *prof = &lv->profile;
+        for (int i = k * m; i < (k + 1) * m; i++) {
+            if (path[i] == FLAT) {
+                z[i] = prof->z[prof->segment_count - 1][3];
+            } else if (g[i] != 1.0f && xq[i] > g[i] * prof->last_start) {
+                path[i] = LAST_SEGMENT;
+                sk__last_segment_guess(prof, g[i], xq[i], &newton[i]);
+            } else {
+                z[i] = sk__profile_scaled(prof, g[i], xq[i], &dzdx[i], &dzdg[i]);
             }
         }
     }
-    float dzdx, dzdg;
-    float z = sk__bezier_solve(pr, g, xq, &dzdx, &dzdg);
-    grad[0] = (dzdx * gxq + dzdg * ggx) * lv->z_scale;
-    grad[1] = (dzdx * gyq + dzdg * ggy) * lv->z_scale;
-    return z * lv->z_scale;
+    /* Step 3: the Newton step; heights and gradients in mm. */
+    for (int k = 0; k < L; k++) {
+        const sk__level *lv = &skin->levels[k];
+        float zs = lv->z_scale;
+        for (int i = k * m; i < (k + 1) * m; i++) {
+            if (path[i] == LAST_SEGMENT)
+                z[i] = sk__last_segment_finish(&lv->profile, xq[i], &newton[i], &dzdx[i], &dzdg[i]);
+            if (path[i] == FLAT) {
+                grad[i][0] = grad[i][1] = 0.0f;
+            } else {
+                grad[i][0] = (dzdx[i] * gxq[i] + dzdg[i] * ggx[i]) * zs;
+                grad[i][1] = (dzdx[i] * gyq[i] + dzdg[i] * ggy[i]) * zs;
+            }
+            z[i] *= zs;
+        }
+    }
 }

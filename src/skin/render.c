@@ -12,6 +12,34 @@
 static const float level_colour[4][3] = {
     {0.95f, 0.10f, 0.10f}, {0.10f, 0.80f, 0.15f}, {0.15f, 0.35f, 1.00f}, {0.95f, 0.85f, 0.10f}};
 
+/* Shaded colours of pixels gx0 .. gx0 + n - 1 (n <= SK__QUERY_BATCH) of image row gy, each
+ * the mean over samples x samples points: every sub-row of points is queried in batches
+ * with its own hint, and each pixel sums its points row by row, as one at a time would. */
+static void supersample(const sk_skin *skin, int gx0, int n, int gy, int samples, double mm_x,
+                        double mm_y, double top, sk__hint *hints, sk_vec3f *c)
+{
+    for (int b = 0; b < n; b++) c[b] = sk_v3f(0, 0, 0);
+    int total = n * samples;
+    for (int sy = 0; sy < samples; sy++) {
+        double y = top - (gy + (sy + 0.5) / samples) * mm_y;
+        for (int q0 = 0; q0 < total; q0 += SK__QUERY_BATCH) {
+            int m = total - q0 < SK__QUERY_BATCH ? total - q0 : SK__QUERY_BATCH;
+            double xs[SK__QUERY_BATCH], ys[SK__QUERY_BATCH];
+            sk_skin_sample smp[SK__QUERY_BATCH];
+            for (int q = 0; q < m; q++) {
+                int b = (q0 + q) / samples, sx = (q0 + q) % samples;
+                xs[q] = ((gx0 + b) + (sx + 0.5) / samples) * mm_x, ys[q] = y;
+            }
+            sk__query(skin, m, xs, ys, 0, smp, &hints[sy]);
+            for (int q = 0; q < m; q++) {
+                int b = (q0 + q) / samples;
+                c[b] = sk_v3f_add(c[b], sk_skin_shade(skin, smp[q].normal));
+            }
+        }
+    }
+    for (int b = 0; b < n; b++) c[b] = sk_v3f_scale(c[b], 1.0f / (float)(samples * samples));
+}
+
 sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, sk_error *err)
 {
     if (!skin || !desc)
@@ -47,53 +75,52 @@ sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, s
 #pragma omp parallel for schedule(dynamic, 1)
     for (int j = 0; j < rh; j++) {
         int gy = ry + j;
-        sk__hint hint;
+        sk__hint hint, sub_hints[8];
         sk__hint_reset(&hint);
-        for (int i = 0; i < rw; i++) {
-            int gx = rx + i;
-            size_t o = (size_t)j * (size_t)rw + (size_t)i;
-            double x = (gx + 0.5) * mm_x, y = top - (gy + 0.5) * mm_y;
-            sk_skin_sample s;
-            sk__query(skin, x, y, flags, &s, &hint);
-            if (desc->height_mm) desc->height_mm[o] = s.height_mm;
-            if (desc->normal) {
-                desc->normal[3 * o] = s.normal.x;
-                desc->normal[3 * o + 1] = s.normal.y;
-                desc->normal[3 * o + 2] = s.normal.z;
-            }
-            if (desc->furrow) desc->furrow[o] = s.furrow_mm[furrow_level - 1];
-            if (desc->cell_id) desc->cell_id[o] = s.cell[id_level - 1];
-            if (!desc->preview && !desc->edges) continue;
-            sk_vec3f c = sk_skin_shade(skin, s.normal);
-            if (samples > 1) {
-                c = sk_v3f(0, 0, 0);
-                for (int sy = 0; sy < samples; sy++)
-                    for (int sx = 0; sx < samples; sx++) {
-                        double xs = (gx + (sx + 0.5) / samples) * mm_x;
-                        double ys = top - (gy + (sy + 0.5) / samples) * mm_y;
-                        sk_vec3f n;
-                        sk_skin_eval(skin, xs, ys, NULL, &n);
-                        c = sk_v3f_add(c, sk_skin_shade(skin, n));
-                    }
-                c = sk_v3f_scale(c, 1.0f / (float)(samples * samples));
-            }
-            if (desc->preview) {
-                desc->preview[3 * o] = c.x;
-                desc->preview[3 * o + 1] = c.y;
-                desc->preview[3 * o + 2] = c.z;
-            }
-            if (desc->edges) {
-                float e[3] = {c.x, c.y, c.z};
-                for (int k = L - 1; k >= 0; k--) {
-                    float d = s.furrow_mm[k];
-                    if (d >= line_mm) continue;
-                    float a = 1.0f - d / line_mm;
-                    const float *lc = level_colour[k < 3 ? k : 3];
-                    for (int q = 0; q < 3; q++) e[q] += (lc[q] - e[q]) * a;
+        for (int s = 0; s < samples; s++) sk__hint_reset(&sub_hints[s]);
+        bool shade = desc->preview || desc->edges;
+        for (int i0 = 0; i0 < rw; i0 += SK__QUERY_BATCH) {
+            int n = rw - i0 < SK__QUERY_BATCH ? rw - i0 : SK__QUERY_BATCH;
+            double xs[SK__QUERY_BATCH], ys[SK__QUERY_BATCH];
+            sk_skin_sample batch[SK__QUERY_BATCH];
+            for (int b = 0; b < n; b++)
+                xs[b] = (rx + i0 + b + 0.5) * mm_x, ys[b] = top - (gy + 0.5) * mm_y;
+            sk__query(skin, n, xs, ys, flags, batch, &hint);
+            sk_vec3f colours[SK__QUERY_BATCH];
+            if (shade && samples > 1)
+                supersample(skin, rx + i0, n, gy, samples, mm_x, mm_y, top, sub_hints, colours);
+            for (int b = 0; b < n; b++) {
+                int i = i0 + b;
+                size_t o = (size_t)j * (size_t)rw + (size_t)i;
+                const sk_skin_sample *sp = &batch[b];
+                if (desc->height_mm) desc->height_mm[o] = sp->height_mm;
+                if (desc->normal) {
+                    desc->normal[3 * o] = sp->normal.x;
+                    desc->normal[3 * o + 1] = sp->normal.y;
+                    desc->normal[3 * o + 2] = sp->normal.z;
                 }
-                desc->edges[3 * o] = e[0];
-                desc->edges[3 * o + 1] = e[1];
-                desc->edges[3 * o + 2] = e[2];
+                if (desc->furrow) desc->furrow[o] = sp->furrow_mm[furrow_level - 1];
+                if (desc->cell_id) desc->cell_id[o] = sp->cell[id_level - 1];
+                if (!shade) continue;
+                sk_vec3f c = samples > 1 ? colours[b] : sk_skin_shade(skin, sp->normal);
+                if (desc->preview) {
+                    desc->preview[3 * o] = c.x;
+                    desc->preview[3 * o + 1] = c.y;
+                    desc->preview[3 * o + 2] = c.z;
+                }
+                if (desc->edges) {
+                    float e[3] = {c.x, c.y, c.z};
+                    for (int k = L - 1; k >= 0; k--) {
+                        float d = sp->furrow_mm[k];
+                        if (d >= line_mm) continue;
+                        float a = 1.0f - d / line_mm;
+                        const float *lc = level_colour[k < 3 ? k : 3];
+                        for (int q = 0; q < 3; q++) e[q] += (lc[q] - e[q]) * a;
+                    }
+                    desc->edges[3 * o] = e[0];
+                    desc->edges[3 * o + 1] = e[1];
+                    desc->edges[3 * o + 2] = e[2];
+                }
             }
         }
         sk__loop_progress_tick(&lp);

@@ -28,17 +28,42 @@
 typedef struct sk__use {
     float vx, vy;     /* start vertex of the edge (y space, cell frame) */
     float nx, ny, d;  /* outward unit normal and offset: inside is n . y <= d */
-    float asx, asy;   /* gauge from the site: n / (d - n . site) */
-    float acx, acy;   /* gauge from the profile centre: n / (d - n . centre) */
-    float hc;         /* distance from the centre to the line, d - n . centre */
-    float svx, svy;   /* start vertex relative to the site (fan sectors) */
-    float cvx, cvy;   /* start vertex relative to the centre (profile sectors) */
-    float svn, cvn;   /* |svx| + |svy| and |cvx| + |cvy| times the sector margin */
     float shx, shy;   /* add to a point of this cell's frame to get the edge's frame */
     uint32_t edge;    /* edge record of this level, or SK__SKIN_NONE (a piece of the
                          parent's boundary, or an unpaired degenerate edge) */
     uint32_t neighbour; /* cell across the edge at this level, or SK__SKIN_NONE */
 } sk__use;
+
+/* Per-pixel query records, one of each per use, laid out so that one record (one cache
+ * line) answers one test (query_records.c).
+ *
+ * Fan triangle k of a cell: the site, vertex k and vertex k + 1. A point inside it by a
+ * margin lies in the cell, and use k's line is the one the ray from the site meets: the
+ * fan decides which edge's perturbation can reach the point (locate.c). */
+typedef struct sk__fan {
+    float sx, sy;         /* site */
+    float ax, ay, an;     /* vertex k minus the site; margin (|ax| + |ay|) * SK__SECTOR_MARGIN */
+    float bx, by, bn;     /* vertex k + 1 minus the site; margin */
+    float gx, gy;         /* gauge from the site: n / (d - n . site) (<= 1 inside the cell) */
+    float shx, shy;       /* add to a point of the cell's frame to get the edge's frame */
+    uint32_t edge;        /* perturbed edge record, or SK__SKIN_NONE (nothing to unwarp) */
+    uint32_t cell;        /* the cell */
+    uint32_t parent;      /* its parent (SK__SKIN_NONE at level 1) */
+    float gcut;           /* below this gauge a point is clear of the edge's perturbation
+                             support (with a margin far above rounding) */
+} sk__fan;
+
+/* Sector k of a cell seen from its profile centre (centre, vertex k, vertex k + 1), where
+ * x' is 10 times the gauge of edge k, and the pair of edge normals k, k + 1 that frames
+ * the roundness (profile.c). */
+typedef struct sk__sector {
+    float cx, cy;         /* profile centre */
+    float ax, ay, an;     /* vertex k minus the centre; margin */
+    float bx, by, bn;     /* vertex k + 1 minus the centre; margin */
+    float gx, gy;         /* gauge from the centre: n_k / h_k */
+    float nx, ny, h;      /* normal of edge k, distance h_k from the centre to its line */
+    float mx, my, hm;     /* the same for edge k + 1 */
+} sk__sector;
 
 /* A shared edge, perturbed once (paper sec. 3.2.1 (1), midpoint displacement). Geometry
  * in y space in the frame of its left cell. With s the signed distance from the straight
@@ -71,20 +96,24 @@ typedef struct sk__cell {
 
 /* A cubic Bezier chain in (x, z) (paper sec. 3.2.1 (2), parameter 5). */
 #define SK__PROFILE_TABLE 256
+#define SK__GUESS_G 8     /* steps of g in the Newton guess table */
+#define SK__GUESS_X 128   /* steps of x' in it */
 typedef struct sk__profile {
     int segment_count;
     float x[SK_SKIN_MAX_SEGMENTS][4];
     float z[SK_SKIN_MAX_SEGMENTS][4];
-    /* z(x) and dz/dx times the step of each segment at SK__PROFILE_TABLE even steps of x
-       (exact values from the Bezier), interpolated as cubic Hermite */
-    float zx[SK_SKIN_MAX_SEGMENTS][SK__PROFILE_TABLE][2];
+    /* z(x) of each segment at SK__PROFILE_TABLE even steps of x (exact values and slopes
+       from the Bezier), as the cubic Hermite curve of each step in power form:
+       z = a0 + u (a1 + u (a2 + u a3)), u in [0, 1] across the step */
+    float zpoly[SK_SKIN_MAX_SEGMENTS][SK__PROFILE_TABLE - 1][4];
     float last_start;      /* x where the last segment starts */
     /* The last segment under roundness (its end stays at 10, so it is not a scaled copy):
-       power-basis coefficients of Bx and Bz, and t at (g, x) grid points as a first guess
-       for Newton's method, g from 1 - roundness to 1. */
-    float last_xc[4], last_zc[4];
+       power-basis coefficients of Bx and Bz (xd3 = xc3 - 10, zd = the derivative's), and
+       a first guess of t for Newton's method over (g, x'), g from 1 - roundness to 1,
+       bilinear in each cell: t = b0 + b1 xf + gf (b2 + b3 xf). */
+    float last_xc[4], last_xd3, last_zc[4], last_zd[3];
     float g_min, g_step_inv;
-    float t_guess[9][129]; /* g = g_min .. 1 (9 steps) x x' = 0 .. 10 (129 steps) */
+    float t_guess[SK__GUESS_G][SK__GUESS_X][4];
     float seg_x0[SK_SKIN_MAX_SEGMENTS], seg_inv_w[SK_SKIN_MAX_SEGMENTS]; /* table mapping */
     float z_min, z_max;    /* bounds of the control points */
 } sk__profile;
@@ -105,10 +134,13 @@ typedef struct sk__level {
     uint32_t cell_count, use_count, edge_count;
     sk__cell *cells;
     sk__use *uses;
- sk__edge *edges;
+    sk__edge *edges;
+    sk__fan *fans;         /* per use */
+    sk__sector *sectors;   /* per use */
     double *vxy;           /* use start vertices in double (2 per use), for clipping */
     float *f;              /* perturbation offsets, f_count per edge */
     int depth;             /* division depths; f_count = 2^depth + 1 */
+    double amp[11];        /* midpoint displacement amplitude A 2^(-n h) at depth n */
     int f_count;
     bool perturbed;
     double m[2][2], minv[2][2]; /* stretch and its inverse */
@@ -124,13 +156,22 @@ typedef struct sk__pore {
     float radius, depth;
 } sk__pore;
 
-/* Pores bucketed on a grid over the tile period (bucket size >= the largest radius). */
+/* A pore as a bucket's point sees it: its centre moved by the period where it lies across
+ * the wrap from the bucket. */
+typedef struct sk__pore_near {
+    double x, y;
+    float radius, depth;
+} sk__pore_near;
+
+/* Pores bucketed on a grid over the tile period (bucket size >= the largest radius): each
+ * bucket lists the pores of itself and its 8 neighbours, neighbour by neighbour (rows from
+ * below, left to right), each neighbour's in its own order. */
 typedef struct sk__pore_grid {
     int nx, ny;
     double inv_w, inv_h;
-    uint32_t *start;
-    sk__pore *pores;
-    uint32_t count;
+    uint32_t *start;       /* nx * ny + 1 */
+    sk__pore_near *near;
+    uint32_t count;        /* pores */
     float max_radius;
 } sk__pore_grid;
 
@@ -150,6 +191,15 @@ struct sk_skin {
     float light[3], half[3], albedo[3], sun, sky, spec, shininess;
     int shininess_int;     /* the exponent if it is a whole number up to 1000, else 0 */
 };
+
+/* The smaller of two numbers that are not NaN (fmin is a library call without fast-math). */
+static inline double sk__min(double a, double b) { return b < a ? b : a; }
+/* min(t / apex, (1 - t) / (1 - apex)) for apex in (0, 1): the tent over [0, 1] peaking at
+ * 1 at the apex; the smaller quotient is the one on t's side of the apex (one division). */
+static inline double sk__tent(double t, double apex)
+{
+    return t < apex ? t / apex : (1.0 - t) / (1.0 - apex);
+}
 
 /* Wraps a coordinate into [0, period). */
 static inline double sk__wrap(double v, double period)
@@ -177,7 +227,8 @@ typedef struct sk__poly {
 /* Keeps the part with nx * x + ny * y <= d; new edge tagged `tag`. Returns false when
  * the polygon would overflow SK__POLY_MAX. */
 bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag);
-void sk__poly_centroid(const sk__poly *p, double *cx, double *cy);
+/* Centroid of the polygon (x[i], y[i]), i < n. */
+void sk__polygon_centroid(const double *x, const double *y, int n, double *cx, double *cy);
 
 /* Level 1: periodic Voronoi cells (voronoi.c). */
 sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_error *err);
@@ -185,17 +236,17 @@ sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_e
 sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_t count,
                              sk_error *err);
 /* Shared edge tables: pairs the two uses of every edge and fills the edge records and
- * their perturbation (edges.c). `keys` holds per use (a, b, c) integers identifying the
- * edge (same triple from both sides, `side` 0 for the left use, 1 for the right). */
+ * their perturbation (edges.c). `keys` holds per use the integers identifying its edge:
+ * k0 = (left cell << 32 | right cell) and k1, the same from both sides, and its side. */
+enum { SK__SIDE_LEFT, SK__SIDE_RIGHT, SK__SIDE_NONE };
 typedef struct sk__edge_key {
     uint64_t k0, k1;     /* identity of the edge (same from both sides) */
-    uint32_t use;        /* use index */
-    uint8_t side;        /* 0 = left, 1 = right */
+    uint8_t side;        /* SK__SIDE_LEFT / RIGHT, or NONE for a use that is no shared edge */
 } sk__edge_key;
-sk_result sk__build_edges(sk_skin *skin, int level, sk__edge_key *keys, size_t key_count,
-                          const double *site_left_z, sk_error *err);
-/* Fills the gauge vectors of every use from the lines, sites and centres (edges.c). */
-void sk__finish_uses(sk__level *lv);
+sk_result sk__build_edges(sk_skin *skin, int level, const sk__edge_key *keys,
+                          const double *site_left_y, sk_error *err);
+/* Builds the fan and sector records of a finished level (query_records.c). */
+sk_result sk__build_query_records(sk__level *lv, sk_error *err);
 /* Midpoint displacement of one edge (perturb.c). */
 void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double length,
                       double t_apex, double h_apex, float *f);
@@ -220,26 +271,23 @@ uint32_t sk__locate_child(const sk__level *lv, uint32_t first, uint32_t count, f
 /* Fan triangle of point p in cell c: the use whose line the ray from the site through p
  * meets first. */
 uint32_t sk__fan_use(const sk__level *lv, uint32_t c, float px, float py);
-/* Unwarps point p (frame of cell c) across the fan edge of use u: returns the owner cell
- * (c or its neighbour), moves p into the owner's frame and straight cell, and multiplies
- * jac by the unwarp's Jacobian. */
-uint32_t sk__unwarp(const sk__level *lv, uint32_t c, uint32_t u, float *px, float *py,
+/* Unwarps point p (frame of fan f's cell) across the perturbed edge of f, if p lies in
+ * that edge's support: returns the owner cell (f's cell or its neighbour), moves p into the
+ * owner's frame and straight cell, multiplies jac by the unwarp's Jacobian and writes the
+ * point before the unwarp in the owner's frame to pre (left alone outside the support). */
+uint32_t sk__unwarp(const sk__level *lv, const sk__fan *f, float *px, float *py,
                     float jac[2][2], float *pre_x, float *pre_y);
 /* Relative margin of the sector tests (far above float rounding). */
 #define SK__SECTOR_MARGIN 1e-4f
 
-/* True if p is inside fan triangle k of cell c (site, vertex k, vertex k + 1) by a margin:
- * then the cell holds p and k is its fan, exactly as the full gauge would find. */
-static inline bool sk__in_fan(const sk__level *lv, uint32_t c, uint32_t k, float px, float py)
+/* True if p is inside fan triangle f by a margin: then f's cell holds p and f is its fan,
+ * exactly as the full gauge would find. */
+static inline bool sk__in_fan(const sk__fan *f, float px, float py)
 {
-    const sk__cell *cell = &lv->cells[c];
-    if (k >= cell->use_count) return false;
-    const sk__use *u = lv->uses + cell->first_use;
-    const sk__use *a = &u[k], *b = &u[k + 1 == cell->use_count ? 0 : k + 1];
-    float qx = px - cell->sx, qy = py - cell->sy;
+    float qx = px - f->sx, qy = py - f->sy;
     float q1 = fabsf(qx) + fabsf(qy);
-    return a->svx * qy - a->svy * qx > q1 * a->svn && qx * b->svy - qy * b->svx > q1 * b->svn &&
-           a->asx * qx + a->asy * qy < 1.0f - SK__SECTOR_MARGIN;
+    return f->ax * qy - f->ay * qx > q1 * f->an && qx * f->by - qy * f->bx > q1 * f->bn &&
+           f->gx * qx + f->gy * qy < 1.0f - SK__SECTOR_MARGIN;
 }
 /* The straight cell of `level` (0-based) containing a point of the tile period, going down
  * the levels without perturbation (frame F(level)); writes the point in the cell's frame. */
@@ -250,27 +298,42 @@ uint32_t sk__locate_straight(const sk_skin *skin, int level, double x, double y,
 void sk__to_world(const sk_skin *skin, int k, uint32_t c, double px, double py, double *wx,
                   double *wy);
 
-/* Section profile of level lv at point p of cell c (straight frame): height in mm and
- * gradient (mm per mm, in that frame) (profile.c). */
-float sk__profile_eval(const sk__level *lv, uint32_t c, float px, float py, float grad[2],
-                       uint32_t *hint);
-/* Bezier chain helpers (bezier.c). */
-float sk__bezier_solve(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg);
+/* Section profiles of m points at each of levels 0 .. L-1: item i = k m + p is point p at
+ * level k, at (px[i], py[i]) of cell cell[i] (straight frame of that level): height z[i]
+ * in mm and gradient grad[i] (mm per mm, in that frame). sector[k] is the hinted sector of
+ * level k (UINT32_MAX for none), updated to the sector found. The items run side by side,
+ * step by step: their long dependency chains (square root, divisions, Newton step) overlap
+ * in the processor (profile.c). */
+void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, const float *px,
+                      const float *py, uint32_t *sector, float *z, float (*grad)[2]);
+/* Bezier chain helpers (bezier.c). Where the roundness scale g < 1 moves x' into the last
+ * segment: a Newton solve of Bx(t) = x' in two halves, the table's guess (with 1 / Bx'),
+ * then the step, z and its slopes; elsewhere the scaled copy of the profile, z(x' / g). */
+typedef struct sk__newton {
+    float c[4];   /* power basis of Bx at this g */
+    float t, inv; /* guess of t and 1 / Bx'(t) */
+} sk__newton;
+void sk__last_segment_guess(const sk__profile *p, float g, float xq, sk__newton *s);
+float sk__last_segment_finish(const sk__profile *p, float xq, const sk__newton *s,
+                              float *dz_dx, float *dz_dg);
+float sk__profile_scaled(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg);
 /* Cells found by the previous query of a row of pixels: tried first, and kept only where
  * the point is inside them by a margin, so results never depend on the hint. */
 typedef struct sk__hint {
-    uint32_t cell[SK_SKIN_MAX_LEVELS];
-    uint32_t fan[SK_SKIN_MAX_LEVELS];    /* use (index in the cell) of the site's fan */
-    uint32_t sector[SK_SKIN_MAX_LEVELS]; /* use of the centre's sector (profile) */
-    double shift[2];
+    uint32_t fan[SK_SKIN_MAX_LEVELS];    /* fan record (use) of the site's fan triangle */
+    uint32_t sector[SK_SKIN_MAX_LEVELS]; /* use (index in the cell) of the centre's sector */
+    double shift[2];                     /* level-1 frame of fan[0] */
 } sk__hint;
 void sk__hint_reset(sk__hint *hint);
 /* Internal query flag: furrow distance of level k only when bit (SK__FURROW_LEVEL_SHIFT + k)
  * is set (SK_SKIN_QUERY_FURROW asks for every level). */
 #define SK__FURROW_LEVEL_SHIFT 8
-/* The query behind sk_skin_query, with an optional hint (eval.c). */
-void sk__query(const sk_skin *skin, double x, double y, unsigned flags, sk_skin_sample *out,
-               sk__hint *hint);
+/* Points a query runs side by side (their long dependency chains overlap). */
+#define SK__QUERY_BATCH 32
+/* The query behind sk_skin_query for n <= SK__QUERY_BATCH points, with an optional hint
+ * (eval.c). Each point's result is the same as on its own. */
+void sk__query(const sk_skin *skin, int n, const double *x, const double *y, unsigned flags,
+               sk_skin_sample *out, sk__hint *hint);
 
 /* Distance from p (frame of cell c, F(k-1)) to the perturbed boundary of c (furrow.c). */
 float sk__furrow_distance(const sk__level *lv, uint32_t c, float px, float py);

@@ -180,7 +180,7 @@ sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_e
             poly->y[k] = L->m[1][0] * lx + L->m[1][1] * ly;
         }
         double cx, cy;
-        sk__poly_centroid(poly, &cx, &cy);
+        sk__polygon_centroid(poly->x, poly->y, poly->n, &cx, &cy);
         c->cx = (float)cx, c->cy = (float)cy;
         for (int k = 0; k < poly->n; k++) {
             sk__use *u = &uses[use_count];
@@ -226,8 +226,7 @@ sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_e
             level1_untag(tags[ui], &j, &m, &n);
             bool left = i < j || (i == j && (m > 0 || (m == 0 && n > 0)));
             sk__edge_key *key = &keys[ui];
-            key->use = ui;
-            key->side = left ? 0 : 1;
+            key->side = left ? SK__SIDE_LEFT : SK__SIDE_RIGHT;
             uint32_t lo = left ? i : j, hi = left ? j : i;
             int cm = left ? m : -m, cn = left ? n : -n;
             key->k0 = ((uint64_t)lo << 32) | hi;
@@ -246,7 +245,7 @@ sk_result sk__build_level1(sk_skin *skin, const double *xy, uint32_t count, sk_e
             left_site[2 * ui] = 0, left_site[2 * ui + 1] = 0;
         }
     }
-    res = sk__build_edges(skin, 0, keys, use_count, left_site, err);
+    res = sk__build_edges(skin, 0, keys, left_site, err);
     free(keys);
     free(left_site);
 
