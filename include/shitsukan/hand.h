@@ -444,7 +444,7 @@ sk_result sk_hand_pose_write_json(const sk_hand_skeleton *skeleton,
 
 /* ---------------------------------------------------------------- pictures */
 /* Stick figures of posed skeletons: bones as anti-aliased lines, joints as discs, one
- * colour per finger, the palm as a translucent plate, a stub of the (fixed) forearm
+ * colour per finger, the palm as a translucent plate, the end of the (fixed) forearm
  * below the wrist, direction arrows and a scale bar. Orthographic views along the world
  * axes; with the wrist rotations at zero they are the anatomical views named below. */
 typedef enum sk_hand_view {
@@ -484,7 +484,7 @@ typedef struct sk_hand_draw_desc {
                                  ", " when too wide, shrunk or cut if still too wide */
     bool label_points;        /* write every joint's name beside it ("I.MCP", ...) */
     bool hide_panel_titles;   /* false = each panel's view name above it */
-    bool hide_cues;           /* false = forearm stub, direction arrows and scale bar */
+    bool hide_cues;           /* false = forearm end, direction arrows and scale bar */
 } sk_hand_draw_desc;
 
 /* Where a panel shows the world: a world point p lands at pixel

@@ -128,7 +128,7 @@ static void box_add_pose(box2 *b, const sk_hand_draw_layout *l, const sk_hand_sk
     sk_hand_frames f;
     sk_hand_forward(s, q, &f);
     for (int i = 0; i < SK_HAND_POINT_COUNT; i++) box_add(b, l, f.point[i]);
-    /* the visible part of the forearm stub below the wrist */
+    /* the visible part of the forearm below the wrist */
     if (cues) box_add(b, l, sk_v3d_add(f.point[0], sk_v3d(0, -SK_HAND__FOREARM_SHOWN * s->hand_length_mm, 0)));
 }
 

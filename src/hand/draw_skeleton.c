@@ -1,7 +1,7 @@
 /* Stick figure of a posed skeleton (thesis 3.1: the link tree of Fig. 3.2): every link as
  * an anti-aliased bone in its finger's colour, joints as discs, the palm as a translucent
  * plate, drawn far to near with a depth cue, in orthographic panels laid out by
- * draw_layout.c, with a forearm stub, direction arrows and a scale bar. */
+ * draw_layout.c, with the end of the forearm, direction arrows and a scale bar. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
