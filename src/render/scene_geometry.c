@@ -177,7 +177,11 @@ static int material_index(const sk_render_scene *scene, const char *name)
 sk_result sk__geometry_build(sk_render_scene *scene, sk_error *err)
 {
     const sk_render_scene_desc *d = &scene->desc;
-    scene->device = rtcNewDevice(NULL);
+    /* Embree's own thread pool (used for the BVH build) gets the same cap as the
+       renderer's loops, so --threads limits the whole run. */
+    char config[32];
+    snprintf(config, sizeof config, "threads=%d", sk_threads_max());
+    scene->device = rtcNewDevice(config);
     if (!scene->device)
         return sk_fail(err, SK_ERROR_UNSUPPORTED, "Embree device: error %d",
                        (int)rtcGetDeviceError(NULL));
