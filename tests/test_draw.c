@@ -717,6 +717,38 @@ static void test_contact_sheet_layout(void **state)
     for (int i = 0; i < 5; i++) img_free(&t[i]);
 }
 
+/* A tile border frames every tile in the padding (half-transparent text colour) and
+ * leaves the tile's own pixels and the layout unchanged. */
+static void test_contact_sheet_tile_border(void **state)
+{
+    (void)state;
+    sk_image t = solid(20, 10, 3, 1.0f); /* a white tile on a white sheet */
+    const sk_image *tiles[1] = {&t};
+    sk_contact_sheet_desc plain = {0}, framed = {0};
+    framed.tile_border = 2;
+    sk_image a, b;
+    sk_error err;
+    assert_int_equal(sk_contact_sheet(tiles, NULL, 1, &plain, &a, &err), SK_OK);
+    assert_int_equal(sk_contact_sheet(tiles, NULL, 1, &framed, &b, &err), SK_OK);
+    assert_int_equal(a.width, b.width);
+    assert_int_equal(a.height, b.height);
+    /* tile at (8, 8): its pixels stay white, the 2 px around it are grey (0.5 black over white) */
+    for (int y = 8; y < 18; y++)
+        for (int x = 8; x < 28; x++) assert_true(sk_image_pixel(&b, x, y)[0] == 1.0f);
+    assert_near(sk_image_pixel(&b, 7, 12)[0], 0.5, 1e-6, "left bar");
+    assert_near(sk_image_pixel(&b, 6, 12)[0], 0.5, 1e-6, "left bar, outer pixel");
+    assert_near(sk_image_pixel(&b, 5, 12)[0], 1.0, 1e-6, "beyond the bar");
+    assert_near(sk_image_pixel(&b, 28, 12)[0], 0.5, 1e-6, "right bar");
+    assert_near(sk_image_pixel(&b, 15, 7)[0], 0.5, 1e-6, "top bar");
+    assert_near(sk_image_pixel(&b, 15, 18)[0], 0.5, 1e-6, "bottom bar");
+    assert_near(sk_image_pixel(&a, 7, 12)[0], 1.0, 1e-6, "no frame without a border");
+    framed.tile_border = 65;
+    assert_int_equal(sk_contact_sheet(tiles, NULL, 1, &framed, &b, &err), SK_ERROR_INVALID_ARGUMENT);
+    free(a.data);
+    free(b.data);
+    img_free(&t);
+}
+
 static void test_contact_sheet_errors(void **state)
 {
     (void)state;
@@ -970,6 +1002,7 @@ int main(void)
         cmocka_unit_test(test_resize_constant_and_box_mean),
         cmocka_unit_test(test_resize_errors_and_threads),
         cmocka_unit_test(test_contact_sheet_layout),
+        cmocka_unit_test(test_contact_sheet_tile_border),
         cmocka_unit_test(test_contact_sheet_errors),
         cmocka_unit_test(test_nice_ticks),
         cmocka_unit_test(test_plot_maps_points),

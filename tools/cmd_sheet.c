@@ -12,6 +12,7 @@ static const cli_option k_options[] = {
     {"title", 0, "TEXT", "a title line above the grid", false},
     {"label", 0, "TEXT", "label of the next image, in order (repeatable)", true},
     {"text-scale", 0, "N", "text size as a multiple of the 5x9 font; default 2", false},
+    {"border", 0, "N", "a thin frame of N pixels around each image; default 0", false},
     {"repeat", 0, "CxR", "instead of a grid, repeat the single image C x R times", false},
 };
 
@@ -46,10 +47,11 @@ static int run_sheet(const cli_command *command, const cli_args *args)
     int label_count = cli_get_all(command, args, "label", labels, CLI_MAX_VALUES);
     if (label_count > count)
         return cli_fail(CLI_EXIT_USAGE, "sheet: %d labels for %d images", label_count, count);
-    long long columns, tile_size, text_scale;
+    long long columns, tile_size, text_scale, border;
     if ((status = cli_get_int(command, args, "columns", 0, 0, 4096, &columns)) ||
         (status = cli_get_int(command, args, "tile-size", 0, 0, 16384, &tile_size)) ||
-        (status = cli_get_int(command, args, "text-scale", 2, 1, 64, &text_scale)))
+        (status = cli_get_int(command, args, "text-scale", 2, 1, 64, &text_scale)) ||
+        (status = cli_get_int(command, args, "border", 0, 0, 64, &border)))
         return status;
     int rep_c = 0, rep_r = 0;
     if (cli_has(command, args, "repeat")) {
@@ -73,6 +75,7 @@ static int run_sheet(const cli_command *command, const cli_args *args)
         sk_contact_sheet_desc desc = {.columns = (int)columns,
                                       .tile_size = (int)tile_size,
                                       .text_scale = (int)text_scale,
+                                      .tile_border = (int)border,
                                       .title = cli_get(command, args, "title")};
         r = sk_contact_sheet(tiles, label_count ? labels : NULL, count, &desc, &sheet, &err);
     }

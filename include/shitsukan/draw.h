@@ -175,6 +175,9 @@ typedef struct sk_contact_sheet_desc {
     sk_color text_color; /* all zero = black {0, 0, 0, 1} */
     int channels;        /* output channels 1..4; 0 = 3 */
     sk_label_position label_position; /* 0 = labels below the tiles */
+    int tile_border;      /* width in pixels of a thin frame drawn around each tile (in the
+                             padding, half-transparent text_color), so pale tiles stand out
+                             from the background; 0 = none; range 0..64 */
     sk_resize_filter tile_filter; /* how tiles are scaled to tile_size; 0 = box when
                                      shrinking, bilinear when enlarging; NEAREST keeps
                                      hard pixels (masks, cell maps) */

@@ -20,10 +20,10 @@ for fig in 5 6; do
 done
 "$SK" sheet "$out/figures/fig5a.png" "$out/figures/fig5b.png" "$out/figures/fig5c.png" \
   --label "a. straight grain" --label "b. spiral grain" --label "c. wavy grain" --columns 3 \
-  --title "Fig. 5  Diffuse-porous wood depending on grain" -o "$out/fig5.png"
+  --border 1 --title "Fig. 5  Diffuse-porous wood depending on grain" -o "$out/fig5.png"
 "$SK" sheet "$out/figures/fig6a.png" "$out/figures/fig6b.png" "$out/figures/fig6c.png" \
   --label "a. straight grain" --label "b. spiral grain" --label "c. wavy grain" --columns 3 \
-  --title "Fig. 6  Ring-porous wood depending on grain" -o "$out/fig6.png"
+  --border 1 --title "Fig. 6  Ring-porous wood depending on grain" -o "$out/fig6.png"
 
 # Fig. 7: the end-grain array C'(t, theta) (rings + 40 % brightness shift) and the texture
 # it gives through wavy grain (lambda = 15 mm, A = 0.15).

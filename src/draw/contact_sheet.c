@@ -55,6 +55,7 @@ static sk_result validate(const sk_image *const *tiles, int count, const sk_cont
         return r;
     if ((r = sk_check_range_i(err, "tile_filter", (int)d->tile_filter, 0, SK_RESIZE_BOX)) != SK_OK)
         return r;
+    if ((r = sk_check_range_i(err, "tile_border", d->tile_border, 0, 64)) != SK_OK) return r;
     if ((r = check_color(err, "background", d->background)) != SK_OK) return r;
     if ((r = check_color(err, "text_color", d->text_color)) != SK_OK) return r;
     for (int i = 0; i < count; i++) {
@@ -152,6 +153,16 @@ sk_result sk_contact_sheet(const sk_image *const *tiles, const char *const *labe
             }
             sk_draw_blit(&sheet, &scaled, tx, ty);
             free(scaled.data);
+        }
+        if (d.tile_border > 0) {
+            /* four bars just outside the tile, so its pixels are never covered */
+            float b = (float)d.tile_border;
+            sk_color c = d.text_color;
+            c.a *= 0.5f;
+            sk_draw_rect(&sheet, (float)tx - b, (float)ty - b, (float)w + 2 * b, b, c);
+            sk_draw_rect(&sheet, (float)tx - b, (float)(ty + h), (float)w + 2 * b, b, c);
+            sk_draw_rect(&sheet, (float)tx - b, (float)ty, b, (float)h, c);
+            sk_draw_rect(&sheet, (float)(tx + w), (float)ty, b, (float)h, c);
         }
         if (labels && has_text(labels[i])) {
             long long lw = sk_draw_text_width(labels[i], d.text_scale);
