@@ -273,7 +273,7 @@ typedef struct sk_hand_solve_info {
 } sk_hand_solve_info;
 
 typedef struct sk_hand_solver_desc {
-    int max_newton_iterations; /* iterative solve with lookup tables; 0 = 100; [1, 10000] */
+    int max_newton_iterations; /* iterative solve with lookup tables; 0 = 500; [1, 10000] */
     double tolerance;          /* iterative solve stops when the residual (max |gradient|
                                   over free DOFs) is below; 0 = 1e-6; [1e-15, 1]. The
                                   linear solve is direct (residual ~1e-15). */

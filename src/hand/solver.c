@@ -11,7 +11,7 @@ static sk_hand_solver_desc resolve_desc(const sk_hand_solver_desc *desc)
 {
     sk_hand_solver_desc d = {0};
     if (desc) d = *desc;
-    if (d.max_newton_iterations == 0) d.max_newton_iterations = 100;
+    if (d.max_newton_iterations == 0) d.max_newton_iterations = 500;
     if (d.tolerance == 0.0) d.tolerance = 1e-6;
     if (d.cache_size == 0) d.cache_size = 8;
     return d;
