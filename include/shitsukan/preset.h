@@ -59,7 +59,9 @@ typedef struct sk_schema {
 } sk_schema;
 
 /* Keys accepted (and ignored) in every JSON object for documentation: "description",
- * "source", "notes", "figure" (strings or arrays of strings). */
+ * "source", "notes", "figure" (strings or arrays of strings). Modules that read their own
+ * JSON files (e.g. hand constraint sets) use this to accept the same keys. */
+bool sk_preset_is_doc_key(const char *key);
 
 /* A parsed JSON preset (a tree that --set can edit before it is bound). */
 typedef struct sk_preset sk_preset;

@@ -178,7 +178,7 @@ sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *sou
     if (r == SK_OK && fingers) {
         r = sk_hand__json_expect_object(fingers, "fingers", err);
         for (const cJSON *it = fingers ? fingers->child : NULL; r == SK_OK && it; it = it->next) {
-            if (sk_hand__json_is_doc_key(it->string)) continue;
+            if (sk_preset_is_doc_key(it->string)) continue;
             int f = -1;
             for (int i = 0; i < SK_HAND_FINGER_COUNT; i++)
                 if (it->string[0] == finger_letters[i] && it->string[1] == '\0') f = i;
@@ -195,7 +195,7 @@ sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *sou
     if (r == SK_OK && dofs) {
         r = sk_hand__json_expect_object(dofs, "dofs", err);
         for (const cJSON *it = dofs ? dofs->child : NULL; r == SK_OK && it; it = it->next) {
-            if (sk_hand__json_is_doc_key(it->string)) continue;
+            if (sk_preset_is_doc_key(it->string)) continue;
             char path[96];
             snprintf(path, sizeof path, "dofs.%s", it->string);
             int d;

@@ -165,7 +165,7 @@ static sk_result parse_root(const cJSON *root, const sk_hand_skeleton *s, sk_han
     if (stiff) {
         r = sk_hand__json_expect_object(stiff, "stiffness", err);
         for (const cJSON *t = stiff->child; r == SK_OK && t; t = t->next) {
-            if (sk_hand__json_is_doc_key(t->string)) continue;
+            if (sk_preset_is_doc_key(t->string)) continue;
             char path[96];
             snprintf(path, sizeof path, "stiffness.%s", t->string);
             int d;

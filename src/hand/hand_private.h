@@ -6,6 +6,7 @@
 #include <cjson/cJSON.h>
 
 #include "shitsukan/hand.h"
+#include "shitsukan/preset.h"
 
 /* Finger of a link (-1 for the carpus), first link of a finger, links per finger. */
 int sk_hand__finger_of_link(int link);
@@ -21,8 +22,6 @@ int sk_hand__first_dof_of_link(int link, int *count);
 /* Parses text; on failure names the line of the error (callers prefix the source). */
 sk_result sk_hand__json_parse(const char *text, size_t length, const char *source_name,
                               cJSON **out, sk_error *err);
-/* True for the documentation keys accepted anywhere: description, source, notes, figure. */
-bool sk_hand__json_is_doc_key(const char *key);
 /* Fails if `object` has a key that is neither in `allowed` (NULL-terminated) nor a
  * documentation key. */
 sk_result sk_hand__json_check_keys(const cJSON *object, const char *path,

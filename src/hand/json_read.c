@@ -22,17 +22,11 @@ sk_result sk_hand__json_parse(const char *text, size_t length, const char *sourc
     return SK_OK;
 }
 
-bool sk_hand__json_is_doc_key(const char *key)
-{
-    return strcmp(key, "description") == 0 || strcmp(key, "source") == 0 ||
-           strcmp(key, "notes") == 0 || strcmp(key, "figure") == 0;
-}
-
 sk_result sk_hand__json_check_keys(const cJSON *object, const char *path,
                                    const char *const *allowed, sk_error *err)
 {
     for (const cJSON *item = object->child; item; item = item->next) {
-        if (sk_hand__json_is_doc_key(item->string)) continue;
+        if (sk_preset_is_doc_key(item->string)) continue;
         bool known = false;
         for (int i = 0; allowed && allowed[i]; i++)
             if (strcmp(allowed[i], item->string) == 0) known = true;

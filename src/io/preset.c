@@ -12,7 +12,7 @@
 
 #define PRESET_MAX_FILE_BYTES ((size_t)16 << 20)
 
-bool sk__preset_is_doc_key(const char *key)
+bool sk_preset_is_doc_key(const char *key)
 {
     return strcmp(key, "description") == 0 || strcmp(key, "source") == 0 ||
            strcmp(key, "notes") == 0 || strcmp(key, "figure") == 0;

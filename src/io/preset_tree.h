@@ -11,7 +11,4 @@ struct sk_preset {
     cJSON *root; /* always an object */
 };
 
-/* Documentation keys accepted in every object: "description", "source", "notes", "figure". */
-bool sk__preset_is_doc_key(const char *key);
-
 #endif

@@ -257,7 +257,7 @@ static sk_result bind_object(const cJSON *obj, const sk_schema *schema, unsigned
         for (const cJSON *prev = obj->child; prev != item; prev = prev->next)
             if (strcmp(prev->string, item->string) == 0)
                 return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: key given twice", kpath);
-        if (sk__preset_is_doc_key(item->string)) {
+        if (sk_preset_is_doc_key(item->string)) {
             sk_result r = check_doc_value(item, kpath, err);
             if (r != SK_OK) return r;
             continue;
