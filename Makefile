@@ -8,27 +8,33 @@ PREFIX    ?= /usr/local
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 
-.PHONY: all deps build demo test test-asan bench install clean
+.PHONY: all deps deps-test build build-only demo test test-asan bench install clean
 
 all: build
 
 deps:
-	@bash scripts/deps.sh
+	@bash scripts/deps.sh build
 
-build: deps
+# make test also installs the real consumers its checks use (glTF validator, ffmpeg).
+deps-test:
+	@bash scripts/deps.sh test
+
+build: deps build-only
+
+build-only:
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DSK_WERROR=ON $(CMAKE_ARGS) >/dev/null
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
 # The main job: regenerates the papers' figures and the showcase outputs into out/.
-demo: build
+demo: deps-test build-only
 	@bash scripts/demo.sh $(BUILD_DIR)/shitsukan $(OUT_DIR)
 
 # The whole test suite through ctest.
-test: build
+test: deps-test build-only
 	@ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
 
 # The same tests built with AddressSanitizer + UndefinedBehaviorSanitizer.
-test-asan: deps
+test-asan: deps-test
 	@cmake -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-O1 -g" \
 		-DSK_SANITIZE=ON -DSK_WERROR=ON -DSK_BUILD_BENCH=OFF $(CMAKE_ARGS) >/dev/null
 	@cmake --build $(ASAN_DIR) -j $(JOBS)
