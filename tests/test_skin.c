@@ -10,6 +10,7 @@
 #include "shitsukan/image.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/skin.h"
+#include "skin/skin_internal.h"
 #include "test_support.h"
 
 static bool sanitized(void) { return getenv("SK_TEST_SANITIZED") != NULL; }
@@ -672,6 +673,94 @@ static void test_cli_help_and_errors(void **state)
 }
 
 /* Every shipped preset loads, validates and builds (Table 1 and the real regions). */
+/* Sign of the turn a -> b -> c. */
+static int turn(sk_vec2d a, sk_vec2d b, sk_vec2d c)
+{
+    double v = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    return (v > 0) - (v < 0);
+}
+
+typedef struct segment {
+    double x0, x1;
+    size_t i;
+} segment;
+
+static int by_x0(const void *a, const void *b)
+{
+    double u = ((const segment *)a)->x0, v = ((const segment *)b)->x0;
+    return (u > v) - (u < v);
+}
+
+/* True if two segments of the closed polyline p that are not neighbours cross or touch
+ * (a sweep over x). */
+static bool self_intersects(const sk_vec2d *p, size_t n)
+{
+    segment *s = malloc(sizeof(segment) * n);
+    for (size_t i = 0; i < n; i++) {
+        sk_vec2d a = p[i], b = p[(i + 1) % n];
+        s[i] = (segment){fmin(a.x, b.x), fmax(a.x, b.x), i};
+    }
+    qsort(s, n, sizeof s[0], by_x0);
+    bool found = false;
+    for (size_t u = 0; u < n && !found; u++)
+        for (size_t v = u + 1; v < n && s[v].x0 <= s[u].x1 && !found; v++) {
+            size_t i = s[u].i, j = s[v].i;
+            if ((i + 1) % n == j || (j + 1) % n == i) continue;
+            sk_vec2d a = p[i], b = p[(i + 1) % n], c = p[j], d = p[(j + 1) % n];
+            if (fmax(fmin(a.y, b.y), fmin(c.y, d.y)) > fmin(fmax(a.y, b.y), fmax(c.y, d.y)))
+                continue;
+            int t1 = turn(a, b, c), t2 = turn(a, b, d), t3 = turn(c, d, a), t4 = turn(c, d, b);
+            if (t1 * t2 <= 0 && t3 * t4 <= 0) found = true;
+        }
+    free(s);
+    return found;
+}
+
+/* The geometry of a shipped preset's cells: no cell is wider than half the tile along
+ * either axis (so the tile holds whole cells along any stretch and no cell meets itself
+ * across the wrap), and no cell's perturbed polygon crosses itself (in the frame where
+ * its level is built; the levels above carry it by homeomorphisms, whose tiling
+ * test_cells_tile checks). Every level-1 cell and up to about 400 cells of each deeper
+ * level are checked. */
+static void check_cell_geometry(const char *name, const sk_skin *skin)
+{
+    double tw, th;
+    sk_skin_tile_size(skin, &tw, &th);
+    int levels = sk_skin_get_desc(skin)->level_count;
+    size_t cap = 4096;
+    sk_vec2d *pts = malloc(sizeof(sk_vec2d) * cap);
+    for (int level = 1; level <= levels; level++) {
+        uint32_t count = sk_skin_cell_count(skin, level);
+        uint32_t step = level == 1 || count < 400 ? 1 : count / 400;
+        for (uint32_t c = 0; c < count; c += step) {
+            size_t n = sk_skin_cell_outline(skin, level, c, 2, pts, cap);
+            if (n > cap) {
+                cap = n;
+                pts = realloc(pts, sizeof(sk_vec2d) * cap);
+                n = sk_skin_cell_outline(skin, level, c, 2, pts, cap);
+            }
+            double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+            for (size_t i = 0; i < n; i++) {
+                x0 = fmin(x0, pts[i].x), x1 = fmax(x1, pts[i].x);
+                y0 = fmin(y0, pts[i].y), y1 = fmax(y1, pts[i].y);
+            }
+            if (x1 - x0 > 0.5 * tw || y1 - y0 > 0.5 * th)
+                fail_msg("%s: level-%d cell %u is %.3g x %.3g mm, more than half the %g x %g mm "
+                         "tile",
+                         name, level, c, x1 - x0, y1 - y0, tw, th);
+            n = sk__cell_polygon(skin, level, c, pts, cap);
+            if (n > cap) {
+                cap = n;
+                pts = realloc(pts, sizeof(sk_vec2d) * cap);
+                n = sk__cell_polygon(skin, level, c, pts, cap);
+            }
+            if (self_intersects(pts, n))
+                fail_msg("%s: the outline of level-%d cell %u crosses itself", name, level, c);
+        }
+    }
+    free(pts);
+}
+
 static void test_presets_build(void **state)
 {
     (void)state;
@@ -693,6 +782,7 @@ static void test_presets_build(void **state)
         sk_preset_free(p);
         sk_skin *skin = make(&d);
         assert_true(sk_skin_cell_count(skin, 1) > 0);
+        check_cell_geometry(names[i], skin);
         sk_skin_destroy(skin);
     }
 }

@@ -17,7 +17,8 @@
 #define SKIN_FAST_PNG_PIXELS (2048 * 2048)
 
 static const cli_option k_preview_options[] = {
-    {"size", 0, "N|WxH", "image size in pixels; default 400 (the paper's)", false},
+    {"size", 0, "N|WxH", "image size in pixels; default 400 (the paper's) on the tile's shorter side",
+     false},
     {"mm-per-px", 0, "MM", "pixel size in mm (the tile becomes size x MM); default from size_mm",
      false},
     {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full image)",
@@ -27,7 +28,7 @@ static const cli_option k_preview_options[] = {
 };
 
 static const cli_option k_maps_options[] = {
-    {"size", 0, "N|WxH", "map size in pixels; default 1024", false},
+    {"size", 0, "N|WxH", "map size in pixels; default 1024 on the tile's shorter side", false},
     {"mm-per-px", 0, "MM", "pixel size in mm (the tile becomes size x MM); default from size_mm",
      false},
     {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full map)", false},
@@ -51,7 +52,14 @@ static int load_desc(const cli_command *command, const cli_args *args, int defau
     sk_result r = sk_preset_bind(preset, &sk_skin_schema, desc, &err);
     sk_preset_free(preset);
     if (r != SK_OK) return cli_fail_error(&err);
-    if ((status = cli_get_size(command, args, "size", default_size, default_size,
+    /* the default keeps the tile's shape: default_size pixels on its shorter side */
+    sk_skin_desc resolved = sk_skin_desc_resolved(desc);
+    double aspect = (double)resolved.size_mm[0] / resolved.size_mm[1];
+    double dw = aspect > 1 ? default_size * aspect : default_size;
+    double dh = aspect < 1 ? default_size / aspect : default_size;
+    if (!(dw <= SK_IMAGE_MAX_DIMENSION)) dw = SK_IMAGE_MAX_DIMENSION;
+    if (!(dh <= SK_IMAGE_MAX_DIMENSION)) dh = SK_IMAGE_MAX_DIMENSION;
+    if ((status = cli_get_size(command, args, "size", (int)lround(dw), (int)lround(dh),
                                SK_IMAGE_MAX_DIMENSION, width, height)))
         return status;
     if (cli_has(command, args, "mm-per-px")) {

@@ -335,6 +335,12 @@ void sk__hint_reset(sk__hint *hint);
 void sk__query(const sk_skin *skin, int n, const double *x, const double *y, unsigned flags,
                sk_skin_sample *out, sk__hint *hint);
 
+/* The perturbed polygon of a cell of `level` (1-based) in the frame where its level is
+ * built, before the levels above carry it (outline.c): its own edges' polylines and the
+ * straight pieces of its parent's boundary. Same count rules as sk_skin_cell_outline. */
+size_t sk__cell_polygon(const sk_skin *skin, int level, uint32_t cell, sk_vec2d *points,
+                        size_t max_points);
+
 /* Distance from p (frame of cell c, F(k-1)) to the perturbed boundary of c (furrow.c). */
 float sk__furrow_distance(const sk__level *lv, uint32_t c, float px, float py);
 
