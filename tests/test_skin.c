@@ -366,6 +366,61 @@ static void test_normal_is_gradient(void **state)
     sk_skin_destroy(skin);
 }
 
+/* normal_model profile (the paper's Fig. 7): each level's slope is its profile's along the
+ * ray from the cell centre, so the normal leans along that ray, by the derivative of the
+ * height along it. */
+static void test_profile_normal(void **state)
+{
+    (void)state;
+    sk_skin_desc d = desc_19a(3.2f);
+    d.level_count = 1;
+    d.levels[0].perturb_rate = 0;
+    d.normal_model = SK_SKIN_NORMAL_PROFILE;
+    sk_skin *skin = make(&d);
+    double w, h;
+    sk_skin_tile_size(skin, &w, &h);
+    sk_rng rng = sk_rng_make(5, 0, 0, 0);
+    int n = 1000, good = 0, leaning = 0;
+    double step = 2e-5;
+    for (int s = 0; s < n; s++) {
+        double x = sk_rng_uniform(&rng) * w, y = sk_rng_uniform(&rng) * h;
+        sk_skin_sample smp;
+        sk_skin_query(skin, x, y, 0, &smp);
+        sk_skin_cell_info ci;
+        assert_int_equal(sk_skin_cell_info_get(skin, 1, smp.cell[0], &ci, NULL), SK_OK);
+        double rx = x - ci.centre.x, ry = y - ci.centre.y;
+        rx -= w * round(rx / w), ry -= h * round(ry / h);
+        double r = sqrt(rx * rx + ry * ry);
+        if (r < 1e-3) continue;
+        double ux = rx / r, uy = ry / r;
+        float h1, h0;
+        sk_skin_eval(skin, x + step * ux, y + step * uy, &h1, NULL);
+        sk_skin_eval(skin, x - step * ux, y - step * uy, &h0, NULL);
+        double slope = (h1 - h0) / (2 * step);
+        /* the horizontal part of N = (-g, 1) / |.| with g = slope * u */
+        double gx = -smp.normal.x / smp.normal.z, gy = -smp.normal.y / smp.normal.z;
+        double across = fabs(gx * uy - gy * ux), along = gx * ux + gy * uy;
+        if (across < 1e-4 && fabs(along - slope) < 1e-3 * (1 + fabs(slope))) good++;
+        leaning += along < -0.01; /* downhill away from the centre on the slopes */
+    }
+    if (good < n * 97 / 100) fail_msg("profile normal along the ray at %d of %d points", good, n);
+    assert_true(leaning > n / 10);
+    /* the gradient model differs from it where D(phi) changes with the angle */
+    d.normal_model = SK_SKIN_NORMAL_GRADIENT;
+    sk_skin *grad = make(&d);
+    int differ = 0;
+    for (int s = 0; s < 200; s++) {
+        double x = sk_rng_uniform(&rng) * w, y = sk_rng_uniform(&rng) * h;
+        sk_vec3f a, b;
+        sk_skin_eval(skin, x, y, NULL, &a);
+        sk_skin_eval(grad, x, y, NULL, &b);
+        differ += fabsf(a.x - b.x) + fabsf(a.y - b.y) > 1e-3f;
+    }
+    assert_true(differ > 20);
+    sk_skin_destroy(grad);
+    sk_skin_destroy(skin);
+}
+
 /* Spread of the radius of the contour through the middle of the slope, around a centre. */
 static double contour_spread(const sk_skin *skin, uint32_t cell)
 {
@@ -871,6 +926,7 @@ int main(void)
         cmocka_unit_test(test_children_in_parent),
         cmocka_unit_test(test_profile_ends),
         cmocka_unit_test(test_normal_is_gradient),
+        cmocka_unit_test(test_profile_normal),
         cmocka_unit_test(test_roundness),
         cmocka_unit_test(test_seamless),
         cmocka_unit_test(test_aperiodic),
