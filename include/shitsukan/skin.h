@@ -185,8 +185,8 @@ void sk_skin_query(const sk_skin *skin, double x_mm, double y_mm, unsigned flags
 
 /* Size of the tile in mm; the repeat period may be larger for aperiodic tiles. */
 void sk_skin_tile_size(const sk_skin *skin, double *width_mm, double *height_mm);
-/* Bounds of every height the skin can take (from the profiles' control points and pore
- * depths): the range used to scale 16-bit height maps. */
+/* Bounds of every height the skin can take (from the profiles' control points and the
+ * pores, overlapping pits added up): the range used to scale 16-bit height maps. */
 void sk_skin_height_range(const sk_skin *skin, float *min_mm, float *max_mm);
 
 /* ------------------------------------------------------------- introspection */

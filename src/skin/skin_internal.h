@@ -259,6 +259,8 @@ sk_result sk__build_grid(sk_skin *skin, sk_error *err);
 /* Pores (pores.c). */
 sk_result sk__build_pores(sk_skin *skin, sk_error *err);
 void sk__pores_eval(const sk_skin *skin, double x, double y, float *h, float grad[2]);
+/* A bound of the deepest pit the pores make anywhere (overlapping pores add up). */
+float sk__pores_deepest(const sk_skin *skin);
 
 /* ---- queries */
 /* Locates the level-1 cell of world point (x, y) (straight cells, no perturbation):
