@@ -852,6 +852,65 @@ static sk_image read_png(const char *path, sk_image_metadata *meta, int *bits)
     return im;
 }
 
+/* The height range bounds every height, pores included where they overlap: in the library
+ * (crowded pores) and in the files skin maps writes (the metadata against height.exr). */
+static void test_height_range(void **state)
+{
+    (void)state;
+    sk_skin_desc d = desc_19a(2.0f);
+    d.pores.hair = (sk_skin_pore_kind){.depth_mm = 0.05f, .radius_mm = 0.3f, .density = 1};
+    d.pores.sweat = (sk_skin_pore_kind){.depth_mm = 0.02f, .radius_mm = 0.1f, .density = 1};
+    d.pores.sweat_level = 2;
+    sk_skin *skin = make(&d);
+    float lo, hi, seen_lo = INFINITY, seen_hi = -INFINITY;
+    sk_skin_height_range(skin, &lo, &hi);
+    int n = 256;
+    float *height = malloc(sizeof(float) * n * n);
+    sk_skin_render_desc rd = {.width = n, .height = n, .height_mm = height};
+    assert_int_equal(sk_skin_render(skin, &rd, NULL), SK_OK);
+    for (int i = 0; i < n * n; i++) seen_lo = fminf(seen_lo, height[i]), seen_hi = fmaxf(seen_hi, height[i]);
+    free(height);
+    if (!(lo <= seen_lo && seen_hi <= hi))
+        fail_msg("heights %g .. %g outside the range %g .. %g", seen_lo, seen_hi, lo, hi);
+    /* overlapping pits reach below the deepest single pore (its depth varies by +-20 %),
+       and the bound is not far below them */
+    assert_true(seen_lo < -1.2f * 0.05f);
+    assert_true(lo > 5.0f * seen_lo);
+    sk_skin_destroy(skin);
+
+    sk_test_run run;
+    const char *dir = sk_test_path("maps-range");
+    assert_int_equal(
+        sk_test_cli(&run, "skin maps --preset back-of-hand --size 512 -q -o '%s'", dir), 0);
+    char path[1024];
+    snprintf(path, sizeof path, "%s/height.exr", dir);
+    sk_image ex = {0};
+    sk_image_metadata meta = {0};
+    assert_int_equal(sk_image_read_exr(&ex, path, &meta, NULL), SK_OK);
+    seen_lo = INFINITY, seen_hi = -INFINITY;
+    for (int i = 0; i < ex.width * ex.height; i++)
+        seen_lo = fminf(seen_lo, ex.data[i]), seen_hi = fmaxf(seen_hi, ex.data[i]);
+    sk_image_free(&ex);
+    snprintf(path, sizeof path, "%s/height.png", dir);
+    sk_image_metadata pmeta = {0};
+    sk_image png = read_png(path, &pmeta, NULL);
+    for (int k = 0; k < 2; k++) {
+        const sk_image_metadata *m = k ? &pmeta : &meta;
+        lo = strtof(sk_image_metadata_get(m, "shitsukan:height_min_mm"), NULL);
+        hi = strtof(sk_image_metadata_get(m, "shitsukan:height_max_mm"), NULL);
+        if (!(lo <= seen_lo && seen_hi <= hi))
+            fail_msg("height.exr spans %g .. %g mm, its metadata says %g .. %g", seen_lo,
+                     seen_hi, lo, hi);
+    }
+    /* no code of height.png is clipped: each decodes to its height.exr value */
+    snprintf(path, sizeof path, "%s/height.exr", dir);
+    assert_int_equal(sk_image_read_exr(&ex, path, NULL, NULL), SK_OK);
+    for (int i = 0; i < ex.width * ex.height; i++)
+        assert_true(fabsf(lo + png.data[i] * (hi - lo) - ex.data[i]) <= (hi - lo) / 65535.0f);
+    sk_image_free(&ex);
+    sk_image_free(&png);
+}
+
 /* skin maps writes every map; --region gives the same pixels; threads do not matter. */
 static void test_cli_maps(void **state)
 {
@@ -882,7 +941,7 @@ static void test_cli_maps(void **state)
         if (m == 0) {
             assert_int_equal(bits, 16);
             assert_non_null(sk_image_metadata_get(&meta, "shitsukan:height_max_mm"));
-            assert_non_null(sk_image_metadata_get(&meta, "shitsukan:mm_per_px"));
+            assert_non_null(sk_image_metadata_get(&meta, SK_IMAGE_KEY_MM_PER_PIXEL));
         }
         for (int y = 0; y < 40; y++)
             assert_memory_equal(sk_image_pixel(&fa, 20, 10 + y), sk_image_pixel(&fb, 0, y),
@@ -936,6 +995,7 @@ int main(void)
         cmocka_unit_test(test_presets_build),
         cmocka_unit_test(test_cli_help_and_errors),
         cmocka_unit_test(test_cli_maps),
+        cmocka_unit_test(test_height_range),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -101,7 +101,7 @@ static void describe(const sk_skin *skin, int w, int h, sk_image_metadata *meta)
     snprintf(v, sizeof v, "%.9g x %.9g", tw, th);
     sk_image_metadata_set(meta, "shitsukan:tile_mm", v, NULL);
     snprintf(v, sizeof v, "%.9g", tw / w);
-    sk_image_metadata_set(meta, "shitsukan:mm_per_px", v, NULL);
+    sk_image_metadata_set(meta, SK_IMAGE_KEY_MM_PER_PIXEL, v, NULL);
     sk_image_metadata_set(meta, "shitsukan:seamless", d->aperiodic ? "false" : "true", NULL);
     sk_image_metadata_set(meta, "Software", "shitsukan " SK_VERSION_STRING, NULL);
     (void)h;
