@@ -201,6 +201,14 @@ static inline double sk__tent(double t, double apex)
     return t < apex ? t / apex : (1.0 - t) / (1.0 - apex);
 }
 
+/* Construction loops over fewer items (cells, edges, points of a level) run on one
+ * thread: starting and joining threads and the spinning of idle ones cost more than the
+ * work, and on a loaded machine each join can wait a whole time slice for a descheduled
+ * thread (the skins of the paper's figures and the region presets build on one thread). */
+#define SK__PARALLEL_ITEMS 50000
+/* Renders of fewer pixel-levels (pixels x levels x samples) run on one thread. */
+#define SK__PARALLEL_PIXELS 32768
+
 /* Wraps a coordinate into [0, period). */
 static inline double sk__wrap(double v, double period)
 {
