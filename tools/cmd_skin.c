@@ -193,8 +193,8 @@ static void id_colour(uint32_t id, float rgb[3])
  * height.exr), the normal's x and y in 1/32767 (z follows; normal.png and the preview
  * come from it, within one code of the float normal's in about 0.1 % of the samples),
  * the furrow distance as furrow.png's 16-bit code and the cell id: 14 bytes a pixel
- * instead of the 44 of float maps. With --samples > 1 or --edges the preview (and the
- * overlay) are rendered and kept as float images. */
+ * instead of the 44 of float maps. With --samples > 1 the preview, and with --edges the
+ * overlay, are rendered and kept as float images. */
 typedef struct map_store {
     int w, h;
     size_t n;
@@ -448,7 +448,7 @@ static int run_maps(const cli_command *command, const cli_args *args)
     }
     /* All maps are held in memory until written: refuse sizes beyond 8 GiB (split the map
        with --region instead). */
-    bool own_preview = samples > 1 || edges;
+    bool own_preview = samples > 1; /* else shaded from the kept normals */
     double per_px = 14 + 12.0 * own_preview + 12.0 * edges + 12; /* + one RGB float image */
     double bytes = (double)region[2] * region[3] * per_px;
     if (bytes > 8.0 * (1 << 30)) {

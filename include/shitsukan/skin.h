@@ -113,11 +113,13 @@ typedef enum sk_skin_normal_model {
     SK_SKIN_NORMAL_GRADIENT,    /* the exact gradient of the height field: normal maps agree
                                    with the height map (what other renderers need); cells
                                    show creases where the ray meets a polygon corner */
-    SK_SKIN_NORMAL_PROFILE      /* the paper's (Fig. 7, sec. 3.2.1 (2)): the profile's slope
-                                   along the ray from the cell centre, N = (S_x d, S_z) with
-                                   d the ray's direction, so cells read as round mounds
-                                   whatever their outline; not the gradient of the height
-                                   where the boundary distance changes with the angle */
+    SK_SKIN_NORMAL_PROFILE      /* the paper's (Fig. 7, sec. 3.2.1 (2)): N = (S_x d, S_z)
+                                   with S the profile's normal in its x'z' plane (the slope
+                                   dz/dx', x' from 0 at the centre to 10 at the boundary
+                                   and z in tenths of the nominal cell radius) and d the
+                                   ray's direction from the cell centre: cells read as
+                                   round mounds whatever their outline. Not the gradient of
+                                   the height: the slope ignores how long the ray is */
 } sk_skin_normal_model;
 
 typedef struct sk_skin_desc {

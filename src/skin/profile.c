@@ -143,11 +143,13 @@ void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, c
                 float gx = (dzdx[i] * gxq[i] + dzdg[i] * ggx[i]) * zs;
                 float gy = (dzdx[i] * gyq[i] + dzdg[i] * ggy[i]) * zs;
                 if (radial) {
-                    /* Fig. 7: the profile's slope along the ray d from the centre, N1 =
-                       (S_x d, S_z): the gradient's part along d (x' and g change along the
-                       ray only through the distance, so this is dz/dr of that ray) */
+                    /* Fig. 7: N1 = (S_x d, S_z) with S the profile's normal in its own
+                       x'z' plane and d the ray's direction from the centre. In that plane
+                       x' and z share a unit (z in tenths of the nominal radius, x' in
+                       tenths of the ray to the boundary), so the slope is dz/dx' (g is
+                       fixed along a ray) whatever the length D(phi) of the ray. */
                     float rr = qx[i] * qx[i] + qy[i] * qy[i];
-                    float s = rr > 0.0f ? (gx * qx[i] + gy * qy[i]) / rr : 0.0f;
+                    float s = rr > 0.0f ? dzdx[i] / sqrtf(rr) : 0.0f;
                     gx = s * qx[i], gy = s * qy[i];
                 }
                 grad[i][0] = gx, grad[i][1] = gy;
