@@ -58,6 +58,10 @@ sk_result sk_hand__solve_linear(sk_hand_solver *solver, const bool *pinned, doub
 sk_result sk_hand__solve_lut(sk_hand_solver *solver, const bool *pinned, double *theta,
                              const double *rhs, sk_hand_solve_info *info, sk_error *err);
 
+/* K (skeleton stiffness with the set's overrides; the set may be NULL) + A'WA, column-
+ * major N_DOF x N_DOF. */
+void sk_hand__equilibrium_matrix(const sk_hand_skeleton *skeleton,
+                                 const sk_hand_constraints *constraints, double *h);
 /* K (skeleton stiffness with the set's overrides) + A'WA positive definite, or an error
  * naming the DOF where the factorisation fails. */
 sk_result sk_hand__check_positive_definite(const sk_hand_skeleton *skeleton,
