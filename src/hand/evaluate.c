@@ -140,6 +140,12 @@ static sk_result fold_model(const sk_hand_skeleton *skel, const sk_hand_samples 
         free(buf);
         free(fits);
     }
+    /* every stiffness explicit, as in a calibrated component */
+    for (int i = 0; i < SK_HAND_DOF_COUNT && r == SK_OK; i++)
+        if (!c->constraints.has_stiffness[i]) {
+            c->constraints.has_stiffness[i] = true;
+            c->constraints.stiffness[i] = skel->dof[i].stiffness;
+        }
     if (r != SK_OK) sk_hand_potential_free(pot);
     return r;
 }
