@@ -50,23 +50,6 @@ static int build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_
     return 0;
 }
 
-/* "natural", "yasumuro-table-3.2", "none" or a file. `out` is zeroed for "none". */
-static int load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out)
-{
-    memset(out, 0, sizeof *out);
-    if (strcmp(name, "none") == 0) return 0;
-    char path[PATH_MAX];
-    bool looks_like_file = strchr(name, '/') || strstr(name, ".json");
-    if (looks_like_file) snprintf(path, sizeof path, "%s", name);
-    else if (!cli_find_preset("hand", name, path, sizeof path))
-        return cli_fail(CLI_EXIT_USAGE,
-                        "--constraints '%s': no such set (natural, yasumuro-table-3.2, none, or a "
-                        "JSON file)", name);
-    sk_error err = {0};
-    if (sk_hand_constraints_load_file(path, skel, out, &err) != SK_OK) return cli_fail_error(&err);
-    return 0;
-}
-
 /* "DOF=value" -> dof index and the number (in file units). */
 static int parse_assignment(const char *option, const char *text, int *dof, double *value)
 {
@@ -283,7 +266,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     const char *set = cli_get(cmd, args, "constraints");
     sk_hand_constraints *c = malloc(sizeof *c);
     if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
-    rc = load_constraints(set ? set : "natural", &skel, c);
+    rc = hand_load_constraints(set ? set : "natural", &skel, c);
     sk_hand_input in = {0};
     const char *values[MAX_PINS];
     int n = rc ? 0 : cli_get_all(cmd, args, "pin", values, MAX_PINS);
@@ -499,7 +482,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     sk_hand_skeleton skel;
     if (!rc) rc = build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
     const char *set = cli_get(cmd, args, "constraints");
-    if (!rc) rc = load_constraints(set ? set : anim->constraints, &skel, c);
+    if (!rc) rc = hand_load_constraints(set ? set : anim->constraints, &skel, c);
     if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
     int frames = rc ? 0 : sk_hand_animation_frame_count(anim);
     if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))

@@ -38,8 +38,7 @@ int hand_read_samples(const cli_command *cmd, const cli_args *args, const char *
     return 0;
 }
 
-/* "natural", "yasumuro-table-3.2", "none" or a file. */
-static int load_set(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out)
+int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out)
 {
     memset(out, 0, sizeof *out);
     if (strcmp(name, "none") == 0) return 0;
@@ -47,8 +46,9 @@ static int load_set(const char *name, const sk_hand_skeleton *skel, sk_hand_cons
     bool looks_like_file = strchr(name, '/') || strstr(name, ".json");
     if (looks_like_file) snprintf(path, sizeof path, "%s", name);
     else if (!cli_find_preset("hand", name, path, sizeof path))
-        return cli_fail(CLI_EXIT_USAGE, "'%s': no such constraint set (natural, yasumuro-table-3.2, none, or a JSON file)",
-                        name);
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--constraints '%s': no such set (natural, yasumuro-table-3.2, none, or a "
+                        "JSON file)", name);
     sk_error err = {0};
     if (sk_hand_constraints_load_file(path, skel, out, &err) != SK_OK) return cli_fail_error(&err);
     return 0;
@@ -89,7 +89,7 @@ int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
     sk_hand_constraints *base = malloc(sizeof *base);
     if (!base) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     const char *base_name = cli_get(cmd, args, "base");
-    rc = load_set(base_name ? base_name : "natural", &skel, base);
+    rc = hand_load_constraints(base_name ? base_name : "natural", &skel, base);
     desc.base = base;
     sk_hand_samples samples = {0};
     if (!rc) rc = hand_read_samples(cmd, args, path, &samples);
@@ -142,7 +142,7 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args, const 
 {
     const char *model = cli_get(cmd, args, "model");
     const char *base_name = cli_get(cmd, args, "base");
-    int rc = load_set(base_name ? base_name : "natural", skel, base);
+    int rc = hand_load_constraints(base_name ? base_name : "natural", skel, base);
     if (rc) return rc;
     rc = potential_options(cmd, args, &d->potential);
     if (rc) return rc;
@@ -170,7 +170,7 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args, const 
         *model_name = "pairs";
         return rc;
     }
-    rc = load_set(model, skel, fixed);
+    rc = hand_load_constraints(model, skel, fixed);
     d->model = SK_HAND_EVAL_MODEL_FIXED;
     d->fixed = fixed;
     *model_name = strlen(model) <= 10 && !strchr(model, '/') ? model : "fixed set";

@@ -166,6 +166,13 @@ static double mixture_e_step(const mixture *g, const double *x, int n, double *r
     return total;
 }
 
+static double sq_distance(const double *a, const double *b, int d)
+{
+    double q = 0.0;
+    for (int k = 0; k < d; k++) q += (a[k] - b[k]) * (a[k] - b[k]);
+    return q;
+}
+
 /* k-means++ seeding (deterministic from the seed), a few Lloyd steps, then EM. The
  * log-likelihood sum above is a reduction whose order depends on the threads, so the
  * stopping test uses a relative tolerance far above rounding. */
@@ -189,14 +196,7 @@ static bool mixture_fit(mixture *g, const double *x, int n, int d, int m, const 
         double total = 0.0;
         for (int i = 0; i < n; i++) {
             double best = INFINITY;
-            for (int k = 0; k < c; k++) {
-                double q = 0.0;
-                for (int a = 0; a < d; a++) {
-                    double t = x[(size_t)i * d + a] - g->mean[k][a];
-                    q += t * t;
-                }
-                best = fmin(best, q);
-            }
+            for (int k = 0; k < c; k++) best = fmin(best, sq_distance(x + (size_t)i * d, g->mean[k], d));
             dist[i] = best;
             total += best;
         }
@@ -215,11 +215,7 @@ static bool mixture_fit(mixture *g, const double *x, int n, int d, int m, const 
         for (int i = 0; i < n; i++) {
             double best = INFINITY;
             for (int k = 0; k < m; k++) {
-                double q = 0.0;
-                for (int a = 0; a < d; a++) {
-                    double t = x[(size_t)i * d + a] - g->mean[k][a];
-                    q += t * t;
-                }
+                double q = sq_distance(x + (size_t)i * d, g->mean[k], d);
                 if (q < best) {
                     best = q;
                     label[i] = k;

@@ -37,22 +37,28 @@ static const char *next_field(const char *p, const char *end, char *buf, size_t 
     return p < end ? p + 1 : p;
 }
 
-/* Whether `name` is one of the comma-separated names in `list` (blanks around names
- * are ignored). */
+/* Next name of a comma-separated list (blanks around names ignored): sets *name and
+ * *len and returns the rest, or NULL at the end. */
+static const char *next_list_name(const char *p, const char **name, size_t *len)
+{
+    if (!p || !*p) return NULL;
+    while (*p == ' ') p++;
+    size_t n = strcspn(p, ",");
+    size_t m = n;
+    while (m > 0 && p[m - 1] == ' ') m--;
+    *name = p;
+    *len = m;
+    p += n;
+    return *p == ',' ? p + 1 : p;
+}
+
+/* Whether `name` is one of the comma-separated names in `list`. */
 static bool in_list(const char *list, const char *name)
 {
-    if (!list) return false;
-    size_t len = strlen(name);
-    const char *p = list;
-    while (*p) {
-        while (*p == ' ') p++;
-        size_t n = strcspn(p, ",");
-        size_t m = n;
-        while (m > 0 && p[m - 1] == ' ') m--;
-        if (m == len && strncmp(p, name, len) == 0) return true;
-        p += n;
-        if (*p == ',') p++;
-    }
+    size_t want = strlen(name), len;
+    const char *item;
+    for (const char *p = list; (p = next_list_name(p, &item, &len)) != NULL;)
+        if (len == want && strncmp(item, name, len) == 0) return true;
     return false;
 }
 
@@ -88,21 +94,15 @@ static sk_result group_of(sk_hand_samples *out, const char *value, int *cap, int
 static sk_result check_listed_columns(const char *list, char (*header)[128], int ncol,
                                       const char *what, sk_error *err)
 {
-    if (!list) return SK_OK;
-    const char *p = list;
-    while (*p) {
-        while (*p == ' ') p++;
-        size_t n = strcspn(p, ",");
-        size_t m = n;
-        while (m > 0 && p[m - 1] == ' ') m--;
+    const char *item;
+    size_t m;
+    for (const char *p = list; (p = next_list_name(p, &item, &m)) != NULL;) {
         bool found = m == 0;
         for (int c = 0; c < ncol && !found; c++)
-            found = strlen(header[c]) == m && strncmp(header[c], p, m) == 0;
+            found = strlen(header[c]) == m && strncmp(header[c], item, m) == 0;
         if (!found)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s \"%.*s\" is not a column of the header",
-                           what, (int)(m < 64 ? m : 64), p);
-        p += n;
-        if (*p == ',') p++;
+                           what, (int)(m < 64 ? m : 64), item);
     }
     return SK_OK;
 }
