@@ -114,12 +114,12 @@ typedef enum sk_skin_normal_model {
                                    with the height map (what other renderers need); cells
                                    show creases where the ray meets a polygon corner */
     SK_SKIN_NORMAL_PROFILE      /* the paper's (Fig. 7, sec. 3.2.1 (2)): N = (S_x d, S_z)
-                                   with S the profile's normal in its x'z' plane (the slope
-                                   dz/dx', x' from 0 at the centre to 10 at the boundary
-                                   and z in tenths of the nominal cell radius) and d the
-                                   ray's direction from the cell centre: cells read as
+                                   with S the normal of the profile drawn along the ray d
+                                   from the cell centre (its slope dz/dr): cells read as
                                    round mounds whatever their outline. Not the gradient of
-                                   the height: the slope ignores how long the ray is */
+                                   the height where the boundary's distance changes with
+                                   the angle. A stretched level takes the ray before the
+                                   stretch and stretches the slope with the ridge */
 } sk_skin_normal_model;
 
 typedef struct sk_skin_desc {

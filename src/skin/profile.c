@@ -143,14 +143,21 @@ void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, c
                 float gx = (dzdx[i] * gxq[i] + dzdg[i] * ggx[i]) * zs;
                 float gy = (dzdx[i] * gyq[i] + dzdg[i] * ggy[i]) * zs;
                 if (radial) {
-                    /* Fig. 7: N1 = (S_x d, S_z) with S the profile's normal in its own
-                       x'z' plane and d the ray's direction from the centre. In that plane
-                       x' and z share a unit (z in tenths of the nominal radius, x' in
-                       tenths of the ray to the boundary), so the slope is dz/dx' (g is
-                       fixed along a ray) whatever the length D(phi) of the ray. */
-                    float rr = qx[i] * qx[i] + qy[i] * qy[i];
-                    float s = rr > 0.0f ? dzdx[i] / sqrtf(rr) : 0.0f;
-                    gx = s * qx[i], gy = s * qy[i];
+                    /* Fig. 7: N1 = (S_x d, S_z) with S the normal of the profile drawn
+                       along the ray d from the centre (x' = 10 at the boundary, D(phi)
+                       away): the slope dz/dr of that ray, the gradient's part along d
+                       (x' grows along the ray as r / D, g not at all). The ray runs in
+                       the level's pre-stretch space, where the paper divides its cells,
+                       and the slope is stretched with the ridge: with u = M^-1 q the ray
+                       there, the slope vector is (g . q / |u|^2) M^-T u (u = q when the
+                       level is not stretched). */
+                    const float(*mi)[2] = lv->minvf;
+                    float ux = mi[0][0] * qx[i] + mi[0][1] * qy[i];
+                    float uy = mi[1][0] * qx[i] + mi[1][1] * qy[i];
+                    float uu = ux * ux + uy * uy;
+                    float s = uu > 0.0f ? (gx * qx[i] + gy * qy[i]) / uu : 0.0f;
+                    gx = s * (mi[0][0] * ux + mi[1][0] * uy);
+                    gy = s * (mi[0][1] * ux + mi[1][1] * uy);
                 }
                 grad[i][0] = gx, grad[i][1] = gy;
             }
