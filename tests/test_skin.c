@@ -405,6 +405,38 @@ static void test_profile_normal(void **state)
     }
     if (good < n * 97 / 100) fail_msg("profile normal along the ray at %d of %d points", good, n);
     assert_true(leaning > n / 10);
+    /* a stretched level takes the ray before the stretch: the slope along the stretched
+       ray is still the height's, the normal leans across it towards the long sides */
+    sk_skin_desc ds = d;
+    ds.levels[0].stretch[0] = 3, ds.levels[0].stretch[1] = 1;
+    ds.size_mm[0] = 9.6f;
+    sk_skin *st = make(&ds);
+    int along_ok = 0, across = 0, tried = 0;
+    for (int s = 0; s < 400; s++) {
+        double x = sk_rng_uniform(&rng) * 9.6, y = sk_rng_uniform(&rng) * h;
+        sk_skin_sample smp;
+        sk_skin_query(st, x, y, 0, &smp);
+        sk_skin_cell_info ci;
+        sk_skin_cell_info_get(st, 1, smp.cell[0], &ci, NULL);
+        double rx = x - ci.centre.x, ry = y - ci.centre.y;
+        rx -= 9.6 * round(rx / 9.6), ry -= h * round(ry / h);
+        double r = sqrt(rx * rx + ry * ry);
+        if (r < 1e-3) continue;
+        double ux = rx / r, uy = ry / r;
+        float h1, h0;
+        sk_skin_eval(st, x + step * ux, y + step * uy, &h1, NULL);
+        sk_skin_eval(st, x - step * ux, y - step * uy, &h0, NULL);
+        double slope = (h1 - h0) / (2 * step);
+        double gx = -smp.normal.x / smp.normal.z, gy = -smp.normal.y / smp.normal.z;
+        tried++;
+        /* float heights leave the finite difference a few 1e-3 of noise */
+        along_ok += fabs(gx * ux + gy * uy - slope) < 5e-3 * (1 + fabs(slope));
+        across += fabs(gx * uy - gy * ux) > 1e-3;
+    }
+    if (along_ok < tried * 97 / 100)
+        fail_msg("stretched: slope along the ray right at %d of %d points", along_ok, tried);
+    assert_true(across > tried / 10);
+    sk_skin_destroy(st);
     /* the gradient model differs from it where D(phi) changes with the angle */
     d.normal_model = SK_SKIN_NORMAL_GRADIENT;
     sk_skin *grad = make(&d);
