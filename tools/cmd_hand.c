@@ -2,7 +2,6 @@
  * coupling (Yasumuro 2000, ch. 3), keyframe animation to BVH and joint positions, and
  * calibration of constraint rows from measured samples. Argument parsing only; the model
  * is in the library (include/shitsukan/hand.h). */
-#include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -10,44 +9,12 @@
 #include <string.h>
 
 #include "cli.h"
+#include "hand_args.h"
 #include "shitsukan/hand.h"
 
 #define MAX_PINS 64
 
 /* ------------------------------------------------------------ helpers */
-
-static int parse_side(const char *text, sk_hand_side *side)
-{
-    if (!text || strcmp(text, "right") == 0) *side = SK_HAND_SIDE_RIGHT;
-    else if (strcmp(text, "left") == 0) *side = SK_HAND_SIDE_LEFT;
-    else return cli_fail(CLI_EXIT_USAGE, "--side '%s' must be right or left", text);
-    return 0;
-}
-
-/* Skeleton from --side, --hand-length, --hand-breadth, --anatomy (each may be absent). */
-static int build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side,
-                          double length_mm, double breadth_mm, sk_hand_skeleton *skel)
-{
-    sk_error err = {0};
-    sk_hand_anatomy anatomy;
-    sk_hand_skeleton_desc desc = {0};
-    const char *anatomy_path = cli_get(cmd, args, "anatomy");
-    if (anatomy_path) {
-        if (sk_hand_anatomy_load_file(anatomy_path, &anatomy, &err) != SK_OK) return cli_fail_error(&err);
-        desc.anatomy = &anatomy;
-    }
-    double hl = length_mm, hb = breadth_mm;
-    int rc = cli_get_double(cmd, args, "hand-length", hl, 60, 400, &hl);
-    if (rc == 0) rc = cli_get_double(cmd, args, "hand-breadth", hb, 30, 200, &hb);
-    if (rc) return rc;
-    const char *side_text = cli_get(cmd, args, "side");
-    if (side_text && (rc = parse_side(side_text, &side))) return rc;
-    desc.side = side;
-    desc.hand_length_mm = hl;
-    desc.hand_breadth_mm = hb;
-    if (sk_hand_skeleton_init(skel, &desc, &err) != SK_OK) return cli_fail_error(&err);
-    return 0;
-}
 
 /* "natural", "yasumuro-table-3.2", "none" or a file. `out` is zeroed for "none". */
 static int load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out)
@@ -63,28 +30,6 @@ static int load_constraints(const char *name, const sk_hand_skeleton *skel, sk_h
                         "JSON file)", name);
     sk_error err = {0};
     if (sk_hand_constraints_load_file(path, skel, out, &err) != SK_OK) return cli_fail_error(&err);
-    return 0;
-}
-
-/* "DOF=value" -> dof index and the number (in file units). */
-static int parse_assignment(const char *option, const char *text, int *dof, double *value)
-{
-    const char *eq = strchr(text, '=');
-    if (!eq) return cli_fail(CLI_EXIT_USAGE, "--%s '%s': expected DOF=value, e.g. L.MCP.flex=60", option, text);
-    char name[64];
-    size_t n = (size_t)(eq - text);
-    if (n >= sizeof name) n = sizeof name - 1;
-    memcpy(name, text, n);
-    name[n] = '\0';
-    *dof = sk_hand_dof_find(name);
-    if (*dof < 0)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)",
-                        option, text, name);
-    char *end;
-    errno = 0;
-    *value = strtod(eq + 1, &end);
-    if (!eq[1] || *end || errno == ERANGE || !isfinite(*value) || fabs(*value) > 1e6)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': \"%s\" is not a finite number", option, text, eq + 1);
     return 0;
 }
 
@@ -259,7 +204,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     int rc = require_option(cmd, args, "png", picture_options);
     if (rc) return rc;
     sk_hand_skeleton skel;
-    rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    rc = hand_build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
     const char *set = cli_get(cmd, args, "constraints");
     sk_hand_constraints *c = malloc(sizeof *c);
@@ -271,7 +216,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     for (int i = 0; i < n && !rc; i++) {
         int dof;
         double v;
-        rc = parse_assignment("pin", values[i], &dof, &v);
+        rc = hand_parse_assignment("pin", values[i], &dof, &v);
         if (!rc) {
             in.pinned[dof] = true;
             in.pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
@@ -281,7 +226,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     for (int i = 0; i < n && !rc; i++) {
         int dof;
         double v;
-        rc = parse_assignment("torque", values[i], &dof, &v);
+        rc = hand_parse_assignment("torque", values[i], &dof, &v);
         if (!rc) in.torque[dof] = v;
     }
     sk_hand_lut luts[16];
@@ -470,7 +415,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     const char *path = args->positional[0];
     if (!rc && sk_hand_animation_load_file(path, anim, &err) != SK_OK) rc = cli_fail_error(&err);
     sk_hand_skeleton skel;
-    if (!rc) rc = build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
+    if (!rc) rc = hand_build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
     const char *set = cli_get(cmd, args, "constraints");
     if (!rc) rc = load_constraints(set ? set : anim->constraints, &skel, c);
     if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);

@@ -804,9 +804,10 @@ void sk_hand_slices_free(sk_hand_slices *slices);
 /* -------------------------------------------------------------- polygons */
 typedef enum sk_hand_resample_mode {
     SK_HAND_RESAMPLE_DEFAULT = 0, /* = NEIGHBOURS */
-    SK_HAND_RESAMPLE_NEIGHBOURS,  /* the fix the thesis proposes: fixed sample angles per link
-                                     and extents smoothed over the neighbouring slices, radii
-                                     averaged 1:2:1 with the slices before and after */
+    SK_HAND_RESAMPLE_NEIGHBOURS,  /* the fix the thesis proposes: samples placed alike on
+                                     neighbouring slices (a ring's angles fixed per link, an
+                                     arc's ends averaged 1:2:1 with the slices before and
+                                     after); radii by eq. 4.2 on each slice's own data */
     SK_HAND_RESAMPLE_THESIS       /* eqs. 4.1, 4.2 on each slice alone (shows the wrinkles) */
 } sk_hand_resample_mode;
 
@@ -855,14 +856,16 @@ sk_vec3d sk_hand_patch_eval(const sk_hand_patch *patch, double u, double v, sk_v
 void sk_hand_bernstein3(double t, double out[4]);
 
 typedef struct sk_hand_patch_fit_desc {
-    int max_iterations;  /* parameter corrections; 0 = 50; range [1, 10000] */
-    double tolerance;    /* stop when no parameter moves more than this; 0 = 1e-4; range [1e-12, 0.1] */
+    int max_iterations;  /* parameter corrections; 0 = 30; range [1, 10000] */
+    double tolerance;    /* stop when no parameter moves more than this; 0 = 1e-3; range [1e-12, 0.1] */
+    double min_improvement; /* ... or when a correction lowers the RMS error by less than this
+                               fraction; 0 = 1e-3; range [0, 0.5] (negative = never) */
     bool no_correction;  /* true = the least-squares fit of the chord-length parameters only */
 } sk_hand_patch_fit_desc;
 
 typedef struct sk_hand_patch_fit_info {
     int iterations;        /* parameter corrections done */
-    bool converged;        /* the last update was below the tolerance */
+    bool converged;        /* the last update was below the tolerance, or the error stalled */
     bool regularised;      /* A^T A was singular (too few or degenerate points) and a tiny
                               ridge made it solvable */
     double rms_initial_mm; /* RMS of |S - Q(u, v)| after the first fit (4.5) */
@@ -1000,6 +1003,11 @@ typedef struct sk_hand_scan_input {
     const double *dofs;                /* SK_HAND_DOF_COUNT absolute values: the pose of the
                                           skeleton in the surface or cloud */
 } sk_hand_scan_input;
+
+/* The pose of the plaster cast: an open hand ("手を開いた姿勢の複製", 4.1.1): the fingers
+ * nearly straight (MCP 5, PIP 8, DIP 4 deg) and a little spread, the thumb spread beside
+ * the palm (CMC flexion -10, abduction 10 deg), the wrist straight. */
+void sk_hand_scan_cast_pose(const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT]);
 
 /* Seconds spent per stage (wall clock). */
 typedef struct sk_hand_scan_timings {

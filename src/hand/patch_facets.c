@@ -9,7 +9,7 @@
 
 #include "hand/scan_private.h"
 
-#define LEAF 4 /* facets per leaf side */
+#define LEAF 2 /* facets per leaf side */
 
 typedef struct qnode {
     double lo[3], hi[3];
@@ -58,14 +58,24 @@ static int build(facet_grid *g, int a0, int a1, int b0, int b1)
     return id;
 }
 
-static double facet_distance2(const facet_grid *g, int a, int b, sk_vec3d p)
+/* Squared distance to triangle (a, b, c) if below `best`, else `best`: the distance to
+ * its plane bounds it from below and is cheap. */
+static inline double triangle_distance2(sk_vec3d p, sk_vec3d a, sk_vec3d b, sk_vec3d c, double best)
+{
+    sk_vec3d n = sk_v3d_cross(sk_v3d_sub(b, a), sk_v3d_sub(c, a));
+    double h = sk_v3d_dot(sk_v3d_sub(p, a), n), nn = sk_v3d_dot(n, n);
+    if (h * h >= best * nn) return best;
+    double d2 = sk_hand__dist2(p, sk_hand__closest_on_triangle(p, a, b, c));
+    return d2 < best ? d2 : best;
+}
+
+static double facet_distance2(const facet_grid *g, int a, int b, sk_vec3d p, double best)
 {
     int w = g->n + 1;
     sk_vec3d v00 = g->v[a * w + b], v10 = g->v[(a + 1) * w + b];
     sk_vec3d v11 = g->v[(a + 1) * w + b + 1], v01 = g->v[a * w + b + 1];
-    double d1 = sk_hand__dist2(p, sk_hand__closest_on_triangle(p, v00, v10, v11));
-    double d2 = sk_hand__dist2(p, sk_hand__closest_on_triangle(p, v00, v11, v01));
-    return d1 < d2 ? d1 : d2;
+    best = triangle_distance2(p, v00, v10, v11, best);
+    return triangle_distance2(p, v00, v11, v01, best);
 }
 
 static double nearest(const facet_grid *g, sk_vec3d p, double best)
@@ -77,10 +87,7 @@ static double nearest(const facet_grid *g, sk_vec3d p, double best)
         if (sk_hand__box_distance2(q->lo, q->hi, p) >= best) continue;
         if (q->child[0] < 0) {
             for (int a = q->a0; a < q->a1; a++)
-                for (int b = q->b0; b < q->b1; b++) {
-                    double d2 = facet_distance2(g, a, b, p);
-                    if (d2 < best) best = d2;
-                }
+                for (int b = q->b0; b < q->b1; b++) best = facet_distance2(g, a, b, p, best);
             continue;
         }
         /* push the farther children first, so the nearest is searched first */
@@ -137,8 +144,7 @@ sk_result sk_hand_patch_facet_distances(const sk_hand_patch *patch, int splits, 
                 for (int db = -1; db <= 1; db++) {
                     int aa = a + da, bb = b + db;
                     if (aa < 0 || bb < 0 || aa >= splits || bb >= splits) continue;
-                    double d2 = facet_distance2(&g, aa, bb, points[k]);
-                    if (d2 < best) best = d2;
+                    best = facet_distance2(&g, aa, bb, points[k], best);
                 }
         }
         distance[k] = sqrt(nearest(&g, points[k], best));

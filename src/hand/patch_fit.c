@@ -90,41 +90,33 @@ static double rms(const sk_hand_patch *patch, const sk_vec3d *pts, size_t n, con
 
 static inline double clamp01(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }
 
-/* Moves (u, v) of one point toward its foot on the patch: up to `steps` steps of
- * eqs. (4.6, 4.7), each halved until it brings the foot no farther. Returns the largest
- * parameter change. */
-static double correct_point(const sk_hand_patch *patch, sk_vec3d p, double *u, double *v, int steps)
+/* One step of eqs. (4.6, 4.7) moving (u, v) of a point toward its foot on the patch,
+ * halved until it brings the foot no farther. Returns the squared distance before the
+ * step (the point's residual for the patch as it is) and the parameter change. */
+static double correct_point(const sk_hand_patch *patch, sk_vec3d p, double *u, double *v, double *change)
 {
-    double u0 = *u, v0 = *v;
     sk_vec3d su, sv;
     sk_vec3d s = sk_hand_patch_eval(patch, *u, *v, &su, &sv);
     double d0 = sk_hand__dist2(p, s);
-    for (int k = 0; k < steps; k++) {
-        sk_vec3d e = sk_v3d_sub(p, s);
-        double lu = sk_v3d_dot(su, su), lv = sk_v3d_dot(sv, sv);
-        /* eq. (4.7): delta = e . S_u / |S_u|; eq. (4.6) scaled by 1 / |S_u| (file comment) */
-        double du = lu > 1e-24 ? sk_v3d_dot(e, su) / lu : 0.0;
-        double dv = lv > 1e-24 ? sk_v3d_dot(e, sv) / lv : 0.0;
-        bool moved = false;
-        for (int half = 0; half < 6; half++) {
-            double nu = clamp01(*u + du), nv = clamp01(*v + dv);
-            sk_vec3d nsu, nsv;
-            sk_vec3d ns = sk_hand_patch_eval(patch, nu, nv, &nsu, &nsv);
-            double d1 = sk_hand__dist2(p, ns);
-            if (d1 <= d0) {
-                *u = nu, *v = nv;
-                s = ns, su = nsu, sv = nsv;
-                moved = d1 < d0;
-                d0 = d1;
-                break;
-            }
-            du *= 0.5;
-            dv *= 0.5;
+    sk_vec3d e = sk_v3d_sub(p, s);
+    double lu = sk_v3d_dot(su, su), lv = sk_v3d_dot(sv, sv);
+    /* eq. (4.7): delta = e . S_u / |S_u|; eq. (4.6) scaled by 1 / |S_u| (file comment) */
+    double du = lu > 1e-24 ? sk_v3d_dot(e, su) / lu : 0.0;
+    double dv = lv > 1e-24 ? sk_v3d_dot(e, sv) / lv : 0.0;
+    *change = 0.0;
+    for (int half = 0; half < 6; half++) {
+        double nu = clamp01(*u + du), nv = clamp01(*v + dv);
+        double d1 = sk_hand__dist2(p, sk_hand_patch_eval(patch, nu, nv, NULL, NULL));
+        if (d1 <= d0) {
+            double cu = fabs(nu - *u), cv = fabs(nv - *v);
+            *change = cu > cv ? cu : cv;
+            *u = nu, *v = nv;
+            break;
         }
-        if (!moved) break;
+        du *= 0.5;
+        dv *= 0.5;
     }
-    double cu = fabs(*u - u0), cv = fabs(*v - v0);
-    return cu > cv ? cu : cv;
+    return d0;
 }
 
 sk_result sk_hand_patch_fit(const sk_vec3d *points, size_t count, double *u, double *v,
@@ -132,10 +124,13 @@ sk_result sk_hand_patch_fit(const sk_vec3d *points, size_t count, double *u, dou
                             sk_hand_patch_fit_info *info, double *rms_history, sk_error *err)
 {
     sk_hand_patch_fit_desc d = desc ? *desc : (sk_hand_patch_fit_desc){0};
-    if (d.max_iterations == 0) d.max_iterations = 50;
-    if (d.tolerance == 0) d.tolerance = 1e-4;
+    if (d.max_iterations == 0) d.max_iterations = 30;
+    if (d.tolerance == 0) d.tolerance = 1e-3;
+    if (d.min_improvement == 0) d.min_improvement = 1e-3;
+    if (d.min_improvement < 0) d.min_improvement = 0;
     sk_result r = sk_check_range_i(err, "fit.max_iterations", d.max_iterations, 1, 10000);
     if (r == SK_OK) r = sk_check_range_f(err, "fit.tolerance", d.tolerance, 1e-12, 0.1);
+    if (r == SK_OK) r = sk_check_range_f(err, "fit.min_improvement", d.min_improvement, 0, 0.5);
     if (r != SK_OK) return r;
     if (count < 16) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch fit: %zu points (16 or more needed)", count);
     sk_vec3d centroid = {0, 0, 0};
@@ -154,22 +149,37 @@ sk_result sk_hand_patch_fit(const sk_vec3d *points, size_t count, double *u, dou
     if (r != SK_OK) return r;
     fi.rms_initial_mm = fi.rms_final_mm = rms(&patch, points, count, u, v);
     if (rms_history) rms_history[0] = fi.rms_initial_mm;
+    double previous = fi.rms_initial_mm;
     for (int it = 1; it <= d.max_iterations && !d.no_correction; it++) {
-        double largest = 0.0;
+        double largest = 0.0, sum = 0.0;
         for (size_t k = 0; k < count; k++) {
-            double moved = correct_point(&patch, points[k], &u[k], &v[k], 2);
+            double moved;
+            sum += correct_point(&patch, points[k], &u[k], &v[k], &moved);
             if (moved > largest) largest = moved;
+        }
+        /* the residuals before this correction are those of the last fit */
+        double now = sqrt(sum / (double)count);
+        if (it > 1) {
+            if (rms_history) rms_history[it - 1] = now;
+            if (now > (1.0 - d.min_improvement) * previous) {
+                /* stalled: the last correction and fit stand */
+                fi.converged = true;
+                break;
+            }
+            previous = now;
         }
         r = least_squares(points, count, u, v, centroid, &patch, &fi.regularised, err);
         if (r != SK_OK) return r;
         fi.iterations = it;
         fi.last_update = largest;
-        fi.rms_final_mm = rms(&patch, points, count, u, v);
-        if (rms_history) rms_history[it] = fi.rms_final_mm;
         if (largest < d.tolerance) {
             fi.converged = true;
             break;
         }
+    }
+    if (fi.iterations > 0) {
+        fi.rms_final_mm = rms(&patch, points, count, u, v);
+        if (rms_history) rms_history[fi.iterations] = fi.rms_final_mm;
     }
     /* keep the caller's link, side and place in the layout */
     for (int i = 0; i < 4; i++)

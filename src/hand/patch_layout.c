@@ -83,7 +83,9 @@ static void initial_parameters(const sk_hand_cloud *cloud, const member *members
 {
     for (size_t k = 0; k < n; k++) {
         const member *m = &members[idx[k]];
-        scratch[k] = (prow){floor((m->s - s_lo) / ROW_MM), m->phi, (uint32_t)k};
+        /* u runs against the angle, so that S_u x S_v points away from the link (the angle
+           turns from the frame's X toward X x axis, so its tangent x axis points inward) */
+        scratch[k] = (prow){floor((m->s - s_lo) / ROW_MM), -m->phi, (uint32_t)k};
         v[k] = sk_clampd((m->s - s_lo) / (s_hi - s_lo), 0.0, 1.0);
     }
     qsort(scratch, n, sizeof *scratch, compare_prow);
@@ -95,7 +97,7 @@ static void initial_parameters(const sk_hand_cloud *cloud, const member *members
         for (size_t k = 0; k < len; k++) row_pts[k] = cloud->position[members[idx[scratch[a + k].index]].point];
         sk_hand_chord_parameters(row_pts, len, row_u);
         /* the row's share of the region's angular range, chord length within it */
-        double f0 = (scratch[a].phi - phi_lo) / span, f1 = (scratch[b - 1].phi - phi_lo) / span;
+        double f0 = (phi_hi + scratch[a].phi) / span, f1 = (phi_hi + scratch[b - 1].phi) / span;
         for (size_t k = 0; k < len; k++)
             u[scratch[a + k].index] = sk_clampd(len == 1 ? f0 : f0 + row_u[k] * (f1 - f0), 0.0, 1.0);
         a = b;

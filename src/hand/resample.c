@@ -9,21 +9,26 @@
  * neighbours' points) is sampled with 9 intervals so that both of its ends are vertices.
  *
  * The thesis saw "wrinkles" because each slice was resampled alone, and proposed using
- * the neighbouring slices. SK_HAND_RESAMPLE_NEIGHBOURS does: a ring's sample angles are
- * fixed per link (theta_ref + 2 pi i / n, so consecutive rings do not twist against each
- * other as theta_min wanders), an arc's ends are averaged with the matching arcs of the
- * slices before and after, and each radius is the 1:2:1 average of eq. (4.2) on the
- * previous, this and the next slice. */
+ * the neighbouring slices. SK_HAND_RESAMPLE_NEIGHBOURS places the samples consistently
+ * from slice to slice: a ring's sample angles are fixed per link (theta_ref + 2 pi i / n),
+ * so consecutive rings no longer twist against each other as theta_min wanders with the
+ * data, and an arc's ends are averaged 1:2:1 with the matching arcs of the slices before
+ * and after. The radius at each angle stays eq. (4.2) on the slice's own data: averaging
+ * radii across slices as well would pull the vertices off the surface where it changes
+ * along the link (joints, tips, the oblique thumb) more than it removes noise. */
 #include <stdlib.h>
 #include <string.h>
 
+#include "hand/hand_private.h"
 #include "hand/scan_private.h"
 
 typedef struct segment {
-    int link;
+    int group;               /* what joins across slices: a link, or a finger's phalanges */
+    int link;                /* the link whose frame fixes a ring's sample angles */
     bool ring;
     int first, count;        /* into the slice's unwrapped theta / r arrays */
     double theta_min, theta_max;
+    sk_vec3d centre;         /* polar centre in the slice plane */
     int vertex;              /* first resampled vertex */
 } segment;
 
@@ -33,9 +38,20 @@ typedef struct slice_work {
     double *theta, *r;       /* per point, grouped by segment, theta increasing (unwrapped) */
 } slice_work;
 
-/* Splits one link's points (sorted by angle in (-pi, pi]) into a ring or arcs. */
-static int make_segments(const sk_hand_slice_point *p, int n, int link, double arc_gap, slice_work *w, int *used,
-                         segment *out)
+typedef struct polar {
+    double theta, r;
+} polar;
+
+static int compare_polar(const void *a, const void *b)
+{
+    const polar *x = a, *y = b;
+    if (x->theta != y->theta) return x->theta < y->theta ? -1 : 1;
+    return x->r < y->r ? -1 : (x->r > y->r);
+}
+
+/* Splits a group's points (sorted by angle in (-pi, pi]) into a ring or arcs. */
+static int make_segments(const polar *p, int n, int group, int link, sk_vec3d centre, bool phalanx, double arc_gap,
+                         slice_work *w, int *used, segment *out)
 {
     if (n < 2) return 0;
     int largest = n - 1;
@@ -50,19 +66,61 @@ static int make_segments(const sk_hand_slice_point *p, int n, int link, double a
         rr[j] = p[k].r;
     }
     int count = 0;
-    bool ring = n >= 3 && (largest_gap <= arc_gap || (sk_hand__link_is_phalanx(link) && largest_gap < SK_PI));
+    bool ring = n >= 3 && (largest_gap <= arc_gap || (phalanx && largest_gap < SK_PI));
     if (ring) {
-        out[count++] = (segment){link, true, *used, n, th[0], th[n - 1], 0};
+        out[count++] = (segment){group, link, true, *used, n, th[0], th[n - 1], centre, 0};
     } else {
         int a = 0;
         for (int j = 1; j <= n; j++) {
             if (j < n && th[j] - th[j - 1] <= arc_gap) continue;
-            if (j - a >= 2) out[count++] = (segment){link, false, *used + a, j - a, th[a], th[j - 1], 0};
+            if (j - a >= 2) out[count++] = (segment){group, link, false, *used + a, j - a, th[a], th[j - 1], centre, 0};
             a = j;
         }
     }
     *used += n;
     return count;
+}
+
+/* The resampling groups of one slice: each palm link alone; a finger's phalanges together
+ * (at a joint a slice's points fall to two links of the finger: resampled as one ring
+ * about the link holding most of them, a finger is one tube from its base to its tip). */
+static void slice_segments(const sk_hand_slices *slices, int s, double arc_gap, polar *scratch, slice_work *w)
+{
+    size_t a = slices->first[s], b = slices->first[s + 1];
+    int used = 0;
+    int per_link[SK_HAND_LINK_COUNT] = {0};
+    for (size_t k = a; k < b; k++) per_link[slices->points[k].link]++;
+    bool done[SK_HAND_LINK_COUNT] = {false};
+    for (int l = 0; l < SK_HAND_LINK_COUNT; l++) {
+        if (done[l] || per_link[l] == 0) continue;
+        bool phalanx = sk_hand__link_is_phalanx(l);
+        int group = l, rep = l;
+        bool member[SK_HAND_LINK_COUNT] = {false};
+        member[l] = true;
+        if (phalanx) {
+            /* the finger's phalanges; the one with most points gives the centre */
+            int finger = sk_hand__finger_of_link(l);
+            group = SK_HAND_LINK_COUNT + finger;
+            for (int o = l + 1; o < SK_HAND_LINK_COUNT; o++) {
+                if (!sk_hand__link_is_phalanx(o) || sk_hand__finger_of_link(o) != finger) continue;
+                member[o] = true;
+                if (per_link[o] > per_link[rep]) rep = o;
+            }
+        }
+        sk_vec3d c = slices->centre[s][rep];
+        int n = 0;
+        for (size_t k = a; k < b; k++) {
+            const sk_hand_slice_point *p = &slices->points[k];
+            if (!member[p->link]) continue;
+            sk_vec3d own = slices->centre[s][p->link];
+            double x = own.x + p->r * cos(p->theta) - c.x, z = own.z + p->r * sin(p->theta) - c.z;
+            scratch[n++] = (polar){atan2(z, x), hypot(x, z)};
+        }
+        for (int o = 0; o < SK_HAND_LINK_COUNT; o++) done[o] = done[o] || member[o];
+        if (phalanx) qsort(scratch, (size_t)n, sizeof *scratch, compare_polar);
+        w->segment_count += make_segments(scratch, n, group, rep, c, phalanx, arc_gap, w, &used,
+                                          w->segments + w->segment_count);
+    }
 }
 
 /* Eq. (4.2) on a segment: the radius at angle t by linear interpolation between the
@@ -105,14 +163,15 @@ static double arc_overlap(const segment *a, const segment *b, double *shift)
     return best;
 }
 
-/* The arc of `link` in slice w that overlaps `a` most (at least 30 % of the shorter). */
+/* The segment of a's group in slice w: its ring, or the arc overlapping `a` most (at least
+ * 30 % of the shorter). */
 static const segment *matching_arc(const slice_work *w, const segment *a, double *shift)
 {
     const segment *best = NULL;
     double best_overlap = 0.0;
     for (int k = 0; k < w->segment_count; k++) {
         const segment *b = &w->segments[k];
-        if (b->link != a->link || b->ring != a->ring) continue;
+        if (b->group != a->group || b->ring != a->ring) continue;
         double s = 0.0, o = b->ring ? INFINITY : arc_overlap(a, b, &s);
         double shorter = fmin(a->theta_max - a->theta_min, b->theta_max - b->theta_min);
         if (o > 0.3 * shorter && o > best_overlap) best_overlap = o, best = b, *shift = s;
@@ -149,28 +208,6 @@ static void sample_angles(const slice_work *work, int s, int count, const segmen
         lo = slo / wsum, hi = shi / wsum;
     }
     for (int i = 0; i < n; i++) out[i] = lo + (hi - lo) * i / (n - 1);
-}
-
-/* Radius at each sample angle: eq. (4.2) on this slice, or its 1:2:1 average with the
- * matching segments of the slices either side. */
-static double sample_radius(const slice_work *work, int s, int count, const segment *seg, sk_hand_resample_mode mode,
-                            double t)
-{
-    double r = radius_at(&work[s], seg, t);
-    if (mode == SK_HAND_RESAMPLE_THESIS) return r;
-    double sum = 2.0 * r, wsum = 2.0;
-    for (int ds = -1; ds <= 1; ds += 2) {
-        int o = s + ds;
-        if (o < 0 || o >= count) continue;
-        double shift = 0;
-        const segment *m = matching_arc(&work[o], seg, &shift);
-        if (!m) continue;
-        /* an arc's radius only where the neighbour's arc has data */
-        if (!m->ring && (t - shift < m->theta_min || t - shift > m->theta_max)) continue;
-        sum += radius_at(&work[o], m, t - shift);
-        wsum += 1.0;
-    }
-    return sum / wsum;
 }
 
 static double theta_reference(const sk_hand_link_geometry *links, int l)
@@ -226,19 +263,15 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
         w->theta = malloc(sizeof *w->theta * (b - a + 1));
         w->r = malloc(sizeof *w->r * (b - a + 1));
         w->segments = malloc(sizeof *w->segments * (b - a + 1));
-        if (!w->theta || !w->r || !w->segments) {
+        polar *scratch = malloc(sizeof *scratch * (b - a + 1));
+        if (!w->theta || !w->r || !w->segments || !scratch) {
+            free(scratch);
 #pragma omp atomic write
             failed = true;
             continue;
         }
-        int used = 0;
-        for (size_t k = a; k < b;) {
-            size_t e = k;
-            while (e < b && slices->points[e].link == slices->points[k].link) e++;
-            w->segment_count += make_segments(slices->points + k, (int)(e - k), slices->points[k].link, arc_gap, w,
-                                              &used, w->segments + w->segment_count);
-            k = e;
-        }
+        slice_segments(slices, s, arc_gap, scratch, w);
+        free(scratch);
     }
     if (failed) {
         free_work(work, count);
@@ -278,14 +311,16 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
         for (int k = 0; k < work[s].segment_count; k++) {
             const segment *seg = &work[s].segments[k];
             sample_angles(work, s, count, seg, d.mode, theta_reference(links, seg->link), n, angles);
-            sk_vec3d c = slices->centre[s][seg->link];
+            sk_vec3d c = seg->centre;
             for (int i = 0; i < n; i++) {
-                double rad = sample_radius(work, s, count, seg, d.mode, angles[i]);
+                double rad = radius_at(&work[s], seg, angles[i]);
                 size_t v = (size_t)seg->vertex + (size_t)i;
-                out->positions[3 * v] = (float)(c.x + rad * cos(angles[i]));
-                out->positions[3 * v + 1] = (float)slices->y[s];
-                out->positions[3 * v + 2] = (float)(c.z + rad * sin(angles[i]));
-                link_attr[v] = (float)seg->link;
+                sk_vec3d p = {c.x + rad * cos(angles[i]), slices->y[s], c.z + rad * sin(angles[i])};
+                out->positions[3 * v] = (float)p.x;
+                out->positions[3 * v + 1] = (float)p.y;
+                out->positions[3 * v + 2] = (float)p.z;
+                /* a finger's ring: each vertex belongs to its nearest link */
+                link_attr[v] = (float)(seg->group >= SK_HAND_LINK_COUNT ? sk_hand_nearest_link(links, p, NULL) : seg->link);
             }
         }
     }

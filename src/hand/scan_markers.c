@@ -39,7 +39,7 @@ sk_result sk_hand_markers_place(const sk_hand_scan_target *target, const sk_hand
     /* the palm plane's normal, and which way is radial (toward the thumb: a left hand is
        mirrored) */
     sk_vec3d palmar = {frames->rotation[0].m[0][2], frames->rotation[0].m[1][2], frames->rotation[0].m[2][2]};
-    sk_vec3d hand_axis = sk_v3d_normalize(sk_v3d_sub(links.b[0], links.a[0]));
+    sk_vec3d hand_axis = {frames->rotation[0].m[0][1], frames->rotation[0].m[1][1], frames->rotation[0].m[2][1]};
     sk_vec3d radial = sk_v3d_normalize(sk_v3d_cross(hand_axis, palmar));
     if (sk_v3d_dot(sk_v3d_sub(frames->point[sk_hand_link_end_point(1)], links.a[0]), radial) < 0.0)
         radial = sk_v3d_scale(radial, -1.0);
@@ -48,12 +48,23 @@ sk_result sk_hand_markers_place(const sk_hand_scan_target *target, const sk_hand
         const marker_spec *m = &specs[k];
         sk_vec3d a = links.a[m->link], b = links.b[m->link];
         sk_vec3d start = sk_v3d_add(a, sk_v3d_scale(sk_v3d_sub(b, a), m->fraction));
-        sk_vec3d axis = sk_v3d_normalize(sk_v3d_sub(b, a));
+        /* sideways: across the link's own long axis (its frame's Y), in the palm plane */
+        sk_vec3d axis = {frames->rotation[m->link].m[0][1], frames->rotation[m->link].m[1][1],
+                         frames->rotation[m->link].m[2][1]};
         sk_vec3d side = sk_v3d_normalize(sk_v3d_cross(axis, palmar));
         if (sk_v3d_dot(side, radial) < 0.0) side = sk_v3d_scale(side, -1.0);
         side = sk_v3d_scale(side, (double)m->radial);
-        double t;
-        if (!sk_hand_scan_target_raycast(target, start, side, 0.0, 80.0, &t, NULL))
+        double t = 0.0;
+        bool found = false;
+        /* the first exit from the flesh; with an implicit surface, an exit that leads into
+           more flesh (overlapping parts of the mesh) is passed */
+        while (sk_hand_scan_target_raycast(target, start, side, t + 1e-3, 80.0, &t, NULL)) {
+            found = true;
+            if (!target->sdf || target->sdf(target->sdf_user, sk_v3d_add(start, sk_v3d_scale(side, t + 0.5)), NULL) > 0)
+                break;
+            found = false;
+        }
+        if (!found)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "marker \"%s\": no surface within 80 mm beside link %s (is the skeleton inside the "
                            "mesh, in the same frame and units?)", m->name, sk_hand_link_name(m->link));

@@ -163,3 +163,23 @@ void sk_hand_scan_result_free(sk_hand_scan_result *result)
     }
     memset(result, 0, sizeof *result);
 }
+
+void sk_hand_scan_cast_pose(const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT])
+{
+    static const struct {
+        const char *dof;
+        double deg;
+    } open_hand[] = {
+        {"T.CMC.flex", -10}, {"T.CMC.abd", 10}, {"T.MCP.flex", 5}, {"T.IP.flex", 5},
+        {"I.MCP.flex", 5}, {"I.PIP.flex", 8}, {"I.DIP.flex", 4}, {"I.MCP.abd", 6},
+        {"M.MCP.flex", 5}, {"M.PIP.flex", 8}, {"M.DIP.flex", 4}, {"M.MCP.abd", 0},
+        {"R.MCP.flex", 5}, {"R.PIP.flex", 8}, {"R.DIP.flex", 4}, {"R.MCP.abd", 5},
+        {"L.MCP.flex", 5}, {"L.PIP.flex", 8}, {"L.DIP.flex", 4}, {"L.MCP.abd", 10},
+    };
+    sk_hand_relaxed(skeleton, dofs);
+    for (size_t k = 0; k < sizeof open_hand / sizeof open_hand[0]; k++) {
+        int d = sk_hand_dof_find(open_hand[k].dof);
+        if (d >= 0) dofs[d] = open_hand[k].deg * SK_DEG_TO_RAD;
+    }
+    sk_hand_clamp_to_limits(skeleton, dofs);
+}
