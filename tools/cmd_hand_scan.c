@@ -27,6 +27,8 @@ static const cli_option scan_options[] = {
     {"points", 0, "N", "points per scan line (default 512)", false},
     {"noise", 0, "MM", "depth noise sigma at normal view (default 0.05; 0 = none)", false},
     {"slices", 0, "N", "slice planes across the links (default 50)", false},
+    {"bend", 0, "DOF=DEG", "pose of patches-posed.png, added to the cast's (default: I, M, R, L MCP 40, PIP 60, "
+                           "DIP 30); repeatable", true},
     {"no-pictures", 0, NULL, "write the files only", false},
 };
 
@@ -73,8 +75,52 @@ static int mesh_picture(const sk_mesh *m, const char *title, const char *attr, c
 {
     sk_image img;
     sk_error err = {0};
-    if (sk_hand_draw_mesh_views(m, title, attr, &img, &err) != SK_OK) return fail_error(&err);
+    if (sk_hand_draw_mesh_views(m, title, attr, NULL, 0, &img, &err) != SK_OK) return fail_error(&err);
     int rc = write_png(&img, dir, name);
+    sk_image_free(&img);
+    return rc;
+}
+
+/* patches-posed.png: the patches moved to the cast's pose plus --bend (4.1.5). */
+static int posed_picture(const cli_command *cmd, const cli_args *args, const sk_hand_scan_result *res,
+                         const sk_hand_skeleton *skel, const double *q, const sk_hand_surface *surface, const char *dir)
+{
+    double bent[SK_HAND_DOF_COUNT];
+    memcpy(bent, q, sizeof bent);
+    const char *values[MAX_PINS];
+    int n = cli_get_all(cmd, args, "bend", values, MAX_PINS);
+    if (n == 0) {
+        static const char *const curl[] = {"I.MCP.flex=40", "I.PIP.flex=60", "I.DIP.flex=30", "M.MCP.flex=40",
+                                           "M.PIP.flex=60", "M.DIP.flex=30", "R.MCP.flex=40", "R.PIP.flex=60",
+                                           "R.DIP.flex=30", "L.MCP.flex=40", "L.PIP.flex=60", "L.DIP.flex=30"};
+        n = (int)(sizeof curl / sizeof curl[0]);
+        for (int i = 0; i < n; i++) values[i] = curl[i];
+    }
+    for (int i = 0; i < n; i++) {
+        int dof;
+        double v;
+        int rc = hand_parse_assignment("bend", values[i], &dof, &v);
+        if (rc) return rc;
+        bent[dof] += sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
+    }
+    sk_hand_clamp_to_limits(skel, bent);
+    sk_hand_frames pose;
+    sk_hand_forward(skel, bent, &pose);
+    sk_error err = {0};
+    sk_hand_patch_weights *w = NULL;
+    if (surface) {
+        w = malloc(sizeof *w * 16 * SK_HAND_PATCH_COUNT);
+        if (!w) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+        if (sk_hand_patch_weights_from_surface(surface, res->patches->patch, res->patches->count, w, &err) != SK_OK) {
+            free(w);
+            return fail_error(&err);
+        }
+    }
+    sk_image img;
+    sk_result r = sk_hand_draw_patches_posed(res->patches, &res->frames, &pose, w, &img, &err);
+    free(w);
+    if (r != SK_OK) return fail_error(&err);
+    int rc = write_png(&img, dir, "patches-posed.png");
     sk_image_free(&img);
     return rc;
 }
@@ -189,24 +235,33 @@ static int run_scan(const cli_command *cmd, const cli_args *args)
     d.slices.count = (int)slices;
     d.seed = args->common.has_seed ? args->common.seed : 0;
     const char *input = cli_get(cmd, args, "input");
-    if (!input)
-        return cli_fail(CLI_EXIT_USAGE, "--input FILE is required: the hand surface is not part of this build yet");
     sk_error err = {0};
     sk_mesh mesh = {0};
-    if (sk_mesh_read(&mesh, input, NULL, &err) != SK_OK) return fail_error(&err);
     sk_hand_scan_target *target = NULL;
+    sk_hand_surface *surface = NULL;
+    sk_hand_skeleton cast;
     sk_hand_scan_input in = {.skeleton = &skel, .dofs = q};
-    if (mesh.triangle_count > 0) {
-        sk_hand_scan_target_desc td = {.mesh = &mesh};
-        if (sk_hand_scan_target_create(&target, &td, &err) != SK_OK) {
-            sk_error_prefix(&err, err.result, "%s", input);
-            sk_mesh_free(&mesh);
-            return fail_error(&err);
-        }
+    double t_surface = sk_time_seconds();
+    if (!input) {
+        /* the cast: the hand surface meshed in the pose */
+        if (sk_hand_scan_cast(&skel, q, NULL, &cast, &surface, &target, &err) != SK_OK) return fail_error(&err);
+        in.skeleton = &cast;
         in.target = target;
     } else {
-        in.cloud = &mesh;
+        if (sk_mesh_read(&mesh, input, NULL, &err) != SK_OK) return fail_error(&err);
+        if (mesh.triangle_count > 0) {
+            sk_hand_scan_target_desc td = {.mesh = &mesh};
+            if (sk_hand_scan_target_create(&target, &td, &err) != SK_OK) {
+                sk_error_prefix(&err, err.result, "%s", input);
+                sk_mesh_free(&mesh);
+                return fail_error(&err);
+            }
+            in.target = target;
+        } else {
+            in.cloud = &mesh;
+        }
     }
+    t_surface = sk_time_seconds() - t_surface;
     if (sk_make_dirs(dir, &err) != SK_OK) rc = fail_error(&err);
     sk_hand_scan_result res;
     sk_progress_bar bar;
@@ -215,20 +270,29 @@ static int run_scan(const cli_command *cmd, const cli_args *args)
         sk_result r = sk_hand_scan_run(&in, &d, &res, sk_progress_bar_sink(&bar), &err);
         sk_progress_bar_end(&bar);
         if (r != SK_OK) {
-            sk_error_prefix(&err, err.result, "%s", input);
+            if (input) sk_error_prefix(&err, err.result, "%s", input);
             rc = fail_error(&err);
         }
     }
     sk_hand_scan_target_destroy(target);
     sk_mesh_free(&mesh);
-    if (rc) return rc;
+    if (rc) {
+        sk_hand_surface_destroy(surface);
+        return rc;
+    }
     sk_mesh patch_mesh = {0};
     rc = tessellate(&res, &patch_mesh);
     if (!rc) rc = write_files(&res, &patch_mesh, dir);
     if (!rc && !cli_has(cmd, args, "no-pictures")) rc = write_pictures(&res, &patch_mesh, dir);
-    if (!rc && !args->common.quiet) print_summary(&res);
+    if (!rc && !cli_has(cmd, args, "no-pictures"))
+        rc = posed_picture(cmd, args, &res, in.skeleton, q, surface, dir);
+    if (!rc && !args->common.quiet) {
+        if (!input) printf("hand surface (the cast) meshed in %.2f s\n", t_surface);
+        print_summary(&res);
+    }
     sk_mesh_free(&patch_mesh);
     sk_hand_scan_result_free(&res);
+    sk_hand_surface_destroy(surface);
     return rc;
 }
 
@@ -250,7 +314,9 @@ const cli_command cmd_hand_scan = {
         "The skeleton's pose in the data is the cast's open hand, changed with --pin.\n"
         "Writes into DIR: table-4.1.txt/.json, registration.json, patches.json (control points),\n"
         "patches.obj, polygons.obj, polygons-thesis.obj, and the pictures scan-palm.png,\n"
-        "scan-back.png, registered.png, slices.png, polygons.png, polygons-thesis.png, patches.png.",
+        "scan-back.png, registered.png, slices.png, polygons.png, polygons-thesis.png, patches.png,\n"
+        "patches-posed.png (the control points moving with their links: rigid, and with the\n"
+        "surface's smooth weights).",
     .examples = "  shitsukan hand scan --input hand.obj -o scan\n"
                 "  shitsukan hand scan --input cloud.ply --pin I.MCP.flex=20 -o scan --no-pictures",
     .options = scan_options,

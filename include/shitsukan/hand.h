@@ -775,6 +775,17 @@ typedef struct sk_hand_scan_target sk_hand_scan_target;
 sk_result sk_hand_scan_target_create(sk_hand_scan_target **out, const sk_hand_scan_target_desc *desc,
                                      sk_error *err);
 void sk_hand_scan_target_destroy(sk_hand_scan_target *target);
+/* The hand surface as a scan target: its mesh, refined onto its implicit field. The
+ * surface must outlive the target. */
+sk_result sk_hand_scan_target_from_surface(sk_hand_scan_target **out, const sk_hand_surface *surface,
+                                           sk_error *err);
+/* The plaster cast of 4.1.1: the hand surface meshed around the skeleton in the pose
+ * `dofs` (a copy of the skeleton whose relaxed posture is that pose, written to
+ * `cast_skeleton`: the pose the patches are fitted in and move from), and its scan
+ * target. Free with sk_hand_scan_target_destroy, then sk_hand_surface_destroy. */
+sk_result sk_hand_scan_cast(const sk_hand_skeleton *skeleton, const double dofs[SK_HAND_DOF_COUNT],
+                            const sk_hand_surface_desc *surface_desc, sk_hand_skeleton *cast_skeleton,
+                            sk_hand_surface **surface, sk_hand_scan_target **target, sk_error *err);
 /* Distance (mm, >= 0) from p to the true surface: |sdf| refined by one Newton step along
  * the gradient when an implicit is given, else the distance to the nearest triangle. */
 double sk_hand_scan_target_distance(const sk_hand_scan_target *target, sk_vec3d p);
@@ -1144,6 +1155,11 @@ typedef struct sk_hand_patch_weights {
 sk_result sk_hand_patches_pose(const sk_hand_patch *patches, int count, const sk_hand_frames *rest,
                                const sk_hand_frames *pose, const sk_hand_patch_weights *weights,
                                sk_hand_patch *out, sk_error *err);
+/* Smooth weights of every control point (count * 16, in the order above): those of the
+ * surface vertex nearest to the patch point the control point shapes most, Q(i/3, j/3).
+ * The surface's bind pose must be the pose the patches were fitted in (sk_hand_scan_cast). */
+sk_result sk_hand_patch_weights_from_surface(const sk_hand_surface *surface, const sk_hand_patch *patches, int count,
+                                             sk_hand_patch_weights *out, sk_error *err);
 
 /* ---------------------------------------------------------------- pipeline */
 typedef struct sk_hand_scan_desc {
@@ -1226,11 +1242,19 @@ sk_result sk_hand_draw_registered(const sk_hand_scan_result *result, sk_image *o
  * link's colour, and three cross-sections (a finger level, the knuckles, the palm) drawn
  * flat with their link centres. */
 sk_result sk_hand_draw_slices(const sk_hand_scan_result *result, sk_image *out, sk_error *err);
-/* A flat-shaded mesh (polygons, tessellated patches) from the back and from the palm;
- * `colors` (may be NULL): a per-vertex attribute name whose integer values pick palette
- * colours (e.g. "link", "patch"). */
+/* A flat-shaded mesh (polygons, tessellated patches) in orthographic views side by side
+ * (view_count 0 = from the back and from the palm; else 1..4 of `views`, DEFAULT entries
+ * meaning dorsal); `color_attribute` (may be NULL): a per-vertex attribute whose integer
+ * values pick the colours ("link": each link's finger colour; else one colour each, e.g.
+ * "patch"). */
 sk_result sk_hand_draw_mesh_views(const sk_mesh *mesh, const char *title, const char *color_attribute,
-                                  sk_image *out, sk_error *err);
+                                  const sk_hand_view *views, int view_count, sk_image *out, sk_error *err);
+/* The fitted patches moved to a pose (4.1.5) and drawn from the thumb side and the back:
+ * rigidly with their links (the thesis) and, if `weights` is given, with the smooth
+ * weights, side by side. */
+sk_result sk_hand_draw_patches_posed(const sk_hand_patch_set *set, const sk_hand_frames *rest,
+                                     const sk_hand_frames *pose, const sk_hand_patch_weights *weights,
+                                     sk_image *out, sk_error *err);
 
 #ifdef __cplusplus
 }

@@ -65,7 +65,7 @@ sk_result sk_hand_draw_range_scan(const sk_hand_range_scan *scan, int scale, sk_
         measured += isfinite(scan->depth[k]) && scan->depth[k] >= scan->table_threshold_mm;
         unmeasured += !isfinite(scan->depth[k]);
     }
-    snprintf(title, sizeof title, "%s scan: %d lines x %d points, %zu on the cast, %zu not seen (red)",
+    snprintf(title, sizeof title, "%s scan, %d x %d: %zu on the cast, %zu unseen (red)",
              scan->side == SK_HAND_SCAN_BACK ? "back" : "palm", L, P, measured, unmeasured);
     const sk_image *tiles[1] = {&img};
     sk_contact_sheet_desc d = {.columns = 1, .padding = 6, .text_scale = 1, .title_scale = 2, .title = title};
@@ -111,8 +111,17 @@ static sk_result cloud_panel(const sk_hand_scan_result *res, view_dir vd, int w,
     sk_result r = sk_hand__view_create(&v, w, h, vd.right, vd.up, lo, hi, 24, k_white, err);
     if (r != SK_OK) return r;
     sk_color palm = sk_palette(0), back = sk_palette(4);
-    for (size_t i = 0; i < res->cloud.count; i++)
-        sk_hand__view_point(&v, res->cloud.position[i], 0.55f, res->cloud.side[i] == SK_HAND_SCAN_BACK ? back : palm);
+    /* nearer points brighter: a depth cue for points without normals */
+    double n0 = INFINITY, n1 = -INFINITY;
+    for (int c = 0; c < 8; c++) {
+        double z = sk_v3d_dot(sk_v3d(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z), v.toward);
+        n0 = fmin(n0, z), n1 = fmax(n1, z);
+    }
+    for (size_t i = 0; i < res->cloud.count; i++) {
+        sk_color c = res->cloud.side[i] == SK_HAND_SCAN_BACK ? back : palm;
+        float k = (float)(0.45 + 0.55 * (sk_v3d_dot(res->cloud.position[i], v.toward) - n0) / fmax(n1 - n0, 1e-9));
+        sk_hand__view_point(&v, res->cloud.position[i], 0.55f, sk_rgb(c.r * k, c.g * k, c.b * k));
+    }
     r = sk_hand__view_finish(&v, out, err);
     if (r == SK_OK && res->scanned) {
         /* the markers where the palm scan found them, with their residuals */
@@ -141,7 +150,7 @@ sk_result sk_hand_draw_registered(const sk_hand_scan_result *res, sk_image *out,
     if (r == SK_OK) r = cloud_panel(res, k_radial, 360, 640, &panels[1], err);
     char title[200];
     if (res->scanned)
-        snprintf(title, sizeof title, "registered: palm scan (blue), back scan (orange); marker residuals in mm, rms %.3f",
+        snprintf(title, sizeof title, "palm scan (blue) + back scan (orange), marker residuals mm (rms %.3f)",
                  res->registration.rms_mm);
     else
         snprintf(title, sizeof title, "input point cloud: palm side (blue), back side (orange), %zu points", res->cloud.count);
@@ -247,8 +256,8 @@ sk_result sk_hand_draw_slices(const sk_hand_scan_result *res, sk_image *out, sk_
         r = sk_contact_sheet(tiles, NULL, 3, &d, col, err);
     }
     char title[200];
-    snprintf(title, sizeof title, "%d slices across the links, points given to the nearest link; right: resampled "
-                                  "(red: each slice alone, black: with neighbours)", sl->count);
+    snprintf(title, sizeof title, "%d slices, points by nearest link; resampled: red slice alone, black with "
+                                  "neighbours", sl->count);
     if (r == SK_OK) {
         const sk_image *tiles[2] = {&panels[0], col};
         r = sk_hand__panels(tiles, 2, title, out, err);
@@ -259,6 +268,17 @@ sk_result sk_hand_draw_slices(const sk_hand_scan_result *res, sk_image *out, sk_
 }
 
 /* ------------------------------------------------------------ meshes */
+
+static view_dir view_of(sk_hand_view v)
+{
+    static const view_dir ulnar = {{0, 0, 1}, {0, 1, 0}, "from the little-finger side"};
+    switch (v) {
+    case SK_HAND_VIEW_PALMAR: return k_palmar;
+    case SK_HAND_VIEW_RADIAL: return k_radial;
+    case SK_HAND_VIEW_ULNAR: return ulnar;
+    default: return k_dorsal;
+    }
+}
 
 static sk_result mesh_panel(const sk_mesh *m, const sk_mesh_attribute *attr, bool link_colors, view_dir vd, int w,
                             int h, sk_image *out, sk_error *err)
@@ -285,19 +305,72 @@ static sk_result mesh_panel(const sk_mesh *m, const sk_mesh_attribute *attr, boo
     return r;
 }
 
-sk_result sk_hand_draw_mesh_views(const sk_mesh *mesh, const char *title, const char *color_attribute, sk_image *out,
-                                  sk_error *err)
+sk_result sk_hand_draw_mesh_views(const sk_mesh *mesh, const char *title, const char *color_attribute,
+                                  const sk_hand_view *views, int view_count, sk_image *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
     if (!mesh || mesh->triangle_count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no triangles to draw");
+    sk_result r = sk_check_range_i(err, "view_count", view_count, 0, 4);
+    if (r != SK_OK) return r;
+    static const sk_hand_view pair[2] = {SK_HAND_VIEW_DORSAL, SK_HAND_VIEW_PALMAR};
+    if (view_count == 0) views = pair, view_count = 2;
     const sk_mesh_attribute *attr = color_attribute ? sk_mesh_find_attribute(mesh, color_attribute) : NULL;
     bool link_colors = color_attribute && strcmp(color_attribute, "link") == 0;
-    sk_image panels[2] = {{0}};
-    sk_result r = mesh_panel(mesh, attr, link_colors, k_dorsal, 480, 600, &panels[0], err);
-    if (r == SK_OK) r = mesh_panel(mesh, attr, link_colors, k_palmar, 480, 600, &panels[1], err);
-    const sk_image *tiles[2] = {&panels[0], &panels[1]};
-    if (r == SK_OK) r = sk_hand__panels(tiles, 2, title, out, err);
-    sk_image_free(&panels[0]);
-    sk_image_free(&panels[1]);
+    sk_image panels[4] = {{0}};
+    const sk_image *tiles[4];
+    for (int k = 0; k < view_count && r == SK_OK; k++) {
+        view_dir vd = view_of(views[k]);
+        bool side_view = views[k] == SK_HAND_VIEW_RADIAL || views[k] == SK_HAND_VIEW_ULNAR;
+        r = mesh_panel(mesh, attr, link_colors, vd, side_view ? 360 : 480, 600, &panels[k], err);
+        tiles[k] = &panels[k];
+    }
+    if (r == SK_OK) r = sk_hand__panels(tiles, view_count, title, out, err);
+    for (int k = 0; k < 4; k++) sk_image_free(&panels[k]);
+    return r;
+}
+
+/* The fitted patches moved to `pose` and tessellated. */
+static sk_result posed_mesh(const sk_hand_patch_set *set, const sk_hand_frames *rest, const sk_hand_frames *pose,
+                            const sk_hand_patch_weights *weights, sk_mesh *out, sk_error *err)
+{
+    sk_hand_patch moved[SK_HAND_PATCH_COUNT];
+    sk_hand_patch_weights w[16 * SK_HAND_PATCH_COUNT];
+    int n = 0;
+    for (int k = 0; k < set->count; k++) {
+        if (!set->fitted[k]) continue;
+        moved[n] = set->patch[k];
+        if (weights) memcpy(&w[16 * n], &weights[16 * k], sizeof *w * 16);
+        n++;
+    }
+    if (n == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no fitted patch to draw");
+    sk_result r = sk_hand_patches_pose(moved, n, rest, pose, weights ? w : NULL, moved, err);
+    if (r == SK_OK) r = sk_hand_patches_tessellate(moved, n, 16, out, err);
+    return r;
+}
+
+sk_result sk_hand_draw_patches_posed(const sk_hand_patch_set *set, const sk_hand_frames *rest,
+                                     const sk_hand_frames *pose, const sk_hand_patch_weights *weights,
+                                     sk_image *out, sk_error *err)
+{
+    memset(out, 0, sizeof *out);
+    static const sk_hand_view views[2] = {SK_HAND_VIEW_RADIAL, SK_HAND_VIEW_DORSAL};
+    sk_image sheets[2] = {{0}};
+    int count = weights ? 2 : 1;
+    sk_result r = SK_OK;
+    for (int k = 0; k < count && r == SK_OK; k++) {
+        sk_mesh m = {0};
+        r = posed_mesh(set, rest, pose, k ? weights : NULL, &m, err);
+        if (r == SK_OK)
+            r = sk_hand_draw_mesh_views(&m, k ? "control points with smooth weights" : "control points rigid with their links (thesis)",
+                                        "patch", views, 2, &sheets[k], err);
+        sk_mesh_free(&m);
+    }
+    const sk_image *tiles[2] = {&sheets[0], &sheets[1]};
+    if (r == SK_OK) {
+        sk_contact_sheet_desc d = {.columns = count, .padding = 4};
+        r = sk_contact_sheet(tiles, NULL, count, &d, out, err);
+    }
+    sk_image_free(&sheets[0]);
+    sk_image_free(&sheets[1]);
     return r;
 }

@@ -149,6 +149,7 @@ sk_color sk_hand__link_color(int link)
 
 sk_result sk_hand__panels(const sk_image *const *panels, int count, const char *title, sk_image *out, sk_error *err)
 {
-    sk_contact_sheet_desc d = {.columns = count, .padding = 6, .text_scale = 2, .title = title, .tile_border = 1};
+    sk_contact_sheet_desc d = {.columns = count, .padding = 6, .text_scale = 1, .title_scale = 2, .title = title,
+                               .tile_border = 1};
     return sk_contact_sheet(panels, NULL, count, &d, out, err);
 }

@@ -96,10 +96,9 @@ static void initial_parameters(const sk_hand_cloud *cloud, const member *members
         size_t len = b - a;
         for (size_t k = 0; k < len; k++) row_pts[k] = cloud->position[members[idx[scratch[a + k].index]].point];
         sk_hand_chord_parameters(row_pts, len, row_u);
-        /* the row's share of the region's angular range, chord length within it */
-        double f0 = (phi_hi + scratch[a].phi) / span, f1 = (phi_hi + scratch[b - 1].phi) / span;
-        for (size_t k = 0; k < len; k++)
-            u[scratch[a + k].index] = sk_clampd(len == 1 ? f0 : f0 + row_u[k] * (f1 - f0), 0.0, 1.0);
+        /* chord length along the row, 0 to 1 across it (4.4); a lone point sits where it is */
+        double f0 = (phi_hi + scratch[a].phi) / span;
+        for (size_t k = 0; k < len; k++) u[scratch[a + k].index] = len == 1 ? sk_clampd(f0, 0.0, 1.0) : row_u[k];
         a = b;
     }
 }

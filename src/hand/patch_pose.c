@@ -71,3 +71,34 @@ sk_result sk_hand_patches_pose(const sk_hand_patch *patches, int count, const sk
     }
     return SK_OK;
 }
+
+sk_result sk_hand_patch_weights_from_surface(const sk_hand_surface *surface, const sk_hand_patch *patches, int count,
+                                             sk_hand_patch_weights *out, sk_error *err)
+{
+    if (count < 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch count %d is negative", count);
+    const sk_mesh *m = sk_hand_surface_mesh(surface);
+    const uint16_t *links;
+    const float *weights;
+    sk_hand_surface_weights(surface, SK_HAND_WEIGHTS_SMOOTH, &links, &weights);
+    if (m->vertex_count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the surface has no vertices");
+#pragma omp parallel for schedule(static)
+    for (int c = 0; c < 16 * count; c++) {
+        int k = c / 16, i = (c % 16) / 4, j = c % 4;
+        /* the patch point the control point mostly shapes (its Greville point) */
+        sk_vec3d q = sk_hand_patch_eval(&patches[k], i / 3.0, j / 3.0, NULL, NULL);
+        size_t best = 0;
+        double best_d2 = INFINITY;
+        for (size_t v = 0; v < m->vertex_count; v++) {
+            const float *p = m->positions + 3 * v;
+            double d2 = sk_hand__dist2(q, sk_v3d(p[0], p[1], p[2]));
+            if (d2 < best_d2) best_d2 = d2, best = v;
+        }
+        sk_hand_patch_weights *w = &out[c];
+        for (int s = 0; s < SK_HAND_PATCH_MAX_INFLUENCES; s++) {
+            float wt = weights[4 * best + (size_t)s];
+            w->link[s] = wt > 0.0f ? (int16_t)links[4 * best + (size_t)s] : -1;
+            w->weight[s] = wt > 0.0f ? wt : 0.0f;
+        }
+    }
+    return SK_OK;
+}

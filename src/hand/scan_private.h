@@ -73,8 +73,9 @@ struct sk_hand_scan_target {
     double lo[3], hi[3]; /* bounds of the vertices */
 };
 
-/* Refines a ray's hit on the mesh onto the implicit surface (Newton along the ray); false
- * when there is no implicit or it does not converge near the mesh hit. */
+/* Refines a ray's hit on the mesh onto the implicit surface (secant steps along the ray);
+ * false when there is no implicit or it does not converge near the mesh hit. `normal` is
+ * unused (may be NULL). */
 bool sk_hand__target_refine(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d, double t_mesh,
                             double *t, sk_vec3d *normal);
 

@@ -156,12 +156,10 @@ static void scan_sample(const scan_setup *s, int i, int j, float *depth, float *
         n_h = nf;
         /* occlusion is tested from the mesh's own hit, just off its face */
         occ_origin = sk_v3d_add(sk_v3d_add(o, sk_v3d_scale(s->down_h, hit.t)), sk_v3d_scale(nf, 1e-4));
+        /* the hit on the implicit surface, if there is one; the facet's normal is close
+           enough for the incidence angles */
         double t_fine;
-        sk_vec3d n_fine;
-        if (sk_hand__target_refine(s->target, o, s->down_h, hit.t, &t_fine, &n_fine)) {
-            t_hit = t_fine;
-            n_h = n_fine;
-        }
+        if (sk_hand__target_refine(s->target, o, s->down_h, hit.t, &t_fine, NULL)) t_hit = t_fine;
     }
     if (s->markers)
         for (int k = 0; k < s->markers->count; k++) {

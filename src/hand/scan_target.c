@@ -78,24 +78,61 @@ bool sk_hand_scan_target_raycast(const sk_hand_scan_target *target, sk_vec3d o, 
 bool sk_hand__target_refine(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d, double t_mesh,
                             double *t, sk_vec3d *normal)
 {
+    (void)normal;
     if (!target->sdf) return false;
-    double tt = t_mesh, dl = sk_v3d_length(d);
-    sk_vec3d g = {0, 0, 0};
-    for (int k = 0; k < 8; k++) {
-        double f = target->sdf(target->sdf_user, sk_v3d_add(o, sk_v3d_scale(d, tt)), &g);
-        double slope = sk_v3d_dot(g, d);
-        if (fabs(slope) < 1e-9 * dl) return false; /* the ray grazes the implicit surface */
-        double step = f / slope;
-        tt -= step;
-        if (fabs(tt - t_mesh) * dl > 2.0) return false; /* wandered off to another sheet */
-        if (fabs(step) * dl < 1e-9) {
-            *t = tt;
-            if (normal) {
-                sk_vec3d n = sk_v3d_normalize(g);
-                *normal = sk_v3d_dot(n, d) > 0.0 ? sk_v3d_scale(n, -1.0) : n;
-            }
+    /* secant steps on f(o + t d) from the mesh's hit: the field's value only, no gradient
+       (a field whose gradient is itself found by differences costs six values more) */
+    double dl = sk_v3d_length(d), h = 0.02 / dl;
+    double t0 = t_mesh, f0 = target->sdf(target->sdf_user, sk_v3d_add(o, sk_v3d_scale(d, t0)), NULL);
+    double t1 = t_mesh + h, f1 = target->sdf(target->sdf_user, sk_v3d_add(o, sk_v3d_scale(d, t1)), NULL);
+    for (int k = 0; k < 10; k++) {
+        if (fabs(f0) < 1e-7) { /* far below the depth step and the surface's own accuracy */
+            *t = t0;
+            return true;
+        }
+        if (f1 == f0) return false; /* the ray grazes the implicit surface */
+        double t2 = t1 - f1 * (t1 - t0) / (f1 - f0);
+        if (fabs(t2 - t_mesh) * dl > 2.0) return false; /* wandered off to another sheet */
+        t0 = t1, f0 = f1;
+        t1 = t2, f1 = target->sdf(target->sdf_user, sk_v3d_add(o, sk_v3d_scale(d, t1)), NULL);
+        if (fabs(t1 - t0) * dl < 1e-6) {
+            *t = t1;
             return true;
         }
     }
     return false;
+}
+
+static double surface_sdf(void *user, sk_vec3d p, sk_vec3d *gradient)
+{
+    const sk_hand_surface *s = user;
+    if (gradient) *gradient = sk_hand_surface_field_gradient(s, p);
+    return sk_hand_surface_field(s, p);
+}
+
+sk_result sk_hand_scan_target_from_surface(sk_hand_scan_target **out, const sk_hand_surface *surface, sk_error *err)
+{
+    sk_hand_scan_target_desc d = {.mesh = sk_hand_surface_mesh(surface), .sdf = surface_sdf,
+                                  .sdf_user = (void *)surface};
+    return sk_hand_scan_target_create(out, &d, err);
+}
+
+sk_result sk_hand_scan_cast(const sk_hand_skeleton *skeleton, const double dofs[SK_HAND_DOF_COUNT],
+                            const sk_hand_surface_desc *surface_desc, sk_hand_skeleton *cast_skeleton,
+                            sk_hand_surface **surface, sk_hand_scan_target **target, sk_error *err)
+{
+    *surface = NULL;
+    *target = NULL;
+    for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
+        if (!isfinite(dofs[i])) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pose: %s is not a finite number", sk_hand_dof(i)->name);
+    /* the surface is meshed around its skeleton's relaxed posture: make the cast's pose it */
+    *cast_skeleton = *skeleton;
+    for (int i = 0; i < SK_HAND_DOF_COUNT; i++) cast_skeleton->dof[i].relaxed = dofs[i];
+    sk_result r = sk_hand_surface_create(surface, cast_skeleton, surface_desc, err);
+    if (r == SK_OK) r = sk_hand_scan_target_from_surface(target, *surface, err);
+    if (r != SK_OK) {
+        sk_hand_surface_destroy(*surface);
+        *surface = NULL;
+    }
+    return r;
 }
