@@ -150,11 +150,14 @@ static int write_pictures(const sk_hand_scan_result *res, const sk_mesh *patch_m
     return rc;
 }
 
-static int write_files(const sk_hand_scan_result *res, const sk_mesh *patch_mesh, const char *dir)
+static int write_files(const sk_hand_scan_result *res, const sk_mesh *patch_mesh, const sk_hand_surface *surface,
+                       const char *dir)
 {
     char path[PATH_MAX];
     sk_error err = {0};
 #define PATH(name) (snprintf(path, sizeof path, "%s/%s", dir, name), path)
+    if (sk_hand_cloud_write_ply(&res->cloud, PATH("cloud.ply"), &err) != SK_OK) return fail_error(&err);
+    if (surface && sk_mesh_write(sk_hand_surface_mesh(surface), PATH("cast.obj"), &err) != SK_OK) return fail_error(&err);
     if (sk_hand_table41_write_json(&res->table, PATH("table-4.1.json"), &err) != SK_OK ||
         sk_hand_table41_write_text(&res->table, PATH("table-4.1.txt"), &err) != SK_OK ||
         sk_hand_patches_write_json(res->patches, PATH("patches.json"), &err) != SK_OK ||
@@ -282,7 +285,7 @@ static int run_scan(const cli_command *cmd, const cli_args *args)
     }
     sk_mesh patch_mesh = {0};
     rc = tessellate(&res, &patch_mesh);
-    if (!rc) rc = write_files(&res, &patch_mesh, dir);
+    if (!rc) rc = write_files(&res, &patch_mesh, surface, dir);
     if (!rc && !cli_has(cmd, args, "no-pictures")) rc = write_pictures(&res, &patch_mesh, dir);
     if (!rc && !cli_has(cmd, args, "no-pictures"))
         rc = posed_picture(cmd, args, &res, in.skeleton, q, surface, dir);
@@ -313,7 +316,8 @@ const cli_command cmd_hand_scan = {
         "and against the true surface. A point cloud as --input is taken as the registered data.\n"
         "The skeleton's pose in the data is the cast's open hand, changed with --pin.\n"
         "Writes into DIR: table-4.1.txt/.json, registration.json, patches.json (control points),\n"
-        "patches.obj, polygons.obj, polygons-thesis.obj, and the pictures scan-palm.png,\n"
+        "patches.obj, polygons.obj, polygons-thesis.obj, cloud.ply (the registered data, with\n"
+        "its scan side), cast.obj (the scanned hand surface), and the pictures scan-palm.png,\n"
         "scan-back.png, registered.png, slices.png, polygons.png, polygons-thesis.png, patches.png,\n"
         "patches-posed.png (the control points moving with their links: rigid, and with the\n"
         "surface's smooth weights).",

@@ -928,8 +928,9 @@ sk_result sk_hand_cloud_append_scan(sk_hand_cloud *cloud, const sk_hand_range_sc
                                     const sk_hand_markers *markers, const sk_hand_rigid *to_hand,
                                     const sk_hand_rigid *truth_to_hand, sk_error *err);
 /* A user's point cloud (mesh vertices, triangles ignored) in the hand frame. The side of
- * each point: from its normal if the file has normals (palm where the normal has a palmar
- * component in its link's frame), else from its place in its link's frame. */
+ * each point: from an attribute "side" (0 palm, 1 back) if there is one, else from its
+ * normal if there are normals (palm where it points palmar, along the carpus frame's Z),
+ * else from which side of its nearest link's axis it lies on. */
 sk_result sk_hand_cloud_from_points(sk_hand_cloud *cloud, const sk_mesh *points, const sk_hand_frames *frames,
                                     sk_error *err);
 
@@ -1168,7 +1169,8 @@ typedef struct sk_hand_scan_desc {
     sk_hand_resample_desc resample;     /* its mode is ignored: both meshes are made */
     sk_hand_patch_fit_desc fit;
     int facet_splits;                   /* Table 4.1's facet grid; 0 = 100; range [1, 1024] */
-    double marker_radius_mm;            /* 0 = 2.5 */
+    double marker_radius_mm;            /* 0 = 2.5, or 3 sample spacings if the scan is
+                                           coarser than 0.83 mm; range [0.5, 10] */
     uint64_t seed;                      /* scanner noise */
 } sk_hand_scan_desc;
 
@@ -1221,6 +1223,9 @@ sk_result sk_hand_table41_write_text(const sk_hand_table41 *table, const char *p
 /* The registration: per-marker centres and residuals, the estimated and true transforms. */
 sk_result sk_hand_registration_write_json(const sk_hand_registration *reg, const sk_hand_markers *markers,
                                           const char *path, sk_error *err);
+/* The cloud as a binary PLY point cloud: x y z, a float "side" (0 palm, 1 back) and, when
+ * the truth is known, the true surface point of each sample as "truth_0" .. "truth_2". */
+sk_result sk_hand_cloud_write_ply(const sk_hand_cloud *cloud, const char *path, sk_error *err);
 /* Control points (16 per patch, mm) with each patch's link, side, point count and errors. */
 sk_result sk_hand_patches_write_json(const sk_hand_patch_set *set, const char *path, sk_error *err);
 /* The patches as one mesh: each tessellated into n x n quads (n 0 = 16; range [1, 256]),

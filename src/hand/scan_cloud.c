@@ -92,12 +92,17 @@ sk_result sk_hand_cloud_from_points(sk_hand_cloud *cloud, const sk_mesh *points,
     sk_hand_link_geometry links;
     sk_hand_link_geometry_from_frames(frames, &links);
     sk_vec3d palmar = {frames->rotation[0].m[0][2], frames->rotation[0].m[1][2], frames->rotation[0].m[2][2]};
+    /* a cloud written by sk_hand_cloud_write_ply says its sides */
+    const sk_mesh_attribute *given = sk_mesh_find_attribute(points, "side");
+    if (given && given->components != 1) given = NULL;
     for (size_t i = 0; i < points->vertex_count; i++) {
         const float *q = points->positions + 3 * i;
         sk_vec3d p = sk_v3d(q[0], q[1], q[2]);
         cloud->position[i] = p;
         double toward;
-        if (points->normals) {
+        if (given) {
+            toward = given->data[i] < 0.5f ? 1.0 : -1.0;
+        } else if (points->normals) {
             const float *n = points->normals + 3 * i;
             toward = sk_v3d_dot(sk_v3d(n[0], n[1], n[2]), palmar);
         } else {

@@ -248,3 +248,28 @@ sk_result sk_hand_patches_tessellate(const sk_hand_patch *patches, int count, in
     }
     return SK_OK;
 }
+
+sk_result sk_hand_cloud_write_ply(const sk_hand_cloud *cloud, const char *path, sk_error *err)
+{
+    sk_mesh m;
+    sk_result r = sk_mesh_create(&m, cloud->count, 0, 0, err);
+    float *side = NULL, *truth = NULL;
+    if (r == SK_OK) r = sk_mesh_add_attribute(&m, "side", 1, &side, err);
+    if (r == SK_OK && cloud->true_position) r = sk_mesh_add_attribute(&m, "truth", 3, &truth, err);
+    if (r == SK_OK) {
+        for (size_t i = 0; i < cloud->count; i++) {
+            m.positions[3 * i] = (float)cloud->position[i].x;
+            m.positions[3 * i + 1] = (float)cloud->position[i].y;
+            m.positions[3 * i + 2] = (float)cloud->position[i].z;
+            side[i] = cloud->side[i];
+            if (truth) {
+                truth[3 * i] = (float)cloud->true_position[i].x;
+                truth[3 * i + 1] = (float)cloud->true_position[i].y;
+                truth[3 * i + 2] = (float)cloud->true_position[i].z;
+            }
+        }
+        r = sk_mesh_write_ply(&m, path, err);
+    }
+    sk_mesh_free(&m);
+    return r;
+}

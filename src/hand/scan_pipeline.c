@@ -38,7 +38,11 @@ static sk_result scan_and_merge(const sk_hand_scan_input *in, const sk_hand_scan
                                 const sk_progress *progress, sk_error *err)
 {
     double t0 = sk_time_seconds();
-    sk_result r = sk_hand_markers_place(in->target, &out->frames, d->marker_radius_mm, &out->markers, err);
+    /* bumps of 2.5 mm, larger if the scanner samples more coarsely than 1/3 of that */
+    sk_hand_scanner_desc sr = sk_hand_scanner_desc_resolved(&d->scanner);
+    double radius = d->marker_radius_mm;
+    if (radius == 0) radius = fmax(2.5, 3.0 * fmax(sr.size_x_mm / sr.lines, sr.size_y_mm / sr.points));
+    sk_result r = sk_hand_markers_place(in->target, &out->frames, radius, &out->markers, err);
     sk_hand_rigid placement[SK_HAND_SCAN_SIDE_COUNT];
     if (r == SK_OK) r = sk_hand_scan_placements(in->target, &d->scanner, placement, err);
     for (int side = 0; side < SK_HAND_SCAN_SIDE_COUNT && r == SK_OK; side++) {
