@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "shitsukan/hand.h"
+#include "shitsukan/io.h"
 #include "test_support.h"
 
 /* A curved, non-planar patch (a saddle over a bent sheet), mm. */
@@ -242,6 +243,135 @@ static void test_facet_distance_is_the_nearest_facet(void **state)
     assert_int_equal(sk_hand_patch_facet_distances(&p, 5000, q, K, u, v, on, &err), SK_ERROR_INVALID_ARGUMENT);
 }
 
+
+/* ------------------------------------------------------------ with their links */
+
+static void two_poses(sk_hand_frames *rest, sk_hand_frames *pose)
+{
+    sk_hand_skeleton skel;
+    sk_hand_skeleton_desc sd = {0};
+    sk_error err;
+    assert_int_equal(sk_hand_skeleton_init(&skel, &sd, &err), SK_OK);
+    double q[SK_HAND_DOF_COUNT];
+    sk_hand_relaxed(&skel, q);
+    sk_hand_forward(&skel, q, rest);
+    q[sk_hand_dof_find("I.MCP.flex")] += 0.6;
+    q[sk_hand_dof_find("I.PIP.flex")] += 0.9;
+    q[sk_hand_dof_find("wrist.roll")] += 0.3;
+    sk_hand_forward(&skel, q, pose);
+}
+
+static void test_control_points_move_with_their_links(void **state)
+{
+    (void)state;
+    sk_hand_frames rest, pose;
+    two_poses(&rest, &pose);
+    sk_hand_patch p = reference_patch(), moved, same;
+    p.link = 6; /* the index middle phalanx */
+    sk_error err;
+    /* at rest nothing moves */
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &rest, NULL, &same, &err), SK_OK);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) assert_true(sk_v3d_length(sk_v3d_sub(same.p[i][j], p.p[i][j])) < 1e-9);
+    /* rigidly: distances kept, and the link's base joint carries the patch along */
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, NULL, &moved, &err), SK_OK);
+    for (int a = 0; a < 16; a++)
+        for (int b = 0; b < 16; b++) {
+            double d0 = sk_v3d_length(sk_v3d_sub(p.p[a / 4][a % 4], p.p[b / 4][b % 4]));
+            double d1 = sk_v3d_length(sk_v3d_sub(moved.p[a / 4][a % 4], moved.p[b / 4][b % 4]));
+            assert_true(fabs(d0 - d1) < 1e-9);
+        }
+    int base = sk_hand_link_point(6);
+    sk_vec3d rel0 = sk_v3d_sub(p.p[0][0], rest.point[base]), rel1 = sk_v3d_sub(moved.p[0][0], pose.point[base]);
+    /* the same point in the link's own frame before and after */
+    sk_vec3d l0 = sk_m3d_apply(sk_m3d_transpose(rest.rotation[6]), rel0);
+    sk_vec3d l1 = sk_m3d_apply(sk_m3d_transpose(pose.rotation[6]), rel1);
+    assert_true(sk_v3d_length(sk_v3d_sub(l0, l1)) < 1e-9);
+    /* all weight on the patch's own link is the rigid motion; half on two links is the
+       mean of the two rigid motions */
+    sk_hand_patch_weights w[16];
+    for (int c = 0; c < 16; c++) w[c] = (sk_hand_patch_weights){{6, -1, -1, -1}, {1, 0, 0, 0}};
+    sk_hand_patch blend;
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err), SK_OK);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) assert_true(sk_v3d_length(sk_v3d_sub(blend.p[i][j], moved.p[i][j])) < 1e-9);
+    sk_hand_patch other = p, moved_other;
+    other.link = 5;
+    assert_int_equal(sk_hand_patches_pose(&other, 1, &rest, &pose, NULL, &moved_other, &err), SK_OK);
+    for (int c = 0; c < 16; c++) w[c] = (sk_hand_patch_weights){{6, 5, -1, -1}, {0.5f, 0.5f, 0, 0}};
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err), SK_OK);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            sk_vec3d mean = sk_v3d_scale(sk_v3d_add(moved.p[i][j], moved_other.p[i][j]), 0.5);
+            assert_true(sk_v3d_length(sk_v3d_sub(blend.p[i][j], mean)) < 1e-6);
+        }
+    /* bad weights and links are refused, naming the entry */
+    w[3].weight[0] = -1.0f;
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "weights[3]"));
+    w[3] = (sk_hand_patch_weights){{-1, -1, -1, -1}, {0, 0, 0, 0}};
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err), SK_ERROR_INVALID_ARGUMENT);
+    p.link = 40;
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, NULL, &blend, &err), SK_ERROR_INVALID_ARGUMENT);
+}
+
+static void test_tessellation_and_the_table(void **state)
+{
+    (void)state;
+    sk_hand_patch p[2] = {reference_patch(), reference_patch()};
+    sk_mesh m;
+    sk_error err;
+    assert_int_equal(sk_hand_patches_tessellate(p, 2, 8, &m, &err), SK_OK);
+    assert_int_equal(m.vertex_count, 2 * 81);
+    assert_int_equal(m.triangle_count, 2 * 2 * 64);
+    /* vertices on the patch, no vertex shared between patches, normals along S_u x S_v */
+    for (size_t v = 0; v < m.vertex_count; v++) {
+        double u = m.uvs[2 * v], w = m.uvs[2 * v + 1];
+        sk_vec3d du, dv;
+        sk_vec3d q = sk_hand_patch_eval(&p[0], u, w, &du, &dv);
+        assert_true(fabs(q.x - m.positions[3 * v]) < 1e-4 && fabs(q.z - m.positions[3 * v + 2]) < 1e-4);
+        sk_vec3d n = sk_v3d_normalize(sk_v3d_cross(du, dv));
+        assert_true(n.x * m.normals[3 * v] + n.y * m.normals[3 * v + 1] + n.z * m.normals[3 * v + 2] > 0.999);
+        assert_int_equal((int)m.attributes[0].data[v], (int)(v / 81));
+    }
+    for (size_t t = 0; t < m.triangle_count; t++) {
+        /* a triangle's face normal agrees with its vertices' normals */
+        const uint32_t *ix = m.indices + 3 * t;
+        const float *a = m.positions + 3 * ix[0], *b = m.positions + 3 * ix[1], *c = m.positions + 3 * ix[2];
+        sk_vec3d fn = sk_v3d_cross(sk_v3d(b[0] - a[0], b[1] - a[1], b[2] - a[2]), sk_v3d(c[0] - a[0], c[1] - a[1], c[2] - a[2]));
+        const float *vn = m.normals + 3 * ix[0];
+        assert_true(fn.x * vn[0] + fn.y * vn[1] + fn.z * vn[2] > 0);
+        assert_true(ix[0] / 81 == ix[1] / 81 && ix[1] / 81 == ix[2] / 81);
+    }
+    sk_mesh_free(&m);
+    assert_int_equal(sk_hand_patches_tessellate(p, 2, 300, &m, &err), SK_ERROR_INVALID_ARGUMENT);
+    /* Table 4.1 from per-point errors: means over (patch, point) pairs, per side */
+    static sk_hand_patch_set set;
+    memset(&set, 0, sizeof set);
+    set.count = SK_HAND_PATCH_COUNT;
+    double e0[3] = {0.1, 0.2, 0.3}, e1[2] = {0.5, 1.5};
+    set.patch[0].side = SK_HAND_SCAN_PALM, set.fitted[0] = true, set.data[0].count = 3, set.error_scan[0] = e0;
+    set.patch[50].side = SK_HAND_SCAN_BACK, set.fitted[50] = true, set.data[50].count = 2, set.error_scan[50] = e1;
+    sk_hand_table41 t;
+    sk_hand_table41_compute(&set, &t);
+    assert_true(fabs(t.scan[0].mean_mm - 0.2) < 1e-12 && t.scan[0].max_mm == 0.3 && t.scan[0].worst_patch == 0);
+    assert_true(fabs(t.scan[1].mean_mm - 1.0) < 1e-12 && t.scan[1].max_mm == 1.5 && t.scan[1].worst_patch == 50);
+    assert_true(fabs(t.scan_all.mean_mm - 2.6 / 5) < 1e-12 && t.scan_all.points == 5);
+    assert_false(t.has_truth);
+    assert_int_equal(t.patches_fitted[0], 1);
+    /* and its files beside the thesis's figures */
+    const char *json = sk_test_path("table/table-4.1.json"), *txt = sk_test_path("table/table-4.1.txt");
+    assert_int_equal(sk_hand_table41_write_json(&t, json, &err), SK_OK);
+    assert_int_equal(sk_hand_table41_write_text(&t, txt, &err), SK_OK);
+    char *text = NULL;
+    size_t size;
+    assert_int_equal(sk_read_file(txt, 0, &text, &size, &err), SK_OK);
+    assert_non_null(strstr(text, "3.6"));  /* the thesis's palm maximum */
+    assert_non_null(strstr(text, "0.43")); /* its back maximum */
+    assert_non_null(strstr(text, "palm"));
+    free(text);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -250,6 +380,8 @@ int main(void)
         cmocka_unit_test(test_parameter_correction_never_increases_the_error),
         cmocka_unit_test(test_fit_rejects_bad_input),
         cmocka_unit_test(test_facet_distance_is_the_nearest_facet),
+        cmocka_unit_test(test_control_points_move_with_their_links),
+        cmocka_unit_test(test_tessellation_and_the_table),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
