@@ -335,7 +335,7 @@ static void test_markers_are_found_where_they_are(void **state)
     sk_hand_markers mk = {.count = 9, .radius_mm = 2.5};
     for (int k = 0; k < 9; k++) snprintf(mk.name[k], sizeof mk.name[k], "m%d", k);
     for (int k = 0; k < 9; k++) mk.centre[k] = sk_v3d((k % 2 ? 1 : -1) * 20.75, -36 + 9.0 * k, 0);
-    sk_hand_scanner_desc d = {.size_x_mm = 150, .size_y_mm = 100, .size_z_mm = 80};
+    sk_hand_scanner_desc d = {.lines = 300, .points = 256, .size_x_mm = 150, .size_y_mm = 100, .size_z_mm = 80};
     sk_hand_rigid place[2];
     assert_int_equal(sk_hand_scan_placements(t, &d, place, &err), SK_OK);
     for (int side = 0; side < 2; side++) {
@@ -585,7 +585,9 @@ static void run_capsule_pipeline(int threads, sk_hand_scan_result *res)
     sk_hand_scan_target_desc td = {.mesh = &m, .sdf = sdf_capsules, .sdf_user = &h};
     sk_hand_scan_target *t;
     assert_int_equal(sk_hand_scan_target_create(&t, &td, &err), SK_OK);
-    sk_hand_scan_desc d = {.scanner = {.lines = 320, .points = 256}, .seed = 5};
+    /* a coarser scan under the sanitizers keeps the test within seconds there */
+    bool sanitized = getenv("SK_TEST_SANITIZED") != NULL;
+    sk_hand_scan_desc d = {.scanner = {.lines = sanitized ? 200 : 320, .points = sanitized ? 160 : 256}, .seed = 5};
     sk_hand_scan_input in = {.target = t, .skeleton = &skel, .dofs = q};
     sk_threads_set(threads);
     sk_result r = sk_hand_scan_run(&in, &d, res, (sk_progress){0}, &err);
@@ -607,7 +609,7 @@ static void test_pipeline_on_a_hand_of_capsules(void **state)
     assert_true(reg->rotation_error_deg < 0.05 && reg->translation_error_mm < 0.1);
     for (int k = 0; k < 9; k++) assert_true(reg->palm_used[k] >= 6 && reg->back_used[k] >= 6);
     /* the merged cloud lies on the true surface (registration error + noise) */
-    assert_true(a.cloud.count > 20000);
+    assert_true(a.cloud.count > 10000);
     /* patches: nearly all regions have data; errors of the thesis's order */
     assert_true(a.table.patches_fitted[0] >= 40 && a.table.patches_fitted[1] >= 40);
     assert_true(a.table.has_truth);
