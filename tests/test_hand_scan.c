@@ -506,6 +506,58 @@ static void tube_folds(double noise, sk_hand_resample_stats st[2])
     sk_hand_cloud_free(&c);
 }
 
+/* A palm link (the carpus) whose points surround it on some slices and lie on two sides
+ * on others: rings joined to arcs, still a manifold with every face outward. */
+static void test_rings_join_arcs_as_a_manifold(void **state)
+{
+    (void)state;
+    sk_hand_cloud c;
+    cylinder_cloud(15.0, 40.0, 0.0, 0.0, &c);
+    /* the far half loses two side bands (as where the metacarpals' points take over) */
+    size_t n = 0;
+    for (size_t i = 0; i < c.count; i++) {
+        sk_vec3d p = c.position[i];
+        double th = atan2(p.z, p.x);
+        if (p.y > 20.0 && (fabs(th) < 0.6 || fabs(th) > SK_PI - 0.6)) continue;
+        c.position[n] = p;
+        c.side[n++] = c.side[i];
+    }
+    c.count = n;
+    sk_hand_link_geometry g = single_link(sk_v3d(1000, 0, 0), sk_v3d(1000, 1, 0));
+    g.a[0] = sk_v3d(0, -5, 0), g.b[0] = sk_v3d(0, 45, 0);
+    sk_hand_slices_desc sd = {.count = 10};
+    sk_hand_slices sl;
+    sk_error err;
+    assert_int_equal(sk_hand_slices_build(&c, &g, &sd, &sl, &err), SK_OK);
+    sk_mesh m;
+    sk_hand_resample_stats st;
+    assert_int_equal(sk_hand_resample(&sl, &g, NULL, &m, &st, &err), SK_OK);
+    assert_int_equal(st.rings, 5);
+    assert_int_equal(st.arcs, 10);
+    size_t ne;
+    edge_count *e = count_edges(&m, &ne);
+    for (size_t i = 0; i < ne; i++) assert_true(e[i].forward <= 1 && e[i].backward <= 1);
+    free(e);
+    /* every vertex used, faces outward; no gap between the last ring and the first arcs */
+    for (size_t t = 0; t < m.triangle_count; t++) {
+        const float *p0 = m.positions + 3 * m.indices[3 * t], *p1 = m.positions + 3 * m.indices[3 * t + 1];
+        const float *p2 = m.positions + 3 * m.indices[3 * t + 2];
+        sk_vec3d a = sk_v3d(p0[0], p0[1], p0[2]), b = sk_v3d(p1[0], p1[1], p1[2]), cc = sk_v3d(p2[0], p2[1], p2[2]);
+        sk_vec3d nn = sk_v3d_cross(sk_v3d_sub(b, a), sk_v3d_sub(cc, a));
+        sk_vec3d centre = sk_v3d_scale(sk_v3d_add(sk_v3d_add(a, b), cc), 1.0 / 3);
+        assert_true(nn.x * centre.x + nn.z * centre.z > 0);
+    }
+    bool joined = false;
+    for (size_t t = 0; t < m.triangle_count; t++) {
+        float y0 = m.positions[3 * m.indices[3 * t] + 1], y1 = m.positions[3 * m.indices[3 * t + 1] + 1];
+        joined = joined || (y0 < 20.0f && y1 > 20.0f) || (y0 > 20.0f && y1 < 20.0f);
+    }
+    assert_true(joined);
+    sk_mesh_free(&m);
+    sk_hand_slices_free(&sl);
+    sk_hand_cloud_free(&c);
+}
+
 static void test_neighbouring_slices_remove_the_wrinkles(void **state)
 {
     (void)state;
@@ -639,6 +691,7 @@ int main(void)
         cmocka_unit_test(test_scanner_sees_what_is_visible_with_the_stated_noise),
         cmocka_unit_test(test_markers_are_found_where_they_are),
         cmocka_unit_test(test_resampled_tube_is_a_closed_manifold),
+        cmocka_unit_test(test_rings_join_arcs_as_a_manifold),
         cmocka_unit_test(test_neighbouring_slices_remove_the_wrinkles),
         cmocka_unit_test(test_pipeline_on_a_hand_of_capsules),
     };

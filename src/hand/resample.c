@@ -226,6 +226,61 @@ static double fold_deg(sk_vec3d a, sk_vec3d b, sk_vec3d c, sk_vec3d d)
     return acos(cs) * SK_RAD_TO_DEG;
 }
 
+/* The segments of slice s + 1 that `seg` (slice s) joins to: its match of the same kind,
+ * else, between a ring and arcs of the same group (where a link's points change from
+ * surrounding it to lying on its sides), each of those. Returns how many (<= max). */
+static int partners(const slice_work *next, const segment *seg, const segment **out, int max)
+{
+    double shift;
+    const segment *m = matching_arc(next, seg, &shift);
+    if (m) {
+        out[0] = m;
+        return 1;
+    }
+    int n = 0;
+    for (int k = 0; k < next->segment_count && n < max; k++) {
+        const segment *b = &next->segments[k];
+        if (b->group == seg->group && b->ring != seg->ring && (seg->ring || n == 0)) out[n++] = b;
+    }
+    return n;
+}
+
+/* The vertices of `ring` whose angles lie within half a step of the arc's range, in order
+ * of angle (brought next to the arc's). Two arcs are at least arc_gap_deg apart, wider
+ * than a step (360 / n deg) at the defaults, so they never share a ring edge. */
+static int ring_portion(const segment *ring, const segment *arc, const double *angle, int n, uint32_t *out_v,
+                        double *out_a)
+{
+    double lo = angle[arc->vertex], hi = angle[arc->vertex + n - 1], c = 0.5 * (lo + hi), step = SK_PI / n;
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        double a = c + sk_hand__wrap_angle(angle[ring->vertex + i] - c);
+        if (a < lo - step || a > hi + step) continue;
+        int j = m++;
+        while (j > 0 && out_a[j - 1] > a) out_a[j] = out_a[j - 1], out_v[j] = out_v[j - 1], j--;
+        out_a[j] = a;
+        out_v[j] = (uint32_t)(ring->vertex + i);
+    }
+    return m;
+}
+
+/* Triangles between two rows of vertices in order of angle, slice s (a) and s + 1 (b),
+ * advancing along whichever row's next vertex comes first: p + q - 2 triangles, wound as
+ * the ring-to-ring joins. */
+static size_t zipper(const uint32_t *a, const double *aa, int p, const uint32_t *b, const double *ba, int q,
+                     uint32_t *ix)
+{
+    size_t t = 0;
+    int i = 0, j = 0;
+    while (i < p - 1 || j < q - 1) {
+        bool along_a = j == q - 1 || (i < p - 1 && aa[i + 1] <= ba[j + 1]);
+        uint32_t *tri = ix + 3 * t++;
+        tri[0] = a[i], tri[1] = b[j];
+        tri[2] = along_a ? a[++i] : b[++j];
+    }
+    return t;
+}
+
 static void free_work(slice_work *work, int count)
 {
     if (!work) return;
@@ -283,13 +338,12 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
             work[s].segments[k].vertex = (int)vertices;
             vertices += (size_t)n;
         }
-    /* triangles: count the joins first */
+    /* triangles: at most 2n per join */
     size_t triangles = 0;
     for (int s = 0; s + 1 < count; s++)
         for (int k = 0; k < work[s].segment_count; k++) {
-            double shift;
-            const segment *m = matching_arc(&work[s + 1], &work[s].segments[k], &shift);
-            if (m) triangles += work[s].segments[k].ring ? 2 * (size_t)n : 2 * (size_t)(n - 1);
+            const segment *with[8];
+            triangles += 2 * (size_t)n * (size_t)partners(&work[s + 1], &work[s].segments[k], with, 8);
         }
     if (vertices == 0 || triangles == 0) {
         free_work(work, count);
@@ -299,7 +353,10 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
     r = sk_mesh_create(out, vertices, triangles, SK_MESH_NORMALS, err);
     float *link_attr = NULL;
     if (r == SK_OK) r = sk_mesh_add_attribute(out, "link", 1, &link_attr, err);
+    double *angle_of = malloc(sizeof *angle_of * vertices);
+    if (r == SK_OK && !angle_of) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "resampling");
     if (r != SK_OK) {
+        free(angle_of);
         free_work(work, count);
         sk_mesh_free(out);
         return r;
@@ -315,6 +372,7 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
             for (int i = 0; i < n; i++) {
                 double rad = radius_at(&work[s], seg, angles[i]);
                 size_t v = (size_t)seg->vertex + (size_t)i;
+                angle_of[v] = angles[i];
                 sk_vec3d p = {c.x + rad * cos(angles[i]), slices->y[s], c.z + rad * sin(angles[i])};
                 out->positions[3 * v] = (float)p.x;
                 out->positions[3 * v + 1] = (float)p.y;
@@ -334,9 +392,24 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
             rings += seg->ring;
             arcs += !seg->ring;
             if (s + 1 >= count) continue;
-            double shift;
-            const segment *m = matching_arc(&work[s + 1], seg, &shift);
-            if (!m) continue;
+            const segment *with[8];
+            int np = partners(&work[s + 1], seg, with, 8);
+            if (np == 0) continue;
+            if (with[0]->ring != seg->ring) {
+                /* a ring and arcs: zip each arc to the part of the ring beside it */
+                for (int w = 0; w < np; w++) {
+                    const segment *ring = seg->ring ? seg : with[w], *arc = seg->ring ? with[w] : seg;
+                    uint32_t rv[256], av[256];
+                    double ra[256], aa[256];
+                    int pr = ring_portion(ring, arc, angle_of, n, rv, ra);
+                    for (int i = 0; i < n; i++) av[i] = (uint32_t)(arc->vertex + i), aa[i] = angle_of[arc->vertex + i];
+                    if (pr < 2) continue;
+                    t += seg->ring ? zipper(rv, ra, pr, av, aa, n, out->indices + 3 * t)
+                                   : zipper(av, aa, n, rv, ra, pr, out->indices + 3 * t);
+                }
+                continue;
+            }
+            const segment *m = with[0];
             int quads = seg->ring ? n : n - 1;
             for (int i = 0; i < quads; i++) {
                 uint32_t a0 = (uint32_t)(seg->vertex + i), a1 = (uint32_t)(seg->vertex + (i + 1) % n);
@@ -359,6 +432,8 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
             }
         }
     free_work(work, count);
+    free(angle_of);
+    out->triangle_count = t;
     r = sk_mesh_compute_normals(out, err);
     if (r != SK_OK) {
         sk_mesh_free(out);
