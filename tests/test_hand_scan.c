@@ -419,6 +419,19 @@ static edge_count *count_edges(const sk_mesh *m, size_t *count)
     return e;
 }
 
+/* Every triangle of a tube about the y axis faces away from the axis. */
+static void assert_faces_away_from_the_y_axis(const sk_mesh *m)
+{
+    for (size_t t = 0; t < m->triangle_count; t++) {
+        const float *p0 = m->positions + 3 * m->indices[3 * t], *p1 = m->positions + 3 * m->indices[3 * t + 1];
+        const float *p2 = m->positions + 3 * m->indices[3 * t + 2];
+        sk_vec3d a = sk_v3d(p0[0], p0[1], p0[2]), b = sk_v3d(p1[0], p1[1], p1[2]), c = sk_v3d(p2[0], p2[1], p2[2]);
+        sk_vec3d n = sk_v3d_cross(sk_v3d_sub(b, a), sk_v3d_sub(c, a));
+        sk_vec3d centre = sk_v3d_scale(sk_v3d_add(sk_v3d_add(a, b), c), 1.0 / 3);
+        assert_true(n.x * centre.x + n.z * centre.z > 0);
+    }
+}
+
 static void test_resampled_tube_is_a_closed_manifold(void **state)
 {
     (void)state;
@@ -458,14 +471,7 @@ static void test_resampled_tube_is_a_closed_manifold(void **state)
         free(e);
         /* outward faces, vertices on the surface (eq. 4.2 interpolates across the gap on
            the chord, hence the tolerance there) */
-        for (size_t t = 0; t < m.triangle_count; t++) {
-            const float *p0 = m.positions + 3 * m.indices[3 * t], *p1 = m.positions + 3 * m.indices[3 * t + 1];
-            const float *p2 = m.positions + 3 * m.indices[3 * t + 2];
-            sk_vec3d a = sk_v3d(p0[0], p0[1], p0[2]), b = sk_v3d(p1[0], p1[1], p1[2]), cc = sk_v3d(p2[0], p2[1], p2[2]);
-            sk_vec3d n = sk_v3d_cross(sk_v3d_sub(b, a), sk_v3d_sub(cc, a));
-            sk_vec3d centre = sk_v3d_scale(sk_v3d_add(sk_v3d_add(a, b), cc), 1.0 / 3);
-            assert_true(n.x * centre.x + n.z * centre.z > 0);
-        }
+        assert_faces_away_from_the_y_axis(&m);
         for (size_t v = 0; v < m.vertex_count; v++) {
             double rr = hypot(m.positions[3 * v], m.positions[3 * v + 2]);
             assert_true(rr < 8.0 + 1e-4 && rr > 8.0 * cos(SK_PI / 6) - 1e-4);
@@ -538,15 +544,8 @@ static void test_rings_join_arcs_as_a_manifold(void **state)
     edge_count *e = count_edges(&m, &ne);
     for (size_t i = 0; i < ne; i++) assert_true(e[i].forward <= 1 && e[i].backward <= 1);
     free(e);
-    /* every vertex used, faces outward; no gap between the last ring and the first arcs */
-    for (size_t t = 0; t < m.triangle_count; t++) {
-        const float *p0 = m.positions + 3 * m.indices[3 * t], *p1 = m.positions + 3 * m.indices[3 * t + 1];
-        const float *p2 = m.positions + 3 * m.indices[3 * t + 2];
-        sk_vec3d a = sk_v3d(p0[0], p0[1], p0[2]), b = sk_v3d(p1[0], p1[1], p1[2]), cc = sk_v3d(p2[0], p2[1], p2[2]);
-        sk_vec3d nn = sk_v3d_cross(sk_v3d_sub(b, a), sk_v3d_sub(cc, a));
-        sk_vec3d centre = sk_v3d_scale(sk_v3d_add(sk_v3d_add(a, b), cc), 1.0 / 3);
-        assert_true(nn.x * centre.x + nn.z * centre.z > 0);
-    }
+    /* faces outward; no gap between the last ring and the first arcs */
+    assert_faces_away_from_the_y_axis(&m);
     bool joined = false;
     for (size_t t = 0; t < m.triangle_count; t++) {
         float y0 = m.positions[3 * m.indices[3 * t] + 1], y1 = m.positions[3 * m.indices[3 * t + 1] + 1];
