@@ -7,6 +7,7 @@ extern const cli_command cmd_sheet;
 extern const cli_command cmd_hand_pose;
 extern const cli_command cmd_hand_animate;
 extern const cli_command cmd_hand_calibrate;
+extern const cli_command cmd_hand_mesh;
 extern const cli_command cmd_skin;
 extern const cli_command cmd_skin_maps;
 extern const cli_command cmd_wood_cut;
@@ -20,6 +21,7 @@ const cli_command *const cli_commands[] = {
     &cmd_hand_pose,
     &cmd_hand_animate,
     &cmd_hand_calibrate,
+    &cmd_hand_mesh,
     &cmd_skin,
     &cmd_skin_maps,
     &cmd_wood_cut,
