@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The hand's skin surface (Yasumuro 2000, sec. 4.1 and 4.2) ray-traced with its baked skin
-# texture, shaded as the thesis does (0.3 shading : 0.7 texture, presets/scenes/hand-skin.json):
+# texture, shaded as the thesis does (0.3 shading : 0.7 texture, presets/hand/skin-scene.json):
 # the relaxed hand, Fig. 4.17-style poses, the keyframe animation of Fig. 4.18 (19 frames, keys
 # at 1, 9 and 19), the constrained curls of Figs. 4.19 / 4.20 as image sequences and contact
 # sheets, and rigid vs LBS vs DQS skinning on a fully flexed index finger. Writes into
@@ -12,7 +12,7 @@ presets="$here/presets/hand"
 out="$OUT/hand"
 work="$out/surface"
 mkdir -p "$work"
-cp "$here/presets/scenes/hand-skin.json" "$work/"
+cp "$here/presets/hand/skin-scene.json" "$work/hand-skin.json"
 cd "$work"
 
 # render MESH PNG [render options...]: the hand-skin scene with another mesh
@@ -71,7 +71,9 @@ for demo in little-mcp:fig4.19:MCP little-dip:fig4.20:DIP; do
 done
 
 # the thesis's defect (4.1.5) and its fix: a fully flexed index finger, rigid / LBS / DQS
-close=(--size 300x300 --set camera.position=[230,150,-60] --set camera.target=[22,92,10] --set camera.fov_deg=26)
+# (shading only, from the palm side past the thumb, so the geometry at the joints shows)
+close=(--size 300x300 --set "camera.position=[170,40,200]" --set "camera.target=[22,88,18]" --set camera.fov_deg=22
+  --set materials[0].texture_weight=0 --set "materials[0].albedo=[0.8,0.62,0.55]" --set "lights[0].direction=[-0.5,0.3,-0.8]")
 sheet=()
 for m in rigid lbs dqs; do
   "$SK" hand mesh --constraints none --pin I.MCP.flex=90 --pin I.PIP.flex=100 --pin I.DIP.flex=80 \
