@@ -65,7 +65,8 @@ for demo in little-mcp:fig4.19:MCP little-dip:fig4.20:DIP; do
   mkdir -p "$out/$fig-frames"
   for f in ${frames//,/ }; do
     name=$(printf 'frame_%04d' "$f")
-    render "$fig/$name.obj" "$out/$fig-frames/$name.png" --size 240x300
+    # seen from the little finger's side, where the curl is
+    render "$fig/$name.obj" "$out/$fig-frames/$name.png" --size 240x300 --set "camera.position=[-230,170,-250]"
   done
   sheet_of "$out/$fig-frames" "$frames" "${fig/fig/Fig. }: only the little finger's $joint is driven" "$out/$fig-sheet.png" 9 ""
 done
