@@ -37,14 +37,20 @@ sk_result sk_hand_pose_parse(const char *text, size_t length, const char *source
     return r;
 }
 
+typedef struct pose_target {
+    const sk_hand_skeleton *skeleton;
+    double *dofs;
+} pose_target;
+
+static sk_result parse_into(const char *text, size_t length, const char *source, void *ctx, sk_error *err)
+{
+    pose_target *t = ctx;
+    return sk_hand_pose_parse(text, length, source, t->skeleton, t->dofs, err);
+}
+
 sk_result sk_hand_pose_load_file(const char *path, const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT],
                                  sk_error *err)
 {
-    char *text = NULL;
-    size_t size = 0;
-    sk_result r = sk_read_file(path, SK_HAND_MAX_FILE_BYTES, &text, &size, err);
-    if (r != SK_OK) return r;
-    r = sk_hand_pose_parse(text, size, path, skeleton, dofs, err);
-    free(text);
-    return r;
+    pose_target t = {skeleton, dofs};
+    return sk_hand__parse_file(path, parse_into, &t, err);
 }
