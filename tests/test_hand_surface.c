@@ -14,7 +14,7 @@
 
 typedef struct fixture {
     sk_hand_skeleton right, left;
-    sk_hand_surface *surface, *mirror;
+    sk_hand_surface *surface, *small, *mirror;
 } fixture;
 
 static fixture *fx;
@@ -32,7 +32,10 @@ static int setup(void **state)
         fprintf(stderr, "%s\n", err.message);
         return -1;
     }
-    if (sk_hand_surface_create(&fx->mirror, &fx->left, NULL, &err) != SK_OK) return -1;
+    /* the mirror test compares a smaller right and left pair (the same desc) */
+    sk_hand_surface_desc small = {.triangles = 2000, .cell_mm = 3.0};
+    if (sk_hand_surface_create(&fx->small, &fx->right, &small, &err) != SK_OK) return -1;
+    if (sk_hand_surface_create(&fx->mirror, &fx->left, &small, &err) != SK_OK) return -1;
     return 0;
 }
 
@@ -40,6 +43,7 @@ static int teardown(void **state)
 {
     (void)state;
     sk_hand_surface_destroy(fx->surface);
+    sk_hand_surface_destroy(fx->small);
     sk_hand_surface_destroy(fx->mirror);
     free(fx);
     return 0;
@@ -260,7 +264,7 @@ static void test_self_intersection_check_finds_crossing(void **state)
 static void test_left_is_exact_mirror(void **state)
 {
     (void)state;
-    const sk_mesh *r = sk_hand_surface_mesh(fx->surface), *l = sk_hand_surface_mesh(fx->mirror);
+    const sk_mesh *r = sk_hand_surface_mesh(fx->small), *l = sk_hand_surface_mesh(fx->mirror);
     assert_int_equal(r->vertex_count, l->vertex_count);
     assert_int_equal(r->triangle_count, l->triangle_count);
     for (size_t v = 0; v < r->vertex_count; v++) {
@@ -281,7 +285,7 @@ static void test_left_is_exact_mirror(void **state)
     q[sk_hand_dof_find("I.PIP.flex")] = 1.2;
     q[sk_hand_dof_find("wrist.dev")] = 0.3;
     sk_mesh pr, pl;
-    assert_int_equal(sk_hand_surface_pose(fx->surface, q, SK_HAND_SKINNING_DQS, &pr, NULL), SK_OK);
+    assert_int_equal(sk_hand_surface_pose(fx->small, q, SK_HAND_SKINNING_DQS, &pr, NULL), SK_OK);
     assert_int_equal(sk_hand_surface_pose(fx->mirror, q, SK_HAND_SKINNING_DQS, &pl, NULL), SK_OK);
     for (size_t v = 0; v < pr.vertex_count; v++) {
         assert_float_equal(pl.positions[3 * v], -pr.positions[3 * v], 1e-4);
@@ -325,7 +329,7 @@ static void test_field_and_distance(void **state)
         assert_true(fabs(sk_hand_surface_field(fx->surface, c)) < 1e-5);
         /* the left hand's field is the mirror */
         sk_vec3d pm = sk_v3d(-p.x, p.y, p.z);
-        assert_float_equal(sk_hand_surface_field(fx->mirror, pm), sk_hand_surface_field(fx->surface, p), 1e-12);
+        assert_float_equal(sk_hand_surface_field(fx->mirror, pm), sk_hand_surface_field(fx->small, p), 1e-12);
     }
 }
 
@@ -488,19 +492,189 @@ static void test_desc_errors_and_threads(void **state)
     assert_null(s);
     /* identical for any thread count */
     d = (sk_hand_surface_desc){.triangles = 2000, .cell_mm = 3.0};
-    sk_hand_surface *a, *b;
+    sk_hand_surface *a;
     sk_threads_set(1);
     assert_int_equal(sk_hand_surface_create(&a, &fx->right, &d, NULL), SK_OK);
-    sk_threads_set(2);
-    assert_int_equal(sk_hand_surface_create(&b, &fx->right, &d, NULL), SK_OK);
     sk_threads_set(0);
-    const sk_mesh *ma = sk_hand_surface_mesh(a), *mb = sk_hand_surface_mesh(b);
+    const sk_mesh *ma = sk_hand_surface_mesh(a), *mb = sk_hand_surface_mesh(fx->small); /* all threads */
     assert_int_equal(ma->vertex_count, mb->vertex_count);
     assert_memory_equal(ma->positions, mb->positions, 3 * ma->vertex_count * sizeof(float));
     assert_memory_equal(ma->indices, mb->indices, 3 * ma->triangle_count * sizeof(uint32_t));
     assert_int_equal(check_manifold(ma), 2);
     sk_hand_surface_destroy(a);
-    sk_hand_surface_destroy(b);
+}
+
+
+/* ------------------------------------------------------------ LOD, atlas, files */
+static void test_levels_of_detail(void **state)
+{
+    (void)state;
+    const sk_mesh *base = sk_hand_surface_mesh(fx->surface);
+    const uint16_t *bl;
+    const float *bw;
+    sk_hand_surface_weights(fx->surface, SK_HAND_WEIGHTS_SMOOTH, &bl, &bw);
+    for (int l = 1; l < SK_HAND_LOD_COUNT; l++) {
+        sk_hand_surface *c;
+        assert_int_equal(sk_hand_surface_simplify(&c, fx->surface, sk_hand_lod_triangles[l], NULL), SK_OK);
+        const sk_mesh *m = sk_hand_surface_mesh(c);
+        assert_true(m->triangle_count <= (size_t)sk_hand_lod_triangles[l]);
+        assert_true(m->triangle_count >= (size_t)sk_hand_lod_triangles[l] * 9 / 10);
+        assert_true(signed_volume(m) > 0.8 * signed_volume(base));
+        /* every kept vertex is a vertex of the full mesh with the same weights */
+        const uint16_t *cl;
+        const float *cw;
+        sk_hand_surface_weights(c, SK_HAND_WEIGHTS_SMOOTH, &cl, &cw);
+        size_t j = 0;
+        for (size_t v = 0; v < m->vertex_count; v++) {
+            while (j < base->vertex_count && memcmp(base->positions + 3 * j, m->positions + 3 * v, 3 * sizeof(float)) != 0) j++;
+            assert_true(j < base->vertex_count);
+            assert_memory_equal(cw + 4 * v, bw + 4 * j, 4 * sizeof(float));
+            assert_memory_equal(cl + 4 * v, bl + 4 * j, 4 * sizeof(uint16_t));
+        }
+        sk_hand_surface_destroy(c);
+    }
+}
+
+static void test_atlas_export(void **state)
+{
+    (void)state;
+    const sk_mesh *m = sk_hand_surface_mesh(fx->surface);
+    sk_mesh e;
+    assert_int_equal(sk_hand_surface_export_mesh(fx->surface, NULL, NULL, true, &e, NULL), SK_OK);
+    assert_int_equal(e.triangle_count, m->triangle_count);
+    assert_true(e.vertex_count > m->vertex_count && e.vertex_count < m->vertex_count * 3 / 2); /* the seam only */
+    size_t n;
+    const uint32_t *map = sk_hand_surface_export_map(fx->surface, &n);
+    assert_int_equal(n, e.vertex_count);
+    int back = 0, palm = 0;
+    for (size_t v = 0; v < e.vertex_count; v++) {
+        float u = e.uvs[2 * v], w = e.uvs[2 * v + 1];
+        assert_true(u > 0 && u < 1 && w > 0 && w < 1);
+        assert_memory_equal(e.positions + 3 * v, m->positions + 3 * map[v], 3 * sizeof(float));
+        /* the back chart on the left faces -z (dorsal), the palm chart +z */
+        if (u < 0.5f) back += m->normals[3 * map[v] + 2] < 0;
+        else palm += m->normals[3 * map[v] + 2] > 0;
+    }
+    assert_true(back + palm > (int)e.vertex_count * 8 / 10);
+    /* each triangle lies in one chart */
+    for (size_t t = 0; t < e.triangle_count; t++) {
+        const uint32_t *tv = e.indices + 3 * t;
+        bool left = e.uvs[2 * tv[0]] < 0.5f;
+        assert_true((e.uvs[2 * tv[1]] < 0.5f) == left && (e.uvs[2 * tv[2]] < 0.5f) == left);
+        for (int k = 0; k < 3; k++) assert_int_equal(map[tv[k]], m->indices[3 * t + k]);
+    }
+    const sk_mesh_attribute *j = sk_mesh_find_attribute(&e, "joints"), *w = sk_mesh_find_attribute(&e, "weights");
+    assert_non_null(j);
+    assert_non_null(w);
+    assert_non_null(sk_mesh_find_attribute(&e, "nail"));
+    sk_mesh_free(&e);
+    /* nails: on the dorsal side of the distal phalanges only */
+    const sk_mesh_attribute *nail = sk_mesh_find_attribute(m, "nail");
+    const uint16_t *ln;
+    sk_hand_surface_weights(fx->surface, SK_HAND_WEIGHTS_NEAREST, &ln, NULL);
+    int nails = 0;
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        if (nail->data[v] == 0) continue;
+        nails++;
+        int link = ln[4 * v];
+        assert_true(link == 3 || link == 7 || link == 11 || link == 15 || link == 19);
+    }
+    assert_true(nails > 50);
+}
+
+static void test_texture_bake(void **state)
+{
+    (void)state;
+    sk_hand_texture_desc d = {.size = 128};
+    sk_image albedo, normal;
+    assert_int_equal(sk_hand_texture_bake(fx->surface, &d, &albedo, &normal, NULL), SK_OK);
+    assert_int_equal(albedo.width, 128);
+    /* the centre of each chart is skin, the corners empty */
+    const float *back = sk_image_pixel(&albedo, 32, 90), *palm = sk_image_pixel(&albedo, 96, 90);
+    assert_true(back[0] > back[1] && back[1] > back[2] && back[2] > 0.1f);
+    assert_true(palm[0] > back[0]); /* the palm is lighter */
+    assert_true(sk_image_pixel(&albedo, 0, 0)[0] == 0.0f);
+    /* normal map: unit normals */
+    for (int i = 0; i < 128 * 128; i += 37) {
+        const float *n = normal.data + 3 * i;
+        double x = 2 * n[0] - 1, y = 2 * n[1] - 1, z = 2 * n[2] - 1;
+        assert_float_equal(x * x + y * y + z * z, 1.0, 1e-3);
+    }
+    sk_image_free(&albedo);
+    sk_image_free(&normal);
+    d.size = 10;
+    assert_int_equal(sk_hand_texture_bake(fx->surface, &d, &albedo, &normal, NULL), SK_ERROR_INVALID_ARGUMENT);
+}
+
+static void test_landmarks_and_pose_file(void **state)
+{
+    (void)state;
+    assert_string_equal(sk_hand_landmark_name(0), "wrist");
+    assert_string_equal(sk_hand_point_name(sk_hand_landmark_point(4)), "T.tip");
+    assert_string_equal(sk_hand_point_name(sk_hand_landmark_point(5)), "I.MCP");
+    assert_string_equal(sk_hand_point_name(sk_hand_landmark_point(12)), "M.tip");
+    assert_string_equal(sk_hand_point_name(sk_hand_landmark_point(17)), "L.MCP");
+    assert_string_equal(sk_hand_landmark_name(20), "little_tip");
+    assert_null(sk_hand_landmark_name(21));
+    double q[2 * SK_HAND_DOF_COUNT];
+    const char *text = "{\"dofs\": {\"I.PIP.flex\": 90, \"wrist.tx\": 5}, \"side\": \"right\"}";
+    assert_int_equal(sk_hand_pose_parse(text, strlen(text), "p.json", &fx->right, q, NULL), SK_OK);
+    assert_float_equal(q[sk_hand_dof_find("I.PIP.flex")], 0.5 * SK_PI, 1e-12);
+    assert_float_equal(q[0], 5.0, 1e-12);
+    assert_float_equal(q[sk_hand_dof_find("M.PIP.flex")], fx->right.dof[sk_hand_dof_find("M.PIP.flex")].relaxed, 1e-12);
+    sk_error err = {0};
+    const char *bad = "{\"dofs\": {\"I.PIP.flx\": 90}}";
+    assert_int_not_equal(sk_hand_pose_parse(bad, strlen(bad), "p.json", &fx->right, q, &err), SK_OK);
+    assert_non_null(strstr(err.message, "I.PIP.flx"));
+    /* two frames of landmarks as CSV: 21 rows each, the tip where the skeleton says */
+    memcpy(q + SK_HAND_DOF_COUNT, q, sizeof(double) * SK_HAND_DOF_COUNT);
+    const char *path = sk_test_path("landmarks.csv");
+    assert_int_equal(sk_hand_landmarks_write(&fx->right, q, 2, SK_HAND_POSITIONS_CSV, path, NULL), SK_OK);
+    char *csv;
+    size_t size;
+    assert_int_equal(sk_read_file(path, 0, &csv, &size, NULL), SK_OK);
+    assert_int_equal(sk_test_count_lines(csv), 1 + 2 * 21);
+    assert_non_null(strstr(csv, "1,20,little_tip,"));
+    free(csv);
+}
+
+/* ------------------------------------------------------------ the commands */
+static void test_cli_hand_mesh(void **state)
+{
+    (void)state;
+    sk_test_run run;
+    assert_int_equal(sk_test_cli(&run, "hand mesh --help"), 0);
+    assert_non_null(strstr(run.out, "--skinning"));
+    const char *ply = sk_test_path("cli/hand.ply");
+    assert_int_equal(sk_test_cli(&run, "hand mesh -q --pin I.PIP.flex=90 --skinning lbs --lod 2 --left -o %s", ply), 0);
+    sk_mesh m;
+    assert_int_equal(sk_mesh_read_ply(&m, ply, NULL, NULL), SK_OK);
+    assert_true(m.triangle_count <= 500 && m.uvs != NULL);
+    assert_non_null(sk_mesh_find_attribute(&m, "weights"));
+    sk_vec3f lo, hi;
+    sk_mesh_bounds(&m, &lo, &hi);
+    assert_true(hi.x + lo.x < 0); /* the thumb of a left hand is on -x */
+    sk_mesh_free(&m);
+    /* bad input: one line, exit 2, no file */
+    const char *none = sk_test_path("cli/none.obj");
+    assert_int_equal(sk_test_cli(&run, "hand mesh --skinning cubic -o %s", none), 2);
+    assert_int_equal(sk_test_cli(&run, "hand mesh --lod 3 -o %s", none), 2);
+    assert_int_equal(sk_test_cli(&run, "hand mesh --pin X.Y=3 -o %s", none), 2);
+    assert_int_equal(sk_test_cli(&run, "hand mesh -o %s.stl", none), 2);
+    assert_int_equal(sk_test_cli(&run, "hand mesh --pose /nonexistent.json -o %s", none), 2);
+    assert_int_equal(sk_test_count_lines(run.err), 1);
+    assert_false(sk_test_file_exists(none));
+    const char *dir = sk_test_path("cli/frames");
+    assert_int_equal(sk_test_cli(&run, "hand animate -q %s/hand/little-mcp.json --meshes-dir %s --mesh-frames 0,24 --landmarks %s",
+                                 SK_TEST_PRESET_DIR, dir, sk_test_path("cli/lm.json")), 0);
+    char p[600];
+    snprintf(p, sizeof p, "%s/frame_0024.obj", dir);
+    assert_int_equal(sk_mesh_read_obj(&m, p, NULL, NULL), SK_OK);
+    assert_true(m.triangle_count >= 7900 && m.uvs != NULL);
+    sk_mesh_free(&m);
+    snprintf(p, sizeof p, "%s/frame_0001.obj", dir);
+    assert_false(sk_test_file_exists(p));
+    assert_int_equal(sk_test_cli(&run, "hand animate -q %s/hand/little-mcp.json --meshes-dir %s --mesh-frames 0,99", SK_TEST_PRESET_DIR, dir), 2);
 }
 
 int main(void)
@@ -518,6 +692,11 @@ int main(void)
         cmocka_unit_test(test_dqs_keeps_radius_under_twist),
         cmocka_unit_test(test_defect_measure),
         cmocka_unit_test(test_desc_errors_and_threads),
+        cmocka_unit_test(test_levels_of_detail),
+        cmocka_unit_test(test_atlas_export),
+        cmocka_unit_test(test_texture_bake),
+        cmocka_unit_test(test_landmarks_and_pose_file),
+        cmocka_unit_test(test_cli_hand_mesh),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

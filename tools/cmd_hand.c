@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cmd_hand_surface.h"
 #include "cmd_hand_prior.h"
 #include "hand_args.h"
 #include "shitsukan/hand.h"
@@ -326,6 +327,15 @@ static const cli_option animate_options[] = {
     {"plot-dofs", 0, "LIST", "DOFs to plot, comma-separated (default: the driven ones, then the most moving)", false},
     {"plot-title", 0, "TEXT", "title of the plot (default: the animation file's name)", false},
     {"plot-size", 0, "WxH", "plot size in pixels (default 800x560)", false},
+    {"glb", 0, "FILE", "write the skinned, animated hand surface as glTF binary (skeleton, weights, 3 LODs)", false},
+    {"landmarks", 0, "FILE", "write the 21 hand landmarks of every frame (.json or .csv)", false},
+    {"meshes-dir", 0, "DIR", "write the hand surface of frames as DIR/frame_0000.obj, ... (with --mesh-frames)", false},
+    {"mesh-frames", 0, "LIST", "frames for --meshes-dir, comma-separated (default all)", false},
+    {"skinning", 0, "METHOD", "skinning of the surface outputs: rigid, lbs or dqs (default)", false},
+    {"texture", 0, "PREFIX", "with --meshes-dir: also bake the skin texture PREFIX-albedo.png, PREFIX-normal.png", false},
+    {"texture-size", 0, "N", "atlas size of --texture in pixels (default 1024)", false},
+    {"triangles", 0, "N", "triangles of the surface's level 0 (default 8000)", false},
+    {"flesh", 0, "FILE", "flesh sizes JSON of the surface (default built in)", false},
 };
 
 /* --plot: the listed DOFs (or the driven ones and those that move most) over the frames. */
@@ -406,8 +416,10 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
     const char *angles = cli_get(cmd, args, "angles");
     const char *frames_dir = cli_get(cmd, args, "frames-dir"), *plot = cli_get(cmd, args, "plot");
-    if (!bvh && !positions && !angles && !frames_dir && !plot)
-        return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions, --angles, --plot or --frames-dir");
+    bool surface_outputs = cli_has(cmd, args, "glb") || cli_has(cmd, args, "landmarks") || cli_has(cmd, args, "meshes-dir");
+    if (!bvh && !positions && !angles && !frames_dir && !plot && !surface_outputs)
+        return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions, --angles, --plot, --frames-dir, --glb, "
+                                        "--landmarks or --meshes-dir");
     static const char *const frame_options[] = {"views", "png-size", "labels", "bare", NULL};
     static const char *const plot_options[] = {"plot-dofs", "plot-title", "plot-size", NULL};
     sk_hand_draw_desc draw;
@@ -449,6 +461,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_fail_error(&err);
     if (!rc && plot) rc = write_angle_plot(cmd, args, anim, dofs, frames, plot);
     if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
+    if (!rc && surface_outputs) rc = hand_animate_surface_outputs(cmd, args, &skel, dofs, frames, anim->fps);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
     sk_hand_solver_destroy(solver);
     free(dofs);

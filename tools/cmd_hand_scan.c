@@ -17,8 +17,9 @@
 static const cli_option scan_options[] = {
     {"input", 0, "FILE", "a mesh to scan like the cast, or a point cloud taken as the registered data "
                          "(OBJ or PLY, mm, in the frame of the skeleton's pose); default: the hand surface", false},
-    {"pin", 0, "DOF=DEG", "the skeleton's pose in the data: a DOF's absolute angle in degrees (default: the cast's "
-                          "open hand); repeatable", true},
+    {"pose", 0, "FILE", "the skeleton's pose in the data: a pose JSON as `hand pose -o` writes (default: the "
+                        "cast's open hand)", false},
+    {"pin", 0, "DOF=DEG", "set a DOF of that pose to an absolute angle in degrees; repeatable", true},
     {"side", 0, "SIDE", "right (default) or left", false},
     {"hand-length", 0, "MM", "hand length, wrist crease to middle fingertip (default 190)", false},
     {"hand-breadth", 0, "MM", "hand breadth across the knuckles (default 85)", false},
@@ -34,10 +35,13 @@ static const cli_option scan_options[] = {
 
 static int fail_error(const sk_error *err) { return cli_fail_error(err); }
 
-/* The pose from --pin over the cast's open hand. */
+/* The pose from --pose (or the cast's open hand), then --pin. */
 static int read_pose(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel, double *q)
 {
     sk_hand_scan_cast_pose(skel, q);
+    const char *pose = cli_get(cmd, args, "pose");
+    sk_error err = {0};
+    if (pose && sk_hand_pose_load_file(pose, skel, q, &err) != SK_OK) return cli_fail_error(&err);
     const char *values[MAX_PINS];
     int n = cli_get_all(cmd, args, "pin", values, MAX_PINS);
     for (int i = 0; i < n; i++) {
@@ -303,7 +307,7 @@ const cli_command cmd_hand_scan = {
     .name = "hand scan",
     .summary = "the thesis's scan-to-surface pipeline: range scans, registration, slices, polygons, Bezier patches, "
                "Table 4.1",
-    .usage = "shitsukan hand scan [--input cloud.ply|mesh.obj] [--pin DOF=DEG]... -o DIR",
+    .usage = "shitsukan hand scan [--input cloud.ply|mesh.obj] [--pose pose.json] [--pin DOF=DEG]... -o DIR",
     .description =
         "Reproduces sec. 4.1 of Yasumuro's thesis. A mesh (the hand surface, or --input) is scanned\n"
         "like the plaster cast by a simulated laser range finder (512 lines x 512 points over\n"
@@ -314,7 +318,8 @@ const cli_command cmd_hand_scan = {
         "slices); 48 + 48 bicubic Bezier patches are fitted by least squares with parameter\n"
         "correction (eqs. 4.3-4.7), and their error is measured as in Table 4.1, against the scan\n"
         "and against the true surface. A point cloud as --input is taken as the registered data.\n"
-        "The skeleton's pose in the data is the cast's open hand, changed with --pin.\n"
+        "The skeleton's pose in the data is the cast's open hand, or --pose, changed with --pin;\n"
+        "an --input must be in that skeleton's frame (mm; X radial, Y distal, Z palmar).\n"
         "Writes into DIR: table-4.1.txt/.json, registration.json, patches.json (control points),\n"
         "patches.obj, polygons.obj, polygons-thesis.obj, cloud.ply (the registered data, with\n"
         "its scan side), cast.obj (the scanned hand surface), and the pictures scan-palm.png,\n"
@@ -322,7 +327,7 @@ const cli_command cmd_hand_scan = {
         "patches-posed.png (the control points moving with their links: rigid, and with the\n"
         "surface's smooth weights).",
     .examples = "  shitsukan hand scan --input hand.obj -o scan\n"
-                "  shitsukan hand scan --input cloud.ply --pin I.MCP.flex=20 -o scan --no-pictures",
+                "  shitsukan hand scan --input cloud.ply --pose pose.json --pin I.MCP.flex=20 -o scan --no-pictures",
     .options = scan_options,
     .option_count = (int)(sizeof scan_options / sizeof scan_options[0]),
     .common = CLI_COMMON_OUTPUT | CLI_COMMON_SEED | CLI_COMMON_THREADS | CLI_COMMON_QUIET,

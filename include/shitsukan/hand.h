@@ -29,6 +29,7 @@
 #include "shitsukan/draw.h"
 #include "shitsukan/image.h"
 #include "shitsukan/mesh.h"
+#include "shitsukan/skin.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -957,6 +958,56 @@ sk_result sk_hand_surface_export_mesh(const sk_hand_surface *surface, const floa
 /* Vertex of the surface mesh behind each export vertex (export vertex count entries). */
 const uint32_t *sk_hand_surface_export_map(const sk_hand_surface *surface, size_t *count);
 
+/* ------------------------------------------------------------- poses, landmarks */
+/* Reads a pose file: {"dofs": {"L.MCP.flex": 60, ...}} in degrees (mm for wrist.tx/ty/tz),
+ * the format sk_hand_pose_write_json writes (its other keys are accepted); DOFs not given
+ * keep their relaxed values. Errors name the key path. */
+sk_result sk_hand_pose_parse(const char *text, size_t length, const char *source_name,
+                             const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT], sk_error *err);
+sk_result sk_hand_pose_load_file(const char *path, const sk_hand_skeleton *skeleton,
+                                 double dofs[SK_HAND_DOF_COUNT], sk_error *err);
+
+/* The 21 landmarks of the common hand-pose datasets (e.g. MediaPipe Hands, FreiHAND):
+ * 0 wrist; 1-4 thumb CMC, MCP, IP, tip; 5-8 index MCP, PIP, DIP, tip; 9-12 middle;
+ * 13-16 ring; 17-20 little (base to tip). Joint centres of the skeleton, fingertips at
+ * the ends of the distal links (where the surface's tips are). */
+#define SK_HAND_LANDMARK_COUNT 21
+const char *sk_hand_landmark_name(int landmark);   /* "wrist", "thumb_cmc", ..., NULL outside */
+int sk_hand_landmark_point(int landmark);          /* the skeleton point (sk_hand_point_name) */
+/* Per frame (frame_count x SK_HAND_DOF_COUNT dofs): CSV "frame,landmark,name,x_mm,y_mm,z_mm"
+ * or JSON {"landmarks": [names], "frames": [[[x, y, z] x 21] per frame]}. */
+sk_result sk_hand_landmarks_write(const sk_hand_skeleton *skeleton, const double *dofs, int frame_count,
+                                  sk_hand_positions_format format, const char *path, sk_error *err);
+
+
+/* ------------------------------------------------------------- appearance */
+/* The skin texture of the atlas (sk_hand_surface_export_mesh's UVs), for the thesis's
+ * blend of shading and texture (4.1.6, Fig. 4.15: about 0.3 : 0.7). Generated: skin
+ * colour (the back a little darker than the palm, knuckles a little redder, nails
+ * pink with a pale free edge) and a height field whose normal map carries the skin
+ * module's microrelief (back_skin on the back, palm_skin on the palm, evaluated in mm of
+ * the planar projection), the transverse creases over the finger joints' backs and the
+ * flexion creases of the fingers and the palm. With photos (linear RGB, each covering the
+ * rest hand's x-y bounds as seen from its side: the back from the back, the palm from the
+ * palm side), their planar projection replaces the generated colour, the two blended
+ * across the sides of the hand so the seam does not show. */
+typedef struct sk_hand_texture_desc {
+    int size;                   /* atlas width = height in pixels; 0 = 1024; [64, 8192] */
+    const sk_image *back_photo; /* NULL = generated colour */
+    const sk_image *palm_photo;
+    const sk_skin *back_skin;   /* NULL = no microrelief on the back */
+    const sk_skin *palm_skin;   /* NULL = none on the palm */
+    double relief_scale;        /* multiplies the microrelief's height; 0 = 1; [0, 100] */
+    double crease_depth_mm;     /* depth of the joint and palm creases; 0 = 0.25; [0, 5] */
+    double seam_width;          /* palm and back blend where |normal.z| < this; 0 = 0.3;
+                                   (0, 1] */
+} sk_hand_texture_desc;
+
+/* Bakes the albedo (RGB, linear) and the tangent-space normal map (RGB, components
+ * 0.5 n + 0.5: write it with SK_PNG_ENCODING_LINEAR) of the atlas. */
+sk_result sk_hand_texture_bake(const sk_hand_surface *surface, const sk_hand_texture_desc *desc,
+                               sk_image *albedo, sk_image *normal_map, sk_error *err);
+
 /* ===================================================================== scan pipeline */
 /* The thesis's scan-to-surface pipeline (sec. 4.1.1-4.1.5), reproduced on a surface whose
  * truth is known: simulated range scans of the hand as the laser range finder saw the
@@ -1047,8 +1098,10 @@ typedef struct sk_hand_markers {
 
 /* Places the markers on the target's sides: from a point on each chosen link's axis a ray
  * goes out sideways in the palm plane; the bump's centre sits `radius_mm` x 0.3 beyond the
- * surface it leaves. radius_mm 0 = 2.5; range [0.5, 10]. Errors: a ray that leaves no
- * surface within 80 mm (the skeleton is not inside the mesh). */
+ * surface it leaves. Where the cast lies over the bump (seen along the palm's normal,
+ * from either side), the place moves along the link until it is open. radius_mm 0 = 2.5;
+ * range [0.5, 10]. Errors: a ray that leaves no surface within 80 mm (the skeleton is not
+ * inside the mesh). */
 sk_result sk_hand_markers_place(const sk_hand_scan_target *target, const sk_hand_frames *frames,
                                 double radius_mm, sk_hand_markers *out, sk_error *err);
 

@@ -27,6 +27,35 @@ static const marker_spec specs[SK_HAND_MARKER_COUNT] = {
     {17, 0.5, -1, "little proximal"},
 };
 
+/* The bump's centre beside the link at `fraction` along it: the first exit from the flesh
+ * going `side`-ways (with an implicit surface, an exit leading into more flesh, where
+ * parts of the mesh overlap, is passed), 0.3 radii beyond it. */
+static bool side_surface(const sk_hand_scan_target *target, sk_vec3d a, sk_vec3d b, double fraction, sk_vec3d side,
+                         double radius, sk_vec3d *centre)
+{
+    sk_vec3d start = sk_v3d_add(a, sk_v3d_scale(sk_v3d_sub(b, a), fraction));
+    double t = 0.0;
+    while (sk_hand_scan_target_raycast(target, start, side, t + 1e-3, 80.0, &t, NULL)) {
+        if (!target->sdf || target->sdf(target->sdf_user, sk_v3d_add(start, sk_v3d_scale(side, t + 0.5)), NULL) > 0) {
+            *centre = sk_v3d_add(start, sk_v3d_scale(side, t + 0.3 * radius));
+            return true;
+        }
+    }
+    return false;
+}
+
+/* Nothing of the cast above the bump's top or below its bottom (the two scanners look
+ * along the palm's normal). */
+static bool open_above_and_below(const sk_hand_scan_target *target, sk_vec3d c, sk_vec3d palmar, double radius)
+{
+    for (int s = -1; s <= 1; s += 2) {
+        sk_vec3d dir = sk_v3d_scale(palmar, (double)s);
+        if (sk_hand_scan_target_raycast(target, sk_v3d_add(c, sk_v3d_scale(dir, 0.9 * radius)), dir, 0.0, 1e4, NULL, NULL))
+            return false;
+    }
+    return true;
+}
+
 sk_result sk_hand_markers_place(const sk_hand_scan_target *target, const sk_hand_frames *frames,
                                 double radius_mm, sk_hand_markers *out, sk_error *err)
 {
@@ -46,29 +75,31 @@ sk_result sk_hand_markers_place(const sk_hand_scan_target *target, const sk_hand
     out->radius_mm = radius_mm;
     for (int k = 0; k < SK_HAND_MARKER_COUNT; k++) {
         const marker_spec *m = &specs[k];
-        sk_vec3d a = links.a[m->link], b = links.b[m->link];
-        sk_vec3d start = sk_v3d_add(a, sk_v3d_scale(sk_v3d_sub(b, a), m->fraction));
         /* sideways: across the link's own long axis (its frame's Y), in the palm plane */
         sk_vec3d axis = {frames->rotation[m->link].m[0][1], frames->rotation[m->link].m[1][1],
                          frames->rotation[m->link].m[2][1]};
         sk_vec3d side = sk_v3d_normalize(sk_v3d_cross(axis, palmar));
         if (sk_v3d_dot(side, radial) < 0.0) side = sk_v3d_scale(side, -1.0);
         side = sk_v3d_scale(side, (double)m->radial);
-        double t = 0.0;
-        bool found = false;
-        /* the first exit from the flesh; with an implicit surface, an exit that leads into
-           more flesh (overlapping parts of the mesh) is passed */
-        while (sk_hand_scan_target_raycast(target, start, side, t + 1e-3, 80.0, &t, NULL)) {
-            found = true;
-            if (!target->sdf || target->sdf(target->sdf_user, sk_v3d_add(start, sk_v3d_scale(side, t + 0.5)), NULL) > 0)
-                break;
-            found = false;
+        /* the place along the link nearest the chosen one from which the bump is open to
+           both the palm side and the back (another finger or the thumb may lie over it) */
+        static const double shifts[7] = {0, -0.12, 0.12, -0.24, 0.24, -0.36, 0.36};
+        bool placed = false, found_any = false;
+        for (int c = 0; c < 7 && !placed; c++) {
+            double f = sk_clampd(m->fraction + shifts[c], 0.05, 0.95);
+            sk_vec3d centre;
+            if (!side_surface(target, links.a[m->link], links.b[m->link], f, side, radius_mm, &centre)) continue;
+            if (!found_any) out->centre[k] = centre; /* the fallback: the chosen place */
+            found_any = true;
+            if (open_above_and_below(target, centre, palmar, radius_mm)) {
+                out->centre[k] = centre;
+                placed = true;
+            }
         }
-        if (!found)
+        if (!found_any)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "marker \"%s\": no surface within 80 mm beside link %s (is the skeleton inside the "
                            "mesh, in the same frame and units?)", m->name, sk_hand_link_name(m->link));
-        out->centre[k] = sk_v3d_add(start, sk_v3d_scale(side, t + 0.3 * radius_mm));
         snprintf(out->name[k], sizeof out->name[k], "%s", m->name);
     }
     out->count = SK_HAND_MARKER_COUNT;
@@ -138,7 +169,9 @@ sk_result sk_hand_markers_locate(const sk_hand_range_scan *scan, const sk_hand_m
         }
         if (n >= 6) c = fit_sphere(pts, n, r, c);
         if (n < 6)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "marker \"%s\" is seen by only %d samples of the %s scan (6 needed)",
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "marker \"%s\" is seen by only %d samples of the %s scan (6 needed): the cast hides it "
+                           "(an open hand, as the default pose, shows every marker)",
                            markers->name[k], n, side_names[scan->side == SK_HAND_SCAN_BACK]);
         centre[k] = c;
         if (used) used[k] = n;

@@ -67,7 +67,9 @@ void sk_hand__weights_compute(const sk_hand__field *f, const sk_hand_skeleton *s
                 for (int k = 0; k < n; k++) taken |= pick[k] == j;
                 if (!taken && w[j] > 0 && (m < 0 || w[j] > w[m])) m = j;
             }
-            if (m < 0) break;
+            /* weights under 2 % are dropped (the rest renormalised): they move a vertex by
+               less than 2 % of the links' relative motion and cost a blend each */
+            if (m < 0 || w[m] < 0.02 * total) break;
             pick[n] = m;
             total += w[m];
         }

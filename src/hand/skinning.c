@@ -38,6 +38,18 @@ static void link_dual_quaternions(float mats[SK_HAND_LINK_COUNT][12], float dq[S
     }
 }
 
+static void apply(const float *m, const float *P, const float *N, size_t v, float *pos, float *nrm)
+{
+    float x = P[3 * v], y = P[3 * v + 1], z = P[3 * v + 2];
+    pos[3 * v] = m[0] * x + m[1] * y + m[2] * z + m[3];
+    pos[3 * v + 1] = m[4] * x + m[5] * y + m[6] * z + m[7];
+    pos[3 * v + 2] = m[8] * x + m[9] * y + m[10] * z + m[11];
+    float a = N[3 * v], b = N[3 * v + 1], c = N[3 * v + 2];
+    nrm[3 * v] = m[0] * a + m[1] * b + m[2] * c;
+    nrm[3 * v + 1] = m[4] * a + m[5] * b + m[6] * c;
+    nrm[3 * v + 2] = m[8] * a + m[9] * b + m[10] * c;
+}
+
 static void deform_lbs(const sk_hand_surface *s, float mats[SK_HAND_LINK_COUNT][12], bool rigid, size_t lo,
                        size_t hi, float *pos, float *nrm)
 {
@@ -50,7 +62,8 @@ static void deform_lbs(const sk_hand_surface *s, float mats[SK_HAND_LINK_COUNT][
         float m[12];
         int n = rigid ? 1 : s->influences[v];
         if (n == 1) {
-            memcpy(m, mats[l[0]], sizeof m);
+            apply(mats[l[0]], P, N, v, pos, nrm);
+            continue;
         } else {
             for (int i = 0; i < 12; i++) m[i] = w[0] * mats[l[0]][i];
             for (int k = 1; k < n; k++)
@@ -69,8 +82,8 @@ static void deform_lbs(const sk_hand_surface *s, float mats[SK_HAND_LINK_COUNT][
     }
 }
 
-static void deform_dqs(const sk_hand_surface *s, float dq[SK_HAND_LINK_COUNT][8], size_t lo, size_t hi,
-                       float *pos, float *nrm)
+static void deform_dqs(const sk_hand_surface *s, float mats[SK_HAND_LINK_COUNT][12], float dq[SK_HAND_LINK_COUNT][8],
+                       size_t lo, size_t hi, float *pos, float *nrm)
 {
     const float *P = s->mesh.positions, *N = s->mesh.normals;
     const uint16_t *L = s->links[1];
@@ -79,6 +92,11 @@ static void deform_dqs(const sk_hand_surface *s, float dq[SK_HAND_LINK_COUNT][8]
         const uint16_t *l = L + 4 * v;
         const float *w = W + 4 * v;
         int n = s->influences[v];
+        if (n == 1) {
+            /* one link: its rigid motion, the same as the dual quaternion's */
+            apply(mats[l[0]], P, N, v, pos, nrm);
+            continue;
+        }
         const float *q0 = dq[l[0]];
         float b[8];
         for (int i = 0; i < 8; i++) b[i] = w[0] * q0[i];
@@ -124,7 +142,7 @@ void sk_hand_surface_deform(const sk_hand_surface *s, const sk_hand_frames *fram
 #pragma omp parallel for schedule(static) if (chunks > 1)
     for (int c = 0; c < chunks; c++) {
         size_t lo = V * (size_t)c / (size_t)chunks, hi = V * (size_t)(c + 1) / (size_t)chunks;
-        if (method == SK_HAND_SKINNING_DQS) deform_dqs(s, dq, lo, hi, positions, normals);
+        if (method == SK_HAND_SKINNING_DQS) deform_dqs(s, mats, dq, lo, hi, positions, normals);
         else deform_lbs(s, mats, method == SK_HAND_SKINNING_RIGID, lo, hi, positions, normals);
     }
 }

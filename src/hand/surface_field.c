@@ -78,7 +78,11 @@ double sk_hand__field_project(const sk_hand__field *f, sk_vec3d x, sk_vec3d *clo
     sk_vec3d p = x;
     double v = v0;
     for (int it = 0; it < 32 && fabs(v) > 1e-7; it++) {
-        sk_vec3d g = sk_hand__field_gradient(f, p);
+        /* forward differences: the value at p is known */
+        const double e = 1e-4;
+        sk_vec3d g = sk_v3d((sk_hand__field_eval(f, sk_v3d(p.x + e, p.y, p.z)) - v) / e,
+                            (sk_hand__field_eval(f, sk_v3d(p.x, p.y + e, p.z)) - v) / e,
+                            (sk_hand__field_eval(f, sk_v3d(p.x, p.y, p.z + e)) - v) / e);
         double gg = sk_v3d_dot(g, g);
         if (gg < 1e-12) break;
         double step = v / gg;

@@ -32,6 +32,11 @@ static bool triangles_cross(const sk_hand__trimesh *m, const uint32_t *A, const 
 {
     const double *a[3], *b[3];
     for (int k = 0; k < 3; k++) a[k] = m->pos + 3 * (size_t)A[k], b[k] = m->pos + 3 * (size_t)B[k];
+    for (int j = 0; j < 3; j++) {
+        double alo = fmin(a[0][j], fmin(a[1][j], a[2][j])), ahi = fmax(a[0][j], fmax(a[1][j], a[2][j]));
+        double blo = fmin(b[0][j], fmin(b[1][j], b[2][j])), bhi = fmax(b[0][j], fmax(b[1][j], b[2][j]));
+        if (ahi < blo || bhi < alo) return false;
+    }
     for (int k = 0; k < 3; k++)
         if (segment_crosses(a[k], a[(k + 1) % 3], b[0], b[1], b[2]) ||
             segment_crosses(b[k], b[(k + 1) % 3], a[0], a[1], a[2]))
