@@ -120,6 +120,6 @@ int main(void)
         double c = sk_time_seconds() - c0;
         if (c < best_cmd) best_cmd = c;
     }
-    printf("  shitsukan hand scan -o DIR (cast, pipeline, 16 files and pictures): %.3f s (best of 2)\n", best_cmd);
+    printf("  shitsukan hand scan -o DIR (cast, pipeline, 9 files and 8 pictures): %.3f s (best of 2)\n", best_cmd);
     return 0;
 }

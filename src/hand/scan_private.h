@@ -74,10 +74,9 @@ struct sk_hand_scan_target {
 };
 
 /* Refines a ray's hit on the mesh onto the implicit surface (secant steps along the ray);
- * false when there is no implicit or it does not converge near the mesh hit. `normal` is
- * unused (may be NULL). */
+ * false when there is no implicit or it does not converge near the mesh hit. */
 bool sk_hand__target_refine(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d, double t_mesh,
-                            double *t, sk_vec3d *normal);
+                            double *t);
 
 /* ---------------------------------------------------------- link frames */
 /* Link coordinates of p: distance along the link's axis from its base (mm, unclamped) and

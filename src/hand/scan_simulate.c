@@ -159,7 +159,7 @@ static void scan_sample(const scan_setup *s, int i, int j, float *depth, float *
         /* the hit on the implicit surface, if there is one; the facet's normal is close
            enough for the incidence angles */
         double t_fine;
-        if (sk_hand__target_refine(s->target, o, s->down_h, hit.t, &t_fine, NULL)) t_hit = t_fine;
+        if (sk_hand__target_refine(s->target, o, s->down_h, hit.t, &t_fine)) t_hit = t_fine;
     }
     if (s->markers)
         for (int k = 0; k < s->markers->count; k++) {

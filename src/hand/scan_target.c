@@ -76,9 +76,8 @@ bool sk_hand_scan_target_raycast(const sk_hand_scan_target *target, sk_vec3d o, 
 }
 
 bool sk_hand__target_refine(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d, double t_mesh,
-                            double *t, sk_vec3d *normal)
+                            double *t)
 {
-    (void)normal;
     if (!target->sdf) return false;
     /* secant steps on f(o + t d) from the mesh's hit: the field's value only, no gradient
        (a field whose gradient is itself found by differences costs six values more) */
