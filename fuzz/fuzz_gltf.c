@@ -15,7 +15,10 @@ static void check(bool ok)
     if (!ok) abort();
 }
 
-static bool index_ok(int index, int count) { return index == SK_GLTF_NONE || (index >= 0 && index < count); }
+static bool index_ok(int index, int count)
+{
+    return index == SK_GLTF_NONE || (index >= 0 && index < count);
+}
 
 static void check_accessor(const sk_gltf_doc *doc, int index, int accessors)
 {
@@ -33,8 +36,8 @@ static void check_accessor(const sk_gltf_doc *doc, int index, int accessors)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static const char *const attributes[] = {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "COLOR_0",
-                                             "JOINTS_0", "WEIGHTS_0", "indices"};
+    static const char *const attributes[] = {"POSITION", "NORMAL",   "TANGENT",   "TEXCOORD_0",
+                                             "COLOR_0",  "JOINTS_0", "WEIGHTS_0", "indices"};
     sk_gltf_doc *doc = NULL;
     sk_gltf_read_desc desc = {SK_FUZZ_GLTF_CAP};
     if (sk_gltf_read_glb_memory(&doc, data, size, &desc, NULL) != SK_OK) {

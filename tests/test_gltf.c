@@ -141,11 +141,13 @@ static void expect_bad_glb(const uint8_t *data, size_t size, sk_result want, con
 {
     sk_gltf_doc *doc = (sk_gltf_doc *)1;
     sk_error err = {0};
-    sk_test_expect_failure(sk_gltf_read_glb_memory(&doc, data, size, NULL, &err), &err, want, needle);
+    sk_test_expect_failure(sk_gltf_read_glb_memory(&doc, data, size, NULL, &err), &err, want,
+                           needle);
     assert_null(doc);
 }
 
-static void expect_bad_edit(const uint8_t *glb, size_t size, json_edit edit, sk_result want, const char *needle)
+static void expect_bad_edit(const uint8_t *glb, size_t size, json_edit edit, sk_result want,
+                            const char *needle)
 {
     uint8_t *p;
     size_t n;
@@ -195,9 +197,11 @@ static void test_static_roundtrip(void **state)
     sk_gltf *g;
     SK_ASSERT_OK(sk_gltf_create(&g, &e_));
     int mat, mesh, parent, child;
-    sk_gltf_material_desc md = {.name = "m", .base_color_texture = &colour, .normal_texture = &normal};
+    sk_gltf_material_desc md = {
+        .name = "m", .base_color_texture = &colour, .normal_texture = &normal};
     SK_ASSERT_OK(sk_gltf_add_material(g, &md, &mat, &e_));
-    sk_gltf_mesh_desc d = {.name = "grid", .mesh = &grid, .uv_origin_bottom_left = true, .material = mat};
+    sk_gltf_mesh_desc d = {
+        .name = "grid", .mesh = &grid, .uv_origin_bottom_left = true, .material = mat};
     SK_ASSERT_OK(sk_gltf_add_mesh(g, &d, &mesh, &e_));
     sk_gltf_node_desc n = sk_gltf_node_desc_default();
     n.name = "parent";
@@ -258,7 +262,8 @@ static void test_static_roundtrip(void **state)
     float *tan = accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "TANGENT"), 9, 4);
     for (int v = 0; v < 9; v++) {
         assert_true(fabsf(tan[4 * v + 3]) == 1.0f);
-        float len = sqrtf(tan[4 * v] * tan[4 * v] + tan[4 * v + 1] * tan[4 * v + 1] + tan[4 * v + 2] * tan[4 * v + 2]);
+        float len = sqrtf(tan[4 * v] * tan[4 * v] + tan[4 * v + 1] * tan[4 * v + 1] +
+                          tan[4 * v + 2] * tan[4 * v + 2]);
         assert_true(fabsf(len - 1.0f) < 1e-6f);
     }
     float *ix = accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "indices"), 24, 1);
@@ -327,7 +332,8 @@ static void make_chain(chain *c, const float *inverse_bind)
     for (int v = 0; v < 9; v++) {
         uint16_t *j = c->j + 4 * v;
         float *w = c->w + 4 * v;
-        j[0] = (uint16_t)(v % 3), j[1] = (uint16_t)((v + 1) % 3), j[2] = 2, j[3] = (uint16_t)((v + 2) % 3);
+        j[0] = (uint16_t)(v % 3), j[1] = (uint16_t)((v + 1) % 3), j[2] = 2,
+        j[3] = (uint16_t)((v + 2) % 3);
         /* not normalised to float exactness: the writer must do that */
         w[0] = 0.7f, w[1] = 0.2f, w[2] = 0.0f, w[3] = 0.1f;
         if (v == 4) w[0] = 1.0f, w[1] = w[3] = 0.0f;
@@ -344,7 +350,8 @@ static void make_chain(chain *c, const float *inverse_bind)
         n.rotation[k] = sin(a / 2), n.rotation[3] = cos(a / 2);
         SK_ASSERT_OK(sk_gltf_add_node(c->g, &n, &c->joints[k], &e_));
     }
-    sk_gltf_mesh_desc d = {.mesh = &c->mesh_data, .material = SK_GLTF_NONE, .joints = c->j, .weights = c->w};
+    sk_gltf_mesh_desc d = {
+        .mesh = &c->mesh_data, .material = SK_GLTF_NONE, .joints = c->j, .weights = c->w};
     SK_ASSERT_OK(sk_gltf_add_mesh(c->g, &d, &c->mesh, &e_));
     SK_ASSERT_OK(sk_gltf_add_skin(c->g, NULL, c->joints, 3, inverse_bind, &c->skin, &e_));
     sk_gltf_node_desc n = sk_gltf_node_desc_default();
@@ -363,12 +370,12 @@ static void test_skin_roundtrip(void **state)
     float rot[12] = {0, 0, 0, 1, 0, 0.6f, 0, 0.8f, 0.6f, 0, 0, 0.8f};
     float move[9] = {0, 0, 0, 1, 2, 3, -1, 0.5f, 0};
     float grow[6] = {1, 1, 1, 2, 2, 2};
-    SK_ASSERT_OK(sk_gltf_add_channel(c.g, c.anim, c.joints[1], SK_GLTF_PATH_ROTATION, SK_GLTF_INTERPOLATION_DEFAULT,
-                                     times, 3, rot, &e_));
-    SK_ASSERT_OK(sk_gltf_add_channel(c.g, c.anim, c.joints[0], SK_GLTF_PATH_TRANSLATION, SK_GLTF_INTERPOLATION_STEP,
-                                     times, 3, move, &e_));
-    SK_ASSERT_OK(sk_gltf_add_channel(c.g, c.anim, c.joints[2], SK_GLTF_PATH_SCALE, SK_GLTF_INTERPOLATION_LINEAR,
-                                     other_times, 2, grow, &e_));
+    SK_ASSERT_OK(sk_gltf_add_channel(c.g, c.anim, c.joints[1], SK_GLTF_PATH_ROTATION,
+                                     SK_GLTF_INTERPOLATION_DEFAULT, times, 3, rot, &e_));
+    SK_ASSERT_OK(sk_gltf_add_channel(c.g, c.anim, c.joints[0], SK_GLTF_PATH_TRANSLATION,
+                                     SK_GLTF_INTERPOLATION_STEP, times, 3, move, &e_));
+    SK_ASSERT_OK(sk_gltf_add_channel(c.g, c.anim, c.joints[2], SK_GLTF_PATH_SCALE,
+                                     SK_GLTF_INTERPOLATION_LINEAR, other_times, 2, grow, &e_));
     sk_gltf_doc *doc = write_and_read(c.g, NULL, NULL);
     assert_int_equal(sk_gltf_doc_count(doc).skins, 1);
     const int *joints;
@@ -394,7 +401,8 @@ static void test_skin_roundtrip(void **state)
         mul(ib, world, prod);
         for (int i = 0; i < 16; i++) assert_true(fabs(prod[i] - (i % 5 == 0 ? 1.0 : 0.0)) < 1e-6);
         /* the validator wants the last row exactly (0, 0, 0, 1) */
-        assert_true(m[16 * k + 3] == 0 && m[16 * k + 7] == 0 && m[16 * k + 11] == 0 && m[16 * k + 15] == 1);
+        assert_true(m[16 * k + 3] == 0 && m[16 * k + 7] == 0 && m[16 * k + 11] == 0 &&
+                    m[16 * k + 15] == 1);
     }
     sk_gltf_doc_node body;
     SK_ASSERT_OK(sk_gltf_doc_get_node(doc, c.body, &body, &e_));
@@ -407,9 +415,12 @@ static void test_skin_roundtrip(void **state)
         for (int k = 0; k < 4; k++) {
             float w = ww[4 * v + k];
             if (w != 0) sum += w;
-            if (w == 0) assert_true(jw[4 * v + k] == 0.0f); /* weight 0 names joint 0 */
-            else assert_true(jw[4 * v + k] == (float)c.j[4 * v + k]);
-            double want = c.w[4 * v + k] / (c.w[4 * v] + c.w[4 * v + 1] + c.w[4 * v + 2] + (double)c.w[4 * v + 3]);
+            if (w == 0)
+                assert_true(jw[4 * v + k] == 0.0f); /* weight 0 names joint 0 */
+            else
+                assert_true(jw[4 * v + k] == (float)c.j[4 * v + k]);
+            double want = c.w[4 * v + k] /
+                          (c.w[4 * v] + c.w[4 * v + 1] + c.w[4 * v + 2] + (double)c.w[4 * v + 3]);
             assert_true(fabs(w - want) < 1e-6);
         }
         assert_true(fabsf(sum - 1.0f) <= 2e-7f);
@@ -445,7 +456,8 @@ static void test_skin_roundtrip(void **state)
     given[12] = 0.25f, given[16 + 13] = -3.0f;
     chain d;
     make_chain(&d, given);
-    SK_ASSERT_OK(sk_gltf_add_channel(d.g, d.anim, d.joints[0], SK_GLTF_PATH_ROTATION, 0, times, 1, rot, &e_));
+    SK_ASSERT_OK(sk_gltf_add_channel(d.g, d.anim, d.joints[0], SK_GLTF_PATH_ROTATION, 0, times, 1,
+                                     rot, &e_));
     doc = write_and_read(d.g, NULL, NULL);
     SK_ASSERT_OK(sk_gltf_doc_get_skin(doc, 0, &joints, &joint_count, &ibm, &e_));
     m = accessor(doc, ibm, 3, 16);
@@ -465,22 +477,30 @@ static void test_morph_roundtrip(void **state)
     sk_mesh grid;
     make_grid(&grid);
     float targets[2 * 27], normals[2 * 27], defaults[2] = {0.5f, 0.0f};
-    for (int i = 0; i < 54; i++) targets[i] = 0.01f * (float)(i % 7) - 0.02f, normals[i] = 0.001f * (float)i;
+    for (int i = 0; i < 54; i++)
+        targets[i] = 0.01f * (float)(i % 7) - 0.02f, normals[i] = 0.001f * (float)i;
     const char *names[2] = {"smile", "frown"};
     sk_gltf *g;
     SK_ASSERT_OK(sk_gltf_create(&g, &e_));
     int mesh, node, linear, step;
-    sk_gltf_mesh_desc d = {.mesh = &grid, .material = SK_GLTF_NONE, .target_count = 2, .target_positions = targets,
-                           .target_normals = normals, .default_weights = defaults, .target_names = names};
+    sk_gltf_mesh_desc d = {.mesh = &grid,
+                           .material = SK_GLTF_NONE,
+                           .target_count = 2,
+                           .target_positions = targets,
+                           .target_normals = normals,
+                           .default_weights = defaults,
+                           .target_names = names};
     SK_ASSERT_OK(sk_gltf_add_mesh(g, &d, &mesh, &e_));
     sk_gltf_node_desc n = sk_gltf_node_desc_default();
     n.mesh = mesh;
     SK_ASSERT_OK(sk_gltf_add_node(g, &n, &node, &e_));
     float times[3] = {0.0f, 1.0f, 2.0f}, w[6] = {0, 1, 1, 0, 0.25f, 0.75f};
     SK_ASSERT_OK(sk_gltf_add_animation(g, "linear", &linear, &e_));
-    SK_ASSERT_OK(sk_gltf_add_channel(g, linear, node, SK_GLTF_PATH_WEIGHTS, SK_GLTF_INTERPOLATION_LINEAR, times, 3, w, &e_));
+    SK_ASSERT_OK(sk_gltf_add_channel(g, linear, node, SK_GLTF_PATH_WEIGHTS,
+                                     SK_GLTF_INTERPOLATION_LINEAR, times, 3, w, &e_));
     SK_ASSERT_OK(sk_gltf_add_animation(g, "step", &step, &e_));
-    SK_ASSERT_OK(sk_gltf_add_channel(g, step, node, SK_GLTF_PATH_WEIGHTS, SK_GLTF_INTERPOLATION_STEP, times, 3, w, &e_));
+    SK_ASSERT_OK(sk_gltf_add_channel(g, step, node, SK_GLTF_PATH_WEIGHTS,
+                                     SK_GLTF_INTERPOLATION_STEP, times, 3, w, &e_));
     uint8_t *bytes;
     size_t size;
     sk_gltf_doc *doc = write_and_read(g, &bytes, &size);
@@ -499,7 +519,8 @@ static void test_morph_roundtrip(void **state)
         SK_ASSERT_OK(sk_gltf_doc_get_channel(doc, a, 0, &ch, &e_));
         assert_int_equal(ch.path, SK_GLTF_PATH_WEIGHTS);
         assert_int_equal(ch.node, node);
-        assert_int_equal(ch.interpolation, a == 0 ? SK_GLTF_INTERPOLATION_LINEAR : SK_GLTF_INTERPOLATION_STEP);
+        assert_int_equal(ch.interpolation,
+                         a == 0 ? SK_GLTF_INTERPOLATION_LINEAR : SK_GLTF_INTERPOLATION_STEP);
         float *wv = accessor(doc, ch.output_accessor, 6, 1); /* one scalar per target per key */
         assert_floats_equal(wv, w, 6);
         free(wv);
@@ -537,7 +558,8 @@ static void test_samples_read_back(void **state)
 
 /* ------------------------------------------------------------------ writer errors */
 
-static sk_result add_grid_mesh(sk_gltf *g, sk_mesh *m, const uint16_t *j, const float *w, sk_error *err)
+static sk_result add_grid_mesh(sk_gltf *g, sk_mesh *m, const uint16_t *j, const float *w,
+                               sk_error *err)
 {
     int index;
     sk_gltf_mesh_desc d = {.mesh = m, .material = SK_GLTF_NONE, .joints = j, .weights = w};
@@ -555,55 +577,73 @@ static void test_writer_refuses_bad_input(void **state)
     int index = 0;
 
     m.indices[4] = 9; /* bad index */
-    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT, "meshes[0]");
+    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "meshes[0]");
     m.indices[4] = 3;
     m.positions[7] = NAN;
-    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT, "meshes[0]");
+    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "meshes[0]");
     m.positions[7] = 0.0f;
     m.colors[5] = 1.5f;
-    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT, "colors[1]");
+    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "colors[1]");
     m.colors[5] = 0.5f;
     m.normals[4] = 0.0f; /* a zero normal */
-    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT, "normals[1]");
+    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "normals[1]");
     m.normals[4] = 1.0f;
 
     uint16_t j[36] = {0};
     float w[36] = {0};
-    for (int v = 0; v < 9; v++) j[4 * v] = 0, j[4 * v + 1] = 1, w[4 * v] = 0.5f, w[4 * v + 1] = 0.5f;
+    for (int v = 0; v < 9; v++)
+        j[4 * v] = 0, j[4 * v + 1] = 1, w[4 * v] = 0.5f, w[4 * v + 1] = 0.5f;
     w[4 * 3 + 1] = 0.4f; /* sums to 0.9 */
-    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT, "weights[3] sum to 0.9");
+    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "weights[3] sum to 0.9");
     w[4 * 3 + 1] = 0.5f;
     w[4 * 2 + 2] = -0.1f;
-    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT, "weights[2][2]");
+    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "weights[2][2]");
     w[4 * 2 + 2] = 0.0f;
     j[4 * 6 + 1] = 0; /* joint 0 twice with weight */
-    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT, "joints[6]");
+    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "joints[6]");
     j[4 * 6 + 1] = 1;
     sk_gltf_mesh_desc half = {.mesh = &m, .material = SK_GLTF_NONE, .joints = j};
-    sk_test_expect_failure(sk_gltf_add_mesh(g, &half, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "together");
+    sk_test_expect_failure(sk_gltf_add_mesh(g, &half, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "together");
     float tp[27] = {0};
-    sk_gltf_mesh_desc morph = {.mesh = &m, .material = SK_GLTF_NONE, .target_count = 1, .target_positions = tp};
+    sk_gltf_mesh_desc morph = {
+        .mesh = &m, .material = SK_GLTF_NONE, .target_count = 1, .target_positions = tp};
     tp[5] = INFINITY;
-    sk_test_expect_failure(sk_gltf_add_mesh(g, &morph, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "target_positions[5]");
+    sk_test_expect_failure(sk_gltf_add_mesh(g, &morph, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "target_positions[5]");
     tp[5] = 0;
     const char *dup[2] = {"a", "a"};
     float tp2[54] = {0};
-    sk_gltf_mesh_desc morph2 = {.mesh = &m, .material = SK_GLTF_NONE, .target_count = 2, .target_positions = tp2, .target_names = dup};
-    sk_test_expect_failure(sk_gltf_add_mesh(g, &morph2, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "target_names[1]");
+    sk_gltf_mesh_desc morph2 = {.mesh = &m,
+                                .material = SK_GLTF_NONE,
+                                .target_count = 2,
+                                .target_positions = tp2,
+                                .target_names = dup};
+    sk_test_expect_failure(sk_gltf_add_mesh(g, &morph2, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "target_names[1]");
 
     /* materials and textures */
     sk_gltf_material_desc md = {.roughness = 1.5f};
-    sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "roughness");
+    sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "roughness");
     md.roughness = 0.5f;
     md.base_color[1] = NAN;
-    sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "base_color[1]");
+    sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "base_color[1]");
     md.base_color[1] = 0.0f;
     sk_image tex;
     SK_ASSERT_OK(sk_image_create(&tex, 2, 2, 3, &e_));
     tex.data[4] = 2.0f;
     md.base_color_texture = &tex;
-    sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
-                           "base_color_texture: pixel (1, 0)");
+    sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "base_color_texture: pixel (1, 0)");
     tex.data[4] = 0.5f;
     int textured;
     SK_ASSERT_OK(sk_gltf_add_material(g, &md, &textured, &e_));
@@ -612,27 +652,31 @@ static void test_writer_refuses_bad_input(void **state)
     free(bare.uvs);
     bare.uvs = NULL;
     sk_gltf_mesh_desc needs_uv = {.mesh = &bare, .material = textured};
-    sk_test_expect_failure(sk_gltf_add_mesh(g, &needs_uv, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "needs uvs");
+    sk_test_expect_failure(sk_gltf_add_mesh(g, &needs_uv, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "needs uvs");
     sk_gltf_material_desc nd = {.normal_texture = &tex};
     int normal_mat;
     SK_ASSERT_OK(sk_gltf_add_material(g, &nd, &normal_mat, &e_));
     sk_gltf_mesh_desc needs_tangents = {.mesh = &m, .material = normal_mat};
-    sk_test_expect_failure(sk_gltf_add_mesh(g, &needs_tangents, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
-                           "tangent");
+    sk_test_expect_failure(sk_gltf_add_mesh(g, &needs_tangents, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "tangent");
     sk_gltf_mesh_desc no_material = {.mesh = &m, .material = 7};
-    sk_test_expect_failure(sk_gltf_add_mesh(g, &no_material, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
-                           "material = 7");
+    sk_test_expect_failure(sk_gltf_add_mesh(g, &no_material, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "material = 7");
 
     /* nodes */
     sk_gltf_node_desc n = sk_gltf_node_desc_default();
     n.parent = 0;
-    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "nodes[0].parent");
+    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "nodes[0].parent");
     n = sk_gltf_node_desc_default();
     n.rotation[0] = 0.5;
-    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "rotation");
+    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "rotation");
     n.rotation[0] = 0;
     n.translation[2] = NAN;
-    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "translation[2]");
+    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "translation[2]");
     n.translation[2] = 0;
     int root, plain_mesh, skinned_mesh, node_plain;
     SK_ASSERT_OK(sk_gltf_add_node(g, &n, &root, &e_));
@@ -641,7 +685,8 @@ static void test_writer_refuses_bad_input(void **state)
     sk_gltf_mesh_desc sd = {.mesh = &m, .material = SK_GLTF_NONE, .joints = j, .weights = w};
     SK_ASSERT_OK(sk_gltf_add_mesh(g, &sd, &skinned_mesh, &e_));
     n.mesh = skinned_mesh;
-    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "needs a skin");
+    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "needs a skin");
     int joint_list[2] = {root, root};
     sk_test_expect_failure(sk_gltf_add_skin(g, NULL, joint_list, 2, NULL, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "joints[1] = 0 repeats");
@@ -649,7 +694,8 @@ static void test_writer_refuses_bad_input(void **state)
     SK_ASSERT_OK(sk_gltf_add_skin(g, NULL, &root, 1, NULL, &one_joint, &e_));
     (void)one_joint;
     n.skin = 0;
-    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "uses joint 1");
+    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "uses joint 1");
     int second;
     n = sk_gltf_node_desc_default();
     n.parent = root;
@@ -660,14 +706,16 @@ static void test_writer_refuses_bad_input(void **state)
     n.mesh = skinned_mesh;
     n.skin = skin1;
     n.translation[0] = 1;
-    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "root without");
+    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "root without");
     n.translation[0] = 0;
     int skinned_node;
     SK_ASSERT_OK(sk_gltf_add_node(g, &n, &skinned_node, &e_));
     n = sk_gltf_node_desc_default();
     n.mesh = plain_mesh;
     n.skin = skin1;
-    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT, "needs a mesh with joints");
+    sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+                           "needs a mesh with joints");
     n.skin = SK_GLTF_NONE;
     SK_ASSERT_OK(sk_gltf_add_node(g, &n, &node_plain, &e_));
     float ibm_bad[16] = {1, 0, 0, 0.5f, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
@@ -679,39 +727,50 @@ static void test_writer_refuses_bad_input(void **state)
     SK_ASSERT_OK(sk_gltf_add_animation(g, NULL, &anim, &e_));
     uint8_t *data = (uint8_t *)1;
     size_t size = 1;
-    sk_test_expect_failure(sk_gltf_write_glb_memory(g, NULL, &data, &size, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+    sk_test_expect_failure(sk_gltf_write_glb_memory(g, NULL, &data, &size, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT,
                            "animations[0] (\"animation0\") has no channels");
     assert_null(data);
     float times[3] = {0.0f, 0.5f, 0.5f}, values[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "times[2] = 0.5 is not after times[1]");
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "times[2] = 0.5 is not after times[1]");
     times[2] = 1.0f;
     times[0] = -1.0f;
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "times[0]");
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "times[0]");
     times[0] = 0.0f;
     values[4] = 2.0f;
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "key 1");
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "key 1");
     values[4] = 0.0f;
     values[0] = NAN;
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_TRANSLATION, 0, times, 3, values, &err),
-                           &err, SK_ERROR_INVALID_ARGUMENT, "values[0]");
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_TRANSLATION, 0, times, 3, values, &err),
+        &err, SK_ERROR_INVALID_ARGUMENT, "values[0]");
     values[0] = 0.0f;
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, node_plain, SK_GLTF_PATH_WEIGHTS, 0, times, 3, values, &err),
-                           &err, SK_ERROR_INVALID_ARGUMENT, "morph targets");
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, skinned_node, SK_GLTF_PATH_TRANSLATION, 0, times, 3, values,
-                                               &err),
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, anim, node_plain, SK_GLTF_PATH_WEIGHTS, 0, times, 3, values, &err),
+        &err, SK_ERROR_INVALID_ARGUMENT, "morph targets");
+    sk_test_expect_failure(sk_gltf_add_channel(g, anim, skinned_node, SK_GLTF_PATH_TRANSLATION, 0,
+                                               times, 3, values, &err),
                            &err, SK_ERROR_INVALID_ARGUMENT, "skinned mesh");
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, 99, SK_GLTF_PATH_SCALE, 0, times, 3, values, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "node = 99");
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, root, (sk_gltf_path)7, 0, times, 3, values, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "path = 7");
-    SK_ASSERT_OK(sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &e_));
-    sk_test_expect_failure(sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "already animated");
-    sk_test_expect_failure(sk_gltf_add_channel(g, 5, root, SK_GLTF_PATH_SCALE, 0, times, 3, values, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "animation = 5");
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, anim, 99, SK_GLTF_PATH_SCALE, 0, times, 3, values, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "node = 99");
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, anim, root, (sk_gltf_path)7, 0, times, 3, values, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "path = 7");
+    SK_ASSERT_OK(
+        sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &e_));
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, anim, root, SK_GLTF_PATH_ROTATION, 0, times, 3, values, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "already animated");
+    sk_test_expect_failure(
+        sk_gltf_add_channel(g, 5, root, SK_GLTF_PATH_SCALE, 0, times, 3, values, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "animation = 5");
     /* nothing a refused call tried to add was kept: the document still validates */
     SK_ASSERT_OK(sk_gltf_write_glb_memory(g, NULL, &data, &size, &e_));
     sk_gltf_doc *doc;
@@ -744,13 +803,20 @@ static uint8_t *good_glb(sk_test_gltf_kind kind, size_t *size)
 }
 
 static void edit_count(cJSON *root) { set_number(item(root, "accessors", 3), "count", 1e6); }
-static void edit_sparse(cJSON *root) { cJSON_AddObjectToObject(item(root, "accessors", 2), "sparse"); }
+static void edit_sparse(cJSON *root)
+{
+    cJSON_AddObjectToObject(item(root, "accessors", 2), "sparse");
+}
 static void edit_view(cJSON *root) { set_number(item(root, "bufferViews", 1), "byteOffset", 1e7); }
-static void edit_component(cJSON *root) { set_number(item(root, "accessors", 0), "componentType", 5124); }
+static void edit_component(cJSON *root)
+{
+    set_number(item(root, "accessors", 0), "componentType", 5124);
+}
 static void edit_alignment(cJSON *root) { set_number(item(root, "accessors", 0), "byteOffset", 2); }
 static void edit_cubic(cJSON *root)
 {
-    cJSON *sampler = cJSON_GetArrayItem(cJSON_GetObjectItem(item(root, "animations", 0), "samplers"), 0);
+    cJSON *sampler =
+        cJSON_GetArrayItem(cJSON_GetObjectItem(item(root, "animations", 0), "samplers"), 0);
     cJSON_DeleteItemFromObject(sampler, "interpolation");
     cJSON_AddStringToObject(sampler, "interpolation", "CUBICSPLINE");
 }
@@ -779,7 +845,8 @@ static void edit_animated_matrix(cJSON *root)
 }
 static void edit_times(cJSON *root)
 {
-    cJSON *sampler = cJSON_GetArrayItem(cJSON_GetObjectItem(item(root, "animations", 0), "samplers"), 2);
+    cJSON *sampler =
+        cJSON_GetArrayItem(cJSON_GetObjectItem(item(root, "animations", 0), "samplers"), 2);
     cJSON *output = cJSON_GetObjectItem(sampler, "output");
     cJSON_SetNumberValue(cJSON_GetObjectItem(sampler, "input"), output->valuedouble);
 }
@@ -791,11 +858,15 @@ static void edit_version(cJSON *root)
 }
 static void edit_attribute(cJSON *root)
 {
-    cJSON *attrs = cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(item(root, "meshes", 0), "primitives"), 0),
-                                       "attributes");
+    cJSON *attrs = cJSON_GetObjectItem(
+        cJSON_GetArrayItem(cJSON_GetObjectItem(item(root, "meshes", 0), "primitives"), 0),
+        "attributes");
     cJSON_AddNumberToObject(attrs, "COLOUR", 0);
 }
-static void edit_uri(cJSON *root) { cJSON_AddStringToObject(item(root, "buffers", 0), "uri", "data.bin"); }
+static void edit_uri(cJSON *root)
+{
+    cJSON_AddStringToObject(item(root, "buffers", 0), "uri", "data.bin");
+}
 static void edit_skin_joint(cJSON *root)
 {
     cJSON *joints = cJSON_GetObjectItem(item(root, "skins", 0), "joints");
@@ -812,7 +883,8 @@ static void break_index(uint8_t *glb, size_t size)
     int acc = cJSON_GetObjectItem(prim, "indices")->valueint;
     int pos = cJSON_GetObjectItem(cJSON_GetObjectItem(prim, "attributes"), "POSITION")->valueint;
     int vertices = cJSON_GetObjectItem(item(root, "accessors", pos), "count")->valueint;
-    cJSON *view = item(root, "bufferViews", cJSON_GetObjectItem(item(root, "accessors", acc), "bufferView")->valueint);
+    cJSON *view = item(root, "bufferViews",
+                       cJSON_GetObjectItem(item(root, "accessors", acc), "bufferView")->valueint);
     size_t at = 20 + json_len + 8 + (size_t)cJSON_GetObjectItem(view, "byteOffset")->valueint;
     assert_true(at + 2 <= size);
     glb[at] = (uint8_t)vertices, glb[at + 1] = (uint8_t)(vertices >> 8); /* unsigned shorts */
@@ -825,9 +897,11 @@ static void break_times(uint8_t *glb, size_t size)
     uint32_t json_len;
     memcpy(&json_len, glb + 12, 4);
     cJSON *root = cJSON_ParseWithLength((const char *)glb + 20, json_len);
-    cJSON *sampler = cJSON_GetArrayItem(cJSON_GetObjectItem(item(root, "animations", 0), "samplers"), 0);
+    cJSON *sampler =
+        cJSON_GetArrayItem(cJSON_GetObjectItem(item(root, "animations", 0), "samplers"), 0);
     int acc = cJSON_GetObjectItem(sampler, "input")->valueint;
-    cJSON *view = item(root, "bufferViews", cJSON_GetObjectItem(item(root, "accessors", acc), "bufferView")->valueint);
+    cJSON *view = item(root, "bufferViews",
+                       cJSON_GetObjectItem(item(root, "accessors", acc), "bufferView")->valueint);
     size_t at = 20 + json_len + 8 + (size_t)cJSON_GetObjectItem(view, "byteOffset")->valueint;
     assert_true(at + 8 <= size);
     memcpy(glb + at + 4, glb + at, 4);
@@ -882,9 +956,11 @@ static void test_reader_refuses_damage(void **state)
     expect_bad_edit(glb, size, edit_view, SK_ERROR_PARSE, "bufferViews[1]");
     expect_bad_edit(glb, size, edit_component, SK_ERROR_PARSE, "accessors[0].componentType = 5124");
     expect_bad_edit(glb, size, edit_alignment, SK_ERROR_PARSE, "accessors[0].byteOffset = 2");
-    expect_bad_edit(glb, size, edit_cubic, SK_ERROR_UNSUPPORTED, "animations[0].samplers[0].interpolation");
+    expect_bad_edit(glb, size, edit_cubic, SK_ERROR_UNSUPPORTED,
+                    "animations[0].samplers[0].interpolation");
     expect_bad_edit(glb, size, edit_required, SK_ERROR_UNSUPPORTED, "KHR_draco_mesh_compression");
-    expect_bad_edit(glb, size, edit_loop, SK_ERROR_PARSE, "nodes[2].children[0] = 1: already a child of nodes[0]");
+    expect_bad_edit(glb, size, edit_loop, SK_ERROR_PARSE,
+                    "nodes[2].children[0] = 1: already a child of nodes[0]");
     expect_bad_edit(glb, size, edit_cycle, SK_ERROR_PARSE, "loop of children");
     expect_bad_edit(glb, size, edit_animated_matrix, SK_ERROR_PARSE, "matrix");
     expect_bad_edit(glb, size, edit_times, SK_ERROR_PARSE, "samplers[2].input");
@@ -906,17 +982,20 @@ static void test_reader_refuses_damage(void **state)
     sk_gltf_read_desc small = {.max_bytes = size - 1};
     sk_error err = {0};
     doc = (sk_gltf_doc *)1;
-    sk_test_expect_failure(sk_gltf_read_glb_memory(&doc, glb, size, &small, &err), &err, SK_ERROR_LIMIT, "cap");
+    sk_test_expect_failure(sk_gltf_read_glb_memory(&doc, glb, size, &small, &err), &err,
+                           SK_ERROR_LIMIT, "cap");
     assert_null(doc);
     small.max_bytes = size + 1000; /* the file fits, its JSON tree does not */
-    sk_test_expect_failure(sk_gltf_read_glb_memory(&doc, glb, size, &small, &err), &err, SK_ERROR_LIMIT, "JSON chunk");
+    sk_test_expect_failure(sk_gltf_read_glb_memory(&doc, glb, size, &small, &err), &err,
+                           SK_ERROR_LIMIT, "JSON chunk");
 
     /* files, and queries out of range */
     const char *path = sk_test_path("gltf/good.glb");
     sk_test_write_file(path, glb, size);
     SK_ASSERT_OK(sk_gltf_read_glb(&doc, path, NULL, &e_));
     sk_gltf_doc_node node;
-    sk_test_expect_failure(sk_gltf_doc_get_node(doc, 99, &node, &err), &err, SK_ERROR_INVALID_ARGUMENT, "node = 99");
+    sk_test_expect_failure(sk_gltf_doc_get_node(doc, 99, &node, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "node = 99");
     float *v;
     size_t count;
     int components;
@@ -927,7 +1006,8 @@ static void test_reader_refuses_damage(void **state)
     assert_int_equal(sk_gltf_doc_channel_count(doc, 3), 0);
     sk_gltf_doc_free(doc);
     path = sk_test_path("gltf/missing.glb");
-    sk_test_expect_failure(sk_gltf_read_glb(&doc, path, NULL, &err), &err, SK_ERROR_NOT_FOUND, "missing.glb");
+    sk_test_expect_failure(sk_gltf_read_glb(&doc, path, NULL, &err), &err, SK_ERROR_NOT_FOUND,
+                           "missing.glb");
     free(copy);
     free(glb);
 }

@@ -90,7 +90,8 @@ static const char *type_name(int components)
 static cJSON *number_array(sk__gltf_out *out, const double *v, int n)
 {
     cJSON *a = sk__gltf_json(out, cJSON_CreateArray());
-    for (int i = 0; a && i < n; i++) cJSON_AddItemToArray(a, sk__gltf_json(out, cJSON_CreateNumber(v[i])));
+    for (int i = 0; a && i < n; i++)
+        cJSON_AddItemToArray(a, sk__gltf_json(out, cJSON_CreateNumber(v[i])));
     return a;
 }
 
@@ -145,8 +146,8 @@ int sk__gltf_put_indices(sk__gltf_out *out, const uint32_t *indices, size_t coun
             put_u32(p + 4 * i, indices[i]);
     }
     int view = add_view(out, (size_t)(p - out->bin), size * count, SK__GLTF_ELEMENT_ARRAY_BUFFER);
-    return add_accessor(out, view, shorts ? SK__GLTF_UNSIGNED_SHORT : SK__GLTF_UNSIGNED_INT,
-                        count, 1, NULL, NULL);
+    return add_accessor(out, view, shorts ? SK__GLTF_UNSIGNED_SHORT : SK__GLTF_UNSIGNED_INT, count,
+                        1, NULL, NULL);
 }
 
 int sk__gltf_put_joints(sk__gltf_out *out, const uint16_t *joints, size_t vertex_count,

@@ -27,9 +27,9 @@ sk_result sk_gltf_add_animation(sk_gltf *gltf, const char *name, int *out_index,
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "gltf or out_index is NULL");
     *out_index = SK_GLTF_NONE;
     int index = gltf->animation_count;
-    sk_result r = sk__gltf_grow((void **)&gltf->animations, gltf->animation_count,
-                                &gltf->animation_capacity, sizeof *gltf->animations,
-                                "animations", err);
+    sk_result r =
+        sk__gltf_grow((void **)&gltf->animations, gltf->animation_count, &gltf->animation_capacity,
+                      sizeof *gltf->animations, "animations", err);
     if (r != SK_OK) return r;
     sk__gltf_animation a = {0};
     if (!(a.name = sk__gltf_name(name, "animation", index)))
@@ -86,14 +86,14 @@ static sk_result check_times(const float *times, int key_count, sk_error *err)
 }
 
 /* Copies the values, normalising rotations (refused when far from unit length). */
-static sk_result copy_values(const float *values, int key_count, int components,
-                             sk_gltf_path path, float *out, sk_error *err)
+static sk_result copy_values(const float *values, int key_count, int components, sk_gltf_path path,
+                             float *out, sk_error *err)
 {
     size_t n = (size_t)key_count * (size_t)components;
     for (size_t i = 0; i < n; i++)
         if (!isfinite(values[i]))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "values[%zu] (key %zu) is not finite",
-                           i, i / (size_t)components);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "values[%zu] (key %zu) is not finite", i,
+                           i / (size_t)components);
     memcpy(out, values, n * sizeof(float));
     if (path != SK_GLTF_PATH_ROTATION) return SK_OK;
     for (int k = 0; k < key_count; k++) {

@@ -72,10 +72,12 @@ sk_gltf_doc_counts sk_gltf_doc_count(const sk_gltf_doc *doc)
 static sk_result check_index(const char *what, int index, int count, sk_error *err)
 {
     if (index >= 0 && index < count) return SK_OK;
-    return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %d is out of range [0, %d)", what, index, count);
+    return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %d is out of range [0, %d)", what, index,
+                   count);
 }
 
-sk_result sk_gltf_doc_get_node(const sk_gltf_doc *doc, int index, sk_gltf_doc_node *out, sk_error *err)
+sk_result sk_gltf_doc_get_node(const sk_gltf_doc *doc, int index, sk_gltf_doc_node *out,
+                               sk_error *err)
 {
     if (!doc || !out) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "doc or out is NULL");
     sk_result r = check_index("node", index, doc->node_count, err);
@@ -95,10 +97,11 @@ sk_result sk_gltf_doc_read_accessor(const sk_gltf_doc *doc, int index, float **o
     if (r != SK_OK) return r;
     const sk__gltf_accessor *a = &doc->accessors[index];
     size_t n, bytes;
-    if (!sk_size_mul(a->count, (size_t)a->components, &n) || !sk_size_mul(n, sizeof(float), &bytes) ||
-        bytes > doc->max_bytes)
-        return sk_fail(err, SK_ERROR_LIMIT, "accessors[%d]: %zu elements exceed the cap of %zu bytes", index,
-                       a->count, doc->max_bytes);
+    if (!sk_size_mul(a->count, (size_t)a->components, &n) ||
+        !sk_size_mul(n, sizeof(float), &bytes) || bytes > doc->max_bytes)
+        return sk_fail(err, SK_ERROR_LIMIT,
+                       "accessors[%d]: %zu elements exceed the cap of %zu bytes", index, a->count,
+                       doc->max_bytes);
     float *v = malloc(bytes ? bytes : 1);
     if (!v) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "accessors[%d]: out of memory", index);
     for (size_t i = 0; i < a->count; i++)
@@ -130,7 +133,8 @@ int sk_gltf_doc_mesh_target_count(const sk_gltf_doc *doc, int mesh)
     return doc->meshes[mesh].target_count;
 }
 
-int sk_gltf_doc_mesh_target_accessor(const sk_gltf_doc *doc, int mesh, int target, const char *attribute)
+int sk_gltf_doc_mesh_target_accessor(const sk_gltf_doc *doc, int mesh, int target,
+                                     const char *attribute)
 {
     if (!doc || mesh < 0 || mesh >= doc->mesh_count) return -1;
     const sk__gltf_doc_mesh *m = &doc->meshes[mesh];
@@ -164,7 +168,8 @@ sk_result sk_gltf_doc_get_channel(const sk_gltf_doc *doc, int animation, int cha
 {
     if (!doc || !out) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "doc or out is NULL");
     sk_result r = check_index("animation", animation, doc->animation_count, err);
-    if (r == SK_OK) r = check_index("channel", channel, doc->animations[animation].channel_count, err);
+    if (r == SK_OK)
+        r = check_index("channel", channel, doc->animations[animation].channel_count, err);
     if (r == SK_OK) *out = doc->animations[animation].channels[channel];
     return r;
 }

@@ -24,24 +24,24 @@ typedef struct sk__gltf_view {
 } sk__gltf_view;
 
 typedef struct sk__gltf_accessor {
-    int view;              /* -1: no buffer view, all zeros */
-    size_t offset;         /* absolute, into the binary chunk */
-    size_t stride;         /* bytes between elements */
+    int view;      /* -1: no buffer view, all zeros */
+    size_t offset; /* absolute, into the binary chunk */
+    size_t stride; /* bytes between elements */
     size_t count;
-    int component_type;    /* SK__GLTF_BYTE .. SK__GLTF_FLOAT */
-    int component_size;    /* bytes */
-    int components;        /* 1, 2, 3, 4, 4 (MAT2), 9 (MAT3), 16 (MAT4) */
-    int columns;           /* matrix columns (their starts are 4-byte aligned), or 0 */
+    int component_type; /* SK__GLTF_BYTE .. SK__GLTF_FLOAT */
+    int component_size; /* bytes */
+    int components;     /* 1, 2, 3, 4, 4 (MAT2), 9 (MAT3), 16 (MAT4) */
+    int columns;        /* matrix columns (their starts are 4-byte aligned), or 0 */
     bool normalized;
-    bool has_bounds;       /* min and max given */
+    bool has_bounds; /* min and max given */
 } sk__gltf_accessor;
 
 typedef struct sk__gltf_doc_mesh {
     const cJSON *attributes; /* of the first primitive */
     const cJSON *targets;    /* of the first primitive, or NULL */
     int target_count;
-    int indices;             /* accessor or -1 */
-    long long max_joint;     /* largest JOINTS_n value of any primitive, -1 without */
+    int indices;         /* accessor or -1 */
+    long long max_joint; /* largest JOINTS_n value of any primitive, -1 without */
 } sk__gltf_doc_mesh;
 
 typedef struct sk__gltf_doc_skin {
@@ -56,8 +56,8 @@ typedef struct sk__gltf_doc_animation {
 } sk__gltf_doc_animation;
 
 struct sk_gltf_doc {
-    uint8_t *file;            /* the whole .glb (owned) */
-    const uint8_t *bin;       /* the BIN chunk's data inside `file`, or NULL */
+    uint8_t *file;      /* the whole .glb (owned) */
+    const uint8_t *bin; /* the BIN chunk's data inside `file`, or NULL */
     size_t bin_size;
     cJSON *json;
     size_t max_bytes;
@@ -101,8 +101,8 @@ sk_result sk__json_object(const cJSON *obj, const char *where, const char *key, 
 sk_result sk__json_string(const cJSON *obj, const char *where, const char *key, bool required,
                           const char **out, sk_error *err);
 /* Exactly n finite numbers (an array member), or absent (returns SK_OK, *found false). */
-sk_result sk__json_numbers(const cJSON *obj, const char *where, const char *key, int n,
-                           double *out, bool *found, sk_error *err);
+sk_result sk__json_numbers(const cJSON *obj, const char *where, const char *key, int n, double *out,
+                           bool *found, sk_error *err);
 /* Items of an array (counted by walking it: cJSON_GetArraySize is not needed then). */
 int sk__json_count(const cJSON *array);
 
@@ -111,10 +111,10 @@ int sk__json_count(const cJSON *array);
 /* Element `i`, component `c` of accessor `a` as a float (normalised integers converted as
    glTF 2.0 sec. 3.11 says; other integers as their value). No bounds checks: the reader
    checked the accessor against its buffer view. */
-float sk__gltf_accessor_value(const struct sk_gltf_doc *doc, const sk__gltf_accessor *a,
-                              size_t i, int c);
+float sk__gltf_accessor_value(const struct sk_gltf_doc *doc, const sk__gltf_accessor *a, size_t i,
+                              int c);
 /* The same as an exact unsigned integer (for index and joint accessors). */
-uint32_t sk__gltf_accessor_uint(const struct sk_gltf_doc *doc, const sk__gltf_accessor *a,
-                                size_t i, int c);
+uint32_t sk__gltf_accessor_uint(const struct sk_gltf_doc *doc, const sk__gltf_accessor *a, size_t i,
+                                int c);
 
 #endif

@@ -15,8 +15,8 @@ sk_result sk__gltf_grow(void **data, int count, int *capacity, size_t elem, cons
 {
     if (count < *capacity) return SK_OK;
     if (count >= SK__GLTF_MAX_OBJECTS)
-        return sk_fail(err, SK_ERROR_LIMIT, "a document holds at most %d %s",
-                       SK__GLTF_MAX_OBJECTS, what);
+        return sk_fail(err, SK_ERROR_LIMIT, "a document holds at most %d %s", SK__GLTF_MAX_OBJECTS,
+                       what);
     int next = *capacity ? 2 * *capacity : 8;
     if (next > SK__GLTF_MAX_OBJECTS) next = SK__GLTF_MAX_OBJECTS;
     void *grown = realloc(*data, (size_t)next * elem);
@@ -82,9 +82,9 @@ static sk_result normal_map_codes(const sk_image *src, const char *field, sk_ima
         if (!(v >= -1.0f && v <= 1.0f)) {
             sk_image_free(dst);
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "%s: pixel (%zu, %zu) component %zu = %g is out of range [-1, 1]",
-                           field, (i / 3) % (size_t)src->width, (i / 3) / (size_t)src->width,
-                           i % 3, (double)v);
+                           "%s: pixel (%zu, %zu) component %zu = %g is out of range [-1, 1]", field,
+                           (i / 3) % (size_t)src->width, (i / 3) / (size_t)src->width, i % 3,
+                           (double)v);
         }
         dst->data[i] = 0.5f * v + 0.5f;
     }
@@ -128,7 +128,8 @@ sk_result sk__gltf_add_image(sk_gltf *gltf, const sk_image *image, bool normal_m
     im->has_alpha = false;
     if (image->channels == 2 || image->channels == 4) {
         size_t n = (size_t)image->width * (size_t)image->height, ch = (size_t)image->channels;
-        for (size_t i = 0; i < n && !im->has_alpha; i++) im->has_alpha = image->data[i * ch + ch - 1] < 1.0f;
+        for (size_t i = 0; i < n && !im->has_alpha; i++)
+            im->has_alpha = image->data[i * ch + ch - 1] < 1.0f;
     }
     *out_index = gltf->image_count++;
     return SK_OK;
@@ -170,7 +171,8 @@ sk_result sk_gltf_add_material(sk_gltf *gltf, const sk_gltf_material_desc *desc,
     if (r != SK_OK) return r;
     sk__gltf_material m = {0};
     memcpy(m.base_color, desc->base_color, sizeof m.base_color);
-    if (all_zero(m.base_color, 4)) m.base_color[0] = m.base_color[1] = m.base_color[2] = m.base_color[3] = 1.0f;
+    if (all_zero(m.base_color, 4))
+        m.base_color[0] = m.base_color[1] = m.base_color[2] = m.base_color[3] = 1.0f;
     m.metallic = desc->metallic;
     m.roughness = desc->roughness > 0.0f ? desc->roughness : 0.5f;
     m.normal_scale = desc->normal_scale != 0.0f ? desc->normal_scale : 1.0f;
@@ -182,7 +184,8 @@ sk_result sk_gltf_add_material(sk_gltf *gltf, const sk_gltf_material_desc *desc,
     char field[64];
     if (desc->base_color_texture) {
         snprintf(field, sizeof field, "materials[%d].base_color_texture", index);
-        r = sk__gltf_add_image(gltf, desc->base_color_texture, false, field, &m.base_color_image, err);
+        r = sk__gltf_add_image(gltf, desc->base_color_texture, false, field, &m.base_color_image,
+                               err);
     }
     if (r == SK_OK && desc->normal_texture) {
         snprintf(field, sizeof field, "materials[%d].normal_texture", index);
@@ -217,10 +220,9 @@ sk_gltf_node_desc sk_gltf_node_desc_default(void)
 /* The node's transform, checked and with its zero defaults filled in. */
 static sk_result node_transform(const sk_gltf_node_desc *d, sk__gltf_node *n, sk_error *err)
 {
-    static const char *const names[10] = {"translation[0]", "translation[1]", "translation[2]",
-                                          "rotation[0]",    "rotation[1]",    "rotation[2]",
-                                          "rotation[3]",    "scale[0]",       "scale[1]",
-                                          "scale[2]"};
+    static const char *const names[10] = {
+        "translation[0]", "translation[1]", "translation[2]", "rotation[0]", "rotation[1]",
+        "rotation[2]",    "rotation[3]",    "scale[0]",       "scale[1]",    "scale[2]"};
     double v[10];
     memcpy(v, d->translation, 3 * sizeof(double));
     memcpy(v + 3, d->rotation, 4 * sizeof(double));

@@ -71,14 +71,14 @@ typedef struct sk__gltf_mesh {
     float *tangents;   /* 4 (xyz unit, w = +-1) when the material has a normal texture */
     uint32_t *indices; /* 3 per triangle */
     int material;
-    uint16_t *joints;  /* 4 per vertex, 0 where the weight is 0, or NULL */
-    float *weights;    /* 4 per vertex, float sums exactly 1 (see gltf_mesh.c) */
-    int max_joint;     /* largest joint index used, -1 without skinning */
+    uint16_t *joints; /* 4 per vertex, 0 where the weight is 0, or NULL */
+    float *weights;   /* 4 per vertex, float sums exactly 1 (see gltf_mesh.c) */
+    int max_joint;    /* largest joint index used, -1 without skinning */
     int target_count;
     float *target_positions; /* target_count * vertex_count * 3, or NULL */
     float *target_normals;
-    float *default_weights;  /* target_count, or NULL */
-    char **target_names;     /* target_count, or NULL */
+    float *default_weights; /* target_count, or NULL */
+    char **target_names;    /* target_count, or NULL */
 } sk__gltf_mesh;
 
 typedef struct sk__gltf_node {
@@ -103,7 +103,7 @@ typedef struct sk__gltf_channel {
     int key_count;
     int components; /* values per key */
     float *times;
-    float *values;  /* key_count * components */
+    float *values; /* key_count * components */
 } sk__gltf_channel;
 
 typedef struct sk__gltf_animation {

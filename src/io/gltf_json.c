@@ -46,7 +46,8 @@ sk_result sk__json_index_item(const cJSON *item, const char *where, const char *
     double v = item->valuedouble;
     *out = -1;
     if (!cJSON_IsNumber(item) || !isfinite(v) || v != floor(v) || v < 0)
-        return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must be an index (an integer >= 0)", where, key);
+        return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must be an index (an integer >= 0)", where,
+                       key);
     if (v >= (double)count)
         return sk_fail(err, SK_ERROR_PARSE, "%s.%s = %.17g is not an index of %s (%d of them)",
                        where, key, v, array, count);
@@ -69,7 +70,8 @@ sk_result sk__json_array(const cJSON *obj, const char *where, const char *key, b
     const cJSON *item = sk__json_member(obj, key);
     *out = NULL;
     if (!item) return required ? missing(where, key, err) : SK_OK;
-    if (!cJSON_IsArray(item)) return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must be an array", where, key);
+    if (!cJSON_IsArray(item))
+        return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must be an array", where, key);
     if (min_items > 0) {
         int n = 0;
         const cJSON *e;
@@ -88,7 +90,8 @@ sk_result sk__json_object(const cJSON *obj, const char *where, const char *key, 
     const cJSON *item = sk__json_member(obj, key);
     *out = NULL;
     if (!item) return required ? missing(where, key, err) : SK_OK;
-    if (!cJSON_IsObject(item)) return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must be an object", where, key);
+    if (!cJSON_IsObject(item))
+        return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must be an object", where, key);
     *out = item;
     return SK_OK;
 }
@@ -105,13 +108,14 @@ sk_result sk__json_string(const cJSON *obj, const char *where, const char *key, 
     return SK_OK;
 }
 
-sk_result sk__json_numbers(const cJSON *obj, const char *where, const char *key, int n,
-                           double *out, bool *found, sk_error *err)
+sk_result sk__json_numbers(const cJSON *obj, const char *where, const char *key, int n, double *out,
+                           bool *found, sk_error *err)
 {
     const cJSON *item = sk__json_member(obj, key);
     *found = false;
     if (!item) return SK_OK;
-    if (!cJSON_IsArray(item)) return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must be an array", where, key);
+    if (!cJSON_IsArray(item))
+        return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must be an array", where, key);
     if (sk__json_count(item) != n)
         return sk_fail(err, SK_ERROR_PARSE, "%s.%s: must have exactly %d numbers", where, key, n);
     int k = 0;
@@ -119,7 +123,8 @@ sk_result sk__json_numbers(const cJSON *obj, const char *where, const char *key,
     cJSON_ArrayForEach(e, item)
     {
         if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble))
-            return sk_fail(err, SK_ERROR_PARSE, "%s.%s[%d]: must be a finite number", where, key, k);
+            return sk_fail(err, SK_ERROR_PARSE, "%s.%s[%d]: must be a finite number", where, key,
+                           k);
         out[k++] = e->valuedouble;
     }
     *found = true;

@@ -150,8 +150,8 @@ static sk_result copy_targets(const sk_gltf_mesh_desc *d, sk__gltf_mesh *m, sk_e
     if (d->default_weights) {
         for (int t = 0; t < d->target_count; t++)
             if (!isfinite(d->default_weights[t]))
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                               "default_weights[%d] is not finite", t);
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "default_weights[%d] is not finite",
+                               t);
         m->default_weights = copy_floats(d->default_weights, (size_t)d->target_count);
         if (!m->default_weights) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     }
@@ -166,8 +166,8 @@ static sk_result copy_targets(const sk_gltf_mesh_desc *d, sk__gltf_mesh *m, sk_e
             for (int u = 0; u < t; u++)
                 if (strcmp(d->target_names[u], name) == 0)
                     return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                                   "target_names[%d] = \"%s\" repeats target_names[%d]", t,
-                                   name, u);
+                                   "target_names[%d] = \"%s\" repeats target_names[%d]", t, name,
+                                   u);
             if (!(m->target_names[t] = strdup(name)))
                 return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
         }
@@ -203,8 +203,8 @@ static sk_result copy_material_needs(const sk_gltf *gltf, const sk_gltf_mesh_des
     for (size_t v = 0; r == SK_OK && v < m->vertex_count; v++) {
         float w = m->tangents[4 * v + 3];
         if (w != 1.0f && w != -1.0f)
-            r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "tangent[%zu].w = %g: must be 1 or -1",
-                        v, (double)w);
+            r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "tangent[%zu].w = %g: must be 1 or -1", v,
+                        (double)w);
     }
     return r;
 }
@@ -221,8 +221,7 @@ static sk_result copy_mesh(const sk_gltf *gltf, const sk_gltf_mesh_desc *d, sk__
         return sk_fail(err, SK_ERROR_LIMIT, "%zu vertices: a glTF mesh holds fewer than 2^32 - 1",
                        src->vertex_count);
     if ((d->joints == NULL) != (d->weights == NULL))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "joints and weights must be given together");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joints and weights must be given together");
     if (d->target_count < 0 || d->target_count > SK__GLTF_MAX_TARGETS)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "target_count = %d is out of range [0, %d]",
                        d->target_count, SK__GLTF_MAX_TARGETS);
@@ -257,7 +256,8 @@ sk_result sk_gltf_add_mesh(sk_gltf *gltf, const sk_gltf_mesh_desc *desc, int *ou
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "gltf, desc or out_index is NULL");
     *out_index = SK_GLTF_NONE;
     int index = gltf->mesh_count;
-    if (!desc->mesh) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "meshes[%d].mesh is NULL", index);
+    if (!desc->mesh)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "meshes[%d].mesh is NULL", index);
     sk_result r = sk__gltf_grow((void **)&gltf->meshes, gltf->mesh_count, &gltf->mesh_capacity,
                                 sizeof *gltf->meshes, "meshes", err);
     if (r != SK_OK) return r;

@@ -20,7 +20,8 @@ static uint32_t get_u32(const uint8_t *p)
 }
 
 /* Charges `bytes` of allocation against the cap (SK_ERROR_LIMIT beyond it). */
-static sk_result charge(sk_gltf_doc *doc, size_t count, size_t size, const char *what, sk_error *err)
+static sk_result charge(sk_gltf_doc *doc, size_t count, size_t size, const char *what,
+                        sk_error *err)
 {
     size_t bytes, total;
     if (!sk_size_mul(count, size, &bytes) || !sk_size_add(doc->charged, bytes, &total) ||
@@ -51,25 +52,31 @@ static sk_result read_container(sk_gltf_doc *doc, size_t size, const uint8_t **j
     if (get_u32(p) != SK__GLB_MAGIC)
         return sk_fail(err, SK_ERROR_PARSE, "GLB header: magic 0x%08x is not \"glTF\"", get_u32(p));
     if (get_u32(p + 4) != SK__GLB_VERSION)
-        return sk_fail(err, SK_ERROR_UNSUPPORTED, "GLB header: version %u is not 2", get_u32(p + 4));
+        return sk_fail(err, SK_ERROR_UNSUPPORTED, "GLB header: version %u is not 2",
+                       get_u32(p + 4));
     if (get_u32(p + 8) != size)
-        return sk_fail(err, SK_ERROR_PARSE, "GLB header: length %u does not match the file's %zu bytes",
-                       get_u32(p + 8), size);
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "GLB header: length %u does not match the file's %zu bytes", get_u32(p + 8),
+                       size);
     size_t at = SK__GLB_HEADER_BYTES;
     for (int chunk = 0; at < size; chunk++) {
         if (size - at < SK__GLB_CHUNK_HEADER_BYTES)
-            return sk_fail(err, SK_ERROR_PARSE, "chunk %d at byte %zu: truncated chunk header", chunk, at);
+            return sk_fail(err, SK_ERROR_PARSE, "chunk %d at byte %zu: truncated chunk header",
+                           chunk, at);
         uint32_t len = get_u32(p + at), type = get_u32(p + at + 4);
         at += SK__GLB_CHUNK_HEADER_BYTES;
         if (len % 4 != 0)
-            return sk_fail(err, SK_ERROR_PARSE, "chunk %d: length %u is not a multiple of 4", chunk, len);
+            return sk_fail(err, SK_ERROR_PARSE, "chunk %d: length %u is not a multiple of 4", chunk,
+                           len);
         if (len > size - at)
-            return sk_fail(err, SK_ERROR_PARSE, "chunk %d: length %u runs past the end of the file "
-                                                "(%zu bytes left)",
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "chunk %d: length %u runs past the end of the file "
+                           "(%zu bytes left)",
                            chunk, len, size - at);
         if (chunk == 0) {
             if (type != SK__GLB_CHUNK_JSON)
-                return sk_fail(err, SK_ERROR_PARSE, "chunk 0: type 0x%08x, the first chunk must be JSON", type);
+                return sk_fail(err, SK_ERROR_PARSE,
+                               "chunk 0: type 0x%08x, the first chunk must be JSON", type);
             if (len == 0) return sk_fail(err, SK_ERROR_PARSE, "chunk 0: the JSON chunk is empty");
             *json = p + at;
             *json_len = len;
@@ -77,7 +84,8 @@ static sk_result read_container(sk_gltf_doc *doc, size_t size, const uint8_t **j
             return sk_fail(err, SK_ERROR_PARSE, "chunk %d: a second JSON chunk", chunk);
         } else if (type == SK__GLB_CHUNK_BIN) {
             if (chunk != 1)
-                return sk_fail(err, SK_ERROR_PARSE, "chunk %d: the BIN chunk must be the second", chunk);
+                return sk_fail(err, SK_ERROR_PARSE, "chunk %d: the BIN chunk must be the second",
+                               chunk);
             doc->bin = p + at;
             doc->bin_size = len;
         }
@@ -116,8 +124,10 @@ static sk_result read_asset(const cJSON *root, sk_error *err)
     if (r == SK_OK) r = sk__json_string(asset, "asset", "version", true, &version, err);
     if (r != SK_OK) return r;
     if (strncmp(version, "2.", 2) != 0)
-        return sk_fail(err, SK_ERROR_UNSUPPORTED, "asset.version = \"%s\": only glTF 2.x is read", version);
-    if ((r = sk__json_array(root, "", "extensionsRequired", false, 0, &required, err)) != SK_OK) return r;
+        return sk_fail(err, SK_ERROR_UNSUPPORTED, "asset.version = \"%s\": only glTF 2.x is read",
+                       version);
+    if ((r = sk__json_array(root, "", "extensionsRequired", false, 0, &required, err)) != SK_OK)
+        return r;
     const cJSON *first = required ? required->child : NULL;
     if (first)
         return sk_fail(err, SK_ERROR_UNSUPPORTED, "extensionsRequired[0] = \"%s\" is not supported",
@@ -128,7 +138,8 @@ static sk_result read_asset(const cJSON *root, sk_error *err)
 /* ------------------------------------------------------ buffers and views */
 
 /* The byte length of the GLB-stored buffer 0 (the only buffer a .glb reader can load). */
-static sk_result read_buffers(sk_gltf_doc *doc, size_t *buffer_length, int *buffer_count, sk_error *err)
+static sk_result read_buffers(sk_gltf_doc *doc, size_t *buffer_length, int *buffer_count,
+                              sk_error *err)
 {
     const cJSON *buffers, *b;
     sk_result r = sk__json_array(doc->json, "", "buffers", false, 0, &buffers, err);
@@ -142,19 +153,25 @@ static sk_result read_buffers(sk_gltf_doc *doc, size_t *buffer_length, int *buff
         if (!cJSON_IsObject(b)) return sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
         long long len;
         const char *uri;
-        if ((r = sk__json_int(b, where, "byteLength", true, 1, (long long)UINT32_MAX, 0, &len, err)) != SK_OK) return r;
+        if ((r = sk__json_int(b, where, "byteLength", true, 1, (long long)UINT32_MAX, 0, &len,
+                              err)) != SK_OK)
+            return r;
         if ((r = sk__json_string(b, where, "uri", false, &uri, err)) != SK_OK) return r;
         if (uri)
-            return sk_fail(err, SK_ERROR_UNSUPPORTED,
-                           "%s.uri: external and data-URI buffers are not read (only the GLB's own BIN chunk)",
-                           where);
+            return sk_fail(
+                err, SK_ERROR_UNSUPPORTED,
+                "%s.uri: external and data-URI buffers are not read (only the GLB's own BIN chunk)",
+                where);
         if (i > 0)
-            return sk_fail(err, SK_ERROR_PARSE, "%s: has no uri, which only buffers[0] (the BIN chunk) may", where);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s: has no uri, which only buffers[0] (the BIN chunk) may", where);
         if (!doc->bin)
-            return sk_fail(err, SK_ERROR_PARSE, "%s: refers to the BIN chunk, but the file has none", where);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s: refers to the BIN chunk, but the file has none", where);
         if ((size_t)len > doc->bin_size)
-            return sk_fail(err, SK_ERROR_PARSE, "%s.byteLength = %lld exceeds the BIN chunk's %zu bytes",
-                           where, len, doc->bin_size);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s.byteLength = %lld exceeds the BIN chunk's %zu bytes", where, len,
+                           doc->bin_size);
         *buffer_length = (size_t)len;
         i++;
     }
@@ -179,12 +196,15 @@ static sk_result read_views(sk_gltf_doc *doc, size_t buffer_length, int buffer_c
         int buffer;
         long long offset, length, stride;
         if ((r = sk__json_index(v, where, "buffer", true, buffer_count, "buffers", &buffer, err)) ||
-            (r = sk__json_int(v, where, "byteOffset", false, 0, (long long)UINT32_MAX, 0, &offset, err)) ||
-            (r = sk__json_int(v, where, "byteLength", true, 1, (long long)UINT32_MAX, 0, &length, err)) ||
+            (r = sk__json_int(v, where, "byteOffset", false, 0, (long long)UINT32_MAX, 0, &offset,
+                              err)) ||
+            (r = sk__json_int(v, where, "byteLength", true, 1, (long long)UINT32_MAX, 0, &length,
+                              err)) ||
             (r = sk__json_int(v, where, "byteStride", false, 4, 252, 0, &stride, err)))
             return r;
         if (stride % 4 != 0)
-            return sk_fail(err, SK_ERROR_PARSE, "%s.byteStride = %lld is not a multiple of 4", where, stride);
+            return sk_fail(err, SK_ERROR_PARSE, "%s.byteStride = %lld is not a multiple of 4",
+                           where, stride);
         if ((size_t)offset > buffer_length || (size_t)length > buffer_length - (size_t)offset)
             return sk_fail(err, SK_ERROR_PARSE,
                            "%s: bytes [%lld, %lld) run past buffers[0] (%zu bytes)", where, offset,
@@ -213,8 +233,11 @@ static int component_size(int type)
 /* Components and matrix columns of an accessor type name. */
 static bool type_shape(const char *type, int *components, int *columns)
 {
-    static const struct { const char *name; int components, columns; } k[] = {
-        {"SCALAR", 1, 0}, {"VEC2", 2, 0}, {"VEC3", 3, 0}, {"VEC4", 4, 0},
+    static const struct {
+        const char *name;
+        int components, columns;
+    } k[] = {
+        {"SCALAR", 1, 0}, {"VEC2", 2, 0}, {"VEC3", 3, 0},  {"VEC4", 4, 0},
         {"MAT2", 4, 2},   {"MAT3", 9, 3}, {"MAT4", 16, 4},
     };
     for (size_t i = 0; i < sizeof k / sizeof k[0]; i++)
@@ -235,17 +258,20 @@ static size_t element_size(const sk__gltf_accessor *a)
     return column * (size_t)a->columns;
 }
 
-static sk_result read_accessor(sk_gltf_doc *doc, const cJSON *o, const char *where, sk__gltf_accessor *a,
-                               sk_error *err)
+static sk_result read_accessor(sk_gltf_doc *doc, const cJSON *o, const char *where,
+                               sk__gltf_accessor *a, sk_error *err)
 {
     if (!cJSON_IsObject(o)) return sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
     if (sk__json_member(o, "sparse"))
-        return sk_fail(err, SK_ERROR_UNSUPPORTED, "%s.sparse: sparse accessors are not supported", where);
+        return sk_fail(err, SK_ERROR_UNSUPPORTED, "%s.sparse: sparse accessors are not supported",
+                       where);
     long long type_code, count, offset;
     const char *type;
     sk_result r;
-    if ((r = sk__json_index(o, where, "bufferView", false, doc->view_count, "bufferViews", &a->view, err)) ||
-        (r = sk__json_int(o, where, "byteOffset", false, 0, (long long)UINT32_MAX, 0, &offset, err)) ||
+    if ((r = sk__json_index(o, where, "bufferView", false, doc->view_count, "bufferViews", &a->view,
+                            err)) ||
+        (r = sk__json_int(o, where, "byteOffset", false, 0, (long long)UINT32_MAX, 0, &offset,
+                          err)) ||
         (r = sk__json_int(o, where, "componentType", true, 0, 99999, 0, &type_code, err)) ||
         (r = sk__json_int(o, where, "count", true, 1, (long long)UINT32_MAX, 0, &count, err)) ||
         (r = sk__json_string(o, where, "type", true, &type, err)))
@@ -258,12 +284,16 @@ static sk_result read_accessor(sk_gltf_doc *doc, const cJSON *o, const char *whe
                        where, type_code);
     if (!type_shape(type, &a->components, &a->columns))
         return sk_fail(err, SK_ERROR_PARSE,
-                       "%s.type = \"%s\" is not SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4", where, type);
+                       "%s.type = \"%s\" is not SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4",
+                       where, type);
     const cJSON *norm = sk__json_member(o, "normalized");
-    if (norm && !cJSON_IsBool(norm)) return sk_fail(err, SK_ERROR_PARSE, "%s.normalized: must be a boolean", where);
+    if (norm && !cJSON_IsBool(norm))
+        return sk_fail(err, SK_ERROR_PARSE, "%s.normalized: must be a boolean", where);
     a->normalized = cJSON_IsTrue(norm);
-    if (a->normalized && (a->component_type == SK__GLTF_FLOAT || a->component_type == SK__GLTF_UNSIGNED_INT))
-        return sk_fail(err, SK_ERROR_PARSE, "%s.normalized: only byte and short components can be normalized", where);
+    if (a->normalized &&
+        (a->component_type == SK__GLTF_FLOAT || a->component_type == SK__GLTF_UNSIGNED_INT))
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s.normalized: only byte and short components can be normalized", where);
     a->count = (size_t)count;
     double bounds[16];
     bool has_min, has_max;
@@ -281,19 +311,23 @@ static sk_result read_accessor(sk_gltf_doc *doc, const cJSON *o, const char *whe
     const sk__gltf_view *v = &doc->views[a->view];
     a->stride = v->stride ? v->stride : elem;
     if (v->stride && v->stride < elem)
-        return sk_fail(err, SK_ERROR_PARSE, "%s: elements of %zu bytes do not fit bufferViews[%d].byteStride = %zu",
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s: elements of %zu bytes do not fit bufferViews[%d].byteStride = %zu",
                        where, elem, a->view, v->stride);
-    if (offset % a->component_size != 0 || (v->offset + (size_t)offset) % (size_t)a->component_size != 0)
-        return sk_fail(err, SK_ERROR_PARSE, "%s.byteOffset = %lld: the data is not aligned to its %d-byte components",
+    if (offset % a->component_size != 0 ||
+        (v->offset + (size_t)offset) % (size_t)a->component_size != 0)
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s.byteOffset = %lld: the data is not aligned to its %d-byte components",
                        where, offset, a->component_size);
     /* offset + stride (count - 1) + elem <= view length, without overflow */
     size_t span, end;
     if (!sk_size_mul(a->stride, a->count - 1, &span) || !sk_size_add(span, elem, &span) ||
         !sk_size_add(span, (size_t)offset, &end) || end > v->length)
-        return sk_fail(err, SK_ERROR_PARSE,
-                       "%s.count = %zu: %zu elements of %zu bytes (stride %zu) from byte %lld do not fit "
-                       "bufferViews[%d] (%zu bytes)",
-                       where, a->count, a->count, elem, a->stride, offset, a->view, v->length);
+        return sk_fail(
+            err, SK_ERROR_PARSE,
+            "%s.count = %zu: %zu elements of %zu bytes (stride %zu) from byte %lld do not fit "
+            "bufferViews[%d] (%zu bytes)",
+            where, a->count, a->count, elem, a->stride, offset, a->view, v->length);
     a->offset = v->offset + (size_t)offset;
     return SK_OK;
 }
@@ -304,7 +338,8 @@ static sk_result read_accessors(sk_gltf_doc *doc, sk_error *err)
     sk_result r = sk__json_array(doc->json, "", "accessors", false, 0, &accessors, err);
     if (r != SK_OK) return r;
     doc->accessor_count = sk__json_count(accessors);
-    doc->accessors = alloc_array(doc, doc->accessor_count, sizeof *doc->accessors, "accessors", &r, err);
+    doc->accessors =
+        alloc_array(doc, doc->accessor_count, sizeof *doc->accessors, "accessors", &r, err);
     if (!doc->accessors) return r;
     int i = 0;
     cJSON_ArrayForEach(o, accessors)
@@ -325,7 +360,8 @@ static size_t cap_of(const sk_gltf_read_desc *desc)
 }
 
 /* Takes ownership of `file` (malloc'ed, `size` bytes). */
-static sk_result read_owned(sk_gltf_doc **out, uint8_t *file, size_t size, size_t cap, sk_error *err)
+static sk_result read_owned(sk_gltf_doc **out, uint8_t *file, size_t size, size_t cap,
+                            sk_error *err)
 {
     sk_gltf_doc *doc = calloc(1, sizeof *doc);
     if (!doc) {
@@ -361,7 +397,8 @@ sk_result sk_gltf_read_glb_memory(sk_gltf_doc **out, const uint8_t *data, size_t
     if (!data && size > 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "data is NULL");
     size_t cap = cap_of(desc);
     if (size > cap)
-        return sk_fail(err, SK_ERROR_LIMIT, "a GLB of %zu bytes exceeds the cap of %zu bytes", size, cap);
+        return sk_fail(err, SK_ERROR_LIMIT, "a GLB of %zu bytes exceeds the cap of %zu bytes", size,
+                       cap);
     uint8_t *copy = malloc(size ? size : 1);
     if (!copy) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu bytes", size);
     if (size) memcpy(copy, data, size);
@@ -387,7 +424,8 @@ void sk_gltf_doc_free(sk_gltf_doc *doc)
 {
     if (!doc) return;
     for (int i = 0; doc->skins && i < doc->skin_count; i++) free(doc->skins[i].joints);
-    for (int i = 0; doc->animations && i < doc->animation_count; i++) free(doc->animations[i].channels);
+    for (int i = 0; doc->animations && i < doc->animation_count; i++)
+        free(doc->animations[i].channels);
     free(doc->views);
     free(doc->accessors);
     free(doc->nodes);

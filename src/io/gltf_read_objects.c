@@ -32,7 +32,8 @@ static sk_result top_array(const sk_gltf_doc *doc, const char *key, const cJSON 
 
 static sk_result object_at(const cJSON *item, const char *where, sk_error *err)
 {
-    return cJSON_IsObject(item) ? SK_OK : sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
+    return cJSON_IsObject(item) ? SK_OK
+                                : sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
 }
 
 static void *alloc_items(sk_gltf_doc *doc, int count, size_t size, const char *what, sk_result *r,
@@ -79,7 +80,8 @@ static sk_result check_attribute_format(const sk__gltf_accessor *a, const char *
     if (strcmp(name, "POSITION") == 0 || strcmp(name, "NORMAL") == 0) {
         if (!(f && a->components == 3)) want = "VEC3 of FLOAT";
     } else if (strcmp(name, "TANGENT") == 0) {
-        if (!(f && a->components == (target ? 3 : 4))) want = target ? "VEC3 of FLOAT" : "VEC4 of FLOAT";
+        if (!(f && a->components == (target ? 3 : 4)))
+            want = target ? "VEC3 of FLOAT" : "VEC4 of FLOAT";
     } else if (numbered(name, "TEXCOORD_")) {
         if (!(vec && a->components == 2 && (target || float_or_unorm(a))))
             want = "VEC2 of FLOAT or normalized UNSIGNED_BYTE / UNSIGNED_SHORT";
@@ -88,7 +90,8 @@ static sk_result check_attribute_format(const sk__gltf_accessor *a, const char *
             want = "VEC3 or VEC4 of FLOAT or normalized UNSIGNED_BYTE / UNSIGNED_SHORT";
     } else if (numbered(name, "JOINTS_") && !target) {
         if (!(vec && a->components == 4 && !a->normalized &&
-              (a->component_type == SK__GLTF_UNSIGNED_BYTE || a->component_type == SK__GLTF_UNSIGNED_SHORT)))
+              (a->component_type == SK__GLTF_UNSIGNED_BYTE ||
+               a->component_type == SK__GLTF_UNSIGNED_SHORT)))
             want = "VEC4 of UNSIGNED_BYTE or UNSIGNED_SHORT";
     } else if (numbered(name, "WEIGHTS_") && !target) {
         if (!(vec && a->components == 4 && float_or_unorm(a)))
@@ -98,7 +101,8 @@ static sk_result check_attribute_format(const sk__gltf_accessor *a, const char *
                        "%s.%s: not a glTF %sattribute (application-specific ones start with '_')",
                        where, name, target ? "morph target " : "");
     }
-    if (want) return sk_fail(err, SK_ERROR_PARSE, "%s.%s: the accessor must be a %s", where, name, want);
+    if (want)
+        return sk_fail(err, SK_ERROR_PARSE, "%s.%s: the accessor must be a %s", where, name, want);
     return SK_OK;
 }
 
@@ -111,18 +115,21 @@ static sk_result check_attributes(const sk_gltf_doc *doc, const cJSON *attrs, co
     cJSON_ArrayForEach(item, attrs)
     {
         int index;
-        TRY(sk__json_index_item(item, where, item->string, doc->accessor_count, "accessors", &index, err));
+        TRY(sk__json_index_item(item, where, item->string, doc->accessor_count, "accessors", &index,
+                                err));
         const sk__gltf_accessor *a = &doc->accessors[index];
         TRY(check_attribute_format(a, item->string, target, where, err));
         if (*vertex_count == 0) *vertex_count = a->count;
         if (a->count != *vertex_count)
-            return sk_fail(err, SK_ERROR_PARSE, "%s.%s: accessors[%d] has %zu elements, the others %zu",
-                           where, item->string, index, a->count, *vertex_count);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s.%s: accessors[%d] has %zu elements, the others %zu", where,
+                           item->string, index, a->count, *vertex_count);
         if (numbered(item->string, "JOINTS_")) {
             char weights[32];
             snprintf(weights, sizeof weights, "WEIGHTS_%s", item->string + 7);
             if (!sk__json_member(attrs, weights))
-                return sk_fail(err, SK_ERROR_PARSE, "%s.%s: has no matching %s", where, item->string, weights);
+                return sk_fail(err, SK_ERROR_PARSE, "%s.%s: has no matching %s", where,
+                               item->string, weights);
         }
     }
     return SK_OK;
@@ -133,18 +140,22 @@ static sk_result check_indices(const sk_gltf_doc *doc, int index, size_t vertex_
 {
     const sk__gltf_accessor *a = &doc->accessors[index];
     if (a->components != 1 || a->columns != 0 || a->normalized ||
-        (a->component_type != SK__GLTF_UNSIGNED_BYTE && a->component_type != SK__GLTF_UNSIGNED_SHORT &&
+        (a->component_type != SK__GLTF_UNSIGNED_BYTE &&
+         a->component_type != SK__GLTF_UNSIGNED_SHORT &&
          a->component_type != SK__GLTF_UNSIGNED_INT))
         return sk_fail(err, SK_ERROR_PARSE,
-                       "%s.indices: accessors[%d] must be a SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT",
+                       "%s.indices: accessors[%d] must be a SCALAR of UNSIGNED_BYTE, "
+                       "UNSIGNED_SHORT or UNSIGNED_INT",
                        where, index);
     if (mode == SK__GLTF_TRIANGLES && a->count % 3 != 0)
-        return sk_fail(err, SK_ERROR_PARSE, "%s.indices: %zu indices do not make whole triangles", where, a->count);
+        return sk_fail(err, SK_ERROR_PARSE, "%s.indices: %zu indices do not make whole triangles",
+                       where, a->count);
     for (size_t i = 0; i < a->count; i++) {
         uint32_t v = sk__gltf_accessor_uint(doc, a, i, 0);
         if (v >= vertex_count)
-            return sk_fail(err, SK_ERROR_PARSE, "%s.indices: accessors[%d][%zu] = %u is out of range [0, %zu)",
-                           where, index, i, v, vertex_count);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s.indices: accessors[%d][%zu] = %u is out of range [0, %zu)", where,
+                           index, i, v, vertex_count);
     }
     return SK_OK;
 }
@@ -167,8 +178,9 @@ static long long max_joint(const sk_gltf_doc *doc, const cJSON *attrs)
     return best;
 }
 
-static sk_result read_primitive(sk_gltf_doc *doc, const cJSON *prim, const char *where, int *target_count,
-                                int *indices_out, long long *joint_max, sk_error *err)
+static sk_result read_primitive(sk_gltf_doc *doc, const cJSON *prim, const char *where,
+                                int *target_count, int *indices_out, long long *joint_max,
+                                sk_error *err)
 {
     TRY(object_at(prim, where, err));
     const cJSON *attrs, *targets, *target;
@@ -176,18 +188,22 @@ static sk_result read_primitive(sk_gltf_doc *doc, const cJSON *prim, const char 
     int indices, material;
     TRY(sk__json_object(prim, where, "attributes", true, &attrs, err));
     TRY(sk__json_int(prim, where, "mode", false, 0, 6, SK__GLTF_TRIANGLES, &mode, err));
-    TRY(sk__json_index(prim, where, "indices", false, doc->accessor_count, "accessors", &indices, err));
-    TRY(sk__json_index(prim, where, "material", false, doc->material_count, "materials", &material, err));
+    TRY(sk__json_index(prim, where, "indices", false, doc->accessor_count, "accessors", &indices,
+                       err));
+    TRY(sk__json_index(prim, where, "material", false, doc->material_count, "materials", &material,
+                       err));
     char at[128];
     snprintf(at, sizeof at, "%s.attributes", where);
     if (!sk__json_member(attrs, "POSITION"))
         return sk_fail(err, SK_ERROR_PARSE, "%s.POSITION: required property is missing", at);
     size_t vertex_count = 0;
     TRY(check_attributes(doc, attrs, at, false, &vertex_count, err));
-    if (indices >= 0) TRY(check_indices(doc, indices, vertex_count, (int)mode, where, err));
+    if (indices >= 0)
+        TRY(check_indices(doc, indices, vertex_count, (int)mode, where, err));
     else if (mode == SK__GLTF_TRIANGLES && vertex_count % 3 != 0)
-        return sk_fail(err, SK_ERROR_PARSE, "%s: %zu vertices without indices do not make whole triangles",
-                       where, vertex_count);
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s: %zu vertices without indices do not make whole triangles", where,
+                       vertex_count);
     TRY(sk__json_array(prim, where, "targets", false, 0, &targets, err));
     int t = 0;
     cJSON_ArrayForEach(target, targets)
@@ -196,9 +212,9 @@ static sk_result read_primitive(sk_gltf_doc *doc, const cJSON *prim, const char 
         TRY(object_at(target, at, err));
         TRY(check_attributes(doc, target, at, true, &vertex_count, err));
         const cJSON *item;
-        cJSON_ArrayForEach(item, target) if (!sk__json_member(attrs, item->string))
-            return sk_fail(err, SK_ERROR_PARSE, "%s.%s: the primitive has no %s to displace", at,
-                           item->string, item->string);
+        cJSON_ArrayForEach(item, target) if (!sk__json_member(attrs, item->string)) return sk_fail(
+            err, SK_ERROR_PARSE, "%s.%s: the primitive has no %s to displace", at, item->string,
+            item->string);
         t++;
     }
     *target_count = t;
@@ -213,7 +229,8 @@ static sk_result read_meshes(sk_gltf_doc *doc, sk_error *err)
     const cJSON *meshes, *m;
     sk_result r;
     TRY(top_array(doc, "meshes", &meshes, &doc->mesh_count, err));
-    if (!(doc->meshes = alloc_items(doc, doc->mesh_count, sizeof *doc->meshes, "meshes", &r, err))) return r;
+    if (!(doc->meshes = alloc_items(doc, doc->mesh_count, sizeof *doc->meshes, "meshes", &r, err)))
+        return r;
     int i = 0;
     cJSON_ArrayForEach(m, meshes)
     {
@@ -231,17 +248,19 @@ static sk_result read_meshes(sk_gltf_doc *doc, sk_error *err)
             TRY(read_primitive(doc, prim, at, &targets, &indices, &joint_max, err));
             if (p == 0) first_targets = targets, first_indices = indices;
             if (targets != first_targets)
-                return sk_fail(err, SK_ERROR_PARSE, "%s.targets: %d morph targets, primitives[0] has %d", at,
-                               targets, first_targets);
+                return sk_fail(err, SK_ERROR_PARSE,
+                               "%s.targets: %d morph targets, primitives[0] has %d", at, targets,
+                               first_targets);
             p++;
         }
         if (first_targets > SK__GLTF_MAX_TARGETS)
-            return sk_fail(err, SK_ERROR_LIMIT, "%s: %d morph targets exceed the limit of %d", where,
-                           first_targets, SK__GLTF_MAX_TARGETS);
+            return sk_fail(err, SK_ERROR_LIMIT, "%s: %d morph targets exceed the limit of %d",
+                           where, first_targets, SK__GLTF_MAX_TARGETS);
         const cJSON *w = sk__json_member(m, "weights");
         if (w && (!cJSON_IsArray(w) || sk__json_count(w) != first_targets))
-            return sk_fail(err, SK_ERROR_PARSE, "%s.weights: must have one number per morph target (%d)",
-                           where, first_targets);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s.weights: must have one number per morph target (%d)", where,
+                           first_targets);
         double weights[SK__GLTF_MAX_TARGETS];
         bool found;
         TRY(sk__json_numbers(m, where, "weights", first_targets, weights, &found, err));
@@ -274,11 +293,13 @@ static sk_result read_trs(const cJSON *n, const char *where, sk_gltf_doc_node *o
     TRY(sk__json_numbers(n, where, "matrix", 16, m, &has_m, err));
     *matrix = has_m;
     if (has_m && (has_t || has_r || has_s))
-        return sk_fail(err, SK_ERROR_PARSE, "%s.matrix: given together with translation, rotation or scale", where);
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s.matrix: given together with translation, rotation or scale", where);
     if (has_m) {
         if (!sk__gltf_matrix_to_trs(m, out->translation, out->rotation, out->scale))
             return sk_fail(err, SK_ERROR_PARSE,
-                           "%s.matrix: not decomposable into translation, rotation and scale", where);
+                           "%s.matrix: not decomposable into translation, rotation and scale",
+                           where);
         return SK_OK;
     }
     if (has_t) memcpy(out->translation, t, sizeof t);
@@ -286,8 +307,8 @@ static sk_result read_trs(const cJSON *n, const char *where, sk_gltf_doc_node *o
     if (has_r) {
         double len = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
         if (!(fabs(len - 1.0) <= SK__GLTF_UNIT_TOLERANCE))
-            return sk_fail(err, SK_ERROR_PARSE, "%s.rotation: has length %.9g, must be a unit quaternion",
-                           where, len);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s.rotation: has length %.9g, must be a unit quaternion", where, len);
         memcpy(out->rotation, r, sizeof r);
     }
     return SK_OK;
@@ -312,17 +333,21 @@ static sk_result read_hierarchy(sk_gltf_doc *doc, const cJSON *nodes, sk_error *
             int child;
             snprintf(key, sizeof key, "children[%d]", k);
             TRY(sk__json_index_item(c, where, key, doc->node_count, "nodes", &child, err));
-            if (child == i) return sk_fail(err, SK_ERROR_PARSE, "%s.children[%d]: the node is its own child", where, k);
+            if (child == i)
+                return sk_fail(err, SK_ERROR_PARSE, "%s.children[%d]: the node is its own child",
+                               where, k);
             if (doc->nodes[child].parent != SK_GLTF_NONE)
-                return sk_fail(err, SK_ERROR_PARSE, "%s.children[%d] = %d: already a child of nodes[%d]", where,
-                               k, child, doc->nodes[child].parent);
+                return sk_fail(err, SK_ERROR_PARSE,
+                               "%s.children[%d] = %d: already a child of nodes[%d]", where, k,
+                               child, doc->nodes[child].parent);
             doc->nodes[child].parent = i;
             k++;
         }
         i++;
     }
     sk_result r;
-    unsigned char *state = alloc_items(doc, doc->node_count, 1, "nodes", &r, err); /* 0 new, 1 walking, 2 done */
+    unsigned char *state =
+        alloc_items(doc, doc->node_count, 1, "nodes", &r, err); /* 0 new, 1 walking, 2 done */
     if (!state) return r;
     for (int start = 0; start < doc->node_count; start++) {
         int v = start;
@@ -346,8 +371,10 @@ static sk_result read_nodes(sk_gltf_doc *doc, sk_error *err)
     const cJSON *nodes, *n;
     sk_result r;
     TRY(top_array(doc, "nodes", &nodes, &doc->node_count, err));
-    if (!(doc->nodes = alloc_items(doc, doc->node_count, sizeof *doc->nodes, "nodes", &r, err))) return r;
-    if (!(doc->node_matrix = alloc_items(doc, doc->node_count, sizeof *doc->node_matrix, "nodes", &r, err)))
+    if (!(doc->nodes = alloc_items(doc, doc->node_count, sizeof *doc->nodes, "nodes", &r, err)))
+        return r;
+    if (!(doc->node_matrix =
+              alloc_items(doc, doc->node_count, sizeof *doc->node_matrix, "nodes", &r, err)))
         return r;
     int i = 0;
     cJSON_ArrayForEach(n, nodes)
@@ -389,7 +416,8 @@ static sk_result read_skins(sk_gltf_doc *doc, const cJSON *skins, sk_error *err)
                            &ds->inverse_bind, err));
         ds->joint_count = sk__json_count(joints);
         sk_result r;
-        if (!(ds->joints = alloc_items(doc, ds->joint_count, sizeof(int), where, &r, err))) return r;
+        if (!(ds->joints = alloc_items(doc, ds->joint_count, sizeof(int), where, &r, err)))
+            return r;
         int k = 0;
         cJSON_ArrayForEach(j, joints)
         {
@@ -401,12 +429,14 @@ static sk_result read_skins(sk_gltf_doc *doc, const cJSON *skins, sk_error *err)
         if (ds->inverse_bind >= 0) {
             const sk__gltf_accessor *a = &doc->accessors[ds->inverse_bind];
             if (a->components != 16 || a->component_type != SK__GLTF_FLOAT)
-                return sk_fail(err, SK_ERROR_PARSE, "%s.inverseBindMatrices: accessors[%d] must be a MAT4 of FLOAT",
+                return sk_fail(err, SK_ERROR_PARSE,
+                               "%s.inverseBindMatrices: accessors[%d] must be a MAT4 of FLOAT",
                                where, ds->inverse_bind);
             if (a->count < (size_t)ds->joint_count)
-                return sk_fail(err, SK_ERROR_PARSE,
-                               "%s.inverseBindMatrices: accessors[%d] has %zu matrices for %d joints", where,
-                               ds->inverse_bind, a->count, ds->joint_count);
+                return sk_fail(
+                    err, SK_ERROR_PARSE,
+                    "%s.inverseBindMatrices: accessors[%d] has %zu matrices for %d joints", where,
+                    ds->inverse_bind, a->count, ds->joint_count);
         }
         i++;
     }
@@ -416,7 +446,8 @@ static sk_result read_skins(sk_gltf_doc *doc, const cJSON *skins, sk_error *err)
         if (dn->skin < 0) continue;
         long long most = doc->meshes[dn->mesh].max_joint;
         if (most >= doc->skins[dn->skin].joint_count)
-            return sk_fail(err, SK_ERROR_PARSE, "nodes[%d]: meshes[%d] uses joint %lld, skins[%d] has %d joints", n,
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "nodes[%d]: meshes[%d] uses joint %lld, skins[%d] has %d joints", n,
                            dn->mesh, most, dn->skin, doc->skins[dn->skin].joint_count);
     }
     return SK_OK;
@@ -428,71 +459,85 @@ static sk_result check_times(const sk_gltf_doc *doc, int index, const char *wher
 {
     const sk__gltf_accessor *a = &doc->accessors[index];
     if (a->components != 1 || a->columns != 0 || a->component_type != SK__GLTF_FLOAT)
-        return sk_fail(err, SK_ERROR_PARSE, "%s.input: accessors[%d] must be a SCALAR of FLOAT", where, index);
+        return sk_fail(err, SK_ERROR_PARSE, "%s.input: accessors[%d] must be a SCALAR of FLOAT",
+                       where, index);
     if (!a->has_bounds)
-        return sk_fail(err, SK_ERROR_PARSE, "%s.input: accessors[%d] must have min and max", where, index);
+        return sk_fail(err, SK_ERROR_PARSE, "%s.input: accessors[%d] must have min and max", where,
+                       index);
     float previous = 0.0f;
     for (size_t k = 0; k < a->count; k++) {
         float t = sk__gltf_accessor_value(doc, a, k, 0);
         if (!isfinite(t) || t < 0.0f)
-            return sk_fail(err, SK_ERROR_PARSE, "%s.input: key time %zu = %g is not finite and >= 0", where, k,
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s.input: key time %zu = %g is not finite and >= 0", where, k,
                            (double)t);
         if (k > 0 && !(t > previous))
-            return sk_fail(err, SK_ERROR_PARSE, "%s.input: key time %zu = %.9g is not after %.9g", where, k,
-                           (double)t, (double)previous);
+            return sk_fail(err, SK_ERROR_PARSE, "%s.input: key time %zu = %.9g is not after %.9g",
+                           where, k, (double)t, (double)previous);
         previous = t;
     }
     return SK_OK;
 }
 
-static sk_result read_sampler(const sk_gltf_doc *doc, const cJSON *sampler, const char *where, int *input,
-                              int *output, sk_gltf_interpolation *interpolation, sk_error *err)
+static sk_result read_sampler(const sk_gltf_doc *doc, const cJSON *sampler, const char *where,
+                              int *input, int *output, sk_gltf_interpolation *interpolation,
+                              sk_error *err)
 {
     TRY(object_at(sampler, where, err));
     const char *interp;
-    TRY(sk__json_index(sampler, where, "input", true, doc->accessor_count, "accessors", input, err));
-    TRY(sk__json_index(sampler, where, "output", true, doc->accessor_count, "accessors", output, err));
+    TRY(sk__json_index(sampler, where, "input", true, doc->accessor_count, "accessors", input,
+                       err));
+    TRY(sk__json_index(sampler, where, "output", true, doc->accessor_count, "accessors", output,
+                       err));
     TRY(sk__json_string(sampler, where, "interpolation", false, &interp, err));
     if (!interp || strcmp(interp, "LINEAR") == 0)
         *interpolation = SK_GLTF_INTERPOLATION_LINEAR;
     else if (strcmp(interp, "STEP") == 0)
         *interpolation = SK_GLTF_INTERPOLATION_STEP;
     else if (strcmp(interp, "CUBICSPLINE") == 0)
-        return sk_fail(err, SK_ERROR_UNSUPPORTED, "%s.interpolation = \"CUBICSPLINE\" is not supported", where);
+        return sk_fail(err, SK_ERROR_UNSUPPORTED,
+                       "%s.interpolation = \"CUBICSPLINE\" is not supported", where);
     else
-        return sk_fail(err, SK_ERROR_PARSE, "%s.interpolation = \"%s\" is not LINEAR, STEP or CUBICSPLINE", where,
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s.interpolation = \"%s\" is not LINEAR, STEP or CUBICSPLINE", where,
                        interp);
     return check_times(doc, *input, where, err);
 }
 
 /* The output accessor's format and count for the channel's path (sec. 3.11.2). */
-static sk_result check_output(const sk_gltf_doc *doc, const sk_gltf_doc_channel *c, const char *where,
-                              sk_error *err)
+static sk_result check_output(const sk_gltf_doc *doc, const sk_gltf_doc_channel *c,
+                              const char *where, sk_error *err)
 {
-    const sk__gltf_accessor *in = &doc->accessors[c->input_accessor], *out = &doc->accessors[c->output_accessor];
+    const sk__gltf_accessor *in = &doc->accessors[c->input_accessor],
+                            *out = &doc->accessors[c->output_accessor];
     size_t per_key = 1;
     bool ok = out->columns == 0;
     switch (c->path) {
     case SK_GLTF_PATH_TRANSLATION:
-    case SK_GLTF_PATH_SCALE: ok = ok && out->components == 3 && out->component_type == SK__GLTF_FLOAT; break;
+    case SK_GLTF_PATH_SCALE:
+        ok = ok && out->components == 3 && out->component_type == SK__GLTF_FLOAT;
+        break;
     case SK_GLTF_PATH_ROTATION:
-        ok = ok && out->components == 4 && (out->component_type == SK__GLTF_FLOAT || out->normalized);
+        ok = ok && out->components == 4 &&
+             (out->component_type == SK__GLTF_FLOAT || out->normalized);
         break;
     case SK_GLTF_PATH_WEIGHTS: {
         int mesh = c->node >= 0 ? doc->nodes[c->node].mesh : -1;
         if (mesh < 0 || doc->meshes[mesh].target_count == 0)
-            return sk_fail(err, SK_ERROR_PARSE, "%s: path \"weights\" on a node without morph targets", where);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s: path \"weights\" on a node without morph targets", where);
         per_key = (size_t)doc->meshes[mesh].target_count;
-        ok = ok && out->components == 1 && (out->component_type == SK__GLTF_FLOAT || out->normalized);
+        ok = ok && out->components == 1 &&
+             (out->component_type == SK__GLTF_FLOAT || out->normalized);
         break;
     }
     }
     if (!ok)
-        return sk_fail(err, SK_ERROR_PARSE, "%s: accessors[%d] has the wrong format for its path", where,
-                       c->output_accessor);
+        return sk_fail(err, SK_ERROR_PARSE, "%s: accessors[%d] has the wrong format for its path",
+                       where, c->output_accessor);
     if (out->count / per_key != in->count || out->count % per_key != 0)
-        return sk_fail(err, SK_ERROR_PARSE, "%s: accessors[%d] has %zu elements, %zu keys need %zu", where,
-                       c->output_accessor, out->count, in->count, in->count * per_key);
+        return sk_fail(err, SK_ERROR_PARSE, "%s: accessors[%d] has %zu elements, %zu keys need %zu",
+                       where, c->output_accessor, out->count, in->count, in->count * per_key);
     return SK_OK;
 }
 
@@ -512,9 +557,11 @@ static sk_result read_channels(sk_gltf_doc *doc, const cJSON *anim, const char *
     int sampler_count = sk__json_count(samplers);
     da->channel_count = sk__json_count(channels);
     sk_result r;
-    if (!(da->channels = alloc_items(doc, da->channel_count, sizeof *da->channels, where, &r, err))) return r;
+    if (!(da->channels = alloc_items(doc, da->channel_count, sizeof *da->channels, where, &r, err)))
+        return r;
     long long *keys = alloc_items(doc, da->channel_count, sizeof *keys, where, &r, err);
-    const cJSON **sampler_items = keys ? alloc_items(doc, sampler_count, sizeof *sampler_items, where, &r, err) : NULL;
+    const cJSON **sampler_items =
+        keys ? alloc_items(doc, sampler_count, sizeof *sampler_items, where, &r, err) : NULL;
     if (!sampler_items) {
         free(keys);
         return r;
@@ -531,29 +578,35 @@ static sk_result read_channels(sk_gltf_doc *doc, const cJSON *anim, const char *
         const cJSON *target;
         const char *path;
         int sampler;
-        if ((r = object_at(c, at, err)) || (r = sk__json_index(c, at, "sampler", true, sampler_count, "the samplers", &sampler, err)) ||
+        if ((r = object_at(c, at, err)) ||
+            (r = sk__json_index(c, at, "sampler", true, sampler_count, "the samplers", &sampler,
+                                err)) ||
             (r = sk__json_object(c, at, "target", true, &target, err)))
             break;
         snprintf(sat, sizeof sat, "%s.target", at);
-        if ((r = sk__json_index(target, sat, "node", false, doc->node_count, "nodes", &ch->node, err)) ||
+        if ((r = sk__json_index(target, sat, "node", false, doc->node_count, "nodes", &ch->node,
+                                err)) ||
             (r = sk__json_string(target, sat, "path", true, &path, err)))
             break;
         int p = 0;
         while (p < 4 && strcmp(path, paths[p]) != 0) p++;
         if (p == 4) {
-            r = sk_fail(err, SK_ERROR_UNSUPPORTED, "%s.path = \"%s\" is not translation, rotation, scale or weights",
-                        sat, path);
+            r = sk_fail(err, SK_ERROR_UNSUPPORTED,
+                        "%s.path = \"%s\" is not translation, rotation, scale or weights", sat,
+                        path);
             break;
         }
         ch->path = (sk_gltf_path)p;
         if (ch->path != SK_GLTF_PATH_WEIGHTS && ch->node >= 0 && doc->node_matrix[ch->node]) {
-            r = sk_fail(err, SK_ERROR_PARSE, "%s.node = %d: a node given as a matrix cannot have its %s animated",
-                        sat, ch->node, path);
+            r = sk_fail(err, SK_ERROR_PARSE,
+                        "%s.node = %d: a node given as a matrix cannot have its %s animated", sat,
+                        ch->node, path);
             break;
         }
         s = sampler_items[sampler];
         snprintf(sat, sizeof sat, "%s.samplers[%d]", where, sampler);
-        if ((r = read_sampler(doc, s, sat, &ch->input_accessor, &ch->output_accessor, &ch->interpolation, err)) ||
+        if ((r = read_sampler(doc, s, sat, &ch->input_accessor, &ch->output_accessor,
+                              &ch->interpolation, err)) ||
             (r = check_output(doc, ch, sat, err)))
             break;
         keys[k] = (long long)(ch->node + 1) * 4 + p;
@@ -577,7 +630,8 @@ static sk_result read_animations(sk_gltf_doc *doc, sk_error *err)
     const cJSON *anims, *a;
     sk_result r;
     TRY(top_array(doc, "animations", &anims, &doc->animation_count, err));
-    if (!(doc->animations = alloc_items(doc, doc->animation_count, sizeof *doc->animations, "animations", &r, err)))
+    if (!(doc->animations = alloc_items(doc, doc->animation_count, sizeof *doc->animations,
+                                        "animations", &r, err)))
         return r;
     int i = 0;
     cJSON_ArrayForEach(a, anims)
@@ -619,11 +673,13 @@ static sk_result read_materials(sk_gltf_doc *doc, sk_error *err)
         const char *uri, *mime;
         snprintf(where, sizeof where, "images[%d]", i++);
         TRY(object_at(o, where, err));
-        TRY(sk__json_index(o, where, "bufferView", false, doc->view_count, "bufferViews", &view, err));
+        TRY(sk__json_index(o, where, "bufferView", false, doc->view_count, "bufferViews", &view,
+                           err));
         TRY(sk__json_string(o, where, "uri", false, &uri, err));
         TRY(sk__json_string(o, where, "mimeType", view >= 0, &mime, err));
         if ((view >= 0) == (uri != NULL))
-            return sk_fail(err, SK_ERROR_PARSE, "%s: needs exactly one of bufferView and uri", where);
+            return sk_fail(err, SK_ERROR_PARSE, "%s: needs exactly one of bufferView and uri",
+                           where);
     }
     i = 0;
     cJSON_ArrayForEach(o, textures)
@@ -674,7 +730,8 @@ static sk_result read_scenes(const sk_gltf_doc *doc, sk_error *err)
             snprintf(key, sizeof key, "nodes[%d]", k);
             TRY(sk__json_index_item(n, where, key, doc->node_count, "nodes", &node, err));
             if (doc->nodes[node].parent != SK_GLTF_NONE)
-                return sk_fail(err, SK_ERROR_PARSE, "%s.nodes[%d] = %d: not a root node", where, k, node);
+                return sk_fail(err, SK_ERROR_PARSE, "%s.nodes[%d] = %d: not a root node", where, k,
+                               node);
             k++;
         }
     }
@@ -690,7 +747,8 @@ sk_result sk__gltf_read_objects(sk_gltf_doc *doc, sk_error *err)
     TRY(read_materials(doc, err));
     TRY(read_meshes(doc, err));
     TRY(top_array(doc, "skins", &skins, &doc->skin_count, err));
-    if (!(doc->skins = alloc_items(doc, doc->skin_count, sizeof *doc->skins, "skins", &r, err))) return r;
+    if (!(doc->skins = alloc_items(doc, doc->skin_count, sizeof *doc->skins, "skins", &r, err)))
+        return r;
     TRY(read_nodes(doc, err));
     TRY(read_skins(doc, skins, err));
     TRY(read_animations(doc, err));

@@ -23,9 +23,10 @@ static sk_result check_joints(const sk_gltf *gltf, const int *joints, int count,
     for (int j = 0; j < count; j++) {
         if (joints[j] < 0 || joints[j] >= gltf->node_count)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "joints[%d] = %d is not a node of the document (%d nodes)", j,
-                           joints[j], gltf->node_count);
-        if (gltf->nodes[joints[j]].mesh != SK_GLTF_NONE && gltf->nodes[joints[j]].skin != SK_GLTF_NONE)
+                           "joints[%d] = %d is not a node of the document (%d nodes)", j, joints[j],
+                           gltf->node_count);
+        if (gltf->nodes[joints[j]].mesh != SK_GLTF_NONE &&
+            gltf->nodes[joints[j]].skin != SK_GLTF_NONE)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "joints[%d] = %d is a skinned mesh node, not a joint", j, joints[j]);
         if (root_of(gltf, joints[j]) != root_of(gltf, joints[0]))
@@ -37,8 +38,8 @@ static sk_result check_joints(const sk_gltf *gltf, const int *joints, int count,
     for (int j = 0; j < count; j++)
         for (int k = 0; k < j; k++)
             if (joints[j] == joints[k])
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                               "joints[%d] = %d repeats joints[%d]", j, joints[j], k);
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joints[%d] = %d repeats joints[%d]",
+                               j, joints[j], k);
     return SK_OK;
 }
 
@@ -50,8 +51,8 @@ static sk_result copy_given(const float *given, int count, float *out, sk_error 
         const float *m = given + 16 * j;
         for (int k = 0; k < 16; k++)
             if (!isfinite(m[k]))
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                               "inverse_bind[%d][%d] is not finite", j, k);
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "inverse_bind[%d][%d] is not finite",
+                               j, k);
         for (int k = 0; k < 4; k++) {
             float want = k == 3 ? 1.0f : 0.0f;
             if (fabsf(m[last_row[k]] - want) > 1e-6f)

@@ -6,7 +6,7 @@
 
 #include "io/gltf_internal.h"
 
-#define M(m, row, col) (m)[(col) * 4 + (row)]
+#define M(m, row, col) (m)[(col)*4 + (row)]
 
 void sk__gltf_trs_matrix(const double t[3], const double r[4], const double s[3], double out[16])
 {

@@ -32,7 +32,8 @@ static void write_asset(sk__gltf_out *out, cJSON *root, const sk_gltf_write_desc
 {
     cJSON *asset = J(cJSON_AddObjectToObject(root, "asset"));
     if (!asset) return;
-    const char *generator = desc && desc->generator ? desc->generator : "shitsukan " SK_VERSION_STRING;
+    const char *generator =
+        desc && desc->generator ? desc->generator : "shitsukan " SK_VERSION_STRING;
     J(cJSON_AddStringToObject(asset, "generator", generator));
     if (desc && desc->copyright) J(cJSON_AddStringToObject(asset, "copyright", desc->copyright));
     J(cJSON_AddStringToObject(asset, "version", "2.0"));
@@ -59,18 +60,21 @@ static void write_nodes(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
         if (n->has_child) {
             cJSON *children = J(cJSON_AddArrayToObject(node, "children"));
             for (int c = i + 1; children && c < g->node_count; c++)
-                if (g->nodes[c].parent == i) cJSON_AddItemToArray(children, J(cJSON_CreateNumber(c)));
+                if (g->nodes[c].parent == i)
+                    cJSON_AddItemToArray(children, J(cJSON_CreateNumber(c)));
         }
         if (n->mesh != SK_GLTF_NONE) add_number(out, node, "mesh", n->mesh);
         if (n->skin != SK_GLTF_NONE) add_number(out, node, "skin", n->skin);
         const double *t = n->translation, *r = n->rotation, *s = n->scale;
         if (t[0] != 0 || t[1] != 0 || t[2] != 0) add_doubles(out, node, "translation", t, 3);
-        if (r[0] != 0 || r[1] != 0 || r[2] != 0 || r[3] != 1) add_doubles(out, node, "rotation", r, 4);
+        if (r[0] != 0 || r[1] != 0 || r[2] != 0 || r[3] != 1)
+            add_doubles(out, node, "rotation", r, 4);
         if (s[0] != 1 || s[1] != 1 || s[2] != 1) add_doubles(out, node, "scale", s, 3);
     }
 }
 
-static void write_targets(sk__gltf_out *out, cJSON *mesh_json, cJSON *primitive, const sk__gltf_mesh *m)
+static void write_targets(sk__gltf_out *out, cJSON *mesh_json, cJSON *primitive,
+                          const sk__gltf_mesh *m)
 {
     cJSON *targets = J(cJSON_AddArrayToObject(primitive, "targets"));
     size_t per_target = 3 * m->vertex_count;
@@ -79,12 +83,12 @@ static void write_targets(sk__gltf_out *out, cJSON *mesh_json, cJSON *primitive,
         if (!target) return;
         cJSON_AddItemToArray(targets, target);
         add_number(out, target, "POSITION",
-                sk__gltf_put_floats(out, m->target_positions + per_target * (size_t)t,
-                                    m->vertex_count, 3, SK__GLTF_ARRAY_BUFFER, true));
+                   sk__gltf_put_floats(out, m->target_positions + per_target * (size_t)t,
+                                       m->vertex_count, 3, SK__GLTF_ARRAY_BUFFER, true));
         if (m->target_normals)
             add_number(out, target, "NORMAL",
-                    sk__gltf_put_floats(out, m->target_normals + per_target * (size_t)t,
-                                        m->vertex_count, 3, SK__GLTF_ARRAY_BUFFER, false));
+                       sk__gltf_put_floats(out, m->target_normals + per_target * (size_t)t,
+                                           m->vertex_count, 3, SK__GLTF_ARRAY_BUFFER, false));
     }
     bool weighted = false;
     for (int t = 0; m->default_weights && t < m->target_count; t++)
@@ -118,16 +122,21 @@ static void write_meshes(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
         if (!attr) return;
         int a = SK__GLTF_ARRAY_BUFFER;
         add_number(out, attr, "POSITION", sk__gltf_put_floats(out, m->positions, n, 3, a, true));
-        if (m->normals) add_number(out, attr, "NORMAL", sk__gltf_put_floats(out, m->normals, n, 3, a, false));
-        if (m->tangents) add_number(out, attr, "TANGENT", sk__gltf_put_floats(out, m->tangents, n, 4, a, false));
-        if (m->uvs) add_number(out, attr, "TEXCOORD_0", sk__gltf_put_floats(out, m->uvs, n, 2, a, false));
-        if (m->colors) add_number(out, attr, "COLOR_0", sk__gltf_put_floats(out, m->colors, n, 3, a, false));
+        if (m->normals)
+            add_number(out, attr, "NORMAL", sk__gltf_put_floats(out, m->normals, n, 3, a, false));
+        if (m->tangents)
+            add_number(out, attr, "TANGENT", sk__gltf_put_floats(out, m->tangents, n, 4, a, false));
+        if (m->uvs)
+            add_number(out, attr, "TEXCOORD_0", sk__gltf_put_floats(out, m->uvs, n, 2, a, false));
+        if (m->colors)
+            add_number(out, attr, "COLOR_0", sk__gltf_put_floats(out, m->colors, n, 3, a, false));
         if (m->joints) {
             add_number(out, attr, "JOINTS_0", sk__gltf_put_joints(out, m->joints, n, m->max_joint));
-            add_number(out, attr, "WEIGHTS_0", sk__gltf_put_floats(out, m->weights, n, 4, a, false));
+            add_number(out, attr, "WEIGHTS_0",
+                       sk__gltf_put_floats(out, m->weights, n, 4, a, false));
         }
         add_number(out, prim, "indices",
-                sk__gltf_put_indices(out, m->indices, 3 * m->triangle_count, n));
+                   sk__gltf_put_indices(out, m->indices, 3 * m->triangle_count, n));
         if (m->material != SK_GLTF_NONE) add_number(out, prim, "material", m->material);
         if (m->target_count > 0) write_targets(out, mesh, prim, m);
     }
@@ -144,7 +153,7 @@ static void write_materials(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
             cJSON_AddItemToArray(textures, texture);
             if (!image || !texture) return;
             add_number(out, image, "bufferView",
-                    sk__gltf_put_view(out, g->images[i].png, g->images[i].size, 0));
+                       sk__gltf_put_view(out, g->images[i].png, g->images[i].size, 0));
             J(cJSON_AddStringToObject(image, "mimeType", "image/png"));
             add_number(out, texture, "source", i); /* one texture per image, same index */
         }
@@ -160,7 +169,8 @@ static void write_materials(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
         cJSON *pbr = J(cJSON_AddObjectToObject(mat, "pbrMetallicRoughness"));
         if (!pbr) return;
         const float *c = m->base_color;
-        if (c[0] != 1 || c[1] != 1 || c[2] != 1 || c[3] != 1) add_floats(out, pbr, "baseColorFactor", c, 4);
+        if (c[0] != 1 || c[1] != 1 || c[2] != 1 || c[3] != 1)
+            add_floats(out, pbr, "baseColorFactor", c, 4);
         if (m->base_color_image >= 0) {
             cJSON *tex = J(cJSON_AddObjectToObject(pbr, "baseColorTexture"));
             if (tex) add_number(out, tex, "index", m->base_color_image);
@@ -173,7 +183,8 @@ static void write_materials(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
             if (tex) add_number(out, tex, "index", m->normal_image);
             if (tex && m->normal_scale != 1.0f) add_number(out, tex, "scale", m->normal_scale);
         }
-        bool blend = c[3] < 1.0f || (m->base_color_image >= 0 && g->images[m->base_color_image].has_alpha);
+        bool blend =
+            c[3] < 1.0f || (m->base_color_image >= 0 && g->images[m->base_color_image].has_alpha);
         if (blend) J(cJSON_AddStringToObject(mat, "alphaMode", "BLEND"));
         if (m->double_sided) J(cJSON_AddBoolToObject(mat, "doubleSided", 1));
     }
@@ -190,7 +201,7 @@ static void write_skins(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
         cJSON_AddItemToArray(skins, skin);
         J(cJSON_AddStringToObject(skin, "name", s->name));
         add_number(out, skin, "inverseBindMatrices",
-                sk__gltf_put_floats(out, s->inverse_bind, (size_t)s->joint_count, 16, 0, false));
+                   sk__gltf_put_floats(out, s->inverse_bind, (size_t)s->joint_count, 16, 0, false));
         cJSON *joints = J(cJSON_AddArrayToObject(skin, "joints"));
         for (int j = 0; joints && j < s->joint_count; j++)
             cJSON_AddItemToArray(joints, J(cJSON_CreateNumber(s->joints[j])));
@@ -246,14 +257,17 @@ static void write_animations(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
                 add_number(out, target, "node", ch->node);
                 J(cJSON_AddStringToObject(target, "path", paths[ch->path]));
             }
-            add_number(out, sampler, "input", time_accessor(out, seen, &seen_count, ch->times, ch->key_count));
+            add_number(out, sampler, "input",
+                       time_accessor(out, seen, &seen_count, ch->times, ch->key_count));
             J(cJSON_AddStringToObject(sampler, "interpolation",
-                                      ch->interpolation == SK_GLTF_INTERPOLATION_STEP ? "STEP" : "LINEAR"));
+                                      ch->interpolation == SK_GLTF_INTERPOLATION_STEP ? "STEP"
+                                                                                      : "LINEAR"));
             /* morph weights: one scalar per target per key (sec. 3.11.2) */
             bool weights = ch->path == SK_GLTF_PATH_WEIGHTS;
             size_t count = (size_t)ch->key_count * (weights ? (size_t)ch->components : 1);
             add_number(out, sampler, "output",
-                    sk__gltf_put_floats(out, ch->values, count, weights ? 1 : ch->components, 0, false));
+                       sk__gltf_put_floats(out, ch->values, count, weights ? 1 : ch->components, 0,
+                                           false));
         }
     }
     free(seen);
@@ -264,8 +278,8 @@ static sk_result check_document(const sk_gltf *g, sk_error *err)
     for (int i = 0; i < g->animation_count; i++)
         if (g->animations[i].channel_count == 0)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "animations[%d] (\"%s\") has no channels: glTF requires at least one",
-                           i, g->animations[i].name);
+                           "animations[%d] (\"%s\") has no channels: glTF requires at least one", i,
+                           g->animations[i].name);
     return SK_OK;
 }
 
@@ -278,9 +292,11 @@ static sk_result pack_glb(const char *json, const sk__gltf_out *o, uint8_t **out
     size_t total = SK__GLB_HEADER_BYTES + SK__GLB_CHUNK_HEADER_BYTES + json_padded;
     if (bin_padded) total += SK__GLB_CHUNK_HEADER_BYTES + bin_padded;
     if (total > UINT32_MAX)
-        return sk_fail(err, SK_ERROR_LIMIT, "the GLB would be %zu bytes: the format holds < 4 GiB", total);
+        return sk_fail(err, SK_ERROR_LIMIT, "the GLB would be %zu bytes: the format holds < 4 GiB",
+                       total);
     uint8_t *p = malloc(total);
-    if (!p) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a GLB of %zu bytes", total);
+    if (!p)
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a GLB of %zu bytes", total);
     uint32_t words[5] = {SK__GLB_MAGIC, SK__GLB_VERSION, (uint32_t)total, (uint32_t)json_padded,
                          SK__GLB_CHUNK_JSON};
     for (int w = 0; w < 5; w++)
@@ -334,7 +350,8 @@ sk_result sk_gltf_write_glb_memory(const sk_gltf *gltf, const sk_gltf_write_desc
     }
     char *json = o.failed ? NULL : cJSON_PrintUnformatted(root);
     if (!json)
-        r = sk_fail(err, o.bin_size > (size_t)UINT32_MAX / 2 ? SK_ERROR_LIMIT : SK_ERROR_OUT_OF_MEMORY,
+        r = sk_fail(err,
+                    o.bin_size > (size_t)UINT32_MAX / 2 ? SK_ERROR_LIMIT : SK_ERROR_OUT_OF_MEMORY,
                     "out of memory writing glTF (or beyond the 4 GiB GLB limit)");
     else
         r = pack_glb(json, &o, out_data, out_size, err);

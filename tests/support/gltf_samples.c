@@ -59,17 +59,21 @@ static sk_result make_static(sk_gltf *g, sk_error *err)
     for (size_t v = 0; r == SK_OK && v < box.vertex_count; v++)
         for (int c = 0; c < 3; c++) box.colors[3 * v + c] = box.positions[3 * v + c] + 0.5f;
     int textured = 0, plain = 0, m0 = 0, m1 = 0, node;
-    sk_gltf_material_desc md = {.name = "checker", .roughness = 0.6f,
-                                .base_color_texture = &colour, .normal_texture = &normal,
+    sk_gltf_material_desc md = {.name = "checker",
+                                .roughness = 0.6f,
+                                .base_color_texture = &colour,
+                                .normal_texture = &normal,
                                 .normal_scale = 0.8f};
     if (r == SK_OK) r = sk_gltf_add_material(g, &md, &textured, err);
-    sk_gltf_material_desc pd = {.name = "painted", .base_color = {0.8f, 0.8f, 0.8f, 1.0f},
-                                .roughness = 0.3f, .double_sided = true};
+    sk_gltf_material_desc pd = {.name = "painted",
+                                .base_color = {0.8f, 0.8f, 0.8f, 1.0f},
+                                .roughness = 0.3f,
+                                .double_sided = true};
     if (r == SK_OK) r = sk_gltf_add_material(g, &pd, &plain, err);
-    sk_gltf_mesh_desc a = {.name = "sphere", .mesh = &sphere, .uv_origin_bottom_left = true,
-                           .material = textured};
-    sk_gltf_mesh_desc b = {.name = "box", .mesh = &box, .uv_origin_bottom_left = true,
-                           .material = plain};
+    sk_gltf_mesh_desc a = {
+        .name = "sphere", .mesh = &sphere, .uv_origin_bottom_left = true, .material = textured};
+    sk_gltf_mesh_desc b = {
+        .name = "box", .mesh = &box, .uv_origin_bottom_left = true, .material = plain};
     if (r == SK_OK) r = sk_gltf_add_mesh(g, &a, &m0, err);
     if (r == SK_OK) r = sk_gltf_add_mesh(g, &b, &m1, err);
     sk_gltf_node_desc n = sk_gltf_node_desc_default();
@@ -110,7 +114,8 @@ static sk_result make_skinned(sk_gltf *g, sk_error *err)
 {
     sk_mesh cyl = {0};
     CHECK(primitive(SK_RENDER_SHAPE_CYLINDER, 24, 0, &cyl, err));
-    for (size_t v = 0; v < cyl.vertex_count; v++) cyl.positions[3 * v] *= 0.3f, cyl.positions[3 * v + 2] *= 0.3f;
+    for (size_t v = 0; v < cyl.vertex_count; v++)
+        cyl.positions[3 * v] *= 0.3f, cyl.positions[3 * v + 2] *= 0.3f;
     free(cyl.uvs); /* no texture reads them */
     cyl.uvs = NULL;
     sk_result r = SK_OK;
@@ -130,8 +135,12 @@ static sk_result make_skinned(sk_gltf *g, sk_error *err)
     sk_gltf_material_desc md = {.name = "rubber", .base_color = {0.7f, 0.3f, 0.2f, 1}};
     int material = 0;
     if (r == SK_OK) r = sk_gltf_add_material(g, &md, &material, err);
-    sk_gltf_mesh_desc d = {.name = "cylinder", .mesh = &cyl, .uv_origin_bottom_left = true,
-                           .material = material, .joints = joints, .weights = weights};
+    sk_gltf_mesh_desc d = {.name = "cylinder",
+                           .mesh = &cyl,
+                           .uv_origin_bottom_left = true,
+                           .material = material,
+                           .joints = joints,
+                           .weights = weights};
     if (r == SK_OK) r = sk_gltf_add_mesh(g, &d, &mesh, err);
     if (r == SK_OK) r = sk_gltf_add_skin(g, "chain", nodes, 3, NULL, &skin, err);
     sk_gltf_node_desc n = sk_gltf_node_desc_default();
@@ -145,7 +154,8 @@ static sk_result make_skinned(sk_gltf *g, sk_error *err)
     for (int k = 0; k < 5; k++) {
         times[k] = 0.25f * (float)k;
         double a = 0.5 * sin(k * SK_PI / 2) / 2; /* half angle about z */
-        bend[4 * k] = 0, bend[4 * k + 1] = 0, bend[4 * k + 2] = (float)sin(a), bend[4 * k + 3] = (float)cos(a);
+        bend[4 * k] = 0, bend[4 * k + 1] = 0, bend[4 * k + 2] = (float)sin(a),
+                 bend[4 * k + 3] = (float)cos(a);
     }
     if (r == SK_OK)
         r = sk_gltf_add_channel(g, anim, nodes[1], SK_GLTF_PATH_ROTATION,
@@ -180,7 +190,7 @@ static sk_result make_morph(sk_gltf *g, sk_error *err)
             p[0] = u - 0.5f, p[1] = 0.0f, p[2] = 0.5f - w;
             grid.normals[3 * v + 1] = 1.0f;
             double dx = u - 0.5, dz = w - 0.5, bump = exp(-(dx * dx + dz * dz) * 20);
-            targets[3 * v + 1] = (float)(0.3 * bump);             /* "bulge" */
+            targets[3 * v + 1] = (float)(0.3 * bump); /* "bulge" */
             target_normals[3 * v] = (float)(0.3 * bump * 40 * dx * 0.5);
             targets[3 * GRID * GRID + 3 * v] = (float)(0.2 * dz); /* "shear" */
             if (x < GRID - 1 && y < GRID - 1) {
@@ -191,12 +201,18 @@ static sk_result make_morph(sk_gltf *g, sk_error *err)
         }
     static const char *const target_names[2] = {"bulge", "shear"};
     float defaults[2] = {0.0f, 0.25f};
-    sk_gltf_material_desc md = {.name = "clay", .base_color = {0.6f, 0.6f, 0.5f, 1}, .roughness = 0.9f};
+    sk_gltf_material_desc md = {
+        .name = "clay", .base_color = {0.6f, 0.6f, 0.5f, 1}, .roughness = 0.9f};
     int material = 0, mesh = 0, node = 0, linear = 0, step = 0;
     if (r == SK_OK) r = sk_gltf_add_material(g, &md, &material, err);
-    sk_gltf_mesh_desc d = {.name = "grid", .mesh = &grid, .uv_origin_bottom_left = true,
-                           .material = material, .target_count = 2, .target_positions = targets,
-                           .target_normals = target_normals, .default_weights = defaults,
+    sk_gltf_mesh_desc d = {.name = "grid",
+                           .mesh = &grid,
+                           .uv_origin_bottom_left = true,
+                           .material = material,
+                           .target_count = 2,
+                           .target_positions = targets,
+                           .target_normals = target_normals,
+                           .default_weights = defaults,
                            .target_names = target_names};
     if (r == SK_OK) r = sk_gltf_add_mesh(g, &d, &mesh, err);
     sk_gltf_node_desc n = sk_gltf_node_desc_default();
