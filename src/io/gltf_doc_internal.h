@@ -105,6 +105,26 @@ sk_result sk__json_numbers(const cJSON *obj, const char *where, const char *key,
                            bool *found, sk_error *err);
 /* Items of an array (counted by walking it: cJSON_GetArraySize is not needed then). */
 int sk__json_count(const cJSON *array);
+/* An optional array member of indices into a top-level array of `count` objects: every
+   item checked ("<where>.<key>[k]: ..."), *n its length, and the indices written to `out`
+   (n of them) when it is not NULL. */
+sk_result sk__json_indices(const cJSON *obj, const char *where, const char *key, int count,
+                           const char *array, int *out, int *n, sk_error *err);
+
+/* ---- the reader's walk over top-level arrays (gltf_read.c) */
+
+/* The top-level array `key` (NULL when absent) and its length. */
+sk_result sk__gltf_items(const struct sk_gltf_doc *doc, const char *key, const cJSON **array,
+                         int *count, sk_error *err);
+/* Calls `fn` on each item of `array` (which must all be objects) with its path "key[i]". */
+typedef sk_result (*sk__gltf_item_fn)(struct sk_gltf_doc *doc, const cJSON *item, int index,
+                                      const char *where, void *user, sk_error *err);
+sk_result sk__gltf_each_item(struct sk_gltf_doc *doc, const cJSON *array, const char *key,
+                             sk__gltf_item_fn fn, void *user, sk_error *err);
+/* A zeroed array of `count` items charged against the cap (SK_ERROR_LIMIT beyond it); NULL
+   with *r set on failure. */
+void *sk__gltf_doc_alloc(struct sk_gltf_doc *doc, int count, size_t size, const char *what,
+                         sk_result *r, sk_error *err);
 
 /* ---- accessors (gltf_doc.c) */
 

@@ -1,6 +1,7 @@
 /* Checked access to the glTF JSON tree for the reader: members of the expected type and
  * range, or an SK_ERROR_PARSE naming the JSON path ("accessors[3].count: ..."). */
 #include <math.h>
+#include <stdio.h>
 
 #include "io/gltf_doc_internal.h"
 
@@ -128,5 +129,25 @@ sk_result sk__json_numbers(const cJSON *obj, const char *where, const char *key,
         out[k++] = e->valuedouble;
     }
     *found = true;
+    return SK_OK;
+}
+
+sk_result sk__json_indices(const cJSON *obj, const char *where, const char *key, int count,
+                           const char *array, int *out, int *n, sk_error *err)
+{
+    const cJSON *list, *item;
+    sk_result r = sk__json_array(obj, where, key, false, 0, &list, err);
+    *n = 0;
+    if (r != SK_OK) return r;
+    cJSON_ArrayForEach(item, list)
+    {
+        char at[48];
+        int index;
+        snprintf(at, sizeof at, "%s[%d]", key, *n);
+        if ((r = sk__json_index_item(item, where, at, count, array, &index, err)) != SK_OK)
+            return r;
+        if (out) out[*n] = index;
+        ++*n;
+    }
     return SK_OK;
 }

@@ -32,13 +32,39 @@ static sk_result charge(sk_gltf_doc *doc, size_t count, size_t size, const char 
     return SK_OK;
 }
 
-static void *alloc_array(sk_gltf_doc *doc, int count, size_t size, const char *what, sk_result *r,
+void *sk__gltf_doc_alloc(sk_gltf_doc *doc, int count, size_t size, const char *what, sk_result *r,
                          sk_error *err)
 {
     if ((*r = charge(doc, (size_t)count, size, what, err)) != SK_OK) return NULL;
     void *p = calloc(count > 0 ? (size_t)count : 1, size);
     if (!p) *r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "%s: out of memory", what);
     return p;
+}
+
+sk_result sk__gltf_items(const sk_gltf_doc *doc, const char *key, const cJSON **array, int *count,
+                         sk_error *err)
+{
+    sk_result r = sk__json_array(doc->json, "", key, false, 0, array, err);
+    *count = r == SK_OK ? sk__json_count(*array) : 0;
+    return r;
+}
+
+sk_result sk__gltf_each_item(sk_gltf_doc *doc, const cJSON *array, const char *key,
+                             sk__gltf_item_fn fn, void *user, sk_error *err)
+{
+    int i = 0;
+    const cJSON *item;
+    cJSON_ArrayForEach(item, array)
+    {
+        char where[48];
+        snprintf(where, sizeof where, "%s[%d]", key, i);
+        if (!cJSON_IsObject(item))
+            return sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
+        sk_result r = fn(doc, item, i, where, user, err);
+        if (r != SK_OK) return r;
+        i++;
+    }
+    return SK_OK;
 }
 
 /* ------------------------------------------------------------- container */
@@ -137,82 +163,79 @@ static sk_result read_asset(const cJSON *root, sk_error *err)
 
 /* ------------------------------------------------------ buffers and views */
 
-/* The byte length of the GLB-stored buffer 0 (the only buffer a .glb reader can load). */
-static sk_result read_buffers(sk_gltf_doc *doc, size_t *buffer_length, int *buffer_count,
-                              sk_error *err)
+/* What the buffer views are checked against: the GLB-stored buffer 0 (the only buffer a
+ * .glb reader can load). */
+typedef struct buffers {
+    size_t length;
+    int count;
+} buffers;
+
+static sk_result buffer_item(sk_gltf_doc *doc, const cJSON *b, int i, const char *where, void *user,
+                             sk_error *err)
 {
-    const cJSON *buffers, *b;
-    sk_result r = sk__json_array(doc->json, "", "buffers", false, 0, &buffers, err);
-    if (r != SK_OK) return r;
-    int i = 0;
-    *buffer_length = 0;
-    cJSON_ArrayForEach(b, buffers)
-    {
-        char where[32];
-        snprintf(where, sizeof where, "buffers[%d]", i);
-        if (!cJSON_IsObject(b)) return sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
-        long long len;
-        const char *uri;
-        if ((r = sk__json_int(b, where, "byteLength", true, 1, (long long)UINT32_MAX, 0, &len,
-                              err)) != SK_OK)
-            return r;
-        if ((r = sk__json_string(b, where, "uri", false, &uri, err)) != SK_OK) return r;
-        if (uri)
-            return sk_fail(
-                err, SK_ERROR_UNSUPPORTED,
-                "%s.uri: external and data-URI buffers are not read (only the GLB's own BIN chunk)",
-                where);
-        if (i > 0)
-            return sk_fail(err, SK_ERROR_PARSE,
-                           "%s: has no uri, which only buffers[0] (the BIN chunk) may", where);
-        if (!doc->bin)
-            return sk_fail(err, SK_ERROR_PARSE,
-                           "%s: refers to the BIN chunk, but the file has none", where);
-        if ((size_t)len > doc->bin_size)
-            return sk_fail(err, SK_ERROR_PARSE,
-                           "%s.byteLength = %lld exceeds the BIN chunk's %zu bytes", where, len,
-                           doc->bin_size);
-        *buffer_length = (size_t)len;
-        i++;
-    }
-    *buffer_count = i;
+    buffers *bs = user;
+    long long len;
+    const char *uri;
+    sk_result r;
+    if ((r = sk__json_int(b, where, "byteLength", true, 1, (long long)UINT32_MAX, 0, &len, err)) ||
+        (r = sk__json_string(b, where, "uri", false, &uri, err)))
+        return r;
+    if (uri)
+        return sk_fail(
+            err, SK_ERROR_UNSUPPORTED,
+            "%s.uri: external and data-URI buffers are not read (only the GLB's own BIN chunk)",
+            where);
+    if (i > 0)
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s: has no uri, which only buffers[0] (the BIN chunk) may", where);
+    if (!doc->bin)
+        return sk_fail(err, SK_ERROR_PARSE, "%s: refers to the BIN chunk, but the file has none",
+                       where);
+    if ((size_t)len > doc->bin_size)
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s.byteLength = %lld exceeds the BIN chunk's %zu bytes", where, len,
+                       doc->bin_size);
+    bs->length = (size_t)len;
     return SK_OK;
 }
 
-static sk_result read_views(sk_gltf_doc *doc, size_t buffer_length, int buffer_count, sk_error *err)
+static sk_result view_item(sk_gltf_doc *doc, const cJSON *v, int i, const char *where, void *user,
+                           sk_error *err)
 {
-    const cJSON *views, *v;
-    sk_result r = sk__json_array(doc->json, "", "bufferViews", false, 0, &views, err);
-    if (r != SK_OK) return r;
-    doc->view_count = sk__json_count(views);
-    doc->views = alloc_array(doc, doc->view_count, sizeof *doc->views, "bufferViews", &r, err);
-    if (!doc->views) return r;
-    int i = 0;
-    cJSON_ArrayForEach(v, views)
-    {
-        char where[40];
-        snprintf(where, sizeof where, "bufferViews[%d]", i);
-        if (!cJSON_IsObject(v)) return sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
-        int buffer;
-        long long offset, length, stride;
-        if ((r = sk__json_index(v, where, "buffer", true, buffer_count, "buffers", &buffer, err)) ||
-            (r = sk__json_int(v, where, "byteOffset", false, 0, (long long)UINT32_MAX, 0, &offset,
-                              err)) ||
-            (r = sk__json_int(v, where, "byteLength", true, 1, (long long)UINT32_MAX, 0, &length,
-                              err)) ||
-            (r = sk__json_int(v, where, "byteStride", false, 4, 252, 0, &stride, err)))
-            return r;
-        if (stride % 4 != 0)
-            return sk_fail(err, SK_ERROR_PARSE, "%s.byteStride = %lld is not a multiple of 4",
-                           where, stride);
-        if ((size_t)offset > buffer_length || (size_t)length > buffer_length - (size_t)offset)
-            return sk_fail(err, SK_ERROR_PARSE,
-                           "%s: bytes [%lld, %lld) run past buffers[0] (%zu bytes)", where, offset,
-                           offset + length, buffer_length);
-        doc->views[i] = (sk__gltf_view){(size_t)offset, (size_t)length, (size_t)stride};
-        i++;
-    }
+    const buffers *bs = user;
+    int buffer;
+    long long offset, length, stride;
+    sk_result r;
+    if ((r = sk__json_index(v, where, "buffer", true, bs->count, "buffers", &buffer, err)) ||
+        (r = sk__json_int(v, where, "byteOffset", false, 0, (long long)UINT32_MAX, 0, &offset,
+                          err)) ||
+        (r = sk__json_int(v, where, "byteLength", true, 1, (long long)UINT32_MAX, 0, &length,
+                          err)) ||
+        (r = sk__json_int(v, where, "byteStride", false, 4, 252, 0, &stride, err)))
+        return r;
+    if (stride % 4 != 0)
+        return sk_fail(err, SK_ERROR_PARSE, "%s.byteStride = %lld is not a multiple of 4", where,
+                       stride);
+    if ((size_t)offset > bs->length || (size_t)length > bs->length - (size_t)offset)
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s: bytes [%lld, %lld) run past buffers[0] (%zu bytes)", where, offset,
+                       offset + length, bs->length);
+    doc->views[i] = (sk__gltf_view){(size_t)offset, (size_t)length, (size_t)stride};
     return SK_OK;
+}
+
+static sk_result read_views(sk_gltf_doc *doc, sk_error *err)
+{
+    const cJSON *array, *views;
+    buffers bs = {0};
+    sk_result r = sk__gltf_items(doc, "buffers", &array, &bs.count, err);
+    if (r == SK_OK) r = sk__gltf_each_item(doc, array, "buffers", buffer_item, &bs, err);
+    if (r == SK_OK) r = sk__gltf_items(doc, "bufferViews", &views, &doc->view_count, err);
+    if (r != SK_OK) return r;
+    doc->views =
+        sk__gltf_doc_alloc(doc, doc->view_count, sizeof *doc->views, "bufferViews", &r, err);
+    if (!doc->views) return r;
+    return sk__gltf_each_item(doc, views, "bufferViews", view_item, &bs, err);
 }
 
 /* ----------------------------------------------------------------- accessors */
@@ -258,10 +281,11 @@ static size_t element_size(const sk__gltf_accessor *a)
     return column * (size_t)a->columns;
 }
 
-static sk_result read_accessor(sk_gltf_doc *doc, const cJSON *o, const char *where,
-                               sk__gltf_accessor *a, sk_error *err)
+static sk_result accessor_item(sk_gltf_doc *doc, const cJSON *o, int index, const char *where,
+                               void *user, sk_error *err)
 {
-    if (!cJSON_IsObject(o)) return sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
+    (void)user;
+    sk__gltf_accessor *a = &doc->accessors[index];
     if (sk__json_member(o, "sparse"))
         return sk_fail(err, SK_ERROR_UNSUPPORTED, "%s.sparse: sparse accessors are not supported",
                        where);
@@ -334,22 +358,13 @@ static sk_result read_accessor(sk_gltf_doc *doc, const cJSON *o, const char *whe
 
 static sk_result read_accessors(sk_gltf_doc *doc, sk_error *err)
 {
-    const cJSON *accessors, *o;
-    sk_result r = sk__json_array(doc->json, "", "accessors", false, 0, &accessors, err);
+    const cJSON *accessors;
+    sk_result r = sk__gltf_items(doc, "accessors", &accessors, &doc->accessor_count, err);
     if (r != SK_OK) return r;
-    doc->accessor_count = sk__json_count(accessors);
     doc->accessors =
-        alloc_array(doc, doc->accessor_count, sizeof *doc->accessors, "accessors", &r, err);
+        sk__gltf_doc_alloc(doc, doc->accessor_count, sizeof *doc->accessors, "accessors", &r, err);
     if (!doc->accessors) return r;
-    int i = 0;
-    cJSON_ArrayForEach(o, accessors)
-    {
-        char where[40];
-        snprintf(where, sizeof where, "accessors[%d]", i);
-        if ((r = read_accessor(doc, o, where, &doc->accessors[i], err)) != SK_OK) return r;
-        i++;
-    }
-    return SK_OK;
+    return sk__gltf_each_item(doc, accessors, "accessors", accessor_item, NULL, err);
 }
 
 /* ----------------------------------------------------------------- entry points */
@@ -372,13 +387,11 @@ static sk_result read_owned(sk_gltf_doc **out, uint8_t *file, size_t size, size_
     doc->max_bytes = cap;
     doc->charged = size;
     const uint8_t *json = NULL;
-    size_t json_len = 0, buffer_length = 0;
-    int buffer_count = 0;
+    size_t json_len = 0;
     sk_result r = read_container(doc, size, &json, &json_len, err);
     if (r == SK_OK) r = parse_json(doc, json, json_len, err);
     if (r == SK_OK) r = read_asset(doc->json, err);
-    if (r == SK_OK) r = read_buffers(doc, &buffer_length, &buffer_count, err);
-    if (r == SK_OK) r = read_views(doc, buffer_length, buffer_count, err);
+    if (r == SK_OK) r = read_views(doc, err);
     if (r == SK_OK) r = read_accessors(doc, err);
     if (r == SK_OK) r = sk__gltf_read_objects(doc, err);
     if (r != SK_OK) {

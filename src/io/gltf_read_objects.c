@@ -21,35 +21,10 @@ sk_result sk__gltf_read_objects(sk_gltf_doc *doc, sk_error *err);
         if (r_ != SK_OK) return r_;                                                                \
     } while (0)
 
-/* A top-level array's items (NULL when absent) and their count. */
-static sk_result top_array(const sk_gltf_doc *doc, const char *key, const cJSON **out, int *count,
-                           sk_error *err)
-{
-    TRY(sk__json_array(doc->json, "", key, false, 0, out, err));
-    *count = sk__json_count(*out);
-    return SK_OK;
-}
-
 static sk_result object_at(const cJSON *item, const char *where, sk_error *err)
 {
     return cJSON_IsObject(item) ? SK_OK
                                 : sk_fail(err, SK_ERROR_PARSE, "%s: must be an object", where);
-}
-
-static void *alloc_items(sk_gltf_doc *doc, int count, size_t size, const char *what, sk_result *r,
-                         sk_error *err)
-{
-    size_t bytes, total;
-    if (!sk_size_mul((size_t)count, size, &bytes) || !sk_size_add(doc->charged, bytes, &total) ||
-        total > doc->max_bytes) {
-        *r = sk_fail(err, SK_ERROR_LIMIT, "%s: %d items exceed the cap of %zu bytes", what, count,
-                     doc->max_bytes);
-        return NULL;
-    }
-    doc->charged = total;
-    void *p = calloc(count > 0 ? (size_t)count : 1, size);
-    *r = p ? SK_OK : sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "%s: out of memory", what);
-    return p;
 }
 
 /* ----------------------------------------------------------------- meshes */
@@ -224,55 +199,56 @@ static sk_result read_primitive(sk_gltf_doc *doc, const cJSON *prim, const char 
     return SK_OK;
 }
 
+static sk_result mesh_item(sk_gltf_doc *doc, const cJSON *m, int i, const char *where, void *user,
+                           sk_error *err)
+{
+    (void)user;
+    char at[96];
+    const cJSON *prims, *prim;
+    TRY(sk__json_array(m, where, "primitives", true, 1, &prims, err));
+    int p = 0, first_targets = 0, first_indices = -1;
+    long long joint_max = -1;
+    cJSON_ArrayForEach(prim, prims)
+    {
+        int targets = 0, indices = -1;
+        snprintf(at, sizeof at, "%s.primitives[%d]", where, p);
+        TRY(read_primitive(doc, prim, at, &targets, &indices, &joint_max, err));
+        if (p == 0) first_targets = targets, first_indices = indices;
+        if (targets != first_targets)
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s.targets: %d morph targets, primitives[0] has %d", at, targets,
+                           first_targets);
+        p++;
+    }
+    if (first_targets > SK__GLTF_MAX_TARGETS)
+        return sk_fail(err, SK_ERROR_LIMIT, "%s: %d morph targets exceed the limit of %d", where,
+                       first_targets, SK__GLTF_MAX_TARGETS);
+    const cJSON *w = sk__json_member(m, "weights");
+    if (w && (!cJSON_IsArray(w) || sk__json_count(w) != first_targets))
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s.weights: must have one number per morph target (%d)", where,
+                       first_targets);
+    double weights[SK__GLTF_MAX_TARGETS];
+    bool found;
+    TRY(sk__json_numbers(m, where, "weights", first_targets, weights, &found, err));
+    sk__gltf_doc_mesh *dm = &doc->meshes[i];
+    dm->attributes = sk__json_member(prims->child, "attributes");
+    dm->targets = sk__json_member(prims->child, "targets");
+    dm->target_count = first_targets;
+    dm->indices = first_indices;
+    dm->max_joint = joint_max;
+    return SK_OK;
+}
+
 static sk_result read_meshes(sk_gltf_doc *doc, sk_error *err)
 {
-    const cJSON *meshes, *m;
+    const cJSON *meshes;
     sk_result r;
-    TRY(top_array(doc, "meshes", &meshes, &doc->mesh_count, err));
-    if (!(doc->meshes = alloc_items(doc, doc->mesh_count, sizeof *doc->meshes, "meshes", &r, err)))
+    TRY(sk__gltf_items(doc, "meshes", &meshes, &doc->mesh_count, err));
+    if (!(doc->meshes =
+              sk__gltf_doc_alloc(doc, doc->mesh_count, sizeof *doc->meshes, "meshes", &r, err)))
         return r;
-    int i = 0;
-    cJSON_ArrayForEach(m, meshes)
-    {
-        char where[48], at[96];
-        snprintf(where, sizeof where, "meshes[%d]", i);
-        TRY(object_at(m, where, err));
-        const cJSON *prims, *prim;
-        TRY(sk__json_array(m, where, "primitives", true, 1, &prims, err));
-        int p = 0, first_targets = 0, first_indices = -1;
-        long long joint_max = -1;
-        cJSON_ArrayForEach(prim, prims)
-        {
-            int targets = 0, indices = -1;
-            snprintf(at, sizeof at, "%s.primitives[%d]", where, p);
-            TRY(read_primitive(doc, prim, at, &targets, &indices, &joint_max, err));
-            if (p == 0) first_targets = targets, first_indices = indices;
-            if (targets != first_targets)
-                return sk_fail(err, SK_ERROR_PARSE,
-                               "%s.targets: %d morph targets, primitives[0] has %d", at, targets,
-                               first_targets);
-            p++;
-        }
-        if (first_targets > SK__GLTF_MAX_TARGETS)
-            return sk_fail(err, SK_ERROR_LIMIT, "%s: %d morph targets exceed the limit of %d",
-                           where, first_targets, SK__GLTF_MAX_TARGETS);
-        const cJSON *w = sk__json_member(m, "weights");
-        if (w && (!cJSON_IsArray(w) || sk__json_count(w) != first_targets))
-            return sk_fail(err, SK_ERROR_PARSE,
-                           "%s.weights: must have one number per morph target (%d)", where,
-                           first_targets);
-        double weights[SK__GLTF_MAX_TARGETS];
-        bool found;
-        TRY(sk__json_numbers(m, where, "weights", first_targets, weights, &found, err));
-        sk__gltf_doc_mesh *dm = &doc->meshes[i];
-        dm->attributes = sk__json_member(prims->child, "attributes");
-        dm->targets = sk__json_member(prims->child, "targets");
-        dm->target_count = first_targets;
-        dm->indices = first_indices;
-        dm->max_joint = joint_max;
-        i++;
-    }
-    return SK_OK;
+    return sk__gltf_each_item(doc, meshes, "meshes", mesh_item, NULL, err);
 }
 
 /* ----------------------------------------------------------------- nodes */
@@ -314,40 +290,39 @@ static sk_result read_trs(const cJSON *n, const char *where, sk_gltf_doc_node *o
     return SK_OK;
 }
 
+/* A node's children: valid indices, each child's first parent. */
+static sk_result children_item(sk_gltf_doc *doc, const cJSON *n, int i, const char *where,
+                               void *user, sk_error *err)
+{
+    (void)user;
+    int count;
+    TRY(sk__json_indices(n, where, "children", doc->node_count, "nodes", NULL, &count, err));
+    int k = 0;
+    const cJSON *c;
+    cJSON_ArrayForEach(c, sk__json_member(n, "children"))
+    {
+        int child = (int)c->valuedouble; /* checked above */
+        if (child == i)
+            return sk_fail(err, SK_ERROR_PARSE, "%s.children[%d]: the node is its own child", where,
+                           k);
+        if (doc->nodes[child].parent != SK_GLTF_NONE)
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s.children[%d] = %d: already a child of nodes[%d]", where, k, child,
+                           doc->nodes[child].parent);
+        doc->nodes[child].parent = i;
+        k++;
+    }
+    return SK_OK;
+}
+
 /* Parents from the children lists: one parent each, then no loop (each node is walked up
  * once: a walk stops at a node already known to reach a root). */
 static sk_result read_hierarchy(sk_gltf_doc *doc, const cJSON *nodes, sk_error *err)
 {
-    int i = 0;
-    const cJSON *n;
-    cJSON_ArrayForEach(n, nodes)
-    {
-        char where[40];
-        snprintf(where, sizeof where, "nodes[%d]", i);
-        const cJSON *children, *c;
-        TRY(sk__json_array(n, where, "children", false, 1, &children, err));
-        int k = 0;
-        cJSON_ArrayForEach(c, children)
-        {
-            char key[32];
-            int child;
-            snprintf(key, sizeof key, "children[%d]", k);
-            TRY(sk__json_index_item(c, where, key, doc->node_count, "nodes", &child, err));
-            if (child == i)
-                return sk_fail(err, SK_ERROR_PARSE, "%s.children[%d]: the node is its own child",
-                               where, k);
-            if (doc->nodes[child].parent != SK_GLTF_NONE)
-                return sk_fail(err, SK_ERROR_PARSE,
-                               "%s.children[%d] = %d: already a child of nodes[%d]", where, k,
-                               child, doc->nodes[child].parent);
-            doc->nodes[child].parent = i;
-            k++;
-        }
-        i++;
-    }
+    TRY(sk__gltf_each_item(doc, nodes, "nodes", children_item, NULL, err));
     sk_result r;
-    unsigned char *state =
-        alloc_items(doc, doc->node_count, 1, "nodes", &r, err); /* 0 new, 1 walking, 2 done */
+    unsigned char *state = /* 0 new, 1 walking, 2 done */
+        sk__gltf_doc_alloc(doc, doc->node_count, 1, "nodes", &r, err);
     if (!state) return r;
     for (int start = 0; start < doc->node_count; start++) {
         int v = start;
@@ -366,80 +341,71 @@ static sk_result read_hierarchy(sk_gltf_doc *doc, const cJSON *nodes, sk_error *
     return SK_OK;
 }
 
+static sk_result node_item(sk_gltf_doc *doc, const cJSON *n, int i, const char *where, void *user,
+                           sk_error *err)
+{
+    (void)user;
+    sk_gltf_doc_node *dn = &doc->nodes[i];
+    dn->parent = SK_GLTF_NONE;
+    TRY(sk__json_string(n, where, "name", false, &dn->name, err));
+    if (!dn->name) dn->name = "";
+    TRY(sk__json_index(n, where, "mesh", false, doc->mesh_count, "meshes", &dn->mesh, err));
+    TRY(sk__json_index(n, where, "skin", false, doc->skin_count, "skins", &dn->skin, err));
+    if (dn->skin >= 0 && dn->mesh < 0)
+        return sk_fail(err, SK_ERROR_PARSE, "%s.skin: given without a mesh", where);
+    return read_trs(n, where, dn, &doc->node_matrix[i], err);
+}
+
 static sk_result read_nodes(sk_gltf_doc *doc, sk_error *err)
 {
-    const cJSON *nodes, *n;
+    const cJSON *nodes;
     sk_result r;
-    TRY(top_array(doc, "nodes", &nodes, &doc->node_count, err));
-    if (!(doc->nodes = alloc_items(doc, doc->node_count, sizeof *doc->nodes, "nodes", &r, err)))
+    TRY(sk__gltf_items(doc, "nodes", &nodes, &doc->node_count, err));
+    if (!(doc->nodes =
+              sk__gltf_doc_alloc(doc, doc->node_count, sizeof *doc->nodes, "nodes", &r, err)) ||
+        !(doc->node_matrix =
+              sk__gltf_doc_alloc(doc, doc->node_count, sizeof *doc->node_matrix, "nodes", &r, err)))
         return r;
-    if (!(doc->node_matrix =
-              alloc_items(doc, doc->node_count, sizeof *doc->node_matrix, "nodes", &r, err)))
-        return r;
-    int i = 0;
-    cJSON_ArrayForEach(n, nodes)
-    {
-        char where[40];
-        snprintf(where, sizeof where, "nodes[%d]", i);
-        TRY(object_at(n, where, err));
-        sk_gltf_doc_node *dn = &doc->nodes[i];
-        dn->parent = SK_GLTF_NONE;
-        TRY(sk__json_string(n, where, "name", false, &dn->name, err));
-        if (!dn->name) dn->name = "";
-        TRY(sk__json_index(n, where, "mesh", false, doc->mesh_count, "meshes", &dn->mesh, err));
-        TRY(sk__json_index(n, where, "skin", false, doc->skin_count, "skins", &dn->skin, err));
-        if (dn->skin >= 0 && dn->mesh < 0)
-            return sk_fail(err, SK_ERROR_PARSE, "%s.skin: given without a mesh", where);
-        TRY(read_trs(n, where, dn, &doc->node_matrix[i], err));
-        i++;
-    }
+    TRY(sk__gltf_each_item(doc, nodes, "nodes", node_item, NULL, err));
     return read_hierarchy(doc, nodes, err);
 }
 
 /* ----------------------------------------------------------------- skins */
 
+static sk_result skin_item(sk_gltf_doc *doc, const cJSON *s, int i, const char *where, void *user,
+                           sk_error *err)
+{
+    (void)user;
+    sk__gltf_doc_skin *ds = &doc->skins[i];
+    int skeleton;
+    sk_result r;
+    TRY(sk__json_indices(s, where, "joints", doc->node_count, "nodes", NULL, &ds->joint_count,
+                         err));
+    if (ds->joint_count < 1)
+        return sk_fail(err, SK_ERROR_PARSE, "%s.joints: must have at least 1 item", where);
+    if (!(ds->joints = sk__gltf_doc_alloc(doc, ds->joint_count, sizeof(int), where, &r, err)))
+        return r;
+    TRY(sk__json_indices(s, where, "joints", doc->node_count, "nodes", ds->joints, &ds->joint_count,
+                         err));
+    TRY(sk__json_index(s, where, "skeleton", false, doc->node_count, "nodes", &skeleton, err));
+    TRY(sk__json_index(s, where, "inverseBindMatrices", false, doc->accessor_count, "accessors",
+                       &ds->inverse_bind, err));
+    if (ds->inverse_bind < 0) return SK_OK;
+    const sk__gltf_accessor *a = &doc->accessors[ds->inverse_bind];
+    if (a->components != 16 || a->component_type != SK__GLTF_FLOAT)
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s.inverseBindMatrices: accessors[%d] must be a MAT4 of FLOAT", where,
+                       ds->inverse_bind);
+    if (a->count < (size_t)ds->joint_count)
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "%s.inverseBindMatrices: accessors[%d] has %zu matrices for %d joints",
+                       where, ds->inverse_bind, a->count, ds->joint_count);
+    return SK_OK;
+}
+
 static sk_result read_skins(sk_gltf_doc *doc, const cJSON *skins, sk_error *err)
 {
-    const cJSON *s;
-    int i = 0;
-    cJSON_ArrayForEach(s, skins)
-    {
-        char where[40];
-        snprintf(where, sizeof where, "skins[%d]", i);
-        TRY(object_at(s, where, err));
-        sk__gltf_doc_skin *ds = &doc->skins[i];
-        const cJSON *joints, *j;
-        int skeleton;
-        TRY(sk__json_array(s, where, "joints", true, 1, &joints, err));
-        TRY(sk__json_index(s, where, "skeleton", false, doc->node_count, "nodes", &skeleton, err));
-        TRY(sk__json_index(s, where, "inverseBindMatrices", false, doc->accessor_count, "accessors",
-                           &ds->inverse_bind, err));
-        ds->joint_count = sk__json_count(joints);
-        sk_result r;
-        if (!(ds->joints = alloc_items(doc, ds->joint_count, sizeof(int), where, &r, err)))
-            return r;
-        int k = 0;
-        cJSON_ArrayForEach(j, joints)
-        {
-            char key[32];
-            snprintf(key, sizeof key, "joints[%d]", k);
-            TRY(sk__json_index_item(j, where, key, doc->node_count, "nodes", &ds->joints[k], err));
-            k++;
-        }
-        if (ds->inverse_bind >= 0) {
-            const sk__gltf_accessor *a = &doc->accessors[ds->inverse_bind];
-            if (a->components != 16 || a->component_type != SK__GLTF_FLOAT)
-                return sk_fail(err, SK_ERROR_PARSE,
-                               "%s.inverseBindMatrices: accessors[%d] must be a MAT4 of FLOAT",
-                               where, ds->inverse_bind);
-            if (a->count < (size_t)ds->joint_count)
-                return sk_fail(
-                    err, SK_ERROR_PARSE,
-                    "%s.inverseBindMatrices: accessors[%d] has %zu matrices for %d joints", where,
-                    ds->inverse_bind, a->count, ds->joint_count);
-        }
-        i++;
-    }
+    TRY(sk__gltf_each_item(doc, skins, "skins", skin_item, NULL, err));
     /* the joint indices of every skinned mesh stay within its skin */
     for (int n = 0; n < doc->node_count; n++) {
         const sk_gltf_doc_node *dn = &doc->nodes[n];
@@ -557,11 +523,12 @@ static sk_result read_channels(sk_gltf_doc *doc, const cJSON *anim, const char *
     int sampler_count = sk__json_count(samplers);
     da->channel_count = sk__json_count(channels);
     sk_result r;
-    if (!(da->channels = alloc_items(doc, da->channel_count, sizeof *da->channels, where, &r, err)))
+    if (!(da->channels =
+              sk__gltf_doc_alloc(doc, da->channel_count, sizeof *da->channels, where, &r, err)))
         return r;
-    long long *keys = alloc_items(doc, da->channel_count, sizeof *keys, where, &r, err);
+    long long *keys = sk__gltf_doc_alloc(doc, da->channel_count, sizeof *keys, where, &r, err);
     const cJSON **sampler_items =
-        keys ? alloc_items(doc, sampler_count, sizeof *sampler_items, where, &r, err) : NULL;
+        keys ? sk__gltf_doc_alloc(doc, sampler_count, sizeof *sampler_items, where, &r, err) : NULL;
     if (!sampler_items) {
         free(keys);
         return r;
@@ -625,24 +592,22 @@ static sk_result read_channels(sk_gltf_doc *doc, const cJSON *anim, const char *
     return r;
 }
 
+static sk_result animation_item(sk_gltf_doc *doc, const cJSON *a, int i, const char *where,
+                                void *user, sk_error *err)
+{
+    (void)user;
+    return read_channels(doc, a, where, &doc->animations[i], err);
+}
+
 static sk_result read_animations(sk_gltf_doc *doc, sk_error *err)
 {
-    const cJSON *anims, *a;
+    const cJSON *anims;
     sk_result r;
-    TRY(top_array(doc, "animations", &anims, &doc->animation_count, err));
-    if (!(doc->animations = alloc_items(doc, doc->animation_count, sizeof *doc->animations,
-                                        "animations", &r, err)))
+    TRY(sk__gltf_items(doc, "animations", &anims, &doc->animation_count, err));
+    if (!(doc->animations = sk__gltf_doc_alloc(doc, doc->animation_count, sizeof *doc->animations,
+                                               "animations", &r, err)))
         return r;
-    int i = 0;
-    cJSON_ArrayForEach(a, anims)
-    {
-        char where[40];
-        snprintf(where, sizeof where, "animations[%d]", i);
-        TRY(object_at(a, where, err));
-        TRY(read_channels(doc, a, where, &doc->animations[i], err));
-        i++;
-    }
-    return SK_OK;
+    return sk__gltf_each_item(doc, anims, "animations", animation_item, NULL, err);
 }
 
 /* ------------------------------------------------ materials, textures, images */
@@ -659,83 +624,81 @@ static sk_result check_texture_ref(const sk_gltf_doc *doc, const cJSON *owner, c
     return sk__json_index(info, at, "index", true, doc->texture_count, "textures", &index, err);
 }
 
+static sk_result image_item(sk_gltf_doc *doc, const cJSON *o, int i, const char *where, void *user,
+                            sk_error *err)
+{
+    (void)i, (void)user;
+    int view;
+    const char *uri, *mime;
+    TRY(sk__json_index(o, where, "bufferView", false, doc->view_count, "bufferViews", &view, err));
+    TRY(sk__json_string(o, where, "uri", false, &uri, err));
+    TRY(sk__json_string(o, where, "mimeType", view >= 0, &mime, err));
+    if ((view >= 0) == (uri != NULL))
+        return sk_fail(err, SK_ERROR_PARSE, "%s: needs exactly one of bufferView and uri", where);
+    return SK_OK;
+}
+
+static sk_result texture_item(sk_gltf_doc *doc, const cJSON *o, int i, const char *where,
+                              void *user, sk_error *err)
+{
+    (void)i, (void)user;
+    int source;
+    return sk__json_index(o, where, "source", false, doc->image_count, "images", &source, err);
+}
+
+static sk_result material_item(sk_gltf_doc *doc, const cJSON *o, int i, const char *where,
+                               void *user, sk_error *err)
+{
+    (void)i, (void)user;
+    char at[64];
+    const cJSON *pbr;
+    TRY(sk__json_object(o, where, "pbrMetallicRoughness", false, &pbr, err));
+    snprintf(at, sizeof at, "%s.pbrMetallicRoughness", where);
+    TRY(check_texture_ref(doc, pbr, at, "baseColorTexture", err));
+    TRY(check_texture_ref(doc, pbr, at, "metallicRoughnessTexture", err));
+    TRY(check_texture_ref(doc, o, where, "normalTexture", err));
+    TRY(check_texture_ref(doc, o, where, "occlusionTexture", err));
+    return check_texture_ref(doc, o, where, "emissiveTexture", err);
+}
+
 static sk_result read_materials(sk_gltf_doc *doc, sk_error *err)
 {
-    const cJSON *images, *textures, *materials, *o;
-    TRY(top_array(doc, "images", &images, &doc->image_count, err));
-    TRY(top_array(doc, "textures", &textures, &doc->texture_count, err));
-    TRY(top_array(doc, "materials", &materials, &doc->material_count, err));
-    int i = 0;
-    cJSON_ArrayForEach(o, images)
+    const cJSON *images, *textures, *materials;
+    TRY(sk__gltf_items(doc, "images", &images, &doc->image_count, err));
+    TRY(sk__gltf_items(doc, "textures", &textures, &doc->texture_count, err));
+    TRY(sk__gltf_items(doc, "materials", &materials, &doc->material_count, err));
+    TRY(sk__gltf_each_item(doc, images, "images", image_item, NULL, err));
+    TRY(sk__gltf_each_item(doc, textures, "textures", texture_item, NULL, err));
+    return sk__gltf_each_item(doc, materials, "materials", material_item, NULL, err);
+}
+
+/* A scene's nodes: roots only. */
+static sk_result scene_item(sk_gltf_doc *doc, const cJSON *s, int i, const char *where, void *user,
+                            sk_error *err)
+{
+    (void)i, (void)user;
+    int count;
+    TRY(sk__json_indices(s, where, "nodes", doc->node_count, "nodes", NULL, &count, err));
+    int k = 0;
+    const cJSON *n;
+    cJSON_ArrayForEach(n, sk__json_member(s, "nodes"))
     {
-        char where[40];
-        int view;
-        const char *uri, *mime;
-        snprintf(where, sizeof where, "images[%d]", i++);
-        TRY(object_at(o, where, err));
-        TRY(sk__json_index(o, where, "bufferView", false, doc->view_count, "bufferViews", &view,
-                           err));
-        TRY(sk__json_string(o, where, "uri", false, &uri, err));
-        TRY(sk__json_string(o, where, "mimeType", view >= 0, &mime, err));
-        if ((view >= 0) == (uri != NULL))
-            return sk_fail(err, SK_ERROR_PARSE, "%s: needs exactly one of bufferView and uri",
-                           where);
-    }
-    i = 0;
-    cJSON_ArrayForEach(o, textures)
-    {
-        char where[40];
-        int source;
-        snprintf(where, sizeof where, "textures[%d]", i++);
-        TRY(object_at(o, where, err));
-        TRY(sk__json_index(o, where, "source", false, doc->image_count, "images", &source, err));
-    }
-    i = 0;
-    cJSON_ArrayForEach(o, materials)
-    {
-        char where[40], at[64];
-        const cJSON *pbr;
-        snprintf(where, sizeof where, "materials[%d]", i++);
-        TRY(object_at(o, where, err));
-        TRY(sk__json_object(o, where, "pbrMetallicRoughness", false, &pbr, err));
-        snprintf(at, sizeof at, "%s.pbrMetallicRoughness", where);
-        TRY(check_texture_ref(doc, pbr, at, "baseColorTexture", err));
-        TRY(check_texture_ref(doc, pbr, at, "metallicRoughnessTexture", err));
-        TRY(check_texture_ref(doc, o, where, "normalTexture", err));
-        TRY(check_texture_ref(doc, o, where, "occlusionTexture", err));
-        TRY(check_texture_ref(doc, o, where, "emissiveTexture", err));
+        int node = (int)n->valuedouble; /* checked above */
+        if (doc->nodes[node].parent != SK_GLTF_NONE)
+            return sk_fail(err, SK_ERROR_PARSE, "%s.nodes[%d] = %d: not a root node", where, k,
+                           node);
+        k++;
     }
     return SK_OK;
 }
 
-static sk_result read_scenes(const sk_gltf_doc *doc, sk_error *err)
+static sk_result read_scenes(sk_gltf_doc *doc, sk_error *err)
 {
-    const cJSON *scenes, *s;
+    const cJSON *scenes;
     int scene_count, scene;
-    TRY(top_array(doc, "scenes", &scenes, &scene_count, err));
+    TRY(sk__gltf_items(doc, "scenes", &scenes, &scene_count, err));
     TRY(sk__json_index(doc->json, "", "scene", false, scene_count, "scenes", &scene, err));
-    int i = 0;
-    cJSON_ArrayForEach(s, scenes)
-    {
-        char where[40];
-        const cJSON *nodes, *n;
-        snprintf(where, sizeof where, "scenes[%d]", i++);
-        TRY(object_at(s, where, err));
-        TRY(sk__json_array(s, where, "nodes", false, 1, &nodes, err));
-        int k = 0;
-        cJSON_ArrayForEach(n, nodes)
-        {
-            char key[32];
-            int node;
-            snprintf(key, sizeof key, "nodes[%d]", k);
-            TRY(sk__json_index_item(n, where, key, doc->node_count, "nodes", &node, err));
-            if (doc->nodes[node].parent != SK_GLTF_NONE)
-                return sk_fail(err, SK_ERROR_PARSE, "%s.nodes[%d] = %d: not a root node", where, k,
-                               node);
-            k++;
-        }
-    }
-    return SK_OK;
+    return sk__gltf_each_item(doc, scenes, "scenes", scene_item, NULL, err);
 }
 
 sk_result sk__gltf_read_objects(sk_gltf_doc *doc, sk_error *err)
@@ -746,8 +709,9 @@ sk_result sk__gltf_read_objects(sk_gltf_doc *doc, sk_error *err)
        that name them and checked after, when the meshes' joint indices are known */
     TRY(read_materials(doc, err));
     TRY(read_meshes(doc, err));
-    TRY(top_array(doc, "skins", &skins, &doc->skin_count, err));
-    if (!(doc->skins = alloc_items(doc, doc->skin_count, sizeof *doc->skins, "skins", &r, err)))
+    TRY(sk__gltf_items(doc, "skins", &skins, &doc->skin_count, err));
+    if (!(doc->skins =
+              sk__gltf_doc_alloc(doc, doc->skin_count, sizeof *doc->skins, "skins", &r, err)))
         return r;
     TRY(read_nodes(doc, err));
     TRY(read_skins(doc, skins, err));
