@@ -411,7 +411,8 @@ typedef enum sk_hand_potential_method {
 
 typedef struct sk_hand_potential_desc {
     sk_hand_potential_method method; /* 0 = mixture */
-    int max_components;    /* mixture: 0 = 6; range [1, 16] */
+    int max_components;    /* mixture: 0 = 12; range [1, 16]; counts tried: 1, 2, 3, 4, 6,
+                              8, 12, 16 up to it */
     int components;        /* mixture: 0 = chosen on held-out samples; else fixed [1, 16] */
     double prior_strength; /* pseudo-samples of the base set's Gaussian that the mean and
                               covariance shrink toward; 0 = chosen by held-out
@@ -564,8 +565,10 @@ sk_result sk_hand_plot_evaluation(const sk_hand_evaluation *eval, const char *mo
  * little: MCP, PIP, DIP), made to stand in for real recordings where none can be shipped:
  * several people each grasp ten object types (power, precision, hook, pointing, flat,
  * fist, ...) in a few trials of reach, hold and release. Per grasp type an aperture varies
- * the PIPs of all fingers together and each MCP on its own (neighbouring PIPs strongly
- * coupled, MCP and PIP of one finger weakly); the DIP follows its PIP along a curve (no
+ * the PIPs of all fingers together and each MCP partly with its neighbour (neighbouring
+ * PIPs strongly coupled, neighbouring MCPs moderately, MCP and PIP of one finger weakly);
+ * on the way to an object the hand opens beyond the grasp (pre-shaping); the DIP follows
+ * its PIP along a curve (no
  * DIP flexion below about 20 degrees of PIP), with a person's own gain; people differ in
  * their relaxed posture and range; glove noise of about 2 degrees per sample and a
  * calibration offset per trial; angles stay within the joint limits. CSV columns:

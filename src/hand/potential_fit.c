@@ -72,13 +72,16 @@ static void shrink(int d, int n, const double *xbar, const double *s, double nu,
 
 /* --------------------------------------------------- held-out split */
 
-/* Validation samples for model choices inside a fit: every fifth of 25 contiguous blocks
- * (frames next to each other are nearly the same pose), or every fifth group when there
- * are at least ten (fewer make a noisy choice). */
+/* Validation samples for model choices inside a fit: a fifth of 100 contiguous blocks
+ * (frames next to each other are nearly the same pose), or a fifth of the groups when
+ * there are at least ten (fewer make a noisy choice). Which blocks or groups is decided
+ * by a hash of their number: recordings are usually ordered (person by person, grasp by
+ * grasp), and every fifth block of an ordered file would always hold the same grasps. */
 static bool is_validation(const sk_hand_samples *s, int k, int i, int n)
 {
-    if (s->group && s->group_count >= 10) return s->group[i] % 5 == 4;
-    return ((long long)k * 25 / n) % 5 == 4;
+    if (s->group && s->group_count >= 10) return sk_hash(0x76616c, (uint64_t)s->group[i], 1, 0) % 5 == 0;
+    long long block = (long long)k * 100 / n;
+    return sk_hash(0x76616c, (uint64_t)block, 0, 0) % 5 == 0;
 }
 
 /* ------------------------------------------------------- thesis form */
@@ -162,7 +165,7 @@ sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *
     if (dd.method == SK_HAND_POTENTIAL_DEFAULT) dd.method = SK_HAND_POTENTIAL_MIXTURE;
     if (dd.method != SK_HAND_POTENTIAL_GAUSSIAN && dd.method != SK_HAND_POTENTIAL_MIXTURE)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "method = %d is not gaussian or mixture", (int)dd.method);
-    if (dd.max_components == 0) dd.max_components = 6;
+    if (dd.max_components == 0) dd.max_components = 12;
     sk_result r = sk_check_range_i(err, "max_components", dd.max_components, 1, SK_HAND_POTENTIAL_MAX_COMPONENTS);
     if (r == SK_OK) r = sk_check_range_i(err, "components", dd.components, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS);
     if (r == SK_OK && !isnan(dd.prior_strength) && dd.prior_strength > 1e7)
@@ -276,7 +279,11 @@ sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *
             shrink(d, n_train, xbar, scatter, nu, mu0, sigma0, mu_t, pooled_t);
             sk_hand__mixture_single(g, d, mu_t, pooled_t);
             double best = sk_hand__mixture_validation_error(g, x + (size_t)n_train * d, n_val, masks, mask_count);
-            for (int c = 2; c <= dd.max_components && c <= n_train / (2 * d + 2); c++) {
+            /* counts on a coarse grid: each EM fit costs about its count */
+            static const int COUNTS[] = {2, 3, 4, 6, 8, 12, 16};
+            for (size_t ci = 0; ci < sizeof COUNTS / sizeof COUNTS[0]; ci++) {
+                int c = COUNTS[ci];
+                if (c > dd.max_components || c > n_train / (2 * d + 2)) break;
                 if (!sk_hand__mixture_fit(g, x, n_train, d, c, pooled_t, nu_component, dd.seed, resp)) continue;
                 double e = sk_hand__mixture_validation_error(g, x + (size_t)n_train * d, n_val, masks, mask_count);
                 if (e < best) {
