@@ -216,6 +216,111 @@ static void test_gaussian_recovered(void **state)
     sk_hand_samples_free(&s);
 }
 
+/* The thesis's form calibrated with the pairs and the weight scale chosen on held-out
+ * samples: it finds the strong coupling, predicts near the conditional mean, far better
+ * than eq. 3.18's weights on the same pair; with a handful of samples it stays the
+ * published default (re-centred on the samples). */
+static void test_pair_choice(void **state)
+{
+    (void)state;
+    sk_hand_skeleton skel = skeleton();
+    static sk_hand_constraints natural;
+    sk_error err;
+    assert_int_equal(sk_hand_constraints_load_file(SK_TEST_PRESET_DIR "/hand/natural.json", &skel, &natural, &err),
+                     SK_OK);
+    char *text = known_csv(4000, 11);
+    sk_hand_samples s;
+    parse_samples(text, &s);
+    sk_hand_pin_set pins = {1, {sk_hand_dof_find("M.PIP.flex")}};
+    sk_hand_potential_desc d = {.method = SK_HAND_POTENTIAL_PAIRS, .base = &natural, .pin_sets = &pins,
+                                .pin_set_count = 1};
+    sk_hand_potential p;
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
+    assert_int_equal(p.component_count, 1);
+    assert_true(p.pair_count >= 1 && p.pair_count <= 16);
+    assert_true(p.weight_scale >= 0.25 && p.weight_scale <= 64);
+    const sk_hand_constraints *c = &p.component[0].constraints;
+    bool strongest = false;
+    for (int k = c->row_count - p.pair_count; k < c->row_count; k++) {
+        const sk_hand_row *row = &c->rows[k];
+        assert_int_equal(row->term_count, 2);
+        assert_true(row->weight > 0 && row->b == 0.0);
+        bool ip = row->dof[0] == sk_hand_dof_find("I.PIP.flex") || row->dof[1] == sk_hand_dof_find("I.PIP.flex");
+        bool mp = row->dof[0] == pins.dof[0] || row->dof[1] == pins.dof[0];
+        strongest |= ip && mp;
+    }
+    assert_true(strongest);
+    /* the relaxed posture is the samples' mean (shrunk a little toward the default) */
+    for (int i = 0; i < G_D; i++)
+        assert_true(fabs(p.component[0].relaxed[sk_hand_dof_find(G_NAME[i])] * SK_RAD_TO_DEG - G_MEAN[i]) < 2.0);
+    sk_hand_potential_free(&p);
+
+    /* held out: near the conditional mean, far better than the eq. 3.18 line */
+    sk_hand_evaluation *ev = malloc(sizeof *ev), *thesis = malloc(sizeof *thesis);
+    sk_hand_evaluation_desc ed = {.potential = d};
+    ed.potential.pin_sets = NULL;
+    ed.potential.pin_set_count = 0;
+    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &ed, ev, &err), SK_OK);
+    double want[G_D * G_D], condvar = 0.0;
+    known_cov(want);
+    for (int u = 0; u < G_D; u++)
+        if (u != 3) condvar += want[u * G_D + u] - want[u * G_D + 3] * want[u * G_D + 3] / want[3 * G_D + 3];
+    double expect = sqrt(condvar / 3) * DEG;
+    assert_true(ev->result[0].model_all < 1.08 * expect);
+    assert_true(ev->result[0].model_all < 0.8 * ev->result[0].mean_all);
+    assert_int_equal(ev->result[0].unconverged, 0);
+    int pair[1][2] = {{sk_hand_dof_find("I.PIP.flex"), pins.dof[0]}};
+    sk_hand_evaluation_desc td = {.model = SK_HAND_EVAL_MODEL_PAIRS, .pairs = (const int(*)[2])pair, .pair_count = 1};
+    td.potential.base = &natural;
+    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &td, thesis, &err), SK_OK);
+    assert_true(ev->result[0].model_all < 0.8 * thesis->result[0].model_all);
+    free(ev);
+    free(thesis);
+
+    /* only the given candidates; a candidate outside the samples is an error naming it */
+    int one[1][2] = {{sk_hand_dof_find("I.MCP.flex"), sk_hand_dof_find("I.DIP.flex")}};
+    d.pairs = (const int(*)[2])one;
+    d.pair_count = 1;
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
+    assert_true(p.pair_count <= 1);
+    if (p.pair_count == 1)
+        assert_string_equal(p.component[0].constraints.rows[p.component[0].constraints.row_count - 1].label,
+                            "I.MCP.flex:I.DIP.flex");
+    sk_hand_potential_free(&p);
+    one[0][1] = sk_hand_dof_find("L.PIP.flex");
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "L.PIP.flex"));
+    d.pairs = NULL;
+    d.pair_count = 0;
+    sk_hand_samples_free(&s);
+
+    /* six samples: no fitted rows, the published rows, a relaxed posture between the
+       default and the samples' mean */
+    char *end = text;
+    for (int line = 0; line < 7; line++) end = strchr(end, '\n') + 1;
+    *end = '\0';
+    parse_samples(text, &s);
+    free(text);
+    d.pin_sets = NULL;
+    d.pin_set_count = 0;
+    d.prior_strength = 16;
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
+    assert_int_equal(p.pair_count, 0);
+    assert_int_equal(p.component[0].constraints.row_count, natural.row_count);
+    for (int i = 0; i < G_D; i++) {
+        int dof = sk_hand_dof_find(G_NAME[i]);
+        double mean = 0.0;
+        for (int k = 0; k < s.count; k++) mean += s.column[dof][k] / s.count;
+        double lo = fmin(mean, skel.dof[dof].relaxed), hi = fmax(mean, skel.dof[dof].relaxed);
+        double got = p.component[0].relaxed[dof];
+        assert_true(got >= lo - 1e-9 && got <= hi + 1e-9);
+        /* 16 pseudo-samples against 6: nearer the default */
+        assert_true(fabs(got - skel.dof[dof].relaxed) <= fabs(got - mean) + 1e-9);
+    }
+    sk_hand_potential_free(&p);
+    sk_hand_samples_free(&s);
+}
+
 /* DIP = a hinge of PIP (none below 40 degrees): one Gaussian fits a line, a mixture the
  * two pieces. */
 static void test_mixture_beats_gaussian_on_nonlinear_relation(void **state)
@@ -528,6 +633,23 @@ static void test_cli_evaluate(void **state)
                      0);
     assert_int_equal(sk_test_cli(run, "hand pose --potential '%s' --pin I.MCP.flex=60 -o '%s'", pot, pose), 0);
     assert_true(sk_test_file_exists(pose));
+    /* the thesis's form with the pairs chosen, written as a potential */
+    const char *pairs_pot = sk_test_path("prior/cli-pairs.json");
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --method pairs -o '%s'",
+                                 csv, pairs_pot),
+                     0);
+    assert_non_null(strstr(run->out, "weight scale"));
+    assert_int_equal(sk_test_cli(run, "hand pose --potential '%s' --pin L.MCP.flex=70 -o '%s'", pairs_pot, pose), 0);
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --ignore-columns trial,person --max-pairs 3 -o '%s'", csv,
+                                 pairs_pot),
+                     2);
+    assert_non_null(strstr(run->err, "--max-pairs needs --method pairs"));
+    assert_int_equal(sk_test_cli(run,
+                                 "hand evaluate '%s' --pins L.MCP.flex --group person --ignore-columns trial "
+                                 "--method pairs --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:M.PIP.flex --max-pairs 2",
+                                 csv),
+                     0);
+    assert_non_null(strstr(run->out, "pins L.MCP.flex: held-out RMS error"));
     /* errors: one line, exit 2, no report */
     const char *none = sk_test_path("prior/cli-none.json");
     assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins T.MCP.flex --ignore-columns trial,person --report '%s'",
@@ -556,6 +678,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_gaussian_recovered),
+        cmocka_unit_test(test_pair_choice),
         cmocka_unit_test(test_mixture_beats_gaussian_on_nonlinear_relation),
         cmocka_unit_test(test_lut_solves_converge),
         cmocka_unit_test(test_samples_csv_options),

@@ -498,8 +498,12 @@ const cli_command cmd_hand_animate = {
 
 static const cli_option calibrate_options[] = {
     {"pairs", 0, "A:B,...", "fit the thesis's pair lines y = A x + b instead (constraint rows file)", false},
-    {"weights", 0, "RULE", "pair lines: thesis (eq. 3.18, default) or inverse-variance", false},
-    {"method", 0, "METHOD", "potential: mixture (default; components chosen on held-out samples) or gaussian", false},
+    {"weights", 0, "RULE", "pair lines: thesis (eq. 3.18, default) or inverse-variance (default of --method pairs)", false},
+    {"method", 0, "METHOD", "potential: mixture (default; components chosen on held-out samples), gaussian, or pairs "
+                            "(the thesis's form: relaxed posture measured, pair rows and weight scale chosen on "
+                            "held-out samples, --pairs the candidates)", false},
+    {"weight-scale", 0, "S", "--method pairs: multiplies the fitted weights (default: chosen)", false},
+    {"max-pairs", 0, "N", "--method pairs: fitted rows at most (default 16)", false},
     {"components", 0, "N", "potential: fixed mixture component count (default: chosen)", false},
     {"prior-strength", 0, "S", "potential: pseudo-samples of the base set's Gaussian (default: chosen; 0 = none)", false},
     {"base", 0, "SET", "potential: set kept outside the samples' DOFs and shrunk toward (default natural)", false},
@@ -511,6 +515,12 @@ static const cli_option calibrate_options[] = {
 static int run_calibrate(const cli_command *cmd, const cli_args *args)
 {
     const char *pairs_text = cli_get(cmd, args, "pairs");
+    const char *method = cli_get(cmd, args, "method");
+    if (method && strcmp(method, "pairs") == 0) return hand_calibrate_potential(cmd, args);
+    static const char *const selection_only[] = {"weight-scale", "max-pairs", NULL};
+    for (int i = 0; selection_only[i]; i++)
+        if (cli_has(cmd, args, selection_only[i]))
+            return cli_fail(CLI_EXIT_USAGE, "--%s needs --method pairs", selection_only[i]);
     if (!pairs_text) {
         static const char *const pair_only[] = {"weights", NULL};
         int rc = require_option(cmd, args, "pairs", pair_only);
@@ -521,11 +531,9 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
         if (cli_has(cmd, args, potential_only[i]))
             return cli_fail(CLI_EXIT_USAGE, "--%s is for the potential; it does not go with --pairs", potential_only[i]);
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o rows.json is required");
-    sk_hand_weight_rule rule = SK_HAND_WEIGHT_THESIS;
-    const char *w = cli_get(cmd, args, "weights");
-    if (w && strcmp(w, "inverse-variance") == 0) rule = SK_HAND_WEIGHT_INVERSE_VARIANCE;
-    else if (w && strcmp(w, "thesis") != 0)
-        return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
+    sk_hand_weight_rule rule;
+    int rule_rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_THESIS, &rule);
+    if (rule_rc) return rule_rc;
     sk_error err = {0};
     int pairs[64][2], n = 0;
     if (sk_hand_parse_pairs(pairs_text, pairs, 64, &n, &err) != SK_OK) {
@@ -557,7 +565,7 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
 const cli_command cmd_hand_calibrate = {
     .name = "hand calibrate",
     .summary = "fit the natural-posture potential (or the thesis's pair rows) to joint-angle samples (3.2.2)",
-    .usage = "shitsukan hand calibrate SAMPLES.csv -o potential.json [--method mixture|gaussian]\n"
+    .usage = "shitsukan hand calibrate SAMPLES.csv -o potential.json [--method mixture|gaussian|pairs]\n"
              "       shitsukan hand calibrate SAMPLES.csv --pairs A:B[,C:D...] -o rows.json",
     .description =
         "Reads measured joint angles (a CSV with a header of DOF names and one sample per\n"
@@ -565,11 +573,15 @@ const cli_command cmd_hand_calibrate = {
         "are not DOFs). Without --pairs it fits the whole potential of eq. 3.17: the relaxed\n"
         "posture is the samples' mean and K + A'WA their precision (springs and coupling rows),\n"
         "shrunk toward the base set, as a mixture of such Gaussians where held-out samples\n"
-        "say it helps; use it with hand pose --potential. With --pairs it fits one\n"
+        "say it helps; use it with hand pose --potential. --method pairs keeps the thesis's\n"
+        "form instead: the relaxed posture from the samples, the base set's springs, and the\n"
+        "pair rows (of --pairs, default every pair) and their weight scale chosen by the\n"
+        "held-out error, starting from the base set's rows. With --pairs alone it fits one\n"
         "least-squares line y = A x + b per pair and weights it by the spread about the line,\n"
         "w = mean l^2 / max over the pairs (eq. 3.18: the loosest pair weighs most), or by\n"
         "inverse variance; the result is a constraint file for --constraints.",
     .examples = "  shitsukan hand calibrate glove.csv --group person -o potential.json\n"
+                "  shitsukan hand calibrate glove.csv --group person --method pairs -o potential.json\n"
                 "  shitsukan hand calibrate glove.csv --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex -o rows.json",
     .options = calibrate_options,
     .option_count = (int)(sizeof calibrate_options / sizeof calibrate_options[0]),

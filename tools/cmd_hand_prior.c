@@ -54,15 +54,31 @@ int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_han
     return 0;
 }
 
-/* --method, --components, --prior-strength, --seed into a potential desc. */
-static int potential_options(const cli_command *cmd, const cli_args *args, sk_hand_potential_desc *d)
+/* --weights: thesis or inverse-variance (`fallback` when absent). */
+int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weight_rule fallback,
+                     sk_hand_weight_rule *out)
+{
+    const char *w = cli_get(cmd, args, "weights");
+    *out = fallback;
+    if (w && strcmp(w, "thesis") == 0) *out = SK_HAND_WEIGHT_THESIS;
+    else if (w && strcmp(w, "inverse-variance") == 0) *out = SK_HAND_WEIGHT_INVERSE_VARIANCE;
+    else if (w) return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
+    return 0;
+}
+
+/* --method, --components, --prior-strength, --seed and, for --method pairs, --pairs (the
+ * candidates, parsed into `pairs`), --weights, --weight-scale, --max-pairs into a
+ * potential desc. */
+static int potential_options(const cli_command *cmd, const cli_args *args, sk_hand_potential_desc *d,
+                             int (*pairs)[2])
 {
     memset(d, 0, sizeof *d);
     const char *method = cli_get(cmd, args, "method");
     if (!method || strcmp(method, "mixture") == 0) d->method = SK_HAND_POTENTIAL_MIXTURE;
     else if (strcmp(method, "gaussian") == 0) d->method = SK_HAND_POTENTIAL_GAUSSIAN;
-    else return cli_fail(CLI_EXIT_USAGE, "--method '%s' must be mixture or gaussian", method);
-    long long comps = 0;
+    else if (strcmp(method, "pairs") == 0) d->method = SK_HAND_POTENTIAL_PAIRS;
+    else return cli_fail(CLI_EXIT_USAGE, "--method '%s' must be mixture, gaussian or pairs", method);
+    long long comps = 0, max_pairs = 0;
     double strength = 0.0;
     int rc = cli_get_int(cmd, args, "components", 0, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS, &comps);
     if (!rc && cli_has(cmd, args, "prior-strength")) {
@@ -73,7 +89,35 @@ static int potential_options(const cli_command *cmd, const cli_args *args, sk_ha
     d->components = (int)comps;
     d->prior_strength = strength;
     d->seed = args->common.has_seed ? args->common.seed : 1;
+    if (d->method != SK_HAND_POTENTIAL_PAIRS) {
+        if (cli_has(cmd, args, "max-pairs")) return cli_fail(CLI_EXIT_USAGE, "--max-pairs needs --method pairs");
+        return 0;
+    }
+    if (comps > 1) return cli_fail(CLI_EXIT_USAGE, "--components does not go with --method pairs (one component)");
+    rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_INVERSE_VARIANCE, &d->weight_rule);
+    if (!rc) rc = cli_get_double(cmd, args, "weight-scale", 0.0, 1e-6, 1e6, &d->weight_scale);
+    if (!rc) rc = cli_get_int(cmd, args, "max-pairs", 16, 1, 64, &max_pairs);
+    if (rc) return rc;
+    d->max_pairs = (int)max_pairs;
+    const char *text = cli_get(cmd, args, "pairs");
+    if (text) {
+        sk_error err = {0};
+        if (sk_hand_parse_pairs(text, pairs, 64, &d->pair_count, &err) != SK_OK) {
+            sk_error_prefix(&err, err.result, "--pairs");
+            return cli_fail_error(&err);
+        }
+        d->pairs = (const int(*)[2])pairs;
+    }
     return 0;
+}
+
+/* The fitted pair rows of a PAIRS potential, one line each. */
+static void print_pair_rows(const sk_hand_potential *pot)
+{
+    const sk_hand_constraints *c = &pot->component[0].constraints;
+    printf("weight scale %g; fitted rows:\n", pot->weight_scale);
+    for (int k = c->row_count - pot->pair_count; k < c->row_count; k++)
+        printf("  %-24s A %7.4f  W %.4g\n", c->rows[k].label, c->rows[k].coeff[0], c->rows[k].weight);
 }
 
 int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
@@ -81,7 +125,8 @@ int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
     const char *path = args->positional[0];
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o potential.json is required");
     sk_hand_potential_desc desc;
-    int rc = potential_options(cmd, args, &desc);
+    int pairs[64][2];
+    int rc = potential_options(cmd, args, &desc, pairs);
     if (rc) return rc;
     sk_hand_skeleton skel;
     sk_error err = {0};
@@ -98,14 +143,21 @@ int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
         sk_error_prefix(&err, err.result, "%s", path);
         rc = cli_fail_error(&err);
     }
-    char note[600];
-    snprintf(note, sizeof note, "fitted from %d samples of %s (prior strength %g, %d component%s, base set %s)",
-             samples.count, path, pot.prior_strength, pot.component_count, pot.component_count == 1 ? "" : "s",
-             base_name ? base_name : "natural");
+    char note[700];
+    if (desc.method == SK_HAND_POTENTIAL_PAIRS)
+        snprintf(note, sizeof note,
+                 "fitted from %d samples of %s (prior strength %g, %d pair rows chosen on held-out samples, weight "
+                 "scale %g, base set %s)",
+                 samples.count, path, pot.prior_strength, pot.pair_count, pot.weight_scale, base_name ? base_name : "natural");
+    else
+        snprintf(note, sizeof note, "fitted from %d samples of %s (prior strength %g, %d component%s, base set %s)",
+                 samples.count, path, pot.prior_strength, pot.component_count, pot.component_count == 1 ? "" : "s",
+                 base_name ? base_name : "natural");
     if (!rc && sk_hand_potential_write_json(&pot, note, args->common.output, &err) != SK_OK) rc = cli_fail_error(&err);
     if (!rc && !args->common.quiet)
         printf("%d DOFs from %d samples: %d component%s, prior strength %g, scale %.4g\n", pot.dof_count, samples.count,
                pot.component_count, pot.component_count == 1 ? "" : "s", pot.prior_strength, pot.scale);
+    if (!rc && !args->common.quiet && desc.method == SK_HAND_POTENTIAL_PAIRS) print_pair_rows(&pot);
     sk_hand_potential_free(&pot);
     sk_hand_samples_free(&samples);
     free(base);
@@ -123,13 +175,15 @@ static const cli_option evaluate_options[] = {
     {"model", 0, "MODEL", "calibrated (default), pairs (eq. 3.18 lines of --pairs), or a fixed set: natural, "
                           "yasumuro-table-3.2, none, FILE",
      false},
-    {"method", 0, "METHOD", "calibrated model: mixture (default; components chosen on held-out samples) or gaussian", false},
+    {"method", 0, "METHOD", "calibrated model: mixture (default; components chosen on held-out samples), gaussian, "
+                            "or pairs (the thesis's form: pair rows and weight scale chosen on held-out samples)", false},
+    {"max-pairs", 0, "N", "--method pairs: fitted rows at most (default 16)", false},
     {"components", 0, "N", "calibrated mixture: fixed component count (default: chosen)", false},
     {"prior-strength", 0, "S", "pseudo-samples of the base set's Gaussian (default: chosen; 0 = none)", false},
     {"base", 0, "SET", "base set: shrinkage target, springs of the pair model (default natural)", false},
-    {"pairs", 0, "A:B,...", "pair model: the DOF pairs of its lines", false},
-    {"weights", 0, "RULE", "pair model: thesis (eq. 3.18, default) or inverse-variance", false},
-    {"weight-scale", 0, "S", "pair model: multiplies every weight (default 1)", false},
+    {"pairs", 0, "A:B,...", "pair model: the DOF pairs of its lines; --method pairs: the candidates (default all)", false},
+    {"weights", 0, "RULE", "pair model: thesis (eq. 3.18, default) or inverse-variance (default of --method pairs)", false},
+    {"weight-scale", 0, "S", "pair model: multiplies every weight (default 1; --method pairs: chosen)", false},
     {"pca-k", 0, "K", "components of the PCA prior baseline (default 6)", false},
     {"report", 0, "FILE.json", "write the results as JSON (one entry per pin set)", false},
     {"plot", 0, "FILE.png", "bar chart of the per-joint errors, one panel per pin set", false},
@@ -144,7 +198,7 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args, const 
     const char *base_name = cli_get(cmd, args, "base");
     int rc = hand_load_constraints(base_name ? base_name : "natural", skel, base);
     if (rc) return rc;
-    rc = potential_options(cmd, args, &d->potential);
+    rc = potential_options(cmd, args, &d->potential, pairs);
     if (rc) return rc;
     d->potential.base = base;
     *model_name = "model";
@@ -152,6 +206,8 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args, const 
         d->model = SK_HAND_EVAL_MODEL_CALIBRATED;
         return 0;
     }
+    if (d->potential.method == SK_HAND_POTENTIAL_PAIRS)
+        return cli_fail(CLI_EXIT_USAGE, "--method is for --model calibrated");
     if (strcmp(model, "pairs") == 0) {
         const char *text = cli_get(cmd, args, "pairs");
         if (!text) return cli_fail(CLI_EXIT_USAGE, "--model pairs needs --pairs");
@@ -162,11 +218,8 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args, const 
         }
         d->pairs = (const int(*)[2])pairs;
         d->model = SK_HAND_EVAL_MODEL_PAIRS;
-        const char *w = cli_get(cmd, args, "weights");
-        if (!w || strcmp(w, "thesis") == 0) d->weight_rule = SK_HAND_WEIGHT_THESIS;
-        else if (strcmp(w, "inverse-variance") == 0) d->weight_rule = SK_HAND_WEIGHT_INVERSE_VARIANCE;
-        else return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
-        rc = cli_get_double(cmd, args, "weight-scale", 1.0, 1e-6, 1e6, &d->weight_scale);
+        rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_THESIS, &d->weight_rule);
+        if (!rc) rc = cli_get_double(cmd, args, "weight-scale", 1.0, 1e-6, 1e6, &d->weight_scale);
         *model_name = "pairs";
         return rc;
     }

@@ -11,6 +11,9 @@
 int hand_read_samples(const cli_command *cmd, const cli_args *args, const char *path, sk_hand_samples *out);
 /* "natural", "yasumuro-table-3.2", "none" or a file (`out` is zeroed for "none"). */
 int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out);
+/* --weights: thesis or inverse-variance (`fallback` when absent). */
+int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weight_rule fallback,
+                     sk_hand_weight_rule *out);
 /* `hand calibrate` without --pairs: the whole potential (--method, --components,
  * --prior-strength, --base, --seed). */
 int hand_calibrate_potential(const cli_command *cmd, const cli_args *args);

@@ -405,8 +405,13 @@ typedef struct sk_hand_pin_set {
 typedef enum sk_hand_potential_method {
     SK_HAND_POTENTIAL_DEFAULT = 0, /* = MIXTURE */
     SK_HAND_POTENTIAL_GAUSSIAN,    /* one Gaussian */
-    SK_HAND_POTENTIAL_MIXTURE      /* 1..max_components Gaussians, the count chosen by
+    SK_HAND_POTENTIAL_MIXTURE,     /* 1..max_components Gaussians, the count chosen by
                                       held-out likelihood (1 where more do not help) */
+    SK_HAND_POTENTIAL_PAIRS        /* the thesis's form with pair rows (3.2.2): the relaxed
+                                      posture from the samples, the base set's springs, and
+                                      the pair rows and weight scale chosen on held-out
+                                      samples (starting from the base set's rows, which
+                                      are kept unless dropping them helps) */
 } sk_hand_potential_method;
 
 typedef struct sk_hand_potential_desc {
@@ -425,6 +430,17 @@ typedef struct sk_hand_potential_desc {
        for: pin these DOFs, predict the others. NULL = every calibrated DOF alone. */
     const sk_hand_pin_set *pin_sets;
     int pin_set_count;      /* range [0, 16] */
+    /* PAIRS: the candidate pairs X:Y (row y = A x + b, fitted on the samples' moments
+       shrunk toward the base set's Gaussian); NULL = every ordered pair of calibrated DOFs */
+    const int (*pairs)[2];
+    int pair_count;          /* range [0, 256] */
+    sk_hand_weight_rule weight_rule; /* of the fitted rows; 0 = INVERSE_VARIANCE read in
+                                        stiffness units (a row whose spread about its line
+                                        is a spring's, 20 degrees, weighs 1); THESIS = eq.
+                                        3.18 over the chosen rows */
+    double weight_scale;     /* multiplies the fitted rows' weights; 0 = chosen on held-out
+                                samples from 1/4, 1/2, 1, ..., 64; range [0, 1e6] */
+    int max_pairs;           /* fitted rows at most; 0 = 16; range [1, 64] */
 } sk_hand_potential_desc;
 
 typedef struct sk_hand_potential_component {
@@ -442,6 +458,9 @@ typedef struct sk_hand_potential {
                                       that torques keep the base set's units */
     int sample_count;              /* samples fitted */
     double prior_strength;         /* resolved (pseudo-samples) */
+    double weight_scale;           /* PAIRS: resolved scale of the fitted rows; else 0 */
+    int pair_count;                /* PAIRS: fitted rows (in component 0, after the base
+                                      rows kept) */
     int component_count;
     sk_hand_potential_component *component; /* allocated */
 } sk_hand_potential;

@@ -36,7 +36,7 @@ int sk_hand__calibrated_dofs(const bool *present, int *dof)
  * temperature, a spring of stiffness 1 alone giving a spread of 20 degrees (about the
  * spread of functional flexion, Hume et al. 1990, Bain et al. 2015); mean the relaxed
  * posture. Marginal on the calibrated DOFs. */
-#define PRIOR_SPREAD (20.0 * SK_DEG_TO_RAD)
+#define PRIOR_SPREAD SK_HAND__PRIOR_SPREAD
 
 static bool base_gaussian(const sk_hand_skeleton *skel, const sk_hand_constraints *base,
                           const int *dof, int d, double *mu0, double *sigma0, double *base_diag)
@@ -155,58 +155,53 @@ static sk_result to_thesis_form(const sk_hand_skeleton *skel, const sk_hand_cons
 
 static const double PRIOR_GRID[] = {1, 4, 16, 64, 256};
 
-sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *skel,
-                                const sk_hand_samples *s, const int *idx, int n,
-                                const sk_hand_potential_desc *desc, sk_error *err)
+void sk_hand__fit_data_free(sk_hand__fit_data *fd)
 {
-    memset(out, 0, sizeof *out);
-    sk_hand_potential_desc dd = {0};
-    if (desc) dd = *desc;
-    if (dd.method == SK_HAND_POTENTIAL_DEFAULT) dd.method = SK_HAND_POTENTIAL_MIXTURE;
-    if (dd.method != SK_HAND_POTENTIAL_GAUSSIAN && dd.method != SK_HAND_POTENTIAL_MIXTURE)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "method = %d is not gaussian or mixture", (int)dd.method);
-    if (dd.max_components == 0) dd.max_components = 12;
-    sk_result r = sk_check_range_i(err, "max_components", dd.max_components, 1, SK_HAND_POTENTIAL_MAX_COMPONENTS);
-    if (r == SK_OK) r = sk_check_range_i(err, "components", dd.components, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS);
-    if (r == SK_OK && !isnan(dd.prior_strength) && dd.prior_strength > 1e7)
+    free(fd->x);
+    fd->x = NULL;
+}
+
+sk_result sk_hand__fit_prepare(sk_hand__fit_data *fd, const sk_hand_skeleton *skel, const sk_hand_samples *s,
+                               const int *idx, int n, const sk_hand_potential_desc *desc, sk_error *err)
+{
+    memset(fd, 0, sizeof *fd);
+    const sk_hand_potential_desc dd = *desc;
+    sk_result r = SK_OK;
+    if (!isnan(dd.prior_strength) && dd.prior_strength > 1e7)
         r = sk_check_range_f(err, "prior_strength", dd.prior_strength, -INFINITY, 1e7);
     if (r == SK_OK && isnan(dd.prior_strength))
         r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "prior_strength is not a number");
+    if (r == SK_OK) r = sk_check_range_i(err, "pin_set_count", dd.pin_set_count, 0, SK_HAND_EVAL_MAX_PIN_SETS);
     if (r != SK_OK) return r;
-    if (dd.method == SK_HAND_POTENTIAL_GAUSSIAN) dd.components = 1;
     if (!idx) n = s->count;
     if (n < 1 || n > s->count) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d samples to fit (need 1 to %d)", n, s->count);
-    int dof[D_MAX];
-    int d = sk_hand__calibrated_dofs(s->present, dof);
+    int d = fd->d = sk_hand__calibrated_dofs(s->present, fd->dof);
+    const int *dof = fd->dof;
     if (d == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the samples have no joint-angle column");
     for (int k = 0; k < n; k++)
         if (idx && (idx[k] < 0 || idx[k] >= s->count))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "sample index %d is out of range", idx[k]);
 
     /* the pin patterns of the held-out choices: the given ones, or each DOF alone */
-    bool masks[SK_HAND_EVAL_MAX_PIN_SETS > D_MAX ? SK_HAND_EVAL_MAX_PIN_SETS : D_MAX][D_MAX];
-    memset(masks, 0, sizeof masks);
-    int mask_count = 0;
     if (dd.pin_set_count > 0) {
-        r = sk_check_range_i(err, "pin_set_count", dd.pin_set_count, 0, SK_HAND_EVAL_MAX_PIN_SETS);
-        if (r != SK_OK) return r;
-        for (int p = 0; p < dd.pin_set_count; p++, mask_count++)
+        for (int p = 0; p < dd.pin_set_count; p++, fd->mask_count++)
             for (int k = 0; k < dd.pin_sets[p].count && k < SK_HAND_EVAL_MAX_PINS; k++)
                 for (int a = 0; a < d; a++)
-                    if (dof[a] == dd.pin_sets[p].dof[k]) masks[mask_count][a] = true;
+                    if (dof[a] == dd.pin_sets[p].dof[k]) fd->masks[fd->mask_count][a] = true;
     } else {
-        for (int a = 0; a < d; a++) masks[mask_count++][a] = true;
+        for (int a = 0; a < d; a++) fd->masks[fd->mask_count++][a] = true;
     }
-    double mu0[D_MAX], sigma0[D_MAX * D_MAX], base_diag[D_MAX];
-    if (!base_gaussian(skel, dd.base, dof, d, mu0, sigma0, base_diag))
+    if (!base_gaussian(skel, dd.base, dof, d, fd->mu0, fd->sigma0, fd->base_diag))
         return sk_fail(err, SK_ERROR_NUMERIC, "the base set's K + A'WA is not positive definite");
 
     /* samples as rows, training part first, validation part after */
-    double *x = malloc(sizeof(double) * (size_t)n * d);
+    fd->x = malloc(sizeof(double) * (size_t)n * d);
     int *order = malloc(sizeof(int) * (size_t)n);
-    if (!x || !order) {
-        free(x);
+    sk_hand__mixture *g = malloc(sizeof *g);
+    if (!fd->x || !order || !g) {
         free(order);
+        free(g);
+        sk_hand__fit_data_free(fd);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d samples", n);
     }
     int nt = 0;
@@ -215,77 +210,84 @@ sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *
             int i = idx ? idx[k] : k;
             if (is_validation(s, k, i, n) == (pass == 1)) order[nt++] = i;
         }
-    int n_train = 0;
-    for (int k = 0; k < n; k++) n_train += !is_validation(s, k, idx ? idx[k] : k, n);
+    fd->n = n;
+    for (int k = 0; k < n; k++) fd->n_train += !is_validation(s, k, idx ? idx[k] : k, n);
     for (int k = 0; k < n; k++)
-        for (int a = 0; a < d; a++) x[(size_t)k * d + a] = s->column[dof[a]][order[k]];
-    int n_val = n - n_train;
-    bool can_validate = n_train >= 2 && n_val >= 2;
+        for (int a = 0; a < d; a++) fd->x[(size_t)k * d + a] = s->column[dof[a]][order[k]];
+    fd->n_val = n - fd->n_train;
+    fd->can_validate = fd->n_train >= 2 && fd->n_val >= 2;
 
-    double xbar[D_MAX], scatter[D_MAX * D_MAX], mu[D_MAX], sigma[D_MAX * D_MAX];
     /* the prior strength: given, or the one whose Gaussian best predicts held-out samples */
-    double nu = dd.prior_strength < 0 ? 0.0 : dd.prior_strength;
-    sk_hand__mixture *g = malloc(sizeof *g);
-    double *resp = malloc(sizeof(double) * (size_t)n * SK_HAND_POTENTIAL_MAX_COMPONENTS);
-    if (!g || !resp) {
-        free(x);
-        free(order);
-        free(g);
-        free(resp);
-        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d samples", n);
-    }
+    double xbar[D_MAX], scatter[D_MAX * D_MAX];
+    sk_hand__moments(s, dof, d, order, fd->n_train, xbar, scatter);
+    fd->nu = dd.prior_strength < 0 ? 0.0 : dd.prior_strength;
     if (dd.prior_strength == 0.0) {
-        nu = PRIOR_GRID[2];
-        if (can_validate) {
-            sk_hand__moments(s, dof, d, order, n_train, xbar, scatter);
+        fd->nu = PRIOR_GRID[2];
+        if (fd->can_validate) {
             double best = INFINITY;
             for (size_t k = 0; k < sizeof PRIOR_GRID / sizeof PRIOR_GRID[0]; k++) {
-                shrink(d, n_train, xbar, scatter, PRIOR_GRID[k], mu0, sigma0, mu, sigma);
-                sk_hand__mixture_single(g, d, mu, sigma);
-                double e = sk_hand__mixture_validation_error(g, x + (size_t)n_train * d, n_val, masks, mask_count);
+                shrink(d, fd->n_train, xbar, scatter, PRIOR_GRID[k], fd->mu0, fd->sigma0, fd->mu_train,
+                       fd->sigma_train);
+                sk_hand__mixture_single(g, d, fd->mu_train, fd->sigma_train);
+                double e = sk_hand__mixture_validation_error(g, fd->x + (size_t)fd->n_train * d, fd->n_val, fd->masks,
+                                                             fd->mask_count);
                 if (e < best) {
                     best = e;
-                    nu = PRIOR_GRID[k];
+                    fd->nu = PRIOR_GRID[k];
                 }
             }
         }
     }
-    /* the single Gaussian on all samples, and the scale that keeps the base set's units:
-       the mean diagonal of K + A'WA equals the base set's on these DOFs */
+    shrink(d, fd->n_train, xbar, scatter, fd->nu, fd->mu0, fd->sigma0, fd->mu_train, fd->sigma_train);
     sk_hand__moments(s, dof, d, order, n, xbar, scatter);
-    shrink(d, n, xbar, scatter, nu, mu0, sigma0, mu, sigma);
+    shrink(d, n, xbar, scatter, fd->nu, fd->mu0, fd->sigma0, fd->mu, fd->sigma);
+    free(order);
+    free(g);
+    return SK_OK;
+}
+
+/* The mixture (one Gaussian or more) on prepared samples. */
+static sk_result mixture_fit(sk_hand_potential *out, const sk_hand_skeleton *skel, sk_hand__fit_data *fd,
+                             const sk_hand_potential_desc *dd, sk_error *err)
+{
+    int d = fd->d, n = fd->n;
+    const double *x = fd->x;
+    /* the scale that keeps the base set's units: the mean diagonal of K + A'WA equals the
+       base set's on these DOFs */
     double prec[D_MAX * D_MAX];
-    memcpy(prec, sigma, sizeof prec);
-    if (!sk_hand__spd_inverse(prec, d)) {
-        free(x);
-        free(order);
-        return sk_fail(err, SK_ERROR_NUMERIC, "the samples' covariance is not positive definite");
-    }
+    memcpy(prec, fd->sigma, sizeof prec);
+    if (!sk_hand__spd_inverse(prec, d)) return sk_fail(err, SK_ERROR_NUMERIC, "the samples' covariance is not positive definite");
     double tr_base = 0.0, tr_prec = 0.0;
     for (int a = 0; a < d; a++) {
-        tr_base += base_diag[a];
+        tr_base += fd->base_diag[a];
         tr_prec += prec[a * d + a];
     }
     double scale = tr_base / tr_prec;
 
-    /* the mixture: component count by held-out prediction error, then refitted on all */
+    sk_hand__mixture *g = malloc(sizeof *g);
+    double *resp = malloc(sizeof(double) * (size_t)n * SK_HAND_POTENTIAL_MAX_COMPONENTS);
+    if (!g || !resp) {
+        free(g);
+        free(resp);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d samples", n);
+    }
+    /* the component count by held-out prediction error, then refitted on all */
     const double nu_component = 2.0 * d;
-    int m = dd.components;
+    int m = dd->components;
     if (m == 0) {
         m = 1;
-        if (can_validate && dd.max_components > 1) {
-            double pooled_t[D_MAX * D_MAX], mu_t[D_MAX];
-            sk_hand__moments(s, dof, d, order, n_train, xbar, scatter);
-            shrink(d, n_train, xbar, scatter, nu, mu0, sigma0, mu_t, pooled_t);
-            sk_hand__mixture_single(g, d, mu_t, pooled_t);
-            double best = sk_hand__mixture_validation_error(g, x + (size_t)n_train * d, n_val, masks, mask_count);
+        if (fd->can_validate && dd->max_components > 1) {
+            sk_hand__mixture_single(g, d, fd->mu_train, fd->sigma_train);
+            const double *xv = x + (size_t)fd->n_train * d;
+            double best = sk_hand__mixture_validation_error(g, xv, fd->n_val, fd->masks, fd->mask_count);
             /* counts on a coarse grid: each EM fit costs about its count */
             static const int COUNTS[] = {2, 3, 4, 6, 8, 12, 16};
             for (size_t ci = 0; ci < sizeof COUNTS / sizeof COUNTS[0]; ci++) {
                 int c = COUNTS[ci];
-                if (c > dd.max_components || c > n_train / (2 * d + 2)) break;
-                if (!sk_hand__mixture_fit(g, x, n_train, d, c, pooled_t, nu_component, dd.seed, resp)) continue;
-                double e = sk_hand__mixture_validation_error(g, x + (size_t)n_train * d, n_val, masks, mask_count);
+                if (c > dd->max_components || c > fd->n_train / (2 * d + 2)) break;
+                if (!sk_hand__mixture_fit(g, x, fd->n_train, d, c, fd->sigma_train, nu_component, dd->seed, resp))
+                    continue;
+                double e = sk_hand__mixture_validation_error(g, xv, fd->n_val, fd->masks, fd->mask_count);
                 if (e < best) {
                     best = e;
                     m = c;
@@ -293,10 +295,10 @@ sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *
             }
         }
     }
-    if (m > 1 && (n < m * (d + 1) || !sk_hand__mixture_fit(g, x, n, d, m, sigma, nu_component, dd.seed, resp))) m = 1;
-    if (m == 1) sk_hand__mixture_single(g, d, mu, sigma);
-    free(x);
-    free(order);
+    if (m > 1 && (n < m * (d + 1) || !sk_hand__mixture_fit(g, x, n, d, m, fd->sigma, nu_component, dd->seed, resp)))
+        m = 1;
+    if (m < 1 || m > SK_HAND_POTENTIAL_MAX_COMPONENTS) m = 1;
+    if (m == 1) sk_hand__mixture_single(g, d, fd->mu, fd->sigma);
     free(resp);
 
     out->component = calloc((size_t)m, sizeof *out->component);
@@ -304,17 +306,46 @@ sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *
         free(g);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     }
-    out->dof_count = d;
-    memcpy(out->dof, dof, sizeof(int) * d);
     out->scale = scale;
-    out->sample_count = n;
-    out->prior_strength = nu;
     out->component_count = m;
+    sk_result r = SK_OK;
     for (int c = 0; c < m && r == SK_OK; c++) {
         out->component[c].weight = g->weight[c];
-        r = to_thesis_form(skel, dd.base, dof, d, g->mean[c], g->cov[c], scale, &out->component[c], err);
+        r = to_thesis_form(skel, dd->base, fd->dof, d, g->mean[c], g->cov[c], scale, &out->component[c], err);
     }
     free(g);
+    return r;
+}
+
+sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *skel,
+                                const sk_hand_samples *s, const int *idx, int n,
+                                const sk_hand_potential_desc *desc, sk_error *err)
+{
+    memset(out, 0, sizeof *out);
+    sk_hand_potential_desc dd = {0};
+    if (desc) dd = *desc;
+    if (dd.method == SK_HAND_POTENTIAL_DEFAULT) dd.method = SK_HAND_POTENTIAL_MIXTURE;
+    if (dd.method != SK_HAND_POTENTIAL_GAUSSIAN && dd.method != SK_HAND_POTENTIAL_MIXTURE &&
+        dd.method != SK_HAND_POTENTIAL_PAIRS)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "method = %d is not gaussian, mixture or pairs", (int)dd.method);
+    if (dd.max_components == 0) dd.max_components = 12;
+    sk_result r = sk_check_range_i(err, "max_components", dd.max_components, 1, SK_HAND_POTENTIAL_MAX_COMPONENTS);
+    if (r == SK_OK) r = sk_check_range_i(err, "components", dd.components, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS);
+    if (r != SK_OK) return r;
+    if (dd.method != SK_HAND_POTENTIAL_MIXTURE) dd.components = 1;
+    sk_hand__fit_data *fd = malloc(sizeof *fd);
+    if (!fd) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    r = sk_hand__fit_prepare(fd, skel, s, idx, n, &dd, err);
+    if (r == SK_OK) {
+        if (dd.method == SK_HAND_POTENTIAL_PAIRS) r = sk_hand__pairs_fit(out, skel, fd, &dd, err);
+        else r = mixture_fit(out, skel, fd, &dd, err);
+        out->dof_count = fd->d;
+        memcpy(out->dof, fd->dof, sizeof(int) * (size_t)fd->d);
+        out->sample_count = fd->n;
+        out->prior_strength = fd->nu;
+        sk_hand__fit_data_free(fd);
+    }
+    free(fd);
     if (r != SK_OK) sk_hand_potential_free(out);
     return r;
 }
