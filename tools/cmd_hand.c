@@ -115,18 +115,9 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
     const char *pairs_text = cli_get(cmd, args, "pairs");
     if (!samples_path && !pairs_text) return 0;
     if (!samples_path || !pairs_text) return cli_fail(CLI_EXIT_USAGE, "--samples and --pairs go together");
-    long long resolution;
-    double weight;
-    int rc = cli_get_int(cmd, args, "lut-resolution", 100, 8, 1024, &resolution);
-    if (rc == 0) rc = cli_get_double(cmd, args, "lut-weight", 1.0, 1e-6, 1e6, &weight);
+    sk_hand_lut_desc desc;
+    int rc = hand_lut_options(cmd, args, &desc);
     if (rc) return rc;
-    sk_hand_lut_desc desc = {0};
-    desc.resolution = (int)resolution;
-    desc.weight = weight;
-    const char *interp = cli_get(cmd, args, "lut-interp");
-    if (interp && strcmp(interp, "bilinear") == 0) desc.interp = SK_HAND_LUT_INTERP_BILINEAR;
-    else if (interp && strcmp(interp, "hermite") != 0)
-        return cli_fail(CLI_EXIT_USAGE, "--lut-interp '%s' must be hermite or bilinear", interp);
     sk_error err = {0};
     int pairs[16][2], n = 0;
     if (sk_hand_parse_pairs(pairs_text, pairs, 16, &n, &err) != SK_OK) {

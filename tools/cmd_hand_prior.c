@@ -54,6 +54,21 @@ int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_han
     return 0;
 }
 
+int hand_lut_options(const cli_command *cmd, const cli_args *args, sk_hand_lut_desc *out)
+{
+    memset(out, 0, sizeof *out);
+    long long resolution;
+    int rc = cli_get_int(cmd, args, "lut-resolution", 100, 8, 1024, &resolution);
+    if (rc == 0) rc = cli_get_double(cmd, args, "lut-weight", 1.0, 1e-6, 1e6, &out->weight);
+    if (rc) return rc;
+    out->resolution = (int)resolution;
+    const char *interp = cli_get(cmd, args, "lut-interp");
+    if (interp && strcmp(interp, "bilinear") == 0) out->interp = SK_HAND_LUT_INTERP_BILINEAR;
+    else if (interp && strcmp(interp, "hermite") != 0)
+        return cli_fail(CLI_EXIT_USAGE, "--lut-interp '%s' must be hermite or bilinear", interp);
+    return 0;
+}
+
 /* --weights: thesis or inverse-variance (`fallback` when absent). */
 int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weight_rule fallback,
                      sk_hand_weight_rule *out)
@@ -172,9 +187,12 @@ static const cli_option evaluate_options[] = {
     {"group", 0, "COLUMN", "hold out whole groups: the CSV column naming the trial or person of each sample", false},
     {"units", 0, "UNIT", "angles of the CSV: deg (default) or rad", false},
     {"ignore-columns", 0, "A,B", "CSV columns to skip (besides frame and time)", false},
-    {"model", 0, "MODEL", "calibrated (default), pairs (eq. 3.18 lines of --pairs), or a fixed set: natural, "
-                          "yasumuro-table-3.2, none, FILE",
+    {"model", 0, "MODEL", "calibrated (default), pairs (eq. 3.18 lines of --pairs), lookup-tables (3.2.3: tables of "
+                          "--pairs added to --base), or a fixed set: natural, yasumuro-table-3.2, none, FILE",
      false},
+    {"lut-resolution", 0, "N", "lookup-tables: grid nodes per axis (default 100)", false},
+    {"lut-weight", 0, "W", "lookup-tables: weight of each table (default 1)", false},
+    {"lut-interp", 0, "MODE", "lookup-tables: hermite (default) or bilinear", false},
     {"method", 0, "METHOD", "calibrated model: mixture (default; components chosen on held-out samples), gaussian, "
                             "or pairs (the thesis's form: pair rows and weight scale chosen on held-out samples)", false},
     {"max-pairs", 0, "N", "--method pairs: fitted rows at most (default 16)", false},
@@ -208,15 +226,21 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args, const 
     }
     if (d->potential.method == SK_HAND_POTENTIAL_PAIRS)
         return cli_fail(CLI_EXIT_USAGE, "--method is for --model calibrated");
-    if (strcmp(model, "pairs") == 0) {
+    bool tables = strcmp(model, "lookup-tables") == 0;
+    if (strcmp(model, "pairs") == 0 || tables) {
         const char *text = cli_get(cmd, args, "pairs");
-        if (!text) return cli_fail(CLI_EXIT_USAGE, "--model pairs needs --pairs");
+        if (!text) return cli_fail(CLI_EXIT_USAGE, "--model %s needs --pairs", model);
         sk_error err = {0};
         if (sk_hand_parse_pairs(text, pairs, 64, &d->pair_count, &err) != SK_OK) {
             sk_error_prefix(&err, err.result, "--pairs");
             return cli_fail_error(&err);
         }
         d->pairs = (const int(*)[2])pairs;
+        if (tables) {
+            d->model = SK_HAND_EVAL_MODEL_LUT;
+            *model_name = "tables";
+            return hand_lut_options(cmd, args, &d->lut);
+        }
         d->model = SK_HAND_EVAL_MODEL_PAIRS;
         rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_THESIS, &d->weight_rule);
         if (!rc) rc = cli_get_double(cmd, args, "weight-scale", 1.0, 1e-6, 1e6, &d->weight_scale);
@@ -286,6 +310,12 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
             sk_image_free(&img);
         }
     }
+    for (int p = 0; !rc && p < eval->pin_set_count; p++)
+        if (eval->result[p].unconverged > 0)
+            fprintf(stderr,
+                    "shitsukan: warning: %d of %d solves did not converge (largest residual %.2g); their last "
+                    "iterates are counted\n",
+                    eval->result[p].unconverged, eval->result[p].solves, eval->result[p].max_residual);
     if (!rc && !args->common.quiet) {
         sk_hand_evaluation_print(eval, model_name, stdout);
         if (desc.model == SK_HAND_EVAL_MODEL_CALIBRATED)
@@ -311,8 +341,11 @@ const cli_command cmd_hand_evaluate = {
         "other DOFs in the CSV is compared with the measurement. Baselines on the same folds:\n"
         "the training mean, linear regression and a PCA prior with k components. Prints the RMS\n"
         "error per joint and overall (degrees); --report writes it as JSON, --plot as bars.\n"
+        "--method pairs keeps the thesis's form (pair rows and weight scale chosen per fold).\n"
         "--model natural (or any set) evaluates a fixed set instead; --model pairs the thesis's\n"
-        "pair lines refitted per fold (eq. 3.18 weights).",
+        "pair lines refitted per fold (eq. 3.18 weights); --model lookup-tables the tables of\n"
+        "3.2.3 built per fold. Every solve either converges or is counted as not converged\n"
+        "(the table's last line, the report's \"solves\", a warning).",
     .examples = "  shitsukan hand evaluate glove.csv --pins I.MCP.flex,I.PIP.flex --pins L.MCP.flex --group person\n"
                 "  shitsukan hand evaluate glove.csv --pins M.MCP.flex,M.PIP.flex --folds 10 --report eval.json --plot eval.png\n"
                 "  shitsukan hand evaluate glove.csv --pins L.MCP.flex --model natural --ignore-columns trial",

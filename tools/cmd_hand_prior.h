@@ -14,6 +14,8 @@ int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_han
 /* --weights: thesis or inverse-variance (`fallback` when absent). */
 int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weight_rule fallback,
                      sk_hand_weight_rule *out);
+/* --lut-resolution, --lut-weight, --lut-interp into a lookup-table desc. */
+int hand_lut_options(const cli_command *cmd, const cli_args *args, sk_hand_lut_desc *out);
 /* `hand calibrate` without --pairs: the whole potential (--method, --components,
  * --prior-strength, --base, --seed). */
 int hand_calibrate_potential(const cli_command *cmd, const cli_args *args);

@@ -515,9 +515,13 @@ typedef enum sk_hand_eval_model {
     SK_HAND_EVAL_MODEL_CALIBRATED,  /* sk_hand_potential_fit on each training fold */
     SK_HAND_EVAL_MODEL_FIXED,       /* a given constraint set, not refitted (the
                                        built-in relaxed posture) */
-    SK_HAND_EVAL_MODEL_PAIRS        /* the thesis's pair lines (3.2.2) fitted on each
+    SK_HAND_EVAL_MODEL_PAIRS,       /* the thesis's pair lines (3.2.2) fitted on each
                                        training fold, weights by `weight_rule` times
                                        `weight_scale`, added to the base set's springs */
+    SK_HAND_EVAL_MODEL_LUT          /* lookup-table potentials (3.2.3) of `pairs` built
+                                       from each training fold (`lut`), added to the
+                                       base set (`potential.base`: springs and rows)
+                                       around the built-in relaxed posture */
 } sk_hand_eval_model;
 
 
@@ -531,8 +535,9 @@ typedef struct sk_hand_evaluation_desc {
     sk_hand_eval_model model;
     sk_hand_potential_desc potential;     /* CALIBRATED */
     const sk_hand_constraints *fixed;     /* FIXED (NULL = springs only) */
-    const int (*pairs)[2];                /* PAIRS */
+    const int (*pairs)[2];                /* PAIRS, LUT: at most 64 */
     int pair_count;
+    sk_hand_lut_desc lut;                 /* LUT */
     sk_hand_weight_rule weight_rule;      /* PAIRS */
     double weight_scale;                  /* PAIRS: 0 = 1; range (0, 1e6] */
     const sk_hand_solver_desc *solver;    /* NULL = defaults */
@@ -547,7 +552,8 @@ typedef struct sk_hand_pin_result {
     double model[SK_HAND_DOF_COUNT], mean[SK_HAND_DOF_COUNT], linear[SK_HAND_DOF_COUNT],
         pca[SK_HAND_DOF_COUNT];
     double model_all, mean_all, linear_all, pca_all;
-    int solves, unconverged;         /* model solves and those that did not converge */
+    int solves, unconverged;         /* model solves and those that did not converge
+                                        (their result is kept: the last iterate) */
     double max_residual;
 } sk_hand_pin_result;
 
@@ -569,7 +575,8 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skeleton, const sk_hand_sampl
 sk_result sk_hand_parse_pin_set(const char *text, sk_hand_pin_set *out, sk_error *err);
 /* The report: a list, one entry per pin set: {"pins": [...], "model_rms_deg": x,
  * "per_joint": {name: x, ...}, "baselines": {"mean": x, "linear": x,
- * "pca": {"k": k, "rms_deg": x}}} (degrees). */
+ * "pca": {"k": k, "rms_deg": x}}, "solves": {"count": n, "not_converged": n,
+ * "largest_residual": x}} (degrees). */
 sk_result sk_hand_evaluation_write_json(const sk_hand_evaluation *eval, const char *path,
                                         sk_error *err);
 /* The table: per pin set, every joint's RMS for the model and the baselines (degrees). */
