@@ -321,6 +321,55 @@ static void test_pair_choice(void **state)
     sk_hand_samples_free(&s);
 }
 
+/* Torques with a mixture: they tilt each component's Gaussian, so pushing a joint into
+ * flexion moves the blend toward the closed-hand component, smoothly and monotonically. */
+static void test_mixture_torques(void **state)
+{
+    (void)state;
+    sk_hand_skeleton skel = skeleton();
+    int n = 1200;
+    size_t cap = (size_t)n * 40 + 64, len = 0;
+    char *text = malloc(cap);
+    len += (size_t)snprintf(text, cap, "I.MCP.flex,I.PIP.flex\n");
+    for (int k = 0; k < n; k++) {
+        sk_rng r = sk_rng_make(21, (uint64_t)k, 0, 0);
+        bool closed = k % 2;
+        double mcp = (closed ? 70 : 10) + 4 * sk_rng_normal(&r), pip = (closed ? 90 : 12) + 4 * sk_rng_normal(&r);
+        len += (size_t)snprintf(text + len, cap - len, "%.4f,%.4f\n", mcp, pip);
+    }
+    sk_hand_samples s;
+    parse_samples(text, &s);
+    free(text);
+    sk_hand_potential_desc d = {.method = SK_HAND_POTENTIAL_MIXTURE, .components = 2, .prior_strength = -1};
+    sk_hand_potential p;
+    sk_error err;
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
+    assert_int_equal(p.component_count, 2);
+    int closed = p.component[1].relaxed[p.dof[0]] > p.component[0].relaxed[p.dof[0]];
+    sk_hand_potential_solver *ps;
+    assert_int_equal(sk_hand_potential_solver_create(&ps, &skel, &p, NULL, &err), SK_OK);
+    int pip = sk_hand_dof_find("I.PIP.flex"), mcp = sk_hand_dof_find("I.MCP.flex");
+    double last_resp = -1.0, last_mcp = -1.0;
+    for (int k = 0; k <= 20; k++) {
+        sk_hand_input in = {0};
+        in.torque[pip] = (k - 10) * 0.004;
+        double q[SK_HAND_DOF_COUNT], resp[2];
+        sk_hand_solve_info info;
+        assert_int_equal(sk_hand_potential_solve(ps, &in, q, &info, resp, &err), SK_OK);
+        assert_true(info.converged);
+        assert_true(resp[closed] > last_resp);
+        assert_true(q[mcp] > last_mcp);
+        if (k == 0) assert_true(resp[closed] < 0.05);
+        if (k == 10) assert_true(fabs(resp[closed] - p.component[closed].weight) < 1e-12);
+        if (k == 20) assert_true(resp[closed] > 0.95);
+        last_resp = resp[closed];
+        last_mcp = q[mcp];
+    }
+    sk_hand_potential_solver_destroy(ps);
+    sk_hand_potential_free(&p);
+    sk_hand_samples_free(&s);
+}
+
 /* DIP = a hinge of PIP (none below 40 degrees): one Gaussian fits a line, a mixture the
  * two pieces; a lookup table of the pair follows the hinge only to the noise. */
 static void test_mixture_beats_gaussian_on_nonlinear_relation(void **state)
@@ -630,7 +679,9 @@ static void test_cli_evaluate(void **state)
 {
     (void)state;
     sk_test_run *run = malloc(sizeof *run);
-    const char *csv = sk_test_path("prior/cli-samples.csv");
+    char csv[1024], pot[1024]; /* kept: sk_test_path reuses its buffers */
+    snprintf(csv, sizeof csv, "%s", sk_test_path("prior/cli-samples.csv"));
+    snprintf(pot, sizeof pot, "%s", sk_test_path("prior/cli-potential.json"));
     assert_int_equal(sk_test_cli(run, "hand synthesize --people 3 --trials 1 --frames 20 -o '%s'", csv), 0);
     const char *report = sk_test_path("prior/cli-report.json"), *plot = sk_test_path("prior/cli-plot.png");
     assert_int_equal(sk_test_cli(run,
@@ -666,11 +717,23 @@ static void test_cli_evaluate(void **state)
                      2);
     assert_non_null(strstr(run->err, "--model lookup-tables needs --pairs"));
     /* calibrate a potential and pose with it */
-    const char *pot = sk_test_path("prior/cli-potential.json"), *pose = sk_test_path("prior/cli-pose.json");
+    const char *pose = sk_test_path("prior/cli-pose.json");
     assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial -o '%s' -q", csv, pot),
                      0);
     assert_int_equal(sk_test_cli(run, "hand pose --potential '%s' --pin I.MCP.flex=60 -o '%s'", pot, pose), 0);
     assert_true(sk_test_file_exists(pose));
+    /* animation and the surface with a calibrated potential (a mixture: pins and torques) */
+    const char *angles = sk_test_path("prior/cli-angles.csv"), *mesh = sk_test_path("prior/cli-mesh.obj");
+    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/piano-key.json' --potential '%s' --angles '%s' -q",
+                                 SK_TEST_PRESET_DIR, pot, angles),
+                     0);
+    assert_true(sk_test_file_exists(angles));
+    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-mcp.json' --potential '%s' --constraints natural --angles '%s'",
+                                 SK_TEST_PRESET_DIR, pot, angles),
+                     2);
+    assert_non_null(strstr(run->err, "--potential does not go with --constraints"));
+    assert_int_equal(sk_test_cli(run, "hand mesh --potential '%s' --pin I.MCP.flex=60 --lod 2 -o '%s' -q", pot, mesh), 0);
+    assert_true(sk_test_file_exists(mesh));
     /* the thesis's form with the pairs chosen, written as a potential */
     const char *pairs_pot = sk_test_path("prior/cli-pairs.json");
     assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --method pairs -o '%s'",
@@ -717,6 +780,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_gaussian_recovered),
         cmocka_unit_test(test_pair_choice),
+        cmocka_unit_test(test_mixture_torques),
         cmocka_unit_test(test_mixture_beats_gaussian_on_nonlinear_relation),
         cmocka_unit_test(test_lut_solves_converge),
         cmocka_unit_test(test_samples_csv_options),

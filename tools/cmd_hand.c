@@ -151,23 +151,6 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
 
 /* ------------------------------------------------------------ hand pose */
 
-/* The equilibrium of a calibrated potential (hand calibrate) for the inputs. */
-static int pose_with_potential(const sk_hand_skeleton *skel, const char *path, const sk_hand_input *in, double *q,
-                               sk_hand_solve_info *info)
-{
-    sk_error err = {0};
-    sk_hand_potential pot;
-    if (sk_hand_potential_load_file(path, skel, &pot, &err) != SK_OK) return cli_fail_error(&err);
-    sk_hand_potential_solver *ps = NULL;
-    int rc = 0;
-    if (sk_hand_potential_solver_create(&ps, skel, &pot, NULL, &err) != SK_OK ||
-        sk_hand_potential_solve(ps, in, q, info, NULL, &err) != SK_OK)
-        rc = cli_fail_error(&err);
-    sk_hand_potential_solver_destroy(ps);
-    sk_hand_potential_free(&pot);
-    return rc;
-}
-
 static const cli_option pose_options[] = {
     {"pin", 0, "DOF=DEG", "hold a DOF at an absolute angle in degrees (mm for wrist.tx/ty/tz); repeatable", true},
     {"torque", 0, "DOF=T", "directed input torque on a DOF (stiffness x radians); repeatable", true},
@@ -201,9 +184,6 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     rc = hand_build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
     const char *set = cli_get(cmd, args, "constraints");
-    sk_hand_constraints *c = malloc(sizeof *c);
-    if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
-    rc = hand_load_constraints(set ? set : "natural", &skel, c);
     sk_hand_input in = {0};
     const char *values[MAX_PINS];
     int n = rc ? 0 : cli_get_all(cmd, args, "pin", values, MAX_PINS);
@@ -226,24 +206,19 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     sk_hand_lut luts[16];
     int lut_count = 0;
     if (!rc) rc = build_luts(cmd, args, luts, &lut_count);
-    sk_hand_solver *solver = NULL;
     sk_error err = {0};
     double q[SK_HAND_DOF_COUNT];
     sk_hand_solve_info info;
     const char *potential = cli_get(cmd, args, "potential");
     if (!rc && potential && (set || lut_count > 0))
         rc = cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints or --samples");
-    if (!rc && potential) {
-        rc = pose_with_potential(&skel, potential, &in, q, &info);
-    } else {
-        if (!rc && sk_hand_solver_create(&solver, &skel, c, luts, lut_count, NULL, &err) != SK_OK)
-            rc = cli_fail_error(&err);
-        if (!rc && sk_hand_solve(solver, &in, q, &info, &err) != SK_OK) rc = cli_fail_error(&err);
-    }
+    hand_poser poser = {0};
+    if (!rc) rc = hand_poser_open(&poser, &skel, potential, set ? set : "natural", luts, lut_count);
+    if (!rc) rc = hand_poser_solve(&poser, &in, q, &info);
     if (!rc && info.pins_clamped > 0)
         fprintf(stderr, "shitsukan: note: %d pinned value(s) were outside the joint limits and were clamped\n",
                 info.pins_clamped);
-    if (!rc && lut_count > 0 && !info.converged)
+    if (!rc && !info.converged)
         fprintf(stderr, "shitsukan: note: the iterative solve stopped at residual %.3g after %d steps\n",
                 info.residual, info.newton_iterations);
     sk_hand_draw_desc draw;
@@ -267,9 +242,8 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
             printf("%-11s %10.4f%s\n", sk_hand_dof(i)->name, sk_hand_dof(i)->translation ? q[i] : q[i] * SK_RAD_TO_DEG,
                    sk_hand_dof(i)->translation ? " mm" : "");
     }
-    sk_hand_solver_destroy(solver);
+    hand_poser_close(&poser);
     for (int i = 0; i < lut_count; i++) sk_hand_lut_free(&luts[i]);
-    free(c);
     return rc;
 }
 
@@ -305,6 +279,7 @@ static const cli_option animate_options[] = {
     {"positions", 0, "FILE", "write joint positions of every frame (.csv or .json)", false},
     {"angles", 0, "FILE", "write the joint angles of every frame as CSV (degrees)", false},
     {"constraints", 0, "SET", "override the file's constraint set (natural, yasumuro-table-3.2, none, FILE)", false},
+    {"potential", 0, "FILE", "a calibrated potential (hand calibrate) instead of the file's constraint set", false},
     {"side", 0, "SIDE", "override the file's side: right or left", false},
     {"hand-length", 0, "MM", "override the hand length", false},
     {"hand-breadth", 0, "MM", "override the hand breadth", false},
@@ -420,31 +395,35 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (draw_rc) return draw_rc;
     sk_error err = {0};
     sk_hand_animation *anim = malloc(sizeof *anim);
-    sk_hand_constraints *c = malloc(sizeof *c);
     double *dofs = NULL;
-    sk_hand_solver *solver = NULL;
+    hand_poser poser = {0};
     int rc = 0;
-    if (!anim || !c) rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    if (!anim) rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     const char *path = args->positional[0];
     if (!rc && sk_hand_animation_load_file(path, anim, &err) != SK_OK) rc = cli_fail_error(&err);
     sk_hand_skeleton skel;
     if (!rc) rc = hand_build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
-    const char *set = cli_get(cmd, args, "constraints");
-    if (!rc) rc = hand_load_constraints(set ? set : anim->constraints, &skel, c);
-    if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
+    const char *set = cli_get(cmd, args, "constraints"), *potential = cli_get(cmd, args, "potential");
+    if (!rc && set && potential) rc = cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints");
+    if (!rc) rc = hand_poser_open(&poser, &skel, potential, set ? set : anim->constraints, NULL, 0);
     int frames = rc ? 0 : sk_hand_animation_frame_count(anim);
     if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))
         rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     sk_progress_bar bar;
     if (!rc) sk_progress_bar_begin(&bar, "hand animate", !args->common.quiet);
+    int unconverged = 0;
     for (int f = 0; f < frames && !rc; f++) {
         sk_hand_input in;
+        sk_hand_solve_info info;
         sk_hand_animation_input(anim, f, &in);
-        if (sk_hand_solve(solver, &in, dofs + (size_t)f * SK_HAND_DOF_COUNT, NULL, &err) != SK_OK)
-            rc = cli_fail_error(&err);
+        rc = hand_poser_solve(&poser, &in, dofs + (size_t)f * SK_HAND_DOF_COUNT, &info);
+        unconverged += !rc && !info.converged;
         sk_progress_bar_update(&bar, (f + 1.0) / frames);
     }
     if (frames > 0) sk_progress_bar_end(&bar);
+    if (!rc && unconverged > 0)
+        fprintf(stderr, "shitsukan: warning: %d of %d frames did not converge (their last iterates are kept)\n",
+                unconverged, frames);
     double frame_time = rc ? 0 : 1.0 / anim->fps;
     if (!rc && bvh && sk_hand_bvh_write(&skel, dofs, frames, frame_time, bvh, &err) != SK_OK) rc = cli_fail_error(&err);
     if (!rc && positions) rc = write_positions(&skel, dofs, frames, positions);
@@ -454,10 +433,9 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
     if (!rc && surface_outputs) rc = hand_animate_surface_outputs(cmd, args, &skel, dofs, frames, anim->fps);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
-    sk_hand_solver_destroy(solver);
+    hand_poser_close(&poser);
     free(dofs);
     free(anim);
-    free(c);
     return rc;
 }
 
@@ -472,8 +450,10 @@ const cli_command cmd_hand_animate = {
         "curves (thesis 4.2.2) or Catmull-Rom, solves the natural posture at every frame and\n"
         "writes BVH (root with 6 channels, joints Zrotation Yrotation Xrotation, offsets in\n"
         "mm), joint positions and joint angles, a joint-angle plot, and stick-figure frames\n"
-        "(dorsal and radial views by default). Shipped examples: presets/hand/little-mcp.json\n"
-        "(Fig. 4.19), little-dip.json (Fig. 4.20), piano-key.json.",
+        "(dorsal and radial views by default). --potential poses with a calibrated potential\n"
+        "(hand calibrate) instead of the file's constraint set; with a mixture, pins and\n"
+        "torques choose the blend of its components. Shipped examples:\n"
+        "presets/hand/little-mcp.json (Fig. 4.19), little-dip.json (Fig. 4.20), piano-key.json.",
     .examples = "  shitsukan hand animate presets/hand/little-mcp.json --bvh little-mcp.bvh\n"
                 "  shitsukan hand animate presets/hand/piano-key.json --positions keys.json --side left\n"
                 "  shitsukan hand animate presets/hand/little-dip.json --plot angles.png --frames-dir frames",

@@ -81,6 +81,42 @@ int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weigh
     return 0;
 }
 
+int hand_poser_open(hand_poser *poser, const sk_hand_skeleton *skel, const char *potential_path, const char *set_name,
+                    const sk_hand_lut *luts, int lut_count)
+{
+    memset(poser, 0, sizeof *poser);
+    sk_error err = {0};
+    if (potential_path) {
+        sk_hand_potential pot;
+        if (sk_hand_potential_load_file(potential_path, skel, &pot, &err) != SK_OK) return cli_fail_error(&err);
+        sk_result r = sk_hand_potential_solver_create(&poser->potential, skel, &pot, NULL, &err);
+        sk_hand_potential_free(&pot);
+        return r == SK_OK ? 0 : cli_fail_error(&err);
+    }
+    sk_hand_constraints *c = malloc(sizeof *c);
+    if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    int rc = hand_load_constraints(set_name, skel, c);
+    if (!rc && sk_hand_solver_create(&poser->solver, skel, c, luts, lut_count, NULL, &err) != SK_OK)
+        rc = cli_fail_error(&err);
+    free(c);
+    return rc;
+}
+
+int hand_poser_solve(hand_poser *poser, const sk_hand_input *in, double *q, sk_hand_solve_info *info)
+{
+    sk_error err = {0};
+    sk_result r = poser->potential ? sk_hand_potential_solve(poser->potential, in, q, info, NULL, &err)
+                                   : sk_hand_solve(poser->solver, in, q, info, &err);
+    return r == SK_OK ? 0 : cli_fail_error(&err);
+}
+
+void hand_poser_close(hand_poser *poser)
+{
+    sk_hand_solver_destroy(poser->solver);
+    sk_hand_potential_solver_destroy(poser->potential);
+    memset(poser, 0, sizeof *poser);
+}
+
 /* --method, --components, --prior-strength, --seed and, for --method pairs, --pairs (the
  * candidates, parsed into `pairs`), --weights, --weight-scale, --max-pairs into a
  * potential desc. */
