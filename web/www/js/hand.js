@@ -210,20 +210,21 @@ export class HandPanel {
     const t0 = performance.now();
     const d = this.model.info.dofs[this.model.index[name]];
     this.model.pin(name, d.translation ? value : value * DEG);
-    this.solveAndShow();
+    this.solveAndShow(false);
+    const t1 = performance.now();
     this.app.view.renderSync();
-    const ms = performance.now() - t0;
-    this.timings.slider_ms = ms;
-    return ms;
+    const t2 = performance.now();
+    this.timings = { model_ms: t1 - t0, render_ms: t2 - t1, slider_ms: t2 - t0 };
+    return t2 - t0;
   }
 
-  solveAndShow() {
+  solveAndShow(draw = true) {
     const before = this.model.dofs ? this.model.dofs.slice() : null;
     try { this.model.solve(); } catch (e) { this.errorLine.textContent = e.message; }
-    this.showPose(before);
+    this.showPose(before, draw);
   }
 
-  showPose(before) {
+  showPose(before, draw = true) {
     for (const { input, val, row, i } of Object.values(this.sliders)) {
       const v = this.model.degrees(i);
       if (document.activeElement !== input) input.value = v;
@@ -231,7 +232,7 @@ export class HandPanel {
       row.classList.toggle('pinned', this.model.pinned[i]);
       if (before) row.classList.toggle('coupled', !this.model.pinned[i] && Math.abs(this.model.dofs[i] - before[i]) > 1e-4);
     }
-    this.app.view.render();
+    if (draw) this.app.view.render();
   }
 
   // Fingertip drag: a tip picked in the view follows the pointer on the plane through it
