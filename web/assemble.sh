@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Assembles the studio's served folder BUILD/www from the page (web/www), the wasm build
-# (BUILD/studio.js, studio.wasm), three.js from node_modules and the shipped presets,
+# (BUILD/studio.mjs, studio.wasm), three.js from node_modules and the shipped presets,
 # with an index of the presets per module.
 #
 #   web/assemble.sh SOURCE_ROOT BUILD_DIR
@@ -10,7 +10,8 @@ build=$2
 www="$build/www"
 mkdir -p "$www/wasm" "$www/three/addons/controls" "$www/presets"
 cp -R "$root/web/www/." "$www/"
-cp "$build/studio.js" "$build/studio.wasm" "$www/wasm/"
+rm -f "$www/wasm/studio.js"
+cp "$build/studio.mjs" "$build/studio.wasm" "$www/wasm/"
 three="$root/node_modules/three"
 if [ ! -f "$three/build/three.module.js" ]; then
   echo "assemble: error: $three is missing (scripts/deps.sh node installs it)" >&2

@@ -141,6 +141,19 @@ test('a slider moves the coupled joints as hand pose does', async ({ page }) => 
     expect(relaxed).toBe(true);
     expect(moved).toBeGreaterThan(0);
   }
+  // a user's calibrated file (hand calibrate: the whole potential of eq. 3.17)
+  const cal = path.join(TMP, 'calibrated.json');
+  shitsukan('hand', 'calibrate', 'presets/hand/samples/synthetic-grasps.csv', '--method', 'gaussian', '--group', 'person',
+    '--ignore-columns', 'trial', '--quiet', '-o', cal);
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser'), page.selectOption('#hand-set', 'file')]);
+  await chooser.setFiles(cal);
+  await page.waitForFunction(() => window.studio.panels.hand.model.setName === 'calibrated.json');
+  await page.click('#hand-release');
+  await page.evaluate(() => window.studio.panels.hand.setSlider('I.MCP.flex', 50));
+  const calDofs = await page.evaluate(() => { const m = window.studio.panels.hand.model; return m.info.dofs.map((d, i) => m.degrees(i)); });
+  shitsukan('hand', 'pose', '--potential', cal, '--pin', 'I.MCP.flex=50', '-o', path.join(TMP, 'pose-cal.json'));
+  const calNative = Object.values(JSON.parse(fs.readFileSync(path.join(TMP, 'pose-cal.json'), 'utf8')).dofs);
+  calNative.forEach((v, i) => expect(Math.abs(calDofs[i] - v)).toBeLessThan(1e-6));
   // coupling off: only the pinned joint moves
   await page.uncheck('#hand-coupling');
   await page.waitForTimeout(200);

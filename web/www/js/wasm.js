@@ -1,6 +1,6 @@
 // The library compiled to WebAssembly, and small helpers over its memory: strings in
 // and out, errors, float and integer buffers. Every model runs in C (web/wasm/*.c).
-import createStudio from '../wasm/studio.js';
+import createStudio from '../wasm/studio.mjs';
 
 export class Library {
   static async load() {
