@@ -248,11 +248,10 @@ export class HandPanel {
     canvas.addEventListener('pointerdown', (e) => {
       if (!this.active) return;
       pick(e);
-      const tips = this.model.joints.filter((j) => j.userData.tip);
-      const hit = ray.intersectObjects(tips)[0];
+      const hit = ray.intersectObject(this.model.joints).find((h) => this.model.tipOf.has(h.instanceId));
       if (!hit) return;
       const normal = view.camera.getWorldDirection(new THREE.Vector3());
-      this.drag = { finger: hit.object.userData.finger, plane: new THREE.Plane().setFromNormalAndCoplanarPoint(normal, hit.point) };
+      this.drag = { finger: this.model.tipOf.get(hit.instanceId), plane: new THREE.Plane().setFromNormalAndCoplanarPoint(normal, hit.point) };
       view.controls.enabled = false;
       canvas.setPointerCapture(e.pointerId);
     });

@@ -111,50 +111,52 @@ export class HandModel {
   tipPoint(finger) { return finger === 0 ? 4 : 4 + 5 * finger; }
   point(i) { return new THREE.Vector3(this.points[3 * i], this.points[3 * i + 1], this.points[3 * i + 2]); }
 
+  // Joints and bones as two instanced meshes (two draw calls: software WebGL draws
+  // them several times faster than fifty meshes), coloured per finger.
   buildDrawing() {
     this.group = new THREE.Group(); // in mm; the caller scales it
     const colors = this.info.finger_colors.map((c) => new THREE.Color().setRGB(c[0], c[1], c[2]));
     const grey = new THREE.Color(0.45, 0.42, 0.4);
-    const sphere = new THREE.SphereGeometry(1, 16, 12);
-    const cyl = new THREE.CylinderGeometry(1, 1, 1, 12);
-    this.joints = this.info.points.map((pt, i) => {
+    const n = this.info.points.length;
+    this.joints = new THREE.InstancedMesh(new THREE.SphereGeometry(1, 16, 12), new THREE.MeshLambertMaterial(), n);
+    this.bones = new THREE.InstancedMesh(new THREE.CylinderGeometry(1, 1, 1, 12), new THREE.MeshLambertMaterial(), n);
+    this.tipOf = new Map(); // instance (point) -> finger, for fingertips
+    this.info.points.forEach((pt, i) => {
       const f = this.fingerOfPoint(i);
-      const mat = new THREE.MeshStandardMaterial({ color: f < 0 ? grey : colors[f], roughness: 0.5 });
-      const s = new THREE.Mesh(sphere, mat);
-      const tip = pt.name.endsWith('tip');
-      s.scale.setScalar(tip ? 6 : 5);
-      s.userData = { point: i, finger: f, tip };
-      this.group.add(s);
-      return s;
+      this.joints.setColorAt(i, f < 0 ? grey : colors[f]);
+      this.bones.setColorAt(i, f < 0 ? grey : colors[f]);
+      if (pt.name.endsWith('tip')) this.tipOf.set(i, f);
     });
-    this.bones = this.info.points.map((pt, i) => {
-      if (pt.parent < 0) return null;
-      const f = this.fingerOfPoint(i);
-      const b = new THREE.Mesh(cyl, new THREE.MeshStandardMaterial({ color: colors[f], roughness: 0.6 }));
-      this.group.add(b);
-      return b;
-    });
+    this.joints.frustumCulled = this.bones.frustumCulled = false;
+    this.group.add(this.joints, this.bones);
     // the palm: a translucent plate through the CMC and MCP joints
     this.palmGeometry = new THREE.BufferGeometry();
     this.palmGeometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * 12), 3));
     this.palmGeometry.setIndex([0, 1, 5, 1, 6, 5, 1, 2, 6, 2, 7, 6, 2, 3, 7, 3, 8, 7, 10, 0, 1, 10, 1, 2, 10, 2, 3, 10, 11, 0]);
-    this.palm = new THREE.Mesh(this.palmGeometry, new THREE.MeshStandardMaterial({ color: 0xd9b8a0, transparent: true, opacity: 0.45, side: THREE.DoubleSide, depthWrite: false }));
+    this.palm = new THREE.Mesh(this.palmGeometry, new THREE.MeshLambertMaterial({ color: 0xd9b8a0, transparent: true, opacity: 0.45, side: THREE.DoubleSide, depthWrite: false }));
     this.group.add(this.palm);
   }
 
+  // World position of a joint (for the piano's key layout).
+  jointWorld(i) { return this.group.localToWorld(this.point(i)); }
+
   updateDrawing() {
-    const up = new THREE.Vector3(0, 1, 0);
-    for (let i = 0; i < this.joints.length; i++) this.joints[i].position.copy(this.point(i));
-    for (let i = 0; i < this.bones.length; i++) {
-      const b = this.bones[i];
-      if (!b) continue;
-      const a = this.point(this.info.points[i].parent), c = this.point(i);
+    const up = new THREE.Vector3(0, 1, 0), m = new THREE.Matrix4(), q = new THREE.Quaternion();
+    const one = new THREE.Vector3(), zero = new THREE.Matrix4().makeScale(0, 0, 0);
+    for (let i = 0; i < this.info.points.length; i++) {
+      const r = this.tipOf.has(i) ? 6 : 5;
+      m.compose(this.point(i), q.identity(), one.set(r, r, r));
+      this.joints.setMatrixAt(i, m);
+      const parent = this.info.points[i].parent;
+      if (parent < 0) { this.bones.setMatrixAt(i, zero); continue; }
+      const a = this.point(parent), c = this.point(i);
       const d = c.clone().sub(a);
       const len = d.length();
-      b.position.copy(a).addScaledVector(d, 0.5);
-      b.quaternion.setFromUnitVectors(up, d.normalize());
-      b.scale.set(3, Math.max(len, 1e-3), 3);
+      q.setFromUnitVectors(up, d.clone().normalize());
+      m.compose(a.addScaledVector(d, 0.5), q, one.set(3, Math.max(len, 1e-3), 3));
+      this.bones.setMatrixAt(i, m);
     }
+    this.joints.instanceMatrix.needsUpdate = this.bones.instanceMatrix.needsUpdate = true;
     // palm corners: CMCs of I..L (0-3), MCPs of I..L (5-8), the wrist (10), thumb CMC (11)
     const ids = [5, 10, 15, 20, 20, 6, 11, 16, 21, 21, 0, 1];
     const pos = this.palmGeometry.attributes.position;

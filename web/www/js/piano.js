@@ -62,7 +62,7 @@ export class PianoPanel {
     model.clearInputs();
     model.solve();
     this.hand.root.updateMatrixWorld(true);
-    const tips = [0, 1, 2, 3, 4].map((f) => model.joints[model.tipPoint(f)].getWorldPosition(new THREE.Vector3()));
+    const tips = [0, 1, 2, 3, 4].map((f) => model.jointWorld(model.tipPoint(f)));
     [model.pinned, model.pinValue, model.torque] = saved;
     const keyTop = Math.min(...tips.map((t) => t.y)) - 0.12;
     const wood = new THREE.MeshStandardMaterial({ color: 0x3b2416, roughness: 0.45 });
@@ -74,21 +74,22 @@ export class PianoPanel {
     const dir = Math.sign(xs[4] - xs[0]) || -1;
     const zTip = tips.reduce((a, t) => a + t.z, 0) / 5;
     this.pianoKeys = [];
+    // each key turns about its far end (inside the piano), the fingers press its front part
+    const pivotZ = zTip + 0.75 * len;
     for (let k = -2; k < 9; k++) {
       const pivot = new THREE.Group();
-      const x = centre + dir * (k - 2) * width;
-      pivot.position.set(x, keyTop, zTip - 0.55 * len);
+      pivot.position.set(centre + dir * (k - 2) * width, keyTop, pivotZ);
       const key = new THREE.Mesh(new THREE.BoxGeometry(width * 0.94, 0.14, len), ivory);
-      key.position.set(0, -0.07, 0.55 * len - 0.15);
+      key.position.set(0, -0.07, -0.5 * len);
       pivot.add(key);
       this.keysGroup.add(pivot);
       if (k >= 0 && k < 5) this.pianoKeys[k] = pivot;
     }
     const caseMesh = new THREE.Mesh(new THREE.BoxGeometry(width * 12, 0.5, 0.6), wood);
-    caseMesh.position.set(centre + dir * 1.5 * width, keyTop + 0.1, zTip - 0.55 * len - 0.3);
+    caseMesh.position.set(centre + dir * 1.5 * width, keyTop + 0.1, pivotZ + 0.3);
     this.keysGroup.add(caseMesh);
     const base = new THREE.Mesh(new THREE.BoxGeometry(width * 12, 0.3, len), wood);
-    base.position.set(centre + dir * 1.5 * width, keyTop - 0.32, zTip - 0.15);
+    base.position.set(centre + dir * 1.5 * width, keyTop - 0.32, pivotZ - 0.5 * len);
     this.keysGroup.add(base);
   }
 
@@ -156,7 +157,7 @@ export class PianoPanel {
       if (Math.abs(target - this.level[f]) < 1e-3) this.level[f] = target;
       else moving = true;
       INPUTS[f].forEach((name, k) => { model.torque[model.index[name]] = TORQUE[k] * this.level[f]; });
-      if (this.pianoKeys && this.pianoKeys[f]) this.pianoKeys[f].rotation.x = this.held[f] ? 4.5 * DEG : 0;
+      if (this.pianoKeys && this.pianoKeys[f]) this.pianoKeys[f].rotation.x = this.held[f] ? -3.5 * DEG : 0; // front edge down
     }
     this.hand.solveAndShow();
     if (moving) requestAnimationFrame(() => this.tick());
@@ -175,7 +176,7 @@ export class PianoPanel {
     this.layoutKeys();
     h.solveAndShow();
     view.showMaps(null);
-    view.setContent(this.group, { distance: 4.4, target: [0, -0.2, 1.0], direction: [0, 0.75, -0.66] });
+    view.setContent(this.group, { distance: 4.2, target: [0, -0.3, 1.1], direction: [0, 0.5, -0.87] });
   }
 
   deactivate() {

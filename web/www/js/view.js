@@ -7,7 +7,7 @@ export class View {
   constructor(canvas, mapsBox) {
     this.canvas = canvas;
     this.mapsBox = mapsBox;
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: false });
     this.renderer.setPixelRatio(1);
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xe9e6e1);
