@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include "cli.h"
 #include "http.h"
@@ -39,15 +38,9 @@ static bool find_root(char *out, size_t size)
         return true;
     }
     char exe[PATH_MAX];
-    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (len > 0) {
-        exe[len] = '\0';
-        char *slash = strrchr(exe, '/');
-        if (slash) {
-            *slash = '\0';
-            snprintf(out, size, "%s/../share/shitsukan/studio", exe);
-            if (has_page(out)) return true;
-        }
+    if (cli_executable_dir(exe, sizeof exe)) {
+        snprintf(out, size, "%s/../share/shitsukan/studio", exe);
+        if (has_page(out)) return true;
     }
     snprintf(out, size, "%s", SK_SOURCE_STUDIO_DIR);
     return has_page(out);

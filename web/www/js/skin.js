@@ -2,56 +2,21 @@
 // map set rendered live by the library at preview resolution, the material on a board,
 // and the full-resolution map set of `shitsukan skin maps` exported as files.
 import * as THREE from 'three';
-import { SchemaForm } from './schema_form.js';
-import { clone } from './tree.js';
-import { download, jsonBlob, canvasPng, png16, exrFloat, pickFile } from './files.js';
+import { PresetPanel, el } from './preset_panel.js';
+import { download, canvasPng, png16, exrFloat } from './files.js';
 
-const el = (tag, props = {}, ...kids) => {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...kids.filter((k) => k !== null && k !== undefined));
-  return e;
-};
-
-export class SkinPanel {
+export class SkinPanel extends PresetPanel {
   constructor(app, container) {
-    this.app = app;
-    this.lib = app.lib;
-    this.container = container;
-    this.tree = {};
+    super(app, container, 'skin', 'Every key of the skin presets (shitsukan skin maps --help-keys). Files saved here are presets the command line reads: shitsukan skin maps --preset FILE.');
     this.size = 512;
-    this.timings = {};
-    this.schema = this.lib.schema('skin');
     this.build();
   }
 
   build() {
-    const presets = this.app.presets.skin || [];
-    this.select = el('select', { id: 'skin-preset' });
-    this.select.append(el('option', { value: '', textContent: '(defaults)' }));
-    for (const p of presets) this.select.append(el('option', { value: p, textContent: p }));
-    this.select.onchange = () => this.loadPreset(this.select.value);
     const sizeSel = el('select', { id: 'skin-size' });
     for (const s of [128, 256, 512]) sizeSel.append(el('option', { value: s, textContent: `${s}²`, selected: s === this.size }));
     sizeSel.onchange = () => { this.size = Number(sizeSel.value); this.update(); };
-    const save = el('button', { textContent: 'Save JSON', id: 'skin-save' });
-    save.onclick = () => download(`${this.name || 'skin'}.json`, jsonBlob(this.tree));
-    const load = el('button', { textContent: 'Load JSON…' });
-    load.onclick = async () => { const f = await pickFile('.json'); if (f) this.setTree(JSON.parse(f.text), f.name); };
-    this.exportSize = el('input', { type: 'number', value: 1024, min: 16, max: 8192, step: 1, id: 'skin-export-size' });
-    const exp = el('button', { textContent: 'Export maps', id: 'skin-export' });
-    exp.onclick = () => this.exportMaps(Number(this.exportSize.value));
-    this.errorLine = el('div', { className: 'error-line' });
-    this.info = el('div', { className: 'note' });
-    this.formBox = el('div');
-    this.container.append(
-      el('div', { className: 'row' }, 'preset ', this.select, ' preview ', sizeSel),
-      el('div', { className: 'row' }, save, load),
-      el('div', { className: 'row' }, 'export ', this.exportSize, ' px ', exp),
-      el('p', { className: 'note', textContent: 'Every key of the skin presets (shitsukan skin maps --help-keys). Files saved here are presets the command line reads: shitsukan skin maps --preset FILE.' }),
-      this.errorLine, this.info, this.formBox);
-    this.resolvedTree = this.lib.resolved('skin', this.tree);
-    this.form = new SchemaForm(this.formBox, this.schema, () => this.tree, () => this.resolvedTree,
-      (path, structural) => this.edited(path, structural));
+    this.presetRow.append(' preview ', sizeSel);
     // map canvases
     this.canvases = {};
     this.maps = el('div', { className: 'maps-skin' });
@@ -73,30 +38,6 @@ export class SkinPanel {
     const board = new THREE.Mesh(new THREE.BoxGeometry(3, 0.2, 3), this.material);
     this.group = new THREE.Group();
     this.group.add(board);
-    this.update();
-  }
-
-  async loadPreset(name) {
-    this.name = name;
-    const tree = name ? await (await fetch(`presets/skin/${name}.json`)).json() : {};
-    this.setTree(tree, name);
-  }
-
-  setTree(tree, name) {
-    this.tree = tree;
-    if (name !== undefined) this.name = String(name).replace(/\.json$/, '');
-    this.edited('', true);
-  }
-
-  edited(path, structural) {
-    try {
-      this.resolvedTree = this.lib.resolved('skin', this.tree);
-      this.errorLine.textContent = '';
-    } catch (e) {
-      this.errorLine.textContent = e.message;
-      return;
-    }
-    if (structural) this.form.render();
     this.update();
   }
 
@@ -153,14 +94,6 @@ export class SkinPanel {
     return e;
   }
 
-  rgbaOf(samples, channels, srgb, n) {
-    const p = this.lib.alloc(samples.length * 4);
-    this.lib.f32(p, samples.length).set(samples);
-    const rgba = this.lib.rgba(p, n, channels, srgb);
-    this.lib.free(p);
-    return rgba;
-  }
-
   update() {
     const w = this.size, h = this.size;
     const t0 = performance.now();
@@ -204,9 +137,8 @@ export class SkinPanel {
     files['preview.png'] = await canvasPng(this.rgbaOf(e.preview, 3, true, w * h), w, h);
     files['normal.png'] = await canvasPng(this.rgbaOf(e.normal, 3, false, w * h), w, h);
     files['cells.png'] = await canvasPng(this.rgbaOf(e.cells, 3, false, w * h), w, h);
-    const enc16 = (x) => { const p = this.lib.alloc(x.length * 4); this.lib.f32(p, x.length).set(x); const c = this.lib.codes16(p, x.length); this.lib.free(p); return c; };
-    files['height.png'] = await png16(enc16(e.height), w, h, 1, { ...meta, 'shitsukan:decode': `height_mm = ${r.lo} + value * ${r.hi - r.lo} (value = code / 65535)` });
-    files['furrow.png'] = await png16(enc16(e.furrow), w, h, 1, { ...meta, 'shitsukan:decode': `distance_mm = value * ${r.furrowMax} (clamped there)` });
+    files['height.png'] = await png16(this.codes16Of(e.height), w, h, 1, { ...meta, 'shitsukan:decode': `height_mm = ${r.lo} + value * ${r.hi - r.lo} (value = code / 65535)` });
+    files['furrow.png'] = await png16(this.codes16Of(e.furrow), w, h, 1, { ...meta, 'shitsukan:decode': `distance_mm = value * ${r.furrowMax} (clamped there)` });
     files['height.exr'] = exrFloat([r.maps.height], ['Y'], w, h, { ...meta, 'shitsukan:units': 'mm' });
     for (const [name, blob] of Object.entries(files)) download(`${base}-${name}`, blob);
     return Object.keys(files);

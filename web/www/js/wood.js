@@ -3,73 +3,20 @@
 // board (each face its own cut through the same log), and the maps of `shitsukan wood
 // cut --maps` exported as files.
 import * as THREE from 'three';
-import { SchemaForm } from './schema_form.js';
-import { download, jsonBlob, canvasPng, png16, exrFloat, pickFile } from './files.js';
+import { PresetPanel, el } from './preset_panel.js';
+import { download, canvasPng, png16, exrFloat } from './files.js';
 
-const el = (tag, props = {}, ...kids) => {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...kids.filter((k) => k !== null && k !== undefined));
-  return e;
-};
-
-export class WoodPanel {
+export class WoodPanel extends PresetPanel {
   constructor(app, container) {
-    this.app = app;
-    this.lib = app.lib;
-    this.container = container;
-    this.tree = {};
+    super(app, container, 'wood', 'Every key of the wood presets (shitsukan wood cut --help-keys); the board\'s top is the preset\'s view. Saved files: shitsukan wood cut --preset FILE.');
     this.size = 256;
-    this.timings = {};
-    this.schema = this.lib.schema('wood');
     this.group = new THREE.Group();
     this.build();
   }
 
   build() {
-    this.select = el('select', { id: 'wood-preset' });
-    this.select.append(el('option', { value: '', textContent: '(defaults)' }));
-    for (const p of this.app.presets.wood || []) this.select.append(el('option', { value: p, textContent: p }));
-    this.select.onchange = () => this.loadPreset(this.select.value);
-    const save = el('button', { textContent: 'Save JSON', id: 'wood-save' });
-    save.onclick = () => download(`${this.name || 'wood'}.json`, jsonBlob(this.tree));
-    const load = el('button', { textContent: 'Load JSON…' });
-    load.onclick = async () => { const f = await pickFile('.json'); if (f) this.setTree(JSON.parse(f.text), f.name); };
-    this.exportSize = el('input', { type: 'number', value: 1024, min: 16, max: 8192, id: 'wood-export-size' });
-    const exp = el('button', { textContent: 'Export maps', id: 'wood-export' });
-    exp.onclick = () => this.exportMaps(Number(this.exportSize.value));
-    this.errorLine = el('div', { className: 'error-line' });
-    this.info = el('div', { className: 'note' });
-    this.formBox = el('div');
-    this.container.append(el('div', { className: 'row' }, 'preset ', this.select), el('div', { className: 'row' }, save, load),
-      el('div', { className: 'row' }, 'export ', this.exportSize, ' px ', exp),
-      el('p', { className: 'note', textContent: 'Every key of the wood presets (shitsukan wood cut --help-keys); the board\'s top is the preset\'s view. Saved files: shitsukan wood cut --preset FILE.' }),
-      this.errorLine, this.info, this.formBox);
-    this.resolvedTree = this.lib.resolved('wood', this.tree);
-    this.form = new SchemaForm(this.formBox, this.schema, () => this.tree, () => this.resolvedTree, (p, s) => this.edited(p, s));
     this.canvas = el('canvas', { id: 'wood-map-shaded' });
     this.maps = el('div', {}, this.canvas);
-  }
-
-  async loadPreset(name) {
-    this.setTree(name ? await (await fetch(`presets/wood/${name}.json`)).json() : {}, name);
-  }
-
-  setTree(tree, name) {
-    this.tree = tree;
-    if (name !== undefined) this.name = String(name).replace(/\.json$/, '');
-    this.edited('', true);
-  }
-
-  edited(path, structural) {
-    try {
-      this.resolvedTree = this.lib.resolved('wood', this.tree);
-      this.errorLine.textContent = '';
-    } catch (e) {
-      this.errorLine.textContent = e.message;
-      return;
-    }
-    if (structural) this.form.render();
-    this.update();
   }
 
   withWood(fn) {
@@ -93,14 +40,6 @@ export class WoodPanel {
     } finally {
       for (const k of wanted) this.lib.free(ptr[k]);
     }
-  }
-
-  rgbaOf(samples, channels, srgb, n) {
-    const p = this.lib.alloc(samples.length * 4);
-    this.lib.f32(p, samples.length).set(samples);
-    const rgba = this.lib.rgba(p, n, channels, srgb);
-    this.lib.free(p);
-    return rgba;
   }
 
   update() {
@@ -177,11 +116,7 @@ export class WoodPanel {
     files['pores.png'] = await canvasPng(this.rgbaOf(maps.vessel, 1, false, n), w, h);
     const planes = [0, 1, 2].map((c) => { const p = new Float32Array(n); for (let i = 0; i < n; i++) p[i] = maps.shaded[3 * i + c]; return p; });
     files['cut.exr'] = exrFloat(planes, ['R', 'G', 'B'], w, h, { 'shitsukan:command': 'wood cut (studio)' });
-    const fp = this.lib.alloc(maps.fibre.length * 4);
-    this.lib.f32(fp, maps.fibre.length).set(maps.fibre);
-    const fibre16 = this.lib.codes16(fp, maps.fibre.length);
-    this.lib.free(fp);
-    files['fibre.png'] = await png16(fibre16, w, h, 3, { 'shitsukan:encoding': 'rgb = 0.5 + 0.5 f, f = unit fibre direction up the tree in the image frame (x right, y up, z towards the viewer); linear' });
+    files['fibre.png'] = await png16(this.codes16Of(maps.fibre), w, h, 3, { 'shitsukan:encoding': 'rgb = 0.5 + 0.5 f, f = unit fibre direction up the tree in the image frame (x right, y up, z towards the viewer); linear' });
     for (const [name, blob] of Object.entries(files)) download(`${base}-${name}`, blob);
     return Object.keys(files);
   }
