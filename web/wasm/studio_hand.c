@@ -11,7 +11,7 @@
 #include "shitsukan/hand.h"
 #include "studio.h"
 
-typedef struct studio_hand {
+struct studio_hand {
     sk_hand_skeleton skeleton;
     sk_hand_constraints constraints;
     sk_hand_solver *solver;
@@ -23,7 +23,10 @@ typedef struct studio_hand {
     sk_hand_solve_info info;
     double *animation; /* frames x SK_HAND_DOF_COUNT of the last animation */
     int animation_frames;
-} studio_hand;
+};
+
+const sk_hand_skeleton *studio_hand_skeleton(const studio_hand *h) { return &h->skeleton; }
+const sk_hand_frames *studio_hand_frames(const studio_hand *h) { return &h->frames; }
 
 static void drop_solvers(studio_hand *h)
 {

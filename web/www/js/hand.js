@@ -71,8 +71,27 @@ export class HandPanel {
     const release = el('button', { textContent: 'Release pins', id: 'hand-release' });
     release.onclick = () => { this.model.clearInputs(); this.solveAndShow(); };
     this.errorLine = el('div', { className: 'error-line' });
+    // the skin surface, when the library has it (built on first use)
+    const surface = el('input', { type: 'checkbox', id: 'hand-surface', disabled: !this.model.surfaceAvailable() });
+    const skinning = el('select', { id: 'hand-skinning', disabled: true });
+    for (const [v, t] of [[3, 'dual quaternion'], [2, 'linear blend'], [1, 'rigid (thesis)']]) skinning.append(el('option', { value: v, textContent: t }));
+    surface.onchange = () => {
+      try {
+        if (surface.checked && !this.model.surface) {
+          const t0 = performance.now();
+          this.model.buildSurface();
+          this.timings.surface_build_ms = performance.now() - t0;
+        }
+        this.model.showSurface(surface.checked);
+        skinning.disabled = !surface.checked;
+      } catch (e) { this.errorLine.textContent = e.message; }
+      this.app.view.render();
+    };
+    skinning.onchange = () => { this.model.skinning = Number(skinning.value); this.model.deformSurface(); this.app.view.render(); };
     c.append(el('div', { className: 'row' }, 'constraints ', setSel),
       el('div', { className: 'row' }, el('label', {}, coupling, ' coupling'), release),
+      el('div', { className: 'row', title: this.model.surfaceAvailable() ? 'the skin surface of thesis 4.1, deformed by the library' : 'this build of the library has no hand surface yet' },
+        el('label', {}, surface, ' skin surface'), skinning),
       el('p', { className: 'note', textContent: 'Moving a slider pins that joint (bold); the others settle by the natural coupling (green: moved by it). Drag a fingertip in the view to pin its finger there.' }),
       this.errorLine);
     // whole-hand rotation (the thesis GUI's object rotation)

@@ -29,6 +29,49 @@ export class HandModel {
 
   onPose(fn) { this.listeners.push(fn); }
 
+  // The skin surface (thesis 4.1), when the library has it: built on this skeleton, then
+  // deformed by the library at every pose (method: 1 rigid, 2 linear blend, 3 dual
+  // quaternion skinning). Returns false when the build has no hand surface.
+  surfaceAvailable() { return typeof this.lib.m._studio_surface_create === 'function'; }
+
+  buildSurface(triangles = 8000) {
+    if (!this.surfaceAvailable()) return false;
+    const m = this.lib.m;
+    const s = m._studio_surface_create(this.ptr, triangles, this.lib.err);
+    if (!s) throw new Error(this.lib.errorMessage());
+    this.surface = s;
+    this.skinning = 3;
+    const nv = m._studio_surface_vertex_count(s), nt = m._studio_surface_triangle_count(s);
+    this.surfaceVertices = nv;
+    this.surfaceTriangles = nt;
+    this.surfacePos = this.lib.alloc(nv * 12);
+    this.surfaceNrm = this.lib.alloc(nv * 12);
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(nv * 3), 3));
+    g.setAttribute('normal', new THREE.BufferAttribute(new Float32Array(nv * 3), 3));
+    g.setIndex(new THREE.BufferAttribute(new Uint32Array(this.lib.u32(m._studio_surface_indices(s), nt * 3)), 1));
+    this.surfaceMesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ color: 0xd9a58a }));
+    this.surfaceMesh.frustumCulled = false;
+    this.group.add(this.surfaceMesh);
+    this.deformSurface();
+    return true;
+  }
+
+  deformSurface() {
+    if (!this.surface) return;
+    const m = this.lib.m, nv = this.surfaceVertices;
+    m._studio_surface_deform(this.surface, this.ptr, this.skinning, this.surfacePos, this.surfaceNrm);
+    const g = this.surfaceMesh.geometry;
+    g.attributes.position.array.set(this.lib.f32(this.surfacePos, nv * 3));
+    g.attributes.normal.array.set(this.lib.f32(this.surfaceNrm, nv * 3));
+    g.attributes.position.needsUpdate = g.attributes.normal.needsUpdate = true;
+  }
+
+  showSurface(on) {
+    if (this.surfaceMesh) this.surfaceMesh.visible = on;
+    this.joints.visible = this.bones.visible = this.palm.visible = !on || !this.surfaceMesh;
+  }
+
   // The constraint set from its JSON text (null = none: coupling off).
   useSet(name, text) {
     const r = this.lib.withStrings([text || '', name], (t, n) => this.lib.m._studio_hand_use_set(this.ptr, t, n, this.lib.err));
@@ -76,6 +119,7 @@ export class HandModel {
     m._studio_hand_pose_geometry(this.ptr, this.pointsPtr, this.rotPtr);
     this.points = new Float32Array(this.lib.f32(this.pointsPtr, this.info.points.length * 3));
     this.updateDrawing();
+    this.deformSurface();
     for (const fn of this.listeners) fn(this);
   }
 
