@@ -27,9 +27,9 @@ function time(fn, runs) {
 }
 
 console.log(`wasm ${fs.statSync(path.resolve(www, 'wasm/studio.wasm')).size} bytes; load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')}`);
-for (const preset of ['back-of-hand', 'fig13a']) {
+for (const [preset, n] of [['back-of-hand', 512], ['back-of-hand', 256], ['fig13a', 512]]) {
   const json = str(fs.readFileSync(path.resolve(www, `presets/skin/${preset}.json`), 'utf8'));
-  const n = 512, buf = m._malloc(n * n * 12);
+  const buf = m._malloc(n * n * 12);
   const build = time(() => { const s = m._studio_skin_create(json, err); m._studio_skin_destroy(s); }, 5);
   const whole = time(() => {
     const s = m._studio_skin_create(json, err);
