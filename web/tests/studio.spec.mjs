@@ -167,6 +167,52 @@ test('a slider moves the coupled joints as hand pose does', async ({ page }) => 
   expect(errors).toEqual([]);
 });
 
+test('a fingertip dragged in the view pins its finger there', async ({ page }) => {
+  await open(page);
+  // where the index fingertip is on the screen
+  const tip = await page.evaluate(() => {
+    const h = window.studio.panels.hand, v = window.studio.view;
+    h.root.updateMatrixWorld(true);
+    const p = h.model.jointWorld(h.model.tipPoint(1)).project(v.camera);
+    const r = v.canvas.getBoundingClientRect();
+    return { x: r.left + (p.x + 1) / 2 * r.width, y: r.top + (1 - p.y) / 2 * r.height };
+  });
+  const before = await page.evaluate(() => window.studio.panels.hand.model.point(9).toArray());
+  await page.mouse.move(tip.x, tip.y);
+  await page.mouse.down();
+  for (let k = 1; k <= 5; k++) await page.mouse.move(tip.x + 4 * k, tip.y + 12 * k);
+  await page.mouse.up();
+  const after = await page.evaluate(() => {
+    const m = window.studio.panels.hand.model;
+    return { tip: m.point(9).toArray(), pinned: ['I.MCP.flex', 'I.MCP.abd', 'I.PIP.flex'].map((n) => m.pinned[m.index[n]]) };
+  });
+  expect(after.pinned).toEqual([true, true, true]);
+  const moved = Math.hypot(...after.tip.map((v, i) => v - before[i]));
+  expect(moved).toBeGreaterThan(5); // mm
+  expect(errors).toEqual([]);
+});
+
+test('a wood preset edit updates the view, equal to wood cut', async ({ page }) => {
+  await open(page);
+  await page.click('#tabs button[data-tab=wood]');
+  await page.selectOption('#wood-preset', 'oak');
+  await page.waitForTimeout(300);
+  const sp = page.locator('[data-panel=wood] .ctl[data-key="grain.spiral_slope"] input[type=number]');
+  await sp.fill('0.1');
+  await sp.dispatchEvent('change');
+  await page.waitForTimeout(300);
+  const tree = await page.evaluate(() => window.studio.panels.wood.tree);
+  expect(tree.grain.spiral_slope).toBe(0.1);
+  const file = path.join(TMP, 'wood-state.json');
+  fs.writeFileSync(file, JSON.stringify(tree));
+  const out = path.join(TMP, 'wood-native.png');
+  shitsukan('wood', 'cut', '--preset', file, '--size', '256', '--samples', '1', '--quiet', '-o', out);
+  const c = compare(await canvasPixels(page, 'wood-map-shaded'), await filePixels(page, out));
+  console.log(`wood cut 256: max difference ${c.max} codes, ${c.off} of ${c.count} beyond 1`);
+  expect(c.max).toBeLessThanOrEqual(1);
+  expect(errors).toEqual([]);
+});
+
 test('slider speed: move to redrawn hand', async ({ page }) => {
   await open(page);
   const runs = await page.evaluate(() => {
@@ -256,6 +302,17 @@ test('saved states reload identically', async ({ page }) => {
   await dl.saveAs(handFile);
   const dofsBefore = await page.evaluate(() => window.studio.panels.hand.model.dofs.slice());
   shitsukan('hand', 'animate', handFile, '--angles', path.join(TMP, 'hand-angles.csv'), '--quiet');
+  // played in the page: every frame as hand animate solves it
+  const played = await page.evaluate(() => {
+    const h = window.studio.panels.hand, a = h.model.animate(h.animationJson());
+    return a.frames.map((f) => f.map((v, i) => (h.model.info.dofs[i].translation ? v : (v * 180) / Math.PI)));
+  });
+  const csv = fs.readFileSync(path.join(TMP, 'hand-angles.csv'), 'utf8').trim().split('\n').slice(1).map((l) => l.split(',').slice(2).map(Number));
+  expect(played.length).toBe(csv.length);
+  expect(played.length).toBe(25); // two keys, 24 steps
+  csv.forEach((row, f) => row.forEach((v, i) => expect(Math.abs(played[f][i] - v)).toBeLessThan(2e-6)));
+  await page.click('#hand-play');
+  await page.waitForFunction(() => !window.studio.panels.hand.playing || window.studio.panels.hand.playedFrame === 24, null, { timeout: 20000 });
   // skin: a preset with an edit
   await page.click('#tabs button[data-tab=skin]');
   await page.selectOption('#skin-size', '128');

@@ -216,8 +216,10 @@ export class HandPanel {
     const step = () => {
       const f = Math.min(anim.frames.length - 1, Math.floor(((performance.now() - t0) / 1000) * anim.fps));
       this.model.setDofs(anim.frames[f]);
+      this.playedFrame = f;
       this.showPose();
       if (f < anim.frames.length - 1) this.playing = requestAnimationFrame(step);
+      else this.playing = 0;
     };
     step();
     return anim.frames.length;
