@@ -46,10 +46,13 @@ studio-build:
 	@NODE_PATH=/usr/share/nodejs emcmake cmake -S web -B $(WASM_DIR) -DSK_WERROR=ON >/dev/null
 	@NODE_PATH=/usr/share/nodejs cmake --build $(WASM_DIR) -j $(JOBS)
 
+# (cJSON's source comes from Debian's package archive: without it the tests are skipped)
 studio-if-available:
-	@if command -v emcmake >/dev/null 2>&1 && [ -f node_modules/three/build/three.module.js ]; then \
-		$(MAKE) --no-print-directory studio-build; \
-	else echo "studio: no emscripten (or no node_modules/three): the browser tests will be skipped (make studio installs them)"; fi
+	@if ! command -v emcmake >/dev/null 2>&1 || [ ! -f node_modules/three/build/three.module.js ]; then \
+		echo "studio: no emscripten (or no node_modules/three): the browser tests will be skipped (make studio installs them)"; \
+	elif ! bash web/fetch-cjson.sh $(WASM_DIR)/cjson; then \
+		echo "studio: could not fetch cJSON's source package: the browser tests will be skipped"; \
+	else $(MAKE) --no-print-directory studio-build; fi
 
 # The studio's tests with their screenshots written into docs/images/studio.
 studio-docs: studio
