@@ -88,6 +88,8 @@ export class HandPanel {
       this.app.view.render();
     };
     skinning.onchange = () => { this.model.skinning = Number(skinning.value); this.model.deformSurface(); this.app.view.render(); };
+    // shown by default once the page is up (building it takes about a second)
+    if (this.model.surfaceAvailable()) setTimeout(() => { surface.checked = true; surface.onchange(); }, 0);
     c.append(el('div', { className: 'row' }, 'constraints ', setSel),
       el('div', { className: 'row' }, el('label', {}, coupling, ' coupling'), release),
       el('div', { className: 'row', title: this.model.surfaceAvailable() ? 'the skin surface of thesis 4.1, deformed by the library' : 'this build of the library has no hand surface yet' },
