@@ -91,6 +91,16 @@ function pngSamples(file) {
   return { width, height, channels, samples: s16 };
 }
 
+// 30 slider moves: best and median of each timing the hand panel keeps (ms).
+async function sliderRuns(page) {
+  const runs = await page.evaluate(() => {
+    const h = window.studio.panels.hand, t = [];
+    for (let k = 0; k < 30; k++) { h.setSlider('L.MCP.flex', 20 + (k % 30) * 2); t.push({ ...h.timings }); }
+    return t;
+  });
+  return (key) => { const v = runs.map((r) => r[key]).sort((a, b) => a - b); return { best: v[0], median: v[v.length >> 1] }; };
+}
+
 const speed = {};
 test.afterAll(() => {
   if (Object.keys(speed).length) fs.writeFileSync(path.join(TMP, '..', 'studio-speed.json'), JSON.stringify(speed, null, 2) + '\n');
@@ -240,12 +250,7 @@ test('the skin surface follows the pose as hand mesh makes it', async ({ page })
   }
   await shot(page, 'hand-surface');
   // the speed figure: slider move to the redrawn, skinned 8000-triangle hand
-  const runs = await page.evaluate(() => {
-    const h = window.studio.panels.hand, t = [];
-    for (let k = 0; k < 30; k++) { h.setSlider('L.MCP.flex', 20 + (k % 30) * 2); t.push({ ...h.timings }); }
-    return t;
-  });
-  const stat = (key) => { const v = runs.map((r) => r[key]).sort((a, b) => a - b); return { best: v[0], median: v[v.length >> 1] }; };
+  const stat = await sliderRuns(page);
   speed.surface_slider_ms = stat('slider_ms');
   speed.surface_slider_model_ms = stat('model_ms');
   speed.surface_slider_render_ms = stat('render_ms');
@@ -258,12 +263,7 @@ test('slider speed: move to redrawn hand', async ({ page }) => {
   // the skeleton alone (the figure with the skin surface is measured above)
   await page.waitForFunction(() => !window.studio.panels.hand.model.surfaceAvailable() || window.studio.panels.hand.model.surface);
   if (await page.isChecked('#hand-surface')) await page.uncheck('#hand-surface');
-  const runs = await page.evaluate(() => {
-    const h = window.studio.panels.hand, t = [];
-    for (let k = 0; k < 30; k++) { h.setSlider('L.MCP.flex', 20 + (k % 30) * 2); t.push({ ...h.timings }); }
-    return t;
-  });
-  const stat = (key) => { const v = runs.map((r) => r[key]).sort((a, b) => a - b); return { best: v[0], median: v[v.length >> 1] }; };
+  const stat = await sliderRuns(page);
   speed.slider_ms = stat('slider_ms');
   speed.slider_model_ms = stat('model_ms');
   speed.slider_render_ms = stat('render_ms');
