@@ -106,15 +106,20 @@ typedef enum sk_exr_pixel_type {
 } sk_exr_pixel_type;
 
 typedef enum sk_exr_compression {
-    SK_EXR_COMPRESSION_DEFAULT = 0, /* = ZIP */
+    SK_EXR_COMPRESSION_DEFAULT = 0, /* = ZIP at level 1: see docs/images.md, "EXR compression" */
     SK_EXR_COMPRESSION_NONE,
-    SK_EXR_COMPRESSION_ZIP,   /* lossless, 16 scanlines per block */
-    SK_EXR_COMPRESSION_PIZ    /* lossless wavelet, good for noisy renders */
+    SK_EXR_COMPRESSION_ZIP,   /* lossless deflate (libdeflate), 16 scanlines per block */
+    SK_EXR_COMPRESSION_PIZ,   /* lossless wavelet, good for noisy renders */
+    SK_EXR_COMPRESSION_RLE,   /* lossless run lengths (flat areas only) */
+    SK_EXR_COMPRESSION_ZIPS   /* lossless deflate, one scanline per block */
 } sk_exr_compression;
 
 typedef struct sk_exr_write_desc {
     sk_exr_pixel_type pixel_type;
     sk_exr_compression compression;
+    /* Deflate level of ZIP and ZIPS, 1 (fastest) .. 9 (smallest); 0 = 1 for the default
+       compression, 4 (OpenEXR's own default) when ZIP or ZIPS is asked for. */
+    int compression_level;
     /* Channel names; NULL = by channel count: 1 "Y", 2 "Y","A", 3 "R","G","B",
        4 "R","G","B","A". */
     const char *const *channel_names;
@@ -125,7 +130,9 @@ typedef struct sk_exr_write_desc {
 } sk_exr_write_desc;
 
 /* Linear data is written as is (EXR is linear by convention); HALF rounds each float to
- * the nearest half (ties to even), values beyond +-65504 become +-infinity. Channel names
+ * the nearest half (ties to even), values beyond +-65504 become +-infinity. Images of
+ * more than a megabyte have their chunks encoded in parallel (OpenMP; ZIP and ZIPS by
+ * libdeflate) and written in order: the bytes do not depend on the thread count. Channel names
  * must be unique and 1-255 bytes; metadata keys must not be EXR's own attribute names
  * (channels, compression, dataWindow, ...). `desc` may be NULL. */
 sk_result sk_image_write_exr(const sk_image *image, const char *path,
