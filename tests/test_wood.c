@@ -622,10 +622,11 @@ static void test_cut_same_bytes_for_threads_and_regions(void **state)
     sk_wood_destroy(w);
 }
 
-/* Every pixel of a cut (one sample per pixel) is sk_wood_eval_filtered at the pixel's
- * point with the pixel's footprint, shaded by sk_wood_shade, to the bit: the cut's
- * vectorized batches give what a single point gives. */
-static void check_cut_equals_eval(const sk_wood *w, int W, int H)
+/* Every pixel of a cut is sk_wood_eval_filtered at its samples' points with their
+ * footprint, shaded by sk_wood_shade and averaged in the cut's order, to the bit: the
+ * cut's vectorized batches (and, on flat and quarter faces, its shared per-column stage)
+ * give what a single point gives. */
+static void check_cut_equals_eval(const sk_wood *w, int W, int H, int S)
 {
     size_t np = (size_t)W * H;
     float *shaded = malloc(np * 3 * sizeof(float)), *albedo = malloc(np * 3 * sizeof(float));
@@ -634,6 +635,7 @@ static void check_cut_equals_eval(const sk_wood *w, int W, int H)
     sk_wood_view_cut(w, &sk_wood_get_desc(w)->view, &c);
     c.width = W;
     c.height = H;
+    c.samples = S;
     c.shaded = shaded;
     c.albedo = albedo;
     c.vessel = vessel;
@@ -651,25 +653,42 @@ static void check_cut_equals_eval(const sk_wood *w, int W, int H)
     sk_vec3f view = sk_v3f_normalize(sk_v3f_add(sk_v3f_scale(n, (float)cos(c.view_incidence)),
                                                 sk_v3f_scale(up, (float)sin(c.view_incidence))));
     double width_mm = c.width_mm, height_mm = width_mm * H / W;
-    float footprint = (float)(width_mm / W);
+    float footprint = (float)(width_mm / W / S), inv = 1.0f / (float)(S * S);
     int vessels = 0;
-    for (int Y = 0; Y < H; Y++) {
-        double fy = 0.5 - (Y + 0.5) * (1.0 / H);
-        sk_vec3f row = sk_v3f_add(c.point, sk_v3f_scale(up, (float)(fy * height_mm)));
+    for (int Y = 0; Y < H; Y++)
         for (int X = 0; X < W; X++) {
-            double fx = (X + 0.5) * (1.0 / W) - 0.5;
-            sk_vec3f p = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * width_mm)));
-            sk_wood_sample s;
-            sk_wood_eval_filtered(w, p, n, footprint, &s);
-            sk_vec3f col = sk_wood_shade(w, &s, n, light, view);
+            float sum[3] = {0, 0, 0}, alb[3] = {0, 0, 0}, ves = 0.0f, dv = 0.0f;
+            for (int sy = 0; sy < S; sy++) {
+                double fy = 0.5 - (Y + (sy + 0.5) / S) * (1.0 / H);
+                sk_vec3f row = sk_v3f_add(c.point, sk_v3f_scale(up, (float)(fy * height_mm)));
+                for (int sx = 0; sx < S; sx++) {
+                    double fx = ((double)X + (sx + 0.5) / S) * (1.0 / W) - 0.5;
+                    sk_vec3f p = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * width_mm)));
+                    sk_wood_sample s;
+                    sk_wood_eval_filtered(w, p, n, footprint, &s);
+                    sk_vec3f col = sk_wood_shade(w, &s, n, light, view);
+                    if (S == 1) { /* the cut stores 0 + value */
+                        sum[0] = col.x, sum[1] = col.y, sum[2] = col.z;
+                        alb[0] = s.albedo.x, alb[1] = s.albedo.y, alb[2] = s.albedo.z;
+                        ves = s.vessel, dv = s.dive;
+                    } else {
+                        sum[0] += col.x, sum[1] += col.y, sum[2] += col.z;
+                        alb[0] += s.albedo.x, alb[1] += s.albedo.y, alb[2] += s.albedo.z;
+                        ves += s.vessel, dv += s.dive;
+                    }
+                    vessels += s.vessel > 0.0f;
+                }
+            }
+            if (S > 1) {
+                for (int k = 0; k < 3; k++) sum[k] *= inv, alb[k] *= inv;
+                ves *= inv, dv *= inv;
+            }
             size_t i = (size_t)Y * W + X;
-            assert_memory_equal(&albedo[3 * i], &s.albedo, 3 * sizeof(float));
-            assert_memory_equal(&shaded[3 * i], &col, 3 * sizeof(float));
-            assert_memory_equal(&vessel[i], &s.vessel, sizeof(float));
-            assert_memory_equal(&dive[i], &s.dive, sizeof(float));
-            vessels += s.vessel > 0.0f;
+            assert_memory_equal(&albedo[3 * i], alb, 3 * sizeof(float));
+            assert_memory_equal(&shaded[3 * i], sum, 3 * sizeof(float));
+            assert_memory_equal(&vessel[i], &ves, sizeof(float));
+            assert_memory_equal(&dive[i], &dv, sizeof(float));
         }
-    }
     assert_true(vessels > 0); /* the comparison took the vessel paths too */
     free(shaded);
     free(albedo);
@@ -683,7 +702,20 @@ static void test_cut_equals_eval(void **state)
     /* ring-porous and sparse diffuse vessels, fluctuating rings, wavy grain with dg */
     sk_wood_desc d = busy_desc();
     sk_wood *w = make_wood(&d);
-    check_cut_equals_eval(w, 77, 9);
+    check_cut_equals_eval(w, 77, 9, 1);
+    check_cut_equals_eval(w, 31, 5, 2);
+    sk_wood_destroy(w);
+    /* the same on an untilted flat-sawn face and a quarter-sawn one, whose columns share
+       their cross-section stage */
+    d.view.tilt = 0.0f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 77, 9, 1);
+    check_cut_equals_eval(w, 31, 5, 2);
+    sk_wood_destroy(w);
+    d.view.plane = SK_WOOD_PLANE_QUARTER;
+    d.view.distance_mm = 30.0f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 61, 7, 2);
     sk_wood_destroy(w);
     /* dense diffuse vessels, round rings, a rotated tree, fibre highlight shading */
     d = busy_desc();
@@ -697,7 +729,15 @@ static void test_cut_equals_eval(void **state)
     d.shading.model = SK_WOOD_SHADING_FIBRE;
     d.view.width_mm = 6.0f;
     w = make_wood(&d);
-    check_cut_equals_eval(w, 77, 9);
+    check_cut_equals_eval(w, 77, 9, 1);
+    sk_wood_destroy(w);
+    /* round rings seen quarter-sawn (the figure of Fig. 9) */
+    d = busy_desc();
+    d.rings.fluctuation = 0.0f;
+    d.view.tilt = 0.0f;
+    d.view.plane = SK_WOOD_PLANE_QUARTER;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 40, 6, 2);
     sk_wood_destroy(w);
 }
 

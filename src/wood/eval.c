@@ -35,54 +35,21 @@ static inline bool same_bits(double a, double b)
 
 #define B SK__WOOD_BATCH
 
-void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[3],
-                         sk_vec3f normal, float footprint_mm, unsigned flags, sk__wood_batch *out)
+void sk__wood_section_eval(const sk_wood *w, int count, const float *x, const float *z,
+                           sk_vec3f normal, float footprint_mm, const sk__wood_section *out)
 {
-    if (count <= 0) return;
     const sk__rings *rg = &w->rings;
-    double y[B], r[B], cos_t[B], sin_t[B], theta[B], col[B], col_f[B];
-    double t[B], width[B], dR[B], P[B], G[B], phi[B], phi_mod[B];
-    double k_p[B], sb[B], cb[B], sin_p[B], cos_p[B], dir_x[B], dir_z[B];
-    double theta0[B], col0[B], col0_f[B], r0[B], half[B];
-    float px[B], pz[B];
-    sk__rings_at at0[B];
-    sk_vec3f n = sk_v3f_normalize(normal);
-    sk_vec3f nt = sk__wood_frame_dir_to_tree(&w->frame, n);
-    /* Round rings (no fluctuation) do not depend on theta: their one column makes theta
-       irrelevant to T and R, and the end-grain point is the point turned back by phi. */
-    bool round = rg->ntheta == 1;
-    bool need_theta0 = !round || w->vessels.ring.on || w->attr.shift > 0.0;
+    double col[B], col_f[B];
+    double *r = out->r, *cos_t = out->cos_t, *sin_t = out->sin_t, *theta = out->theta;
+    double *t = out->t, *width = out->width, *dR = out->dR, *late = out->late;
     double theta_scale = rg->theta_scale;
-
-    /* into the tree frame (sk__wood_frame_point_to_tree): r, theta and the ring table's
-       columns there */
-    const float *sx = points[0], *sy = points[1], *sz = points[2];
-    if (w->frame.identity) {
-        for (int i = 0; i < count; i++) {
-            px[i] = sx[i];
-            y[i] = sy[i];
-            pz[i] = sz[i];
-        }
-    } else {
-        const sk__wood_frame *f = &w->frame;
-        sk_vec3f o = f->origin, m0 = sk_v3f(f->to_tree.m[0][0], f->to_tree.m[0][1], f->to_tree.m[0][2]);
-        sk_vec3f m1 = sk_v3f(f->to_tree.m[1][0], f->to_tree.m[1][1], f->to_tree.m[1][2]);
-        sk_vec3f m2 = sk_v3f(f->to_tree.m[2][0], f->to_tree.m[2][1], f->to_tree.m[2][2]);
-#pragma omp simd
-        for (int i = 0; i < count; i++) {
-            float dx = sx[i] - o.x, dy = sy[i] - o.y, dz = sz[i] - o.z;
-            px[i] = m0.x * dx + m0.y * dy + m0.z * dz;
-            y[i] = m1.x * dx + m1.y * dy + m1.z * dz;
-            pz[i] = m2.x * dx + m2.y * dy + m2.z * dz;
-        }
-    }
 #pragma omp simd
     for (int i = 0; i < count; i++) {
-        double x = px[i], z = pz[i];
-        r[i] = sqrt(x * x + z * z);
-        cos_t[i] = r[i] > 0.0 ? x / r[i] : 1.0;
-        sin_t[i] = r[i] > 0.0 ? z / r[i] : 0.0;
-        theta[i] = sk__atan2(z, x);
+        double px = x[i], pz = z[i];
+        r[i] = sqrt(px * px + pz * pz);
+        cos_t[i] = r[i] > 0.0 ? px / r[i] : 1.0;
+        sin_t[i] = r[i] > 0.0 ? pz / r[i] : 0.0;
+        theta[i] = sk__atan2(pz, px);
         col[i] = sk__rings_column_split(theta_scale, theta[i], &col_f[i]);
     }
     /* t = T(r, theta) (sec. 4.4) */
@@ -90,6 +57,40 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
         sk__rings_at at = sk__rings_at_column(rg, sk__rings_column_wrap(rg, col[i]), col_f[i]);
         t[i] = sk__rings_T_at(rg, &at, r[i], &width[i], &dR[i]);
     }
+    /* the ring profile of C'(t, theta0) (sec. 6.3), box-filtered over the footprint's span
+       of t along the surface (the radial direction's part in the surface over the ring
+       width); it depends on t alone */
+    sk_vec3f nt = sk__wood_frame_dir_to_tree(&w->frame, sk_v3f_normalize(normal));
+    double half_footprint = footprint_mm > 0.0f ? 0.5 * footprint_mm : 0.0;
+    double ntx = nt.x, ntz = nt.z, half[B];
+#pragma omp simd
+    for (int i = 0; i < count; i++) {
+        double er_n = cos_t[i] * ntx + sin_t[i] * ntz;
+        double tangential = 1.0 - er_n * er_n;
+        half[i] = half_footprint * sqrt(tangential > 0.0 ? tangential : 0.0) / width[i];
+    }
+    for (int i = 0; i < count; i++) late[i] = sk__attributes_latewood(&w->attr, t[i], half[i]);
+}
+
+void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_section *sec,
+                                 const double *y, sk_vec3f normal, float footprint_mm,
+                                 unsigned flags, sk__wood_batch *out)
+{
+    if (count <= 0) return;
+    const sk__rings *rg = &w->rings;
+    const double *r = sec->r, *cos_t = sec->cos_t, *sin_t = sec->sin_t, *theta = sec->theta;
+    const double *t = sec->t, *dR = sec->dR, *late = sec->late;
+    double P[B], G[B], phi[B], phi_mod[B];
+    double k_p[B], sb[B], cb[B], sin_p[B], cos_p[B], dir_x[B], dir_z[B];
+    double theta0[B], col0[B], col0_f[B], r0[B];
+    sk__rings_at at0[B];
+    sk_vec3f n = sk_v3f_normalize(normal);
+    /* Round rings (no fluctuation) do not depend on theta: their one column makes theta
+       irrelevant to T and R, and the end-grain point is the point turned back by phi. */
+    bool round = rg->ntheta == 1;
+    bool need_theta0 = !round || w->vessels.ring.on || w->attr.shift > 0.0;
+    double theta_scale = rg->theta_scale;
+
     /* eq. (3): Phi(t, y) and G'(t, y); the terms that depend on y alone are found once per
        run of equal y (a planar cut along the rings has one y per row) */
     sk__phase_y py = {0};
@@ -106,7 +107,10 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
         sk__sincos_reduce(phi_mod[i], &k_p[i], &sb[i], &cb[i]);
     }
     for (int i = 0; i < count; i++) sk__sincos_join(k_p[i], sb[i], cb[i], &sin_p[i], &cos_p[i]);
-    if (round) {
+    /* the end-grain direction (theta0 and its unit vector), where something is looked up
+       there: the vessels, the cells of the brightness shift, or fluctuating rings */
+    bool vessels = w->vessels.ring.on || w->vessels.diffuse.on;
+    if (round && (need_theta0 || vessels)) {
 #pragma omp simd
         for (int i = 0; i < count; i++) {
             dir_x[i] = cos_t[i] * cos_p[i] + sin_t[i] * sin_p[i];
@@ -116,7 +120,7 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
             theta0[i] = need_theta0 ? a : 0.0;
             col0[i] = sk__rings_column_split(theta_scale, theta0[i], &col0_f[i]);
         }
-    } else {
+    } else if (!round) {
 #pragma omp simd
         for (int i = 0; i < count; i++) {
             dir_x[i] = cos_t[i] * cos_p[i] + sin_t[i] * sin_p[i];
@@ -125,31 +129,24 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
             theta0[i] = a - 2.0 * SK_PI * sk__floor_vec(a * (0.5 / SK_PI));
             col0[i] = sk__rings_column_split(theta_scale, theta0[i], &col0_f[i]);
         }
+    } else {
+        for (int i = 0; i < count; i++) theta0[i] = 0.0; /* nothing looks there */
     }
     /* the end-grain point at R(t, theta0) */
-    for (int i = 0; i < count; i++) {
-        at0[i] = sk__rings_at_column(rg, sk__rings_column_wrap(rg, col0[i]), col0_f[i]);
-        r0[i] = round ? r[i] : sk__rings_R_at(rg, &at0[i], t[i]);
+    if (!round || w->vessels.ring.on) {
+        for (int i = 0; i < count; i++) {
+            at0[i] = sk__rings_at_column(rg, sk__rings_column_wrap(rg, col0[i]), col0_f[i]);
+            r0[i] = round ? r[i] : sk__rings_R_at(rg, &at0[i], t[i]);
+        }
+    } else {
+        for (int i = 0; i < count; i++) r0[i] = r[i];
     }
-    /* C'(t, theta0): the ring profile, box-filtered over the footprint's span of t along
-       the surface (the radial direction's part in the surface over the ring width), and
-       the cell's brightness shift (sec. 6.3) */
-    double half_footprint = footprint_mm > 0.0f ? 0.5 * footprint_mm : 0.0;
-    double ntx = nt.x, ntz = nt.z;
-#pragma omp simd
-    for (int i = 0; i < count; i++) {
-        double er_n = cos_t[i] * ntx + sin_t[i] * ntz;
-        double tangential = 1.0 - er_n * er_n;
-        half[i] = half_footprint * sqrt(tangential > 0.0 ? tangential : 0.0) / width[i];
-    }
+    /* the cell's brightness shift of C'(t, theta0) (sec. 6.3) */
     const sk__attributes *attr = &w->attr;
-    double late[B], shift[B], vessel[B];
-    for (int i = 0; i < count; i++) {
-        late[i] = sk__attributes_latewood(attr, t[i], half[i]);
-        shift[i] = sk__attributes_shift(attr, t[i], theta0[i], y[i]);
-    }
+    double shift[B], vessel[B];
+    for (int i = 0; i < count; i++) shift[i] = sk__attributes_shift(attr, t[i], theta0[i], y[i]);
     /* vessels (sec. 5) at the end-grain point */
-    if (w->vessels.ring.on || w->vessels.diffuse.on) {
+    if (vessels) {
         double x0[B], z0[B];
 #pragma omp simd
         for (int i = 0; i < count; i++) {
@@ -206,6 +203,39 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
                                                    n)
                            : 0.0f;
     out->up = sk__wood_surface_up(w, n);
+}
+
+void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[3],
+                         sk_vec3f normal, float footprint_mm, unsigned flags, sk__wood_batch *out)
+{
+    if (count <= 0) return;
+    /* into the tree frame (sk__wood_frame_point_to_tree) */
+    float px[B], pz[B];
+    double y[B];
+    const float *sx = points[0], *sy = points[1], *sz = points[2];
+    if (w->frame.identity) {
+        for (int i = 0; i < count; i++) {
+            px[i] = sx[i];
+            y[i] = sy[i];
+            pz[i] = sz[i];
+        }
+    } else {
+        const sk__wood_frame *f = &w->frame;
+        sk_vec3f o = f->origin, m0 = sk_v3f(f->to_tree.m[0][0], f->to_tree.m[0][1], f->to_tree.m[0][2]);
+        sk_vec3f m1 = sk_v3f(f->to_tree.m[1][0], f->to_tree.m[1][1], f->to_tree.m[1][2]);
+        sk_vec3f m2 = sk_v3f(f->to_tree.m[2][0], f->to_tree.m[2][1], f->to_tree.m[2][2]);
+#pragma omp simd
+        for (int i = 0; i < count; i++) {
+            float dx = sx[i] - o.x, dy = sy[i] - o.y, dz = sz[i] - o.z;
+            px[i] = m0.x * dx + m0.y * dy + m0.z * dz;
+            y[i] = m1.x * dx + m1.y * dy + m1.z * dz;
+            pz[i] = m2.x * dx + m2.y * dy + m2.z * dz;
+        }
+    }
+    double r[B], cos_t[B], sin_t[B], theta[B], t[B], width[B], dR[B], late[B];
+    sk__wood_section sec = {r, cos_t, sin_t, theta, t, width, dR, late};
+    sk__wood_section_eval(w, count, px, pz, normal, footprint_mm, &sec);
+    sk__wood_eval_section_batch(w, count, &sec, y, normal, footprint_mm, flags, out);
 }
 
 void sk_wood_eval_filtered(const sk_wood *w, sk_vec3f point, sk_vec3f normal, float footprint_mm,
