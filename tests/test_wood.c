@@ -919,6 +919,20 @@ static void test_presets_bind_and_build(void **state)
         assert_non_null(strstr(text, "\"source\""));
         if (strncmp(e->d_name, "fig", 3) != 0) species++;
         free(text);
+        /* every vessel a preset can draw lies within the 20-400 um diameters of Kawai 2000
+           sec. 3.2 (radius ~ Normal cut at 3 sd, at least a tenth of the mean) */
+        sk_wood_desc rd = sk_wood_desc_resolved(&desc);
+        const float *sizes[2][2] = {{&rd.vessels.diffuse.radius_mm, &rd.vessels.diffuse.radius_sd_mm},
+                                    {&rd.vessels.ring.radius_mm, &rd.vessels.ring.radius_sd_mm}};
+        bool on[2] = {rd.vessels.diffuse.density_per_mm2 > 0.0f, rd.vessels.ring.linear_density > 0.0f};
+        for (int k = 0; k < 2; k++) {
+            if (!on[k]) continue;
+            double mean = *sizes[k][0], sd = *sizes[k][1];
+            double lo = fmax(mean - 3.0 * sd, 0.1 * mean), hi = mean + 3.0 * sd;
+            if (2.0 * lo < 0.020 - 1e-6 || 2.0 * hi > 0.400 + 1e-6)
+                fail_msg("%s: %s vessels %.0f-%.0f um across, outside 20-400 um", e->d_name,
+                         k ? "ring" : "diffuse", 2000.0 * lo, 2000.0 * hi);
+        }
         desc.log.radius_mm = desc.log.radius_mm > 0.0f ? fminf(desc.log.radius_mm, 40.0f) : 40.0f;
         sk_wood *w = make_wood(&desc);
         sk_wood_sample s;
@@ -928,7 +942,7 @@ static void test_presets_bind_and_build(void **state)
         count++;
     }
     closedir(d);
-    assert_true(count >= 14);  /* Figs. 5a-c, 6a-c, 7, 9 and the species */
+    assert_true(count >= 15);  /* Figs. 5a-c, 6a-c, 7, 9, the ring fluctuation and the species */
     assert_true(species >= 6); /* oak, ash, maple, birch, cherry and a conifer */
 }
 
@@ -939,11 +953,12 @@ static void test_figure_presets_hold_the_paper_values(void **state)
     static const struct {
         const char *name;
         float spiral, amplitude, wavelength, fluctuation, shift, specular;
+        bool ring_fluctuation; /* the figure shows R(t, theta) fluctuating (sec. 4.4) */
     } figs[] = {
-        {"fig5a", 0, 0, 0, 0, 0, 0},       {"fig5b", 0.12f, 0, 0, 0.02f, 0, 0},
-        {"fig5c", 0, 0.2f, 40, 0.02f, 0, 0}, {"fig6b", 0.12f, 0, 0, 0.02f, 0, 0},
-        {"fig6c", 0, 0.2f, 40, 0.02f, 0, 0}, {"fig7", 0, 0.15f, 15, 0, 0.4f, 0},
-        {"fig9", 0, 0.15f, 20, 0, 0, 0.3f},
+        {"fig5a", 0, 0, 0, 0, 0, 0, false},       {"fig5b", 0.12f, 0, 0, 0.02f, 0, 0, false},
+        {"fig5c", 0, 0.2f, 40, 0.02f, 0, 0, false}, {"fig6b", 0.12f, 0, 0, 0.02f, 0, 0, false},
+        {"fig6c", 0, 0.2f, 40, 0.02f, 0, 0, false}, {"fig7", 0, 0.15f, 15, 0, 0.4f, 0, true},
+        {"fig9", 0, 0.15f, 20, 0, 0, 0.3f, false},
     };
     for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++) {
         char path[1024];
@@ -960,6 +975,83 @@ static void test_figure_presets_hold_the_paper_values(void **state)
         assert_true(d.grain.fluctuation == figs[i].fluctuation);
         assert_true(d.fibre.brightness_shift == figs[i].shift);
         assert_true(d.shading.specular == figs[i].specular);
+        assert_true((d.rings.fluctuation > 0.0f) == figs[i].ring_fluctuation);
+        /* the paper adds the brightness shift (sec. 6.3) */
+        assert_true(sk_wood_desc_resolved(&d).fibre.shift_mode == SK_WOOD_SHIFT_ADD);
+    }
+}
+
+/* The ring-fluctuation preset shows R(t, theta) at work: its rings' radii vary by more
+ * than a quarter around the tree yet grow with t at every angle (rings never cross), and
+ * T inverts R there. */
+static void test_ring_fluctuation_preset(void **state)
+{
+    (void)state;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/wood/ring-fluctuation.json", SK_TEST_PRESET_DIR);
+    sk_preset *preset = NULL;
+    assert_int_equal(sk_preset_load_file(&preset, path, NULL), SK_OK);
+    sk_wood_desc d;
+    memset(&d, 0, sizeof d);
+    assert_int_equal(sk_preset_bind(preset, &sk_wood_schema, &d, NULL), SK_OK);
+    sk_preset_free(preset);
+    sk_wood *w = make_wood(&d);
+    const sk__rings *rg = &w->rings;
+    double widest = 0.0;
+    for (int year = 2; year <= 20; year++) {
+        double lo = INFINITY, hi = 0.0;
+        for (int k = 0; k < 360; k++) {
+            double theta = k * SK_PI / 180.0, R = sk__rings_R(rg, year, theta);
+            lo = fmin(lo, R);
+            hi = fmax(hi, R);
+            assert_true(sk__rings_R(rg, year + 0.5, theta) > R);
+            double back = sk__rings_T(rg, R, theta, NULL, NULL);
+            assert_true(fabs(back - year) < 1e-4);
+        }
+        widest = fmax(widest, (hi - lo) / (0.5 * (hi + lo)));
+    }
+    assert_true(widest > 0.25);
+    assert_true(w->vessels.ring.on); /* pores placed through R(t, theta) */
+    sk_wood_destroy(w);
+}
+
+/* The brightness shift is added to the cell's brightness (its sRGB value) as the paper
+ * adds it: centred on the ring's colour, spread over the whole range; the old form
+ * multiplies by 1 - shift u and only darkens. */
+static void test_brightness_shift_modes(void **state)
+{
+    (void)state;
+    for (int mode = SK_WOOD_SHIFT_ADD; mode <= SK_WOOD_SHIFT_MULTIPLY; mode++) {
+        sk_wood_desc d = {0};
+        d.rings.latewood_fraction = 0.02f; /* earlywood almost everywhere */
+        d.fibre.brightness_shift = 0.4f;
+        d.fibre.cell_mm = 0.05f;
+        d.fibre.shift_mode = (sk_wood_shift_mode)mode;
+        sk_wood *w = make_wood(&d);
+        double ew = d.rings.earlywood_srgb[1] ? d.rings.earlywood_srgb[1] : 0.64;
+        double lo = INFINITY, hi = -INFINITY, sum = 0.0;
+        int n = 0;
+        for (int i = 0; i < 4000; i++) {
+            /* end grain, mid-ring (t = k + 0.5): the ring profile is earlywood */
+            double r = 3.0 * (5 + i % 20) + 1.5, theta = i * 0.7;
+            sk_wood_sample s;
+            sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), 0.0f, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+            double v = mode == SK_WOOD_SHIFT_ADD ? sk_srgb_from_linear(s.albedo.y) - ew
+                                                 : s.albedo.y / sk_linear_from_srgb((float)ew);
+            lo = fmin(lo, v);
+            hi = fmax(hi, v);
+            sum += v;
+            n++;
+        }
+        if (mode == SK_WOOD_SHIFT_ADD) {
+            assert_true(lo >= -0.2 - 1e-3 && hi <= 0.2 + 1e-3); /* within 40 % of each other */
+            assert_true(lo < -0.18 && hi > 0.18);              /* and filling that range */
+            assert_true(fabs(sum / n) < 0.01);                 /* centred: the ring keeps its mean */
+        } else {
+            assert_true(lo >= 0.6 - 1e-5 && hi <= 1.0 + 1e-6);
+            assert_true(lo < 0.62);
+        }
+        sk_wood_destroy(w);
     }
 }
 
@@ -1093,6 +1185,8 @@ int main(void)
         cmocka_unit_test(test_defaults),
         cmocka_unit_test(test_presets_bind_and_build),
         cmocka_unit_test(test_figure_presets_hold_the_paper_values),
+        cmocka_unit_test(test_ring_fluctuation_preset),
+        cmocka_unit_test(test_brightness_shift_modes),
         cmocka_unit_test(test_cli_cut_and_region),
         cmocka_unit_test(test_cli_errors),
         cmocka_unit_test(test_cli_sweep_and_sheet),

@@ -105,12 +105,26 @@ typedef struct sk_wood_vessels_desc {
     float color_srgb[3]; /* colour of an open vessel (pore); all 0 = (0.20, 0.13, 0.08) */
 } sk_wood_vessels_desc;
 
-/* Shifting brightness (sec. 6): every cell of the end-grain array C'(t, theta) is darkened
- * by an independent random fraction, then seen through the grain transform as fibre
+/* How the brightness shift of sec. 6 changes a cell. */
+typedef enum sk_wood_shift_mode {
+    SK_WOOD_SHIFT_DEFAULT = 0, /* = ADD */
+    SK_WOOD_SHIFT_ADD,         /* the paper's (sec. 6.3): the cell's brightness (its sRGB-encoded
+                                  value) plus an independent shift uniform in
+                                  [-shift / 2, +shift / 2], clamped to [0, 1] */
+    SK_WOOD_SHIFT_MULTIPLY,    /* the colour times (1 - shift u), u uniform in [0, 1): darkens
+                                  only */
+    SK_WOOD_SHIFT_COUNT
+} sk_wood_shift_mode;
+
+/* Shifting brightness (sec. 6): every cell of the end-grain array C'(t, theta) gets an
+ * independent random brightness shift, then is seen through the grain transform as fibre
  * streaks. Cells follow the rings: rows of cell_mm in t (at the mean ring width), each row
  * cut into cells of about cell_mm around the tree, like the radial files of wood cells. */
 typedef struct sk_wood_fibre_desc {
-    float brightness_shift; /* largest darkening of a cell (Fig. 7: 0.4); default 0; [0, 1] */
+    float brightness_shift; /* the spread of the cells' shifts: added, at most this much
+                               brighter or darker from cell to cell (Fig. 7: 0.4 = 40 %);
+                               default 0; [0, 1] */
+    sk_wood_shift_mode shift_mode; /* preset key "shift_mode": "add" or "multiply" */
     float cell_mm;          /* cell size of the end-grain array; 0 = 0.08; [0.005, 10] */
     float length_mm;        /* length of a fibre: along the fibre the cell's shift is drawn
                                anew every length_mm (ends staggered); default 0 = endless,
@@ -294,9 +308,11 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
  * (end / flat / quarter, distance, height, tilt, width) in the scene frame. */
 void sk_wood_view_cut(const sk_wood *wood, const sk_wood_view_desc *view, sk_wood_cut_desc *cut);
 
-/* Names of the enums as used in presets ("figure", "fibre"; "end", "flat", "quarter"). */
+/* Names of the enums as used in presets ("figure", "fibre"; "end", "flat", "quarter";
+ * "add", "multiply"). */
 extern const char *const sk_wood_shading_model_names[];
 extern const char *const sk_wood_plane_names[];
+extern const char *const sk_wood_shift_mode_names[];
 
 #ifdef __cplusplus
 }

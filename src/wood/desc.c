@@ -43,6 +43,7 @@ sk_wood_desc sk_wood_desc_resolved(const sk_wood_desc *desc)
     default_color(d.vessels.color_srgb, 0.20f, 0.13f, 0.08f);
 
     default_f(&d.fibre.cell_mm, 0.08f);
+    if (d.fibre.shift_mode == SK_WOOD_SHIFT_DEFAULT) d.fibre.shift_mode = SK_WOOD_SHIFT_ADD;
 
     sk_wood_shading_desc *sh = &d.shading;
     if (sh->model == SK_WOOD_SHADING_DEFAULT) sh->model = SK_WOOD_SHADING_FIGURE;
@@ -186,6 +187,7 @@ sk_result sk_wood_desc_validate(const sk_wood_desc *desc_in, sk_error *err)
     CHECK(sk_check_range_f(err, "fibre.brightness_shift", d.fibre.brightness_shift, 0.0, 1.0));
     CHECK(sk_check_range_f(err, "fibre.cell_mm", d.fibre.cell_mm, 0.005, 10.0));
     CHECK(sk_check_range_f(err, "fibre.length_mm", d.fibre.length_mm, 0.0, 10000.0));
+    CHECK(sk_check_range_i(err, "fibre.shift_mode", d.fibre.shift_mode, 0, SK_WOOD_SHIFT_COUNT - 1));
 
     const sk_wood_shading_desc *sh = &d.shading;
     CHECK(sk_check_range_i(err, "shading.model", sh->model, 0, SK_WOOD_SHADING_COUNT - 1));

@@ -141,10 +141,12 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
     } else {
         for (int i = 0; i < count; i++) r0[i] = r[i];
     }
-    /* the cell's brightness shift of C'(t, theta0) (sec. 6.3) */
+    /* the cell of C'(t, theta0) whose brightness shift applies (sec. 6.3) */
     const sk__attributes *attr = &w->attr;
-    double shift[B], vessel[B];
-    for (int i = 0; i < count; i++) shift[i] = sk__attributes_shift(attr, t[i], theta0[i], y[i]);
+    bool shifted = attr->shift > 0.0;
+    double cell[B], vessel[B];
+    if (shifted)
+        for (int i = 0; i < count; i++) cell[i] = sk__attributes_cell(attr, t[i], theta0[i], y[i]);
     /* vessels (sec. 5) at the end-grain point */
     if (vessels) {
         double x0[B], z0[B];
@@ -158,8 +160,8 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
     } else {
         for (int i = 0; i < count; i++) vessel[i] = 0.0;
     }
-    /* the albedo: the ring profile's colour darkened by the cell's shift, and an open
-       vessel's colour over its coverage (a coverage of 0 leaves the colour as it is) */
+    /* the albedo: the ring profile's colour with the cell's shift, and an open vessel's
+       colour over its coverage (a coverage of 0 leaves the colour as it is) */
     float ew[3] = {attr->earlywood.x, attr->earlywood.y, attr->earlywood.z};
     float lw[3] = {attr->latewood.x, attr->latewood.y, attr->latewood.z};
     float vc[3] = {attr->vessel.x, attr->vessel.y, attr->vessel.z};
@@ -167,10 +169,11 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
         float e = ew[c], l = lw[c], vcol = vc[c];
         float *alb = out->albedo[c];
 #pragma omp simd
-        for (int i = 0; i < count; i++) {
-            float a = (e + (l - e) * (float)late[i]) * (float)shift[i];
-            alb[i] = a + (vcol - a) * (float)vessel[i];
-        }
+        for (int i = 0; i < count; i++) alb[i] = e + (l - e) * (float)late[i];
+        if (shifted)
+            for (int i = 0; i < count; i++) alb[i] = sk__attributes_shifted(attr, alb[i], cell[i]);
+#pragma omp simd
+        for (int i = 0; i < count; i++) alb[i] = alb[i] + (vcol - alb[i]) * (float)vessel[i];
     }
 #pragma omp simd
     for (int i = 0; i < count; i++) {

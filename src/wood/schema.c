@@ -8,6 +8,7 @@
 
 const char *const sk_wood_shading_model_names[] = {"default", "figure", "fibre", NULL};
 const char *const sk_wood_plane_names[] = {"default", "end", "flat", "quarter", NULL};
+const char *const sk_wood_shift_mode_names[] = {"default", "add", "multiply", NULL};
 
 #define FLOAT_FIELD(T, member, k, lo, hi, text)                                             \
     {.key = k, .type = SK_FIELD_FLOAT, .offset = offsetof(T, member), .min = lo, .max = hi, \
@@ -132,7 +133,11 @@ static const sk_schema vessels_schema = {"vessels", vessels_fields, COUNT(vessel
 
 static const sk_schema_field fibre_fields[] = {
     FLOAT_FIELD(sk_wood_fibre_desc, brightness_shift, "brightness_shift", 0, 1,
-                "largest darkening of an end-grain cell (Fig. 7: 0.4); default 0"),
+                "spread of the cells' brightness shifts (Fig. 7: 0.4 = 40 %); default 0"),
+    {.key = "shift_mode", .type = SK_FIELD_ENUM, .offset = offsetof(sk_wood_fibre_desc, shift_mode),
+     .names = sk_wood_shift_mode_names,
+     .doc = "\"add\" (the paper: brightness + a shift in [-s/2, s/2]) or \"multiply\" "
+            "(colour x (1 - s u), darker only); default add"},
     FLOAT_FIELD(sk_wood_fibre_desc, cell_mm, "cell_mm", 0, 10,
                 "cell size of the end-grain array (mm); 0 = 0.08; [0.005, 10]"),
     FLOAT_FIELD(sk_wood_fibre_desc, length_mm, "length_mm", 0, 10000,
