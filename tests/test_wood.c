@@ -731,6 +731,20 @@ static void test_cut_equals_eval(void **state)
     w = make_wood(&d);
     check_cut_equals_eval(w, 77, 9, 1);
     sk_wood_destroy(w);
+    /* knots (sound and dead, whorls 25 mm apart) on both kinds of cut */
+    d = busy_desc();
+    d.knots.whorl_spacing_mm = 25.0f;
+    d.knots.per_whorl = 6;
+    d.knots.rise = 0.3f;
+    d.knots.dead_after_years = 8.0f;
+    d.knots.jitter = 0.7f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 77, 9, 1);
+    sk_wood_destroy(w);
+    d.view.tilt = 0.0f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 31, 5, 2);
+    sk_wood_destroy(w);
     /* round rings seen quarter-sawn (the figure of Fig. 9) */
     d = busy_desc();
     d.rings.fluctuation = 0.0f;
@@ -738,6 +752,150 @@ static void test_cut_equals_eval(void **state)
     d.view.plane = SK_WOOD_PLANE_QUARTER;
     w = make_wood(&d);
     check_cut_equals_eval(w, 40, 6, 2);
+    sk_wood_destroy(w);
+}
+
+/* ------------------------------------------------------------------ knots */
+
+/* One branch a whorl, no jitter: the branch of whorl k leaves the pith at height
+ * (k + phase) spacing towards the whorl's rotation. */
+static sk_wood_desc knot_desc(float dead_years)
+{
+    sk_wood_desc d = {0};
+    d.seed = 5;
+    d.log.radius_mm = 100.0f;
+    d.rings.width_mm = 3.0f;
+    d.knots.whorl_spacing_mm = 400.0f;
+    d.knots.per_whorl = 1;
+    d.knots.growth = 0.2f;
+    d.knots.dead_after_years = dead_years;
+    d.knots.stub_mm = 30.0f;
+    return d;
+}
+
+static void knot_axis(const sk_wood *w, double *y0, double *theta)
+{
+    const sk__knots *k = &w->knots;
+    uint64_t h = sk__wood_hash(k->seed, 0, 0, 0);
+    *y0 = k->phase * k->spacing;
+    *theta = 2.0 * SK_PI * (double)((h >> 16) & 0xffffu) / 65536.0;
+}
+
+/* The point at radius r on the branch's side, `across` mm round the tree from its axis
+ * and `up` mm above it. */
+static sk_vec3f knot_point(double y0, double theta, double r, double across, double up)
+{
+    double a = theta + across / r;
+    return sk_v3f((float)(r * cos(a)), (float)(y0 + up), (float)(r * sin(a)));
+}
+
+/* A live branch is a cone from the pith: its wood's half width is growth x r at every r
+ * (the branch's rings grow 0.2 of the stem's a year), its fibres run along the branch,
+ * its end grain is darker by the darkening. */
+static void test_knot_is_a_cone_from_the_pith(void **state)
+{
+    (void)state;
+    sk_wood_desc d = knot_desc(0.0f);
+    sk_wood *w = make_wood(&d);
+    double y0, theta;
+    knot_axis(w, &y0, &theta);
+    sk_vec3f axis = sk_v3f((float)cos(theta), 0.0f, (float)sin(theta)), n = sk_v3f(0, 1, 0);
+    for (int k = 1; k <= 3; k++) {
+        double r = 20.0 * k;
+        sk_wood_sample in, out;
+        sk_wood_eval(w, knot_point(y0, theta, r, 0.0, 0.0), n, &in);
+        assert_true(fabs(sk_v3f_dot(in.fibre, axis)) > 0.999);
+        /* the edge: knot fibres inside, the stem's (up the tree) outside */
+        double lo = 0.0, hi = 0.6 * r;
+        for (int it = 0; it < 40; it++) {
+            double mid = 0.5 * (lo + hi);
+            sk_wood_eval(w, knot_point(y0, theta, r, mid, 0.0), n, &out);
+            if (fabs(sk_v3f_dot(out.fibre, axis)) > 0.5) lo = mid; else hi = mid;
+        }
+        double half_width = lo;
+        if (fabs(half_width / r - 0.2) > 0.01)
+            fail_msg("r = %g: knot half width %.3f mm, want %.3f", r, half_width, 0.2 * r);
+        /* darker: the knot's ring colour times 1 - 0.4 */
+        sk_wood_eval(w, knot_point(y0, theta, r, 3.0 * half_width, 0.0), n, &out);
+        double ew = sk_linear_from_srgb(0.64f), lwc = sk_linear_from_srgb(0.42f);
+        assert_true(in.albedo.y <= 0.6 * fmax(ew, lwc) + 1e-6);
+        assert_true(in.albedo.y >= 0.6 * fmin(ew, lwc) - 1e-6);
+    }
+    sk_wood_destroy(w);
+}
+
+/* The grain's deflection round a knot is a smooth map: no jumps along lines past the
+ * knot, nothing beyond its reach; and the fibre follows the deflected grain (moving
+ * along the fibre keeps the end-grain point the stem is looked up at). */
+static void test_knot_deflection_is_smooth_and_follows_the_fibre(void **state)
+{
+    (void)state;
+    sk_wood_desc d = knot_desc(0.0f);
+    sk_wood *w = make_wood(&d);
+    double y0, theta;
+    knot_axis(w, &y0, &theta);
+    const sk__knots *k = &w->knots;
+    double r = 50.0, t_stem = r / 3.0, a = 0.2 * r; /* the knot's radius there */
+    sk__knot_hit h;
+    for (int line = 0; line < 3; line++) {
+        double across = (0.3 + 0.8 * line) * a; /* through the knot, its edge, its side */
+        double prev = NAN;
+        for (int i = -400; i <= 400; i++) {
+            double up = i * 0.0125 * a; /* +-5 knot radii along the axis */
+            double th = theta + across / r, shift = 0.0;
+            if (sk__knots_hit(k, &w->rings, r, th, y0 + up, t_stem, 0.0, &h)) shift = h.theta_shift;
+            if (fabs(up) > k->reach * a * 1.01) assert_true(shift == 0.0); /* out of reach */
+            if (!isnan(prev) && across > a) assert_true(fabs(shift - prev) * r < 0.08 * a);
+            prev = shift;
+        }
+    }
+    /* along the fibre the lookup stays: theta + shift constant to second order */
+    int checked = 0;
+    for (int i = 0; i < 200; i++) {
+        double across = a * (1.05 + 1.5 * sk_rand_uniform(1, (uint64_t)i, 0, 0)) * (i % 2 ? 1 : -1);
+        double up = a * (3.0 * sk_rand_uniform(2, (uint64_t)i, 0, 0) - 1.5);
+        if (across * across + up * up < 1.1 * a * a) continue;
+        double th = theta + across / r, eps = 1e-3;
+        if (!sk__knots_hit(k, &w->rings, r, th, y0 + up, t_stem, 0.0, &h)) continue;
+        double look = th + h.theta_shift, slope = -h.psi_y / h.psi_u; /* du / dy, G = 0 */
+        sk__knot_hit h2, h3;
+        double straight = 0.0, along;
+        assert_true(sk__knots_hit(k, &w->rings, r, th + slope * eps / r, y0 + up + eps, t_stem, 0.0, &h2));
+        along = fabs(th + slope * eps / r + h2.theta_shift - look);
+        if (sk__knots_hit(k, &w->rings, r, th, y0 + up + eps, t_stem, 0.0, &h3))
+            straight = fabs(th + h3.theta_shift - look);
+        if (straight < 1e-9) continue;
+        if (!(along < 0.02 * straight + 1e-8)) fail_msg("across %g up %g (a %g): along %g straight %g psi_u %g psi_y %g", across, up, a, along, straight, h.psi_u, h.psi_y);
+        checked++;
+    }
+    assert_true(checked > 50);
+    sk_wood_destroy(w);
+}
+
+/* A branch that died after 12 years is a dead knot further out: the radius it had then,
+ * a ring of bark, and nothing past its stub. */
+static void test_dead_knot(void **state)
+{
+    (void)state;
+    sk_wood_desc d = knot_desc(12.0f);
+    sk_wood *w = make_wood(&d);
+    double y0, theta;
+    knot_axis(w, &y0, &theta);
+    sk_vec3f n = sk_v3f(0, 1, 0), axis = sk_v3f((float)cos(theta), 0.0f, (float)sin(theta));
+    double a = 0.2 * 3.0 * 12.0; /* 7.2 mm */
+    sk_vec3f bark = sk_v3f(sk_linear_from_srgb(0.24f), sk_linear_from_srgb(0.15f), sk_linear_from_srgb(0.09f));
+    for (double r = 45.0; r <= 60.0; r += 5.0) { /* past 36 mm, the stem when it died */
+        sk_wood_sample s;
+        sk_wood_eval(w, knot_point(y0, theta, r, 0.5 * a, 0.0), n, &s);
+        assert_true(fabs(sk_v3f_dot(s.fibre, axis)) > 0.999);
+        sk_wood_eval(w, knot_point(y0, theta, r, a - 0.3, 0.0), n, &s); /* in the bark ring */
+        assert_true(fabs(s.albedo.x - bark.x) < 1e-3 && fabs(s.albedo.z - bark.z) < 1e-3);
+        sk_wood_eval(w, knot_point(y0, theta, r, a + 0.3, 0.0), n, &s); /* the stem beside it */
+        assert_true(fabs(sk_v3f_dot(s.fibre, axis)) < 0.5);
+    }
+    sk_wood_sample s;
+    sk_wood_eval(w, knot_point(y0, theta, 36.0 + 30.0 + 2.0, 0.0, 0.0), n, &s); /* overgrown */
+    assert_true(fabs(sk_v3f_dot(s.fibre, axis)) < 0.5);
     sk_wood_destroy(w);
 }
 
@@ -813,6 +971,19 @@ static void test_bad_parameters(void **state)
     d = (sk_wood_desc){0};
     d.grain.wavy_amplitude = 0.2f;
     expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "grain.wavy_wavelength_mm = 0 must be", NULL);
+
+    d = (sk_wood_desc){0};
+    d.knots.whorl_spacing_mm = 5.0f;
+    expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "knots.whorl_spacing_mm = 5 is out of range", "20");
+
+    d = (sk_wood_desc){0};
+    d.knots.whorl_spacing_mm = 300.0f;
+    d.knots.rise = (float)(85.0 * SK_DEG_TO_RAD);
+    expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "knots.rise_deg = 85 is out of range", NULL);
+
+    d = (sk_wood_desc){0};
+    d.fibre.shift_mode = (sk_wood_shift_mode)7;
+    expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "fibre.shift_mode = 7 is out of range", NULL);
 
     d = (sk_wood_desc){0};
     d.grain.interlocked_slope = 0.1f;
@@ -1186,6 +1357,9 @@ int main(void)
         cmocka_unit_test(test_presets_bind_and_build),
         cmocka_unit_test(test_figure_presets_hold_the_paper_values),
         cmocka_unit_test(test_ring_fluctuation_preset),
+        cmocka_unit_test(test_knot_is_a_cone_from_the_pith),
+        cmocka_unit_test(test_knot_deflection_is_smooth_and_follows_the_fibre),
+        cmocka_unit_test(test_dead_knot),
         cmocka_unit_test(test_brightness_shift_modes),
         cmocka_unit_test(test_cli_cut_and_region),
         cmocka_unit_test(test_cli_errors),

@@ -131,6 +131,39 @@ typedef struct sk_wood_fibre_desc {
                                the paper's projection; [0, 10000] */
 } sk_wood_fibre_desc;
 
+/* Knots (beyond Kawai 2000, as Larsson et al. 2022 model them): branches in whorls along
+ * the stem, each a cone from the pith whose own rings grow by `growth` times the stem's
+ * ring width a year. Branch and stem are one growth layer a year (their formation times
+ * merged by a smooth minimum): while the branch lives it is a sound knot with the rings
+ * curving into it. After `dead_after_years` it stops growing: further out it is a dead
+ * knot of constant size in a ring of bark, the stem's later rings wrapping round it, for
+ * `stub_mm`, then overgrown. The stem's fibres flow round every knot (a smooth deflection
+ * of the grain, like a stream round a post), and the knot's own end grain is darker. */
+typedef struct sk_wood_knots_desc {
+    float whorl_spacing_mm; /* distance between whorls along the axis; default 0 = no knots;
+                               [20, 100000] */
+    int per_whorl;          /* branches per whorl; 0 = 4; [1, 12] */
+    float rise;             /* a branch's angle above the horizontal, radians (key
+                               "rise_deg"); default 0; [-10, 80] degrees */
+    float growth;           /* a branch's ring width over the stem's (the cone's slope);
+                               0 = 0.12; [0.01, 1] */
+    float dead_after_years; /* years the branch lives; default 0 = alive throughout;
+                               [0, 1000] */
+    float stub_mm;          /* how far the dead branch reaches out of the stem before it is
+                               overgrown; 0 = 40; [0.1, 1000] */
+    float jitter;           /* randomness of whorl heights, branch azimuths, angles and
+                               sizes; default 0; [0, 1] */
+    float darkening;        /* the knot's wood (end grain) darker by this fraction; 0 = 0.4;
+                               [0, 1] */
+    float bark_mm;          /* width of the bark ring round a dead knot; 0 = 0.8; [0.01, 20] */
+    float bark_srgb[3];     /* its colour; all 0 = (0.24, 0.15, 0.09) */
+    float collar;           /* width of the smooth union of branch and stem rings (how far
+                               the rings curve round a knot), a fraction of the knot's age;
+                               0 = 0.5; [0.01, 2] */
+    float deflection_reach; /* how far the grain bends round a knot, in knot radii; 0 = 3;
+                               [1.1, 20] */
+} sk_wood_knots_desc;
+
 typedef enum sk_wood_shading_model {
     SK_WOOD_SHADING_DEFAULT = 0, /* = FIGURE */
     SK_WOOD_SHADING_FIGURE,      /* eq. (4): kd cos(delta) + ks cos^n(delta - alpha) */
@@ -192,6 +225,7 @@ typedef struct sk_wood_desc {
     sk_wood_grain_desc grain;
     sk_wood_vessels_desc vessels;
     sk_wood_fibre_desc fibre;
+    sk_wood_knots_desc knots;
     sk_wood_shading_desc shading;
     sk_wood_view_desc view;
 } sk_wood_desc;

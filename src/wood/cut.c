@@ -179,8 +179,9 @@ static void render_span(const cut_context *c, int yy, int x0, int pixels)
             }
             size_t k = (size_t)x0 * (size_t)c->S;
             const sk__wood_section *cs = c->columns;
-            sk__wood_section sec = {cs->r + k,     cs->cos_t + k, cs->sin_t + k, cs->theta + k,
-                                    cs->t + k,     cs->width + k, cs->dR + k,    cs->late + k};
+            sk__wood_section sec = {cs->r + k,     cs->cos_t + k, cs->sin_t + k,
+                                    cs->theta + k, cs->t + k,     cs->width + k,
+                                    cs->dR + k,    cs->half + k,  cs->late + k};
             sk__wood_eval_section_batch(wood, count, &sec, y, n, c->footprint, c->flags, &b);
         } else {
 #pragma omp simd
@@ -325,11 +326,12 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
     double *column_store = NULL;
     if (wood->frame.identity && up.x == 0.0f && up.z == 0.0f && a.y == 0.0f) {
         size_t count = (size_t)rw * (size_t)S;
-        column_store = malloc(8 * count * sizeof(double));
+        column_store = malloc(SK__WOOD_SECTION_FIELDS * count * sizeof(double));
         if (column_store) {
-            double **fields[8] = {&columns.r, &columns.cos_t, &columns.sin_t, &columns.theta,
-                                  &columns.t, &columns.width, &columns.dR,    &columns.late};
-            for (int f = 0; f < 8; f++) *fields[f] = column_store + (size_t)f * count;
+            double **fields[SK__WOOD_SECTION_FIELDS] = {
+                &columns.r, &columns.cos_t, &columns.sin_t, &columns.theta, &columns.t,
+                &columns.width, &columns.dR, &columns.half, &columns.late};
+            for (int f = 0; f < SK__WOOD_SECTION_FIELDS; f++) *fields[f] = column_store + (size_t)f * count;
             c.columns = &columns;
             int blocks = (int)((count + SK__WOOD_BATCH - 1) / SK__WOOD_BATCH);
 #pragma omp parallel for schedule(static) if (sk__parallel_worth(count, 60.0))
@@ -347,7 +349,7 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
                 }
                 sk__wood_section part = {columns.r + k0,     columns.cos_t + k0, columns.sin_t + k0,
                                          columns.theta + k0, columns.t + k0,     columns.width + k0,
-                                         columns.dR + k0,    columns.late + k0};
+                                         columns.dR + k0,    columns.half + k0,  columns.late + k0};
                 sk__wood_section_eval(wood, m, px, pz, n, c.footprint, &part);
             }
         }

@@ -45,6 +45,16 @@ sk_wood_desc sk_wood_desc_resolved(const sk_wood_desc *desc)
     default_f(&d.fibre.cell_mm, 0.08f);
     if (d.fibre.shift_mode == SK_WOOD_SHIFT_DEFAULT) d.fibre.shift_mode = SK_WOOD_SHIFT_ADD;
 
+    sk_wood_knots_desc *k = &d.knots;
+    if (k->per_whorl == 0) k->per_whorl = 4;
+    default_f(&k->growth, 0.12f);
+    default_f(&k->stub_mm, 40.0f);
+    default_f(&k->darkening, 0.4f);
+    default_f(&k->bark_mm, 0.8f);
+    default_color(k->bark_srgb, 0.24f, 0.15f, 0.09f);
+    default_f(&k->collar, 0.5f);
+    default_f(&k->deflection_reach, 3.0f);
+
     sk_wood_shading_desc *sh = &d.shading;
     if (sh->model == SK_WOOD_SHADING_DEFAULT) sh->model = SK_WOOD_SHADING_FIGURE;
     default_f(&sh->diffuse, 1.0f - sh->specular);
@@ -188,6 +198,21 @@ sk_result sk_wood_desc_validate(const sk_wood_desc *desc_in, sk_error *err)
     CHECK(sk_check_range_f(err, "fibre.cell_mm", d.fibre.cell_mm, 0.005, 10.0));
     CHECK(sk_check_range_f(err, "fibre.length_mm", d.fibre.length_mm, 0.0, 10000.0));
     CHECK(sk_check_range_i(err, "fibre.shift_mode", d.fibre.shift_mode, 0, SK_WOOD_SHIFT_COUNT - 1));
+
+    const sk_wood_knots_desc *k = &d.knots;
+    if (k->whorl_spacing_mm != 0.0f)
+        CHECK(sk_check_range_f(err, "knots.whorl_spacing_mm", k->whorl_spacing_mm, 20.0, 100000.0));
+    CHECK(sk_check_range_i(err, "knots.per_whorl", k->per_whorl, 1, 12));
+    CHECK(check_deg(err, "knots.rise_deg", k->rise, -10.0, 80.0));
+    CHECK(sk_check_range_f(err, "knots.growth", k->growth, 0.01, 1.0));
+    CHECK(sk_check_range_f(err, "knots.dead_after_years", k->dead_after_years, 0.0, 1000.0));
+    CHECK(sk_check_range_f(err, "knots.stub_mm", k->stub_mm, 0.1, 1000.0));
+    CHECK(sk_check_range_f(err, "knots.jitter", k->jitter, 0.0, 1.0));
+    CHECK(sk_check_range_f(err, "knots.darkening", k->darkening, 0.0, 1.0));
+    CHECK(sk_check_range_f(err, "knots.bark_mm", k->bark_mm, 0.01, 20.0));
+    CHECK(check_color(err, "knots.bark_srgb", k->bark_srgb));
+    CHECK(sk_check_range_f(err, "knots.collar", k->collar, 0.01, 2.0));
+    CHECK(sk_check_range_f(err, "knots.deflection_reach", k->deflection_reach, 1.1, 20.0));
 
     const sk_wood_shading_desc *sh = &d.shading;
     CHECK(sk_check_range_i(err, "shading.model", sh->model, 0, SK_WOOD_SHADING_COUNT - 1));

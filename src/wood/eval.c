@@ -41,7 +41,7 @@ void sk__wood_section_eval(const sk_wood *w, int count, const float *x, const fl
     const sk__rings *rg = &w->rings;
     double col[B], col_f[B];
     double *r = out->r, *cos_t = out->cos_t, *sin_t = out->sin_t, *theta = out->theta;
-    double *t = out->t, *width = out->width, *dR = out->dR, *late = out->late;
+    double *t = out->t, *width = out->width, *dR = out->dR, *half = out->half, *late = out->late;
     double theta_scale = rg->theta_scale;
 #pragma omp simd
     for (int i = 0; i < count; i++) {
@@ -62,7 +62,7 @@ void sk__wood_section_eval(const sk_wood *w, int count, const float *x, const fl
        width); it depends on t alone */
     sk_vec3f nt = sk__wood_frame_dir_to_tree(&w->frame, sk_v3f_normalize(normal));
     double half_footprint = footprint_mm > 0.0f ? 0.5 * footprint_mm : 0.0;
-    double ntx = nt.x, ntz = nt.z, half[B];
+    double ntx = nt.x, ntz = nt.z;
 #pragma omp simd
     for (int i = 0; i < count; i++) {
         double er_n = cos_t[i] * ntx + sin_t[i] * ntz;
@@ -78,8 +78,41 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
 {
     if (count <= 0) return;
     const sk__rings *rg = &w->rings;
+    const sk__attributes *attr = &w->attr;
     const double *r = sec->r, *cos_t = sec->cos_t, *sin_t = sec->sin_t, *theta = sec->theta;
     const double *t = sec->t, *dR = sec->dR, *late = sec->late;
+    /* knots: near one, the stem is looked up where its deflected fibre comes from and its
+       rings merge with a live branch's (knots.c) */
+    int hit_of[B], hits = 0;
+    sk__knot_hit hit[B];
+    double t_k[B], theta_k[B], cos_k[B], sin_k[B], late_k[B];
+    if (w->knots.on) {
+        for (int i = 0; i < count; i++) {
+            hit_of[i] = -1;
+            t_k[i] = t[i];
+            theta_k[i] = theta[i];
+            cos_k[i] = cos_t[i];
+            sin_k[i] = sin_t[i];
+            late_k[i] = late[i];
+            sk__knot_hit *h = &hit[hits];
+            if (!sk__knots_hit(&w->knots, rg, r[i], theta[i], y[i], t[i], footprint_mm, h)) continue;
+            hit_of[i] = hits++;
+            double s, c;
+            sk__sincos(h->theta_shift, &s, &c);
+            theta_k[i] = theta[i] + h->theta_shift;
+            cos_k[i] = cos_t[i] * c - sin_t[i] * s;
+            sin_k[i] = sin_t[i] * c + cos_t[i] * s;
+            t_k[i] = h->t;
+            late_k[i] = sk__attributes_latewood(attr, h->t, sec->half[i]);
+        }
+        if (hits > 0) {
+            t = t_k;
+            theta = theta_k;
+            cos_t = cos_k;
+            sin_t = sin_k;
+            late = late_k;
+        }
+    }
     double P[B], G[B], phi[B], phi_mod[B];
     double k_p[B], sb[B], cb[B], sin_p[B], cos_p[B], dir_x[B], dir_z[B];
     double theta0[B], col0[B], col0_f[B], r0[B];
@@ -98,6 +131,13 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
         if (i == 0 || !same_bits(y[i], y[i - 1])) py = sk__phase_at_y(&w->grain, y[i]);
         P[i] = sk__phase_eval_y(&w->grain, &py, t[i], y[i], &G[i]);
     }
+    /* the fibre's slope through the deflection map: G' = (G - psi_y) / psi_u */
+    for (int i = 0; hits > 0 && i < count; i++)
+        if (hit_of[i] >= 0) {
+            const sk__knot_hit *h = &hit[hit_of[i]];
+            double g = (G[i] - h->psi_y) / (h->psi_u > 0.02 ? h->psi_u : 0.02);
+            G[i] = g > 50.0 ? 50.0 : (g < -50.0 ? -50.0 : g);
+        }
     /* phi = Phi / R(t, theta) = Phi / r; the fibre through (r, theta, y) left the end grain
        at theta0 = theta - phi */
 #pragma omp simd
@@ -142,7 +182,6 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
         for (int i = 0; i < count; i++) r0[i] = r[i];
     }
     /* the cell of C'(t, theta0) whose brightness shift applies (sec. 6.3) */
-    const sk__attributes *attr = &w->attr;
     bool shifted = attr->shift > 0.0;
     double cell[B], vessel[B];
     if (shifted)
@@ -160,6 +199,9 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
     } else {
         for (int i = 0; i < count; i++) vessel[i] = 0.0;
     }
+    /* a knot's wood has no stem pores */
+    for (int i = 0; hits > 0 && i < count; i++)
+        if (hit_of[i] >= 0) vessel[i] *= 1.0 - hit[hit_of[i]].knot;
     /* the albedo: the ring profile's colour with the cell's shift, and an open vessel's
        colour over its coverage (a coverage of 0 leaves the colour as it is) */
     float ew[3] = {attr->earlywood.x, attr->earlywood.y, attr->earlywood.z};
@@ -175,6 +217,18 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
 #pragma omp simd
         for (int i = 0; i < count; i++) alb[i] = alb[i] + (vcol - alb[i]) * (float)vessel[i];
     }
+    /* the knot's own wood: its rings, darker (end grain), in bark where it died */
+    for (int i = 0; hits > 0 && i < count; i++) {
+        if (hit_of[i] < 0) continue;
+        const sk__knot_hit *h = &hit[hit_of[i]];
+        double lk = sk__attributes_latewood(attr, h->t_knot, h->half_knot);
+        float dark = (float)(1.0 - w->knots.darkening), m = (float)h->knot, bk = (float)h->bark;
+        for (int c = 0; c < 3; c++) {
+            float kc = (ew[c] + (lw[c] - ew[c]) * (float)lk) * dark;
+            kc = kc + ((&w->knots.bark_color.x)[c] - kc) * bk;
+            out->albedo[c][i] = out->albedo[c][i] + (kc - out->albedo[c][i]) * m;
+        }
+    }
 #pragma omp simd
     for (int i = 0; i < count; i++) {
         out->latewood[i] = (float)late[i];
@@ -189,6 +243,21 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
         out->fibre[2][i] = (float)f.z;
         out->t[i] = (float)t[i];
         out->phase[i] = (float)phi[i];
+    }
+    /* in a knot, the branch's fibres */
+    for (int i = 0; hits > 0 && i < count; i++) {
+        if (hit_of[i] < 0) continue;
+        const sk__knot_hit *h = &hit[hit_of[i]];
+        double m = h->knot;
+        sk_vec3d f = sk_v3d((1.0 - m) * out->fibre[0][i] + m * h->axis.x,
+                            (1.0 - m) * out->fibre[1][i] + m * h->axis.y,
+                            (1.0 - m) * out->fibre[2][i] + m * h->axis.z);
+        double len = sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
+        if (len > 1e-9) {
+            out->fibre[0][i] = (float)(f.x / len);
+            out->fibre[1][i] = (float)(f.y / len);
+            out->fibre[2][i] = (float)(f.z / len);
+        }
     }
     if (!w->frame.identity)
         for (int i = 0; i < count; i++) {
@@ -235,8 +304,8 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
             pz[i] = m2.x * dx + m2.y * dy + m2.z * dz;
         }
     }
-    double r[B], cos_t[B], sin_t[B], theta[B], t[B], width[B], dR[B], late[B];
-    sk__wood_section sec = {r, cos_t, sin_t, theta, t, width, dR, late};
+    double r[B], cos_t[B], sin_t[B], theta[B], t[B], width[B], dR[B], half[B], late[B];
+    sk__wood_section sec = {r, cos_t, sin_t, theta, t, width, dR, half, late};
     sk__wood_section_eval(w, count, px, pz, normal, footprint_mm, &sec);
     sk__wood_eval_section_batch(w, count, &sec, y, normal, footprint_mm, flags, out);
 }

@@ -146,6 +146,34 @@ static const sk_schema_field fibre_fields[] = {
 };
 static const sk_schema fibre_schema = {"fibre", fibre_fields, COUNT(fibre_fields)};
 
+static const sk_schema_field knots_fields[] = {
+    FLOAT_FIELD(sk_wood_knots_desc, whorl_spacing_mm, "whorl_spacing_mm", 0, 100000,
+                "distance between whorls of branches along the axis (mm); default 0 (no knots)"),
+    {.key = "per_whorl", .type = SK_FIELD_INT, .offset = offsetof(sk_wood_knots_desc, per_whorl),
+     .min = 0, .max = 12, .doc = "branches per whorl; 0 = 4; [1, 12]"},
+    DEG_FIELD(sk_wood_knots_desc, rise, "rise_deg", -10, 80,
+              "a branch's angle above the horizontal (degrees); default 0"),
+    FLOAT_FIELD(sk_wood_knots_desc, growth, "growth", 0, 1,
+                "a branch's ring width over the stem's (the knot cone's slope); 0 = 0.12"),
+    FLOAT_FIELD(sk_wood_knots_desc, dead_after_years, "dead_after_years", 0, 1000,
+                "years a branch lives (then a dead knot in bark); default 0 (alive)"),
+    FLOAT_FIELD(sk_wood_knots_desc, stub_mm, "stub_mm", 0, 1000,
+                "how far a dead branch reaches before it is overgrown (mm); 0 = 40"),
+    FLOAT_FIELD(sk_wood_knots_desc, jitter, "jitter", 0, 1,
+                "randomness of whorl heights, azimuths, angles and sizes; default 0"),
+    FLOAT_FIELD(sk_wood_knots_desc, darkening, "darkening", 0, 1,
+                "the knot's end grain darker by this fraction; 0 = 0.4"),
+    FLOAT_FIELD(sk_wood_knots_desc, bark_mm, "bark_mm", 0, 20,
+                "bark ring round a dead knot (mm); 0 = 0.8"),
+    FLOATS_FIELD(sk_wood_knots_desc, bark_srgb, "bark_srgb", 3, 0, 1,
+                 "its colour (sRGB 0-1); default [0.24, 0.15, 0.09]"),
+    FLOAT_FIELD(sk_wood_knots_desc, collar, "collar", 0, 2,
+                "how far the rings curve round a knot, a fraction of its age; 0 = 0.5"),
+    FLOAT_FIELD(sk_wood_knots_desc, deflection_reach, "deflection_reach", 0, 20,
+                "how far the grain bends round a knot (knot radii); 0 = 3; [1.1, 20]"),
+};
+static const sk_schema knots_schema = {"knots", knots_fields, COUNT(knots_fields)};
+
 static const sk_schema_field shading_fields[] = {
     {.key = "model", .type = SK_FIELD_ENUM, .offset = offsetof(sk_wood_shading_desc, model),
      .names = sk_wood_shading_model_names,
@@ -199,6 +227,8 @@ static const sk_schema_field wood_fields[] = {
     OBJECT_FIELD(sk_wood_desc, grain, "grain", grain_schema, "grain G'(t, y) (eq. 1)"),
     OBJECT_FIELD(sk_wood_desc, vessels, "vessels", vessels_schema, "vessels (sec. 5)"),
     OBJECT_FIELD(sk_wood_desc, fibre, "fibre", fibre_schema, "shifting brightness (sec. 6)"),
+    OBJECT_FIELD(sk_wood_desc, knots, "knots", knots_schema,
+                 "knots: branches as cones from the pith (beyond the paper)"),
     OBJECT_FIELD(sk_wood_desc, shading, "shading", shading_schema, "reflection (sec. 7)"),
     OBJECT_FIELD(sk_wood_desc, view, "view", view_schema, "default planar cut and light"),
 };

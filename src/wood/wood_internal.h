@@ -7,6 +7,7 @@
 #include "wood/batch.h"
 #include "wood/frame.h"
 #include "wood/grain.h"
+#include "wood/knots.h"
 #include "wood/rings.h"
 #include "wood/shade.h"
 #include "wood/vessels.h"
@@ -18,6 +19,7 @@ struct sk_wood {
     sk__grain grain;
     sk__vessels vessels;
     sk__attributes attr;
+    sk__knots knots;
     sk__shading shading;
     sk_vec3f axis;     /* the tree's +y in the scene */
     sk_wood_stats stats;
@@ -31,10 +33,12 @@ void sk__wood_eval_batch(const sk_wood *wood, int count, const float *const poin
 
 /* What a point's place on the cross-section (tree-frame x and z) alone determines, one
  * array entry per point: radius, angle, T(r, theta) with its ring width and dR/dtheta,
- * and the ring profile's latewood weight (box-filtered over the footprint). */
+ * the footprint's half width in years and the ring profile's latewood weight
+ * (box-filtered over it). */
 typedef struct sk__wood_section {
-    double *r, *cos_t, *sin_t, *theta, *t, *width, *dR, *late;
+    double *r, *cos_t, *sin_t, *theta, *t, *width, *dR, *half, *late;
 } sk__wood_section;
+#define SK__WOOD_SECTION_FIELDS 9
 
 /* The first stage, for `count` <= SK__WOOD_BATCH tree-frame points (x, z) seen with the
  * scene normal `normal`. */
