@@ -731,8 +731,12 @@ static void test_cut_equals_eval(void **state)
     w = make_wood(&d);
     check_cut_equals_eval(w, 77, 9, 1);
     sk_wood_destroy(w);
-    /* knots (sound and dead, whorls 25 mm apart) on both kinds of cut */
+    /* knots (sound and dead, whorls 25 mm apart) and broad rays on both kinds of cut */
     d = busy_desc();
+    d.rays.spacing_mm = 1.0f;
+    d.rays.width_mm = 0.3f;
+    d.rays.height_mm = 4.0f;
+    d.rays.jitter = 0.8f;
     d.knots.whorl_spacing_mm = 25.0f;
     d.knots.per_whorl = 6;
     d.knots.rise = 0.3f;
@@ -896,6 +900,54 @@ static void test_dead_knot(void **state)
     sk_wood_sample s;
     sk_wood_eval(w, knot_point(y0, theta, 36.0 + 30.0 + 2.0, 0.0, 0.0), n, &s); /* overgrown */
     assert_true(fabs(sk_v3f_dot(s.fibre, axis)) < 0.5);
+    sk_wood_destroy(w);
+}
+
+/* ------------------------------------------------------------------ rays */
+
+/* How radial the fibre is at an end-grain point: 1 inside a ray, whose cells run out from
+ * the pith. */
+static double radial_part(const sk_wood *w, double r, double theta, double y)
+{
+    sk_wood_sample s;
+    sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), (float)y, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+    return fabs(s.fibre.x * cos(theta) + s.fibre.z * sin(theta));
+}
+
+/* Broad rays are radial ribbons: a point in one stays in it a couple of millimetres
+ * further out, leaves it a width away round the tree, and holds no pores; they cover a
+ * fair share of the wood. */
+static void test_rays_are_radial_ribbons(void **state)
+{
+    (void)state;
+    sk_wood_desc d = {0};
+    d.seed = 3;
+    d.log.radius_mm = 100.0f;
+    d.rings.width_mm = 4.0f;
+    d.vessels.diffuse.density_per_mm2 = 20.0f;
+    d.vessels.diffuse.radius_mm = 0.05f;
+    d.rays.spacing_mm = 1.5f;
+    d.rays.width_mm = 0.45f;
+    d.rays.height_mm = 15.0f;
+    d.rays.length_mm = 40.0f;
+    sk_wood *w = make_wood(&d);
+    int in = 0, stays = 0, leaves = 0, total = 4000;
+    for (int i = 0; i < total; i++) {
+        double r = 30.0 + 40.0 * sk_rand_uniform(7, (uint64_t)i, 0, 0);
+        double theta = 2.0 * SK_PI * sk_rand_uniform(7, (uint64_t)i, 1, 0);
+        double y = 50.0 * sk_rand_uniform(7, (uint64_t)i, 2, 0);
+        if (radial_part(w, r, theta, y) < 0.99) continue;
+        in++;
+        sk_wood_sample s;
+        sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), (float)y, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+        assert_true(s.vessel == 0.0f);
+        stays += radial_part(w, r + 2.0, theta, y) > 0.99;
+        leaves += radial_part(w, r, theta + 1.0 / r, y) < 0.5; /* 1 mm round the tree */
+    }
+    /* the lenses fill about a tenth of the wood (two sets of one per 3 mm x 24 mm) */
+    assert_true(in > total / 40 && in < total / 4);
+    assert_true(stays > 0.8 * in);
+    assert_true(leaves > 0.9 * in);
     sk_wood_destroy(w);
 }
 
@@ -1255,12 +1307,17 @@ static void test_cli_cut_and_region(void **state)
     int bits = 0;
     assert_int_equal(sk_image_read_png(&a, path, &linear, NULL, &bits, NULL), SK_OK);
     assert_int_equal(bits, 16);
+    int up = 0;
     for (int i = 0; i < a.width * a.height; i++) {
         const float *f = a.data + 3 * i;
         double x = 2 * f[0] - 1, y = 2 * f[1] - 1, z = 2 * f[2] - 1;
         assert_true(fabs(sqrt(x * x + y * y + z * z) - 1.0) < 1e-3);
-        assert_true(y > 0.9); /* a flat-sawn face: fibres run up the image */
+        /* a flat-sawn face: fibres run up the image, but for the broad rays' cells, which
+           run out of it (towards the bark, towards the viewer) */
+        assert_true(y > -1e-3 && z > -0.2);
+        up += y > 0.9;
     }
+    assert_true(up > a.width * a.height * 3 / 4);
     sk_image_free(&a);
     snprintf(path, sizeof path, "%s/albedo.png", maps);
     assert_true(sk_test_file_exists(path));
@@ -1360,6 +1417,7 @@ int main(void)
         cmocka_unit_test(test_knot_is_a_cone_from_the_pith),
         cmocka_unit_test(test_knot_deflection_is_smooth_and_follows_the_fibre),
         cmocka_unit_test(test_dead_knot),
+        cmocka_unit_test(test_rays_are_radial_ribbons),
         cmocka_unit_test(test_brightness_shift_modes),
         cmocka_unit_test(test_cli_cut_and_region),
         cmocka_unit_test(test_cli_errors),

@@ -105,6 +105,22 @@ typedef struct sk_wood_vessels_desc {
     float color_srgb[3]; /* colour of an open vessel (pore); all 0 = (0.20, 0.13, 0.08) */
 } sk_wood_vessels_desc;
 
+/* Broad rays (medullary rays; beyond Kawai 2000, who names the radial tissues in sec. 3.2
+ * and as future work in sec. 8): ribbons of ray tissue running out from the pith, thin
+ * around the tree (`width_mm`), tall along it (`height_mm`), `length_mm` long radially,
+ * one every `spacing_mm` round a ring, placed on the end grain and carried by the grain
+ * transform like everything else. Their cells run radially, so a quarter-sawn face (a
+ * ray's own plane) shows them as broad shiny flecks (the silver figure of oak) and a
+ * flat-sawn face as short lines. */
+typedef struct sk_wood_rays_desc {
+    float spacing_mm;   /* distance between rays round a ring; default 0 = none; [0.2, 100] */
+    float width_mm;     /* width round the tree at a ray's middle; 0 = 0.4; [0.01, 5] */
+    float height_mm;    /* height along the fibre; 0 = 20; [0.1, 1000] */
+    float length_mm;    /* length out from the pith; 0 = 50; [1, 5000] */
+    float jitter;       /* randomness of places and sizes; default 0; [0, 1] */
+    float color_srgb[3]; /* colour of the ray tissue; all 0 = (0.86, 0.76, 0.60) */
+} sk_wood_rays_desc;
+
 /* How the brightness shift of sec. 6 changes a cell. */
 typedef enum sk_wood_shift_mode {
     SK_WOOD_SHIFT_DEFAULT = 0, /* = ADD */
@@ -224,6 +240,7 @@ typedef struct sk_wood_desc {
     sk_wood_rings_desc rings;
     sk_wood_grain_desc grain;
     sk_wood_vessels_desc vessels;
+    sk_wood_rays_desc rays;
     sk_wood_fibre_desc fibre;
     sk_wood_knots_desc knots;
     sk_wood_shading_desc shading;

@@ -121,7 +121,7 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
     /* Round rings (no fluctuation) do not depend on theta: their one column makes theta
        irrelevant to T and R, and the end-grain point is the point turned back by phi. */
     bool round = rg->ntheta == 1;
-    bool need_theta0 = !round || w->vessels.ring.on || w->attr.shift > 0.0;
+    bool need_theta0 = !round || w->vessels.ring.on || w->attr.shift > 0.0 || w->rays.on;
     double theta_scale = rg->theta_scale;
 
     /* eq. (3): Phi(t, y) and G'(t, y); the terms that depend on y alone are found once per
@@ -199,9 +199,28 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
     } else {
         for (int i = 0; i < count; i++) vessel[i] = 0.0;
     }
-    /* a knot's wood has no stem pores */
+    /* broad rays at the end-grain point (they hold no pores), and none in a knot */
+    double ray[B];
+    bool rays = w->rays.on;
+    if (rays) {
+        sk_vec3f nt = sk__wood_frame_dir_to_tree(&w->frame, n);
+        double fw = footprint_mm;
+        for (int i = 0; i < count; i++) {
+            /* the footprint along the ray's directions that lie in the surface */
+            double er = cos_t[i] * nt.x + sin_t[i] * nt.z, et = -sin_t[i] * nt.x + cos_t[i] * nt.z;
+            double in_r = 1.0 - er * er, in_t = 1.0 - et * et, in_y = 1.0 - (double)nt.y * nt.y;
+            ray[i] = sk__rays_coverage(&w->rays, rg, t[i], theta0[i], r0[i], y[i],
+                                       fw * sqrt(in_t > 0.0 ? in_t : 0.0), fw * sqrt(in_y > 0.0 ? in_y : 0.0),
+                                       fw * sqrt(in_r > 0.0 ? in_r : 0.0));
+            vessel[i] *= 1.0 - ray[i];
+        }
+    }
+    /* a knot's wood has neither stem pores nor rays */
     for (int i = 0; hits > 0 && i < count; i++)
-        if (hit_of[i] >= 0) vessel[i] *= 1.0 - hit[hit_of[i]].knot;
+        if (hit_of[i] >= 0) {
+            vessel[i] *= 1.0 - hit[hit_of[i]].knot;
+            if (rays) ray[i] *= 1.0 - hit[hit_of[i]].knot;
+        }
     /* the albedo: the ring profile's colour with the cell's shift, and an open vessel's
        colour over its coverage (a coverage of 0 leaves the colour as it is) */
     float ew[3] = {attr->earlywood.x, attr->earlywood.y, attr->earlywood.z};
@@ -212,6 +231,10 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
         float *alb = out->albedo[c];
 #pragma omp simd
         for (int i = 0; i < count; i++) alb[i] = e + (l - e) * (float)late[i];
+        if (rays) { /* the ray tissue in place of the ring's, shifted like the cells round it */
+            float rc = (&w->rays.color.x)[c];
+            for (int i = 0; i < count; i++) alb[i] = alb[i] + (rc - alb[i]) * (float)ray[i];
+        }
         if (shifted)
             for (int i = 0; i < count; i++) alb[i] = sk__attributes_shifted(attr, alb[i], cell[i]);
 #pragma omp simd
@@ -243,6 +266,20 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
         out->fibre[2][i] = (float)f.z;
         out->t[i] = (float)t[i];
         out->phase[i] = (float)phi[i];
+    }
+    /* in a ray, its cells' radial direction (the silver figure's sheen on quarter-sawn
+       faces, which lie in a ray's plane) */
+    for (int i = 0; rays && i < count; i++) {
+        double m = ray[i];
+        if (m <= 0.0) continue;
+        sk_vec3d f = sk_v3d((1.0 - m) * out->fibre[0][i] + m * cos_t[i], (1.0 - m) * out->fibre[1][i],
+                            (1.0 - m) * out->fibre[2][i] + m * sin_t[i]);
+        double len = sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
+        if (len > 1e-9) {
+            out->fibre[0][i] = (float)(f.x / len);
+            out->fibre[1][i] = (float)(f.y / len);
+            out->fibre[2][i] = (float)(f.z / len);
+        }
     }
     /* in a knot, the branch's fibres */
     for (int i = 0; hits > 0 && i < count; i++) {

@@ -146,6 +146,22 @@ static const sk_schema_field fibre_fields[] = {
 };
 static const sk_schema fibre_schema = {"fibre", fibre_fields, COUNT(fibre_fields)};
 
+static const sk_schema_field rays_fields[] = {
+    FLOAT_FIELD(sk_wood_rays_desc, spacing_mm, "spacing_mm", 0, 100,
+                "distance between broad rays round a ring (mm); default 0 (none)"),
+    FLOAT_FIELD(sk_wood_rays_desc, width_mm, "width_mm", 0, 5,
+                "a ray's width round the tree (mm); 0 = 0.4"),
+    FLOAT_FIELD(sk_wood_rays_desc, height_mm, "height_mm", 0, 1000,
+                "a ray's height along the fibre (mm); 0 = 20"),
+    FLOAT_FIELD(sk_wood_rays_desc, length_mm, "length_mm", 0, 5000,
+                "a ray's length out from the pith (mm); 0 = 50"),
+    FLOAT_FIELD(sk_wood_rays_desc, jitter, "jitter", 0, 1,
+                "randomness of the rays' places and sizes; default 0"),
+    FLOATS_FIELD(sk_wood_rays_desc, color_srgb, "color_srgb", 3, 0, 1,
+                 "colour of the ray tissue (sRGB 0-1); default [0.86, 0.76, 0.60]"),
+};
+static const sk_schema rays_schema = {"rays", rays_fields, COUNT(rays_fields)};
+
 static const sk_schema_field knots_fields[] = {
     FLOAT_FIELD(sk_wood_knots_desc, whorl_spacing_mm, "whorl_spacing_mm", 0, 100000,
                 "distance between whorls of branches along the axis (mm); default 0 (no knots)"),
@@ -226,6 +242,8 @@ static const sk_schema_field wood_fields[] = {
     OBJECT_FIELD(sk_wood_desc, rings, "rings", rings_schema, "annual rings R(t, theta) (sec. 4.4)"),
     OBJECT_FIELD(sk_wood_desc, grain, "grain", grain_schema, "grain G'(t, y) (eq. 1)"),
     OBJECT_FIELD(sk_wood_desc, vessels, "vessels", vessels_schema, "vessels (sec. 5)"),
+    OBJECT_FIELD(sk_wood_desc, rays, "rays", rays_schema,
+                 "broad (medullary) rays, the silver figure (beyond the paper)"),
     OBJECT_FIELD(sk_wood_desc, fibre, "fibre", fibre_schema, "shifting brightness (sec. 6)"),
     OBJECT_FIELD(sk_wood_desc, knots, "knots", knots_schema,
                  "knots: branches as cones from the pith (beyond the paper)"),

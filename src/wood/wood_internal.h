@@ -8,6 +8,7 @@
 #include "wood/frame.h"
 #include "wood/grain.h"
 #include "wood/knots.h"
+#include "wood/rays.h"
 #include "wood/rings.h"
 #include "wood/shade.h"
 #include "wood/vessels.h"
@@ -20,6 +21,7 @@ struct sk_wood {
     sk__vessels vessels;
     sk__attributes attr;
     sk__knots knots;
+    sk__rays rays;
     sk__shading shading;
     sk_vec3f axis;     /* the tree's +y in the scene */
     sk_wood_stats stats;
