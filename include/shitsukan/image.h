@@ -64,8 +64,10 @@ typedef struct sk_png_write_desc {
     sk_png_encoding encoding; /* 0 = sRGB */
     const sk_image_metadata *metadata; /* optional tEXt chunks */
     int compression_level;    /* deflate level 1 (fastest) .. 9 (smallest) of libdeflate;
-                                 0 = 4. Level 1 is about twice as fast as 4 for files
-                                 2-15 % larger; 9 is many times slower. */
+                                 0 = 6 (within a few percent of libpng's size at zlib
+                                 level 6, about twice as fast). Level 1 is about twice
+                                 as fast again for files 5-40 % larger; 9 is many times
+                                 slower (docs/images.md). */
 } sk_png_write_desc;
 
 /* Values are clamped to [0, 1] (NaN to 0) and rounded to the nearest code (sRGB codes by

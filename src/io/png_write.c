@@ -27,7 +27,7 @@
  * costs one subtraction; see docs/images.md for the measurements behind the choice. */
 #define ROW_FILTER 2
 /* libdeflate level when the desc leaves it at 0. */
-#define DEFAULT_LEVEL 4
+#define DEFAULT_LEVEL 6
 
 /* ------------------------------------------------------------------ chunks */
 

@@ -140,17 +140,20 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
         }
     /* phi = Phi / R(t, theta) = Phi / r; the fibre through (r, theta, y) left the end grain
        at theta0 = theta - phi */
+    /* the end-grain direction (theta0 and its unit vector) is needed where something is
+       looked up there: the vessels, the cells of the brightness shift, rays, or
+       fluctuating rings */
+    bool vessels = w->vessels.ring.on || w->vessels.diffuse.on;
+    bool turn = round && (need_theta0 || vessels); /* the point turned back by phi */
 #pragma omp simd
     for (int i = 0; i < count; i++) {
         phi[i] = sk__phase_phi(P[i], r[i]);
         phi_mod[i] = phi[i] - 2.0 * SK_PI * sk__floor_vec(phi[i] * (0.5 / SK_PI));
         sk__sincos_reduce(phi_mod[i], &k_p[i], &sb[i], &cb[i]);
     }
-    for (int i = 0; i < count; i++) sk__sincos_join(k_p[i], sb[i], cb[i], &sin_p[i], &cos_p[i]);
-    /* the end-grain direction (theta0 and its unit vector), where something is looked up
-       there: the vessels, the cells of the brightness shift, or fluctuating rings */
-    bool vessels = w->vessels.ring.on || w->vessels.diffuse.on;
-    if (round && (need_theta0 || vessels)) {
+    if (turn || !round)
+        for (int i = 0; i < count; i++) sk__sincos_join(k_p[i], sb[i], cb[i], &sin_p[i], &cos_p[i]);
+    if (turn) {
 #pragma omp simd
         for (int i = 0; i < count; i++) {
             dir_x[i] = cos_t[i] * cos_p[i] + sin_t[i] * sin_p[i];
