@@ -777,12 +777,16 @@ static sk_wood_desc knot_desc(float dead_years)
     return d;
 }
 
-static void knot_axis(const sk_wood *w, double *y0, double *theta)
+/* The tree of knot_desc and where its branch of whorl 0 leaves the pith. */
+static sk_wood *knot_wood(float dead_years, double *y0, double *theta)
 {
+    sk_wood_desc d = knot_desc(dead_years);
+    sk_wood *w = make_wood(&d);
     const sk__knots *k = &w->knots;
     uint64_t h = sk__wood_hash(k->seed, 0, 0, 0);
     *y0 = k->phase * k->spacing;
     *theta = 2.0 * SK_PI * (double)((h >> 16) & 0xffffu) / 65536.0;
+    return w;
 }
 
 /* The point at radius r on the branch's side, `across` mm round the tree from its axis
@@ -799,10 +803,8 @@ static sk_vec3f knot_point(double y0, double theta, double r, double across, dou
 static void test_knot_is_a_cone_from_the_pith(void **state)
 {
     (void)state;
-    sk_wood_desc d = knot_desc(0.0f);
-    sk_wood *w = make_wood(&d);
     double y0, theta;
-    knot_axis(w, &y0, &theta);
+    sk_wood *w = knot_wood(0.0f, &y0, &theta);
     sk_vec3f axis = sk_v3f((float)cos(theta), 0.0f, (float)sin(theta)), n = sk_v3f(0, 1, 0);
     for (int k = 1; k <= 3; k++) {
         double r = 20.0 * k;
@@ -834,10 +836,8 @@ static void test_knot_is_a_cone_from_the_pith(void **state)
 static void test_knot_deflection_is_smooth_and_follows_the_fibre(void **state)
 {
     (void)state;
-    sk_wood_desc d = knot_desc(0.0f);
-    sk_wood *w = make_wood(&d);
     double y0, theta;
-    knot_axis(w, &y0, &theta);
+    sk_wood *w = knot_wood(0.0f, &y0, &theta);
     const sk__knots *k = &w->knots;
     double r = 50.0, t_stem = r / 3.0, a = 0.2 * r; /* the knot's radius there */
     sk__knot_hit h;
@@ -881,10 +881,8 @@ static void test_knot_deflection_is_smooth_and_follows_the_fibre(void **state)
 static void test_dead_knot(void **state)
 {
     (void)state;
-    sk_wood_desc d = knot_desc(12.0f);
-    sk_wood *w = make_wood(&d);
     double y0, theta;
-    knot_axis(w, &y0, &theta);
+    sk_wood *w = knot_wood(12.0f, &y0, &theta);
     sk_vec3f n = sk_v3f(0, 1, 0), axis = sk_v3f((float)cos(theta), 0.0f, (float)sin(theta));
     double a = 0.2 * 3.0 * 12.0; /* 7.2 mm */
     sk_vec3f bark = sk_v3f(sk_linear_from_srgb(0.24f), sk_linear_from_srgb(0.15f), sk_linear_from_srgb(0.09f));

@@ -35,6 +35,20 @@ static inline bool same_bits(double a, double b)
 
 #define B SK__WOOD_BATCH
 
+/* The batch's fibre i turned towards the unit direction d by the weight m (a tissue whose
+ * cells run along d covering that share of the point), renormalised. */
+static void blend_fibre(sk__wood_batch *out, int i, double m, sk_vec3d d)
+{
+    sk_vec3d f = sk_v3d((1.0 - m) * out->fibre[0][i] + m * d.x, (1.0 - m) * out->fibre[1][i] + m * d.y,
+                        (1.0 - m) * out->fibre[2][i] + m * d.z);
+    double len = sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
+    if (len > 1e-9) {
+        out->fibre[0][i] = (float)(f.x / len);
+        out->fibre[1][i] = (float)(f.y / len);
+        out->fibre[2][i] = (float)(f.z / len);
+    }
+}
+
 void sk__wood_section_eval(const sk_wood *w, int count, const float *x, const float *z,
                            sk_vec3f normal, float footprint_mm, const sk__wood_section *out)
 {
@@ -272,33 +286,11 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
     }
     /* in a ray, its cells' radial direction (the silver figure's sheen on quarter-sawn
        faces, which lie in a ray's plane) */
-    for (int i = 0; rays && i < count; i++) {
-        double m = ray[i];
-        if (m <= 0.0) continue;
-        sk_vec3d f = sk_v3d((1.0 - m) * out->fibre[0][i] + m * cos_t[i], (1.0 - m) * out->fibre[1][i],
-                            (1.0 - m) * out->fibre[2][i] + m * sin_t[i]);
-        double len = sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
-        if (len > 1e-9) {
-            out->fibre[0][i] = (float)(f.x / len);
-            out->fibre[1][i] = (float)(f.y / len);
-            out->fibre[2][i] = (float)(f.z / len);
-        }
-    }
+    for (int i = 0; rays && i < count; i++)
+        if (ray[i] > 0.0) blend_fibre(out, i, ray[i], sk_v3d(cos_t[i], 0.0, sin_t[i]));
     /* in a knot, the branch's fibres */
-    for (int i = 0; hits > 0 && i < count; i++) {
-        if (hit_of[i] < 0) continue;
-        const sk__knot_hit *h = &hit[hit_of[i]];
-        double m = h->knot;
-        sk_vec3d f = sk_v3d((1.0 - m) * out->fibre[0][i] + m * h->axis.x,
-                            (1.0 - m) * out->fibre[1][i] + m * h->axis.y,
-                            (1.0 - m) * out->fibre[2][i] + m * h->axis.z);
-        double len = sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
-        if (len > 1e-9) {
-            out->fibre[0][i] = (float)(f.x / len);
-            out->fibre[1][i] = (float)(f.y / len);
-            out->fibre[2][i] = (float)(f.z / len);
-        }
-    }
+    for (int i = 0; hits > 0 && i < count; i++)
+        if (hit_of[i] >= 0) blend_fibre(out, i, hit[hit_of[i]].knot, hit[hit_of[i]].axis);
     if (!w->frame.identity)
         for (int i = 0; i < count; i++) {
             sk_vec3f f = sk__wood_frame_dir_to_scene(

@@ -26,11 +26,6 @@
 #include "wood/attributes.h"
 #include "wood/numeric.h"
 
-static inline double unit(uint64_t h, int which)
-{
-    return (double)((h >> (which * 16)) & 0xffffu) * (1.0 / 65536.0);
-}
-
 void sk__knots_init(sk__knots *k, const sk_wood_desc *desc)
 {
     const sk_wood_knots_desc *kd = &desc->knots;
@@ -40,7 +35,7 @@ void sk__knots_init(sk__knots *k, const sk_wood_desc *desc)
     k->seed = sk_hash(desc->seed, 0x6b6e6f74ULL /* "knot" */, 0, 0);
     k->spacing = kd->whorl_spacing_mm;
     k->inv_spacing = 1.0 / k->spacing;
-    k->phase = unit(k->seed, 0);
+    k->phase = sk__hash_unit16(k->seed, 0);
     double j = kd->jitter;
     k->y_jitter = 0.25 * j * k->spacing;
     k->per_whorl = kd->per_whorl;
@@ -73,21 +68,14 @@ static branch make_branch(const sk__knots *k, double y_whorl, double rotation, i
     uint64_t h = sk__wood_hash(k->seed, whorl, i + 1, 1);
     branch b;
     b.y0 = y_whorl;
-    b.theta = rotation + 2.0 * SK_PI * (i + k->azimuth_jitter * (2.0 * unit(h, 0) - 1.0)) / k->per_whorl;
-    double rise = k->rise + k->rise_jitter * (2.0 * unit(h, 1) - 1.0);
+    b.theta = rotation + 2.0 * SK_PI * (i + k->azimuth_jitter * (2.0 * sk__hash_unit16(h, 0) - 1.0)) / k->per_whorl;
+    double rise = k->rise + k->rise_jitter * (2.0 * sk__hash_unit16(h, 1) - 1.0);
     b.cos_b = cos(rise);
     b.sin_b = sin(rise);
     b.tan_b = b.sin_b / b.cos_b;
-    b.w = k->growth * (1.0 + k->size_jitter * (2.0 * unit(h, 2) - 1.0));
-    b.dead = k->dead * (1.0 + k->size_jitter * (2.0 * unit(h, 3) - 1.0));
+    b.w = k->growth * (1.0 + k->size_jitter * (2.0 * sk__hash_unit16(h, 2) - 1.0));
+    b.dead = k->dead * (1.0 + k->size_jitter * (2.0 * sk__hash_unit16(h, 3) - 1.0));
     return b;
-}
-
-static inline double ramp(double x, double footprint)
-{
-    if (footprint <= 0.0) return x > 0.0 ? 1.0 : 0.0;
-    double v = 0.5 + x / footprint;
-    return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
 }
 
 /* The smooth minimum of a and b over a width of k (polynomial, C1). */
@@ -149,13 +137,13 @@ static bool branch_effect(const sk__knots *k, const sk__rings *rings, const bran
     /* the knot's own wood: a live branch where its time is below the stem's (a cone from
        the pith), a dead one inside its frozen radius, with a ring of bark */
     if (alive) {
-        hit->knot = ramp((t_stem - t_branch) * b->w, footprint);
+        hit->knot = sk__edge_ramp((t_stem - t_branch) * b->w, footprint);
         hit->bark = 0.0;
     } else {
-        hit->knot = ramp(a - rho, footprint) * ramp(-beyond, footprint);
+        hit->knot = sk__edge_ramp(a - rho, footprint) * sk__edge_ramp(-beyond, footprint);
         /* the bark closes over the year after the branch died */
         double closing = t_stem - b->dead;
-        hit->bark = ramp(rho - (a - k->bark), footprint) * (closing < 1.0 ? closing : 1.0);
+        hit->bark = sk__edge_ramp(rho - (a - k->bark), footprint) * (closing < 1.0 ? closing : 1.0);
     }
     hit->t_knot = rho / b->w;
     hit->half_knot = 0.5 * footprint / b->w;
@@ -179,10 +167,10 @@ bool sk__knots_hit(const sk__knots *k, const sk__rings *rings, double r, double 
     bool found = false;
     for (int64_t whorl = first; whorl <= last; whorl++) {
         uint64_t h = sk__wood_hash(k->seed, whorl, 0, 0);
-        double y_whorl = (whorl + k->phase) * k->spacing + k->y_jitter * (2.0 * unit(h, 0) - 1.0);
+        double y_whorl = (whorl + k->phase) * k->spacing + k->y_jitter * (2.0 * sk__hash_unit16(h, 0) - 1.0);
         double dy = y - y_whorl;
         if (dy - r * k->tan_hi > ext || dy - r * k->tan_lo < -ext) continue;
-        double rotation = 2.0 * SK_PI * unit(h, 1);
+        double rotation = 2.0 * SK_PI * sk__hash_unit16(h, 1);
         /* the branch nearest in azimuth and its neighbour on that side */
         double x = (theta - rotation) * k->per_whorl / (2.0 * SK_PI);
         int64_t nearest = sk__floor_i64(x + 0.5);

@@ -13,11 +13,6 @@
 #include "wood/attributes.h"
 #include "wood/numeric.h"
 
-static inline double unit(uint64_t h, int which)
-{
-    return (double)((h >> (which * 16)) & 0xffffu) * (1.0 / 65536.0);
-}
-
 void sk__rays_init(sk__rays *r, const sk_wood_desc *desc)
 {
     const sk_wood_rays_desc *rd = &desc->rays;
@@ -34,13 +29,6 @@ void sk__rays_init(sk__rays *r, const sk_wood_desc *desc)
     r->color = sk__linear_from_srgb3(rd->color_srgb);
 }
 
-static inline double ramp(double x, double footprint)
-{
-    if (footprint <= 0.0) return x > 0.0 ? 1.0 : 0.0;
-    double v = 0.5 + x / footprint;
-    return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
-}
-
 /* The coverage by the rays of column c of band b of set s. */
 static double column_coverage(const sk__rays *r, int set, int64_t band, int64_t columns, int64_t c,
                               double t, double theta0, double r0, double y, double fw_across,
@@ -48,23 +36,23 @@ static double column_coverage(const sk__rays *r, int set, int64_t band, int64_t 
 {
     int64_t cw = ((c % columns) + columns) % columns;
     uint64_t hc = sk__wood_hash(r->seed, set, band, cw);
-    double offset = unit(hc, 0) * r->row; /* the column's rows start at their own height */
+    double offset = sk__hash_unit16(hc, 0) * r->row; /* the column's rows start at their own height */
     int64_t row = sk__floor_i64((y + offset) / r->row);
     uint64_t h = sk_mix64(hc ^ ((uint64_t)row * 0x9e3779b97f4a7c15ULL));
     double j = r->jitter;
     /* the ray's place: its angle in the column, height in the row, radial extent */
-    double centre = 2.0 * SK_PI * ((double)c + 0.5 + 0.6 * j * (unit(h, 0) - 0.5)) / (double)columns;
-    double yc = ((double)row + 0.5 + 0.3 * j * (unit(h, 1) - 0.5)) * r->row - offset;
-    double height = r->height * (1.0 + j * (unit(h, 2) - 0.5));
-    double width = r->width * (1.0 + j * (unit(h, 3) - 0.5));
+    double centre = 2.0 * SK_PI * ((double)c + 0.5 + 0.6 * j * (sk__hash_unit16(h, 0) - 0.5)) / (double)columns;
+    double yc = ((double)row + 0.5 + 0.3 * j * (sk__hash_unit16(h, 1) - 0.5)) * r->row - offset;
+    double height = r->height * (1.0 + j * (sk__hash_unit16(h, 2) - 0.5));
+    double width = r->width * (1.0 + j * (sk__hash_unit16(h, 3) - 0.5));
     double band_start = ((double)band + 0.5 * set) * r->band_years;
     uint64_t h2 = sk_mix64(h + 0x5851f42d4c957f2dULL);
-    double t0 = band_start + 0.3 * j * unit(h2, 0) * r->band_years;
-    double t1 = band_start + (1.0 - 0.3 * j * unit(h2, 1)) * r->band_years;
+    double t0 = band_start + 0.3 * j * sk__hash_unit16(h2, 0) * r->band_years;
+    double t1 = band_start + (1.0 - 0.3 * j * sk__hash_unit16(h2, 1)) * r->band_years;
     /* the lens: half width w/2 sqrt(1 - (2 dy / h)^2) round the tree, its tips softened
        along the fibre */
     double dy = 2.0 * (y - yc) / height;
-    double tips = ramp(0.5 * height * (1.0 - fabs(dy)), fw_along);
+    double tips = sk__edge_ramp(0.5 * height * (1.0 - fabs(dy)), fw_along);
     if (tips <= 0.0) return 0.0;
     double half = 0.5 * width * sqrt(dy < 1.0 && dy > -1.0 ? 1.0 - dy * dy : 0.0);
     double d = theta0 - centre;
@@ -76,7 +64,7 @@ static double column_coverage(const sk__rays *r, int set, int64_t band, int64_t 
     double e = ends / (0.2 * (t1 - t0) * per_year);
     e = e < 0.0 ? 0.0 : (e > 1.0 ? 1.0 : e);
     half *= sqrt(e * (2.0 - e));
-    return tips * ramp(half - across, fw_across) * ramp(ends, fw_radial);
+    return tips * sk__edge_ramp(half - across, fw_across) * sk__edge_ramp(ends, fw_radial);
 }
 
 double sk__rays_coverage(const sk__rays *r, const sk__rings *rings, double t, double theta0,
