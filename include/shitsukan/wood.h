@@ -2,7 +2,9 @@
  * "Modeling fiber stream of internal wood"): annual rings with fluctuation, grain (spiral,
  * wavy, interlocked, tabulated, fractal) as a coordinate transform, vessels (diffuse- and
  * ring-porous), the fibre brightness-shift texture, the figure sheen of eq. (4) and a 3D
- * fibre highlight in the manner of Marschner et al. 2005; planar cuts to images.
+ * fibre highlight in the manner of Marschner et al. 2005; beyond the paper, knots (as
+ * Larsson et al. 2022 model them, the grain flowing round them) and broad rays; planar
+ * cuts to images.
  *
  * Units: millimetres and radians (preset keys ending in _deg are degrees). Colours in the
  * desc are sRGB-encoded in [0, 1] (as artists type them); every output colour is linear.
