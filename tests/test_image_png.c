@@ -203,6 +203,32 @@ static void test_png_strips_decode_exactly(void **state)
     sk_image_free(&im);
 }
 
+/* Into memory: the bytes of the file. */
+static void test_png_memory_equals_file(void **state)
+{
+    (void)state;
+    sk_image im;
+    SK_ASSERT_OK(sk_image_create(&im, 600, 900, 3, &e_)); /* two strips */
+    for (size_t i = 0; i < (size_t)600 * 900 * 3; i++) im.data[i] = test_value(11, i);
+    const char *path = sk_test_path("png/memory.png");
+    SK_ASSERT_OK(sk_image_write_png(&im, path, NULL, &e_));
+    uint8_t *bytes = NULL;
+    size_t size = 0, file_size = 0;
+    SK_ASSERT_OK(sk_image_write_png_memory(&im, NULL, &bytes, &size, &e_));
+    char *file = NULL;
+    SK_ASSERT_OK(sk_read_file(path, 0, &file, &file_size, &e_));
+    assert_int_equal(size, file_size);
+    assert_memory_equal(bytes, file, size);
+    free(bytes);
+    free(file);
+    sk_png_write_desc bad = {.bit_depth = 12};
+    bytes = (uint8_t *)path;
+    assert_int_equal(sk_image_write_png_memory(&im, &bad, &bytes, &size, NULL), SK_ERROR_INVALID_ARGUMENT);
+    assert_null(bytes);
+    assert_int_equal(size, 0);
+    sk_image_free(&im);
+}
+
 static void test_png_same_bytes_any_threads(void **state)
 {
     (void)state;
@@ -349,6 +375,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_png_decodes_exactly),
         cmocka_unit_test(test_png_strips_decode_exactly),
+        cmocka_unit_test(test_png_memory_equals_file),
         cmocka_unit_test(test_png_same_bytes_any_threads),
         cmocka_unit_test(test_srgb8_table_matches_curve),
         cmocka_unit_test(test_deflate_join),

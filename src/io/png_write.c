@@ -3,9 +3,11 @@
  * written here (PNG spec, ISO/IEC 15948); the image data is filtered with one fixed
  * filter and compressed by libdeflate in strips of about a megabyte, in parallel for
  * large images, joined into the single zlib stream PNG requires (deflate_join.c). The
- * strips depend only on the image size, so the bytes are the same for any thread count. */
+ * strips depend only on the image size, so the bytes are the same for any thread count.
+ * Written atomically to a file, or into memory (the same bytes). */
 #define _POSIX_C_SOURCE 200809L
 #include <libdeflate.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -433,4 +435,54 @@ sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_p
         return r;
     }
     return sk_atomic_file_commit(&file, err);
+}
+
+/* A growing buffer as a sink. */
+typedef struct memory_sink {
+    uint8_t *data;
+    size_t size, capacity;
+} memory_sink;
+
+static bool memory_write(void *context, const void *data, size_t size)
+{
+    memory_sink *m = context;
+    if (size > m->capacity - m->size) {
+        size_t capacity = m->capacity ? m->capacity : 1 << 16;
+        while (capacity - m->size < size) {
+            if (capacity > SIZE_MAX / 2) return false;
+            capacity *= 2;
+        }
+        uint8_t *grown = realloc(m->data, capacity);
+        if (!grown) return false;
+        m->data = grown;
+        m->capacity = capacity;
+    }
+    memcpy(m->data + m->size, data, size);
+    m->size += size;
+    return true;
+}
+
+sk_result sk_image_write_png_memory(const sk_image *image, const sk_png_write_desc *desc,
+                                    uint8_t **out_data, size_t *out_size, sk_error *err)
+{
+    if (!out_data || !out_size)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "out_data or out_size is NULL");
+    *out_data = NULL;
+    *out_size = 0;
+    sk_png_write_desc d;
+    sk_result r = resolve_desc(image, desc, &d, err);
+    if (r != SK_OK) return r;
+    memory_sink m = {0};
+    sk__png_sink sink = {memory_write, &m};
+    r = encode(image, &d, &sink, "PNG in memory", err);
+    if (r == SK_ERROR_IO) /* the only way memory fails */
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a PNG of %dx%d", image->width,
+                    image->height);
+    if (r != SK_OK) {
+        free(m.data);
+        return r;
+    }
+    *out_data = m.data;
+    *out_size = m.size;
+    return SK_OK;
 }
