@@ -24,14 +24,19 @@ static bool sanitized(void) { return getenv("SK_TEST_SANITIZED") != NULL; }
 
 /* ------------------------------------------------------------------ references */
 
-/* The 8-bit sRGB code by a search over the code boundaries in double (the definition). */
+/* The 8-bit sRGB code by a search over the code boundaries in double (the definition):
+ * code k starts at sRGB^-1((k - 1/2) / 255). */
+static double g_boundary[256];
+
 static unsigned srgb8_reference(float v)
 {
+    if (g_boundary[1] == 0.0)
+        for (int k = 1; k < 256; k++) g_boundary[k] = sk__srgb_decode((k - 0.5) / 255.0);
     if (!(v > 0.0f)) return 0;
     unsigned lo = 0, hi = 255;
     while (lo < hi) {
         unsigned mid = (lo + hi + 1) / 2;
-        if ((double)v >= sk__srgb_decode((mid - 0.5) / 255.0))
+        if ((double)v >= g_boundary[mid])
             lo = mid;
         else
             hi = mid - 1;
