@@ -1031,6 +1031,19 @@ static void test_bad_parameters(void **state)
     d.knots.rise = (float)(85.0 * SK_DEG_TO_RAD);
     expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "knots.rise_deg = 85 is out of range", NULL);
 
+    /* the steepest branches, jittered, stay finite */
+    d = (sk_wood_desc){0};
+    d.knots.whorl_spacing_mm = 20.0f;
+    d.knots.rise = (float)(80.0 * SK_DEG_TO_RAD);
+    d.knots.jitter = 1.0f;
+    sk_wood *steep = make_wood(&d);
+    for (int i = 0; i < 2000; i++) {
+        sk_wood_sample s;
+        sk_wood_eval(steep, random_point((uint64_t)i, 60.0f, 200.0f), sk_v3f(0, 0, 1), &s);
+        assert_true(isfinite(s.albedo.x) && isfinite(s.fibre.x) && isfinite(s.t));
+    }
+    sk_wood_destroy(steep);
+
     d = (sk_wood_desc){0};
     d.fibre.shift_mode = (sk_wood_shift_mode)7;
     expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "fibre.shift_mode = 7 is out of range", NULL);

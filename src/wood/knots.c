@@ -26,6 +26,13 @@
 #include "wood/attributes.h"
 #include "wood/numeric.h"
 
+/* A jittered rise kept off the vertical (the desc allows up to 80 degrees, jitter 10 more). */
+static double clamp_rise(double rise)
+{
+    const double lo = -80.0 * SK_DEG_TO_RAD, hi = 85.0 * SK_DEG_TO_RAD;
+    return rise < lo ? lo : (rise > hi ? hi : rise);
+}
+
 void sk__knots_init(sk__knots *k, const sk_wood_desc *desc)
 {
     const sk_wood_knots_desc *kd = &desc->knots;
@@ -41,11 +48,8 @@ void sk__knots_init(sk__knots *k, const sk_wood_desc *desc)
     k->per_whorl = kd->per_whorl;
     k->rise = kd->rise;
     k->rise_jitter = j * 10.0 * SK_DEG_TO_RAD;
-    double lo = k->rise - k->rise_jitter, hi = k->rise + k->rise_jitter;
-    lo = lo < -80.0 * SK_DEG_TO_RAD ? -80.0 * SK_DEG_TO_RAD : lo;
-    hi = hi > 85.0 * SK_DEG_TO_RAD ? 85.0 * SK_DEG_TO_RAD : hi;
-    k->tan_lo = tan(lo);
-    k->tan_hi = tan(hi);
+    k->tan_lo = tan(clamp_rise(k->rise - k->rise_jitter));
+    k->tan_hi = tan(clamp_rise(k->rise + k->rise_jitter));
     k->growth = kd->growth * desc->rings.width_mm;
     k->size_jitter = 0.25 * j;
     k->dead = kd->dead_after_years;
@@ -69,7 +73,7 @@ static branch make_branch(const sk__knots *k, double y_whorl, double rotation, i
     branch b;
     b.y0 = y_whorl;
     b.theta = rotation + 2.0 * SK_PI * (i + k->azimuth_jitter * (2.0 * sk__hash_unit16(h, 0) - 1.0)) / k->per_whorl;
-    double rise = k->rise + k->rise_jitter * (2.0 * sk__hash_unit16(h, 1) - 1.0);
+    double rise = clamp_rise(k->rise + k->rise_jitter * (2.0 * sk__hash_unit16(h, 1) - 1.0));
     b.cos_b = cos(rise);
     b.sin_b = sin(rise);
     b.tan_b = b.sin_b / b.cos_b;
