@@ -48,6 +48,8 @@ sk_result sk_hand_surface_simplify(sk_hand_surface **out, const sk_hand_surface 
     s->right = base->right;
     s->flesh = base->flesh;
     s->field = base->field;
+    memcpy(s->atlas_lo, base->atlas_lo, sizeof s->atlas_lo);
+    memcpy(s->atlas_hi, base->atlas_hi, sizeof s->atlas_hi);
     if ((r = sk_mesh_create(&s->mesh, nv, n / 3, SK_MESH_NORMALS, err)) != SK_OK) goto done;
     for (size_t v = 0; v < V; v++)
         if (remap[v] != UINT32_MAX) memcpy(s->mesh.positions + 3 * (size_t)remap[v], pos + 3 * v, 3 * sizeof *pos);
