@@ -96,7 +96,7 @@ static void test_flesh_errors(void **state)
 
 /* ------------------------------------------------------------ topology */
 typedef struct edge {
-    uint32_t a, b;
+    uint32_t a, b, c; /* directed edge a -> b of triangle (a, b, c) */
 } edge;
 static int edge_cmp(const void *x, const void *y)
 {
@@ -106,7 +106,8 @@ static int edge_cmp(const void *x, const void *y)
 }
 
 /* Closed oriented 2-manifold: every directed edge once, with its reverse; every vertex's
- * fan one cycle. Returns the Euler characteristic. */
+ * triangles one fan (a disc, not two fans touching at the vertex). Returns the Euler
+ * characteristic. */
 static long check_manifold(const sk_mesh *m)
 {
     size_t T = m->triangle_count, V = m->vertex_count;
@@ -115,29 +116,35 @@ static long check_manifold(const sk_mesh *m)
         for (int k = 0; k < 3; k++) {
             e[3 * t + k].a = m->indices[3 * t + k];
             e[3 * t + k].b = m->indices[3 * t + (k + 1) % 3];
+            e[3 * t + k].c = m->indices[3 * t + (k + 2) % 3];
             assert_int_not_equal(e[3 * t + k].a, e[3 * t + k].b);
         }
     qsort(e, 3 * T, sizeof *e, edge_cmp);
     for (size_t i = 0; i + 1 < 3 * T; i++) assert_false(e[i].a == e[i + 1].a && e[i].b == e[i + 1].b);
     for (size_t i = 0; i < 3 * T; i++) {
-        edge rev = {e[i].b, e[i].a};
+        edge rev = {e[i].b, e[i].a, 0};
         assert_non_null(bsearch(&rev, e, 3 * T, sizeof *e, edge_cmp));
     }
-    /* fans: following "next edge around the vertex" from one triangle visits them all */
-    uint32_t *count = calloc(V, sizeof *count);
-    for (size_t t = 0; t < T; t++)
-        for (int k = 0; k < 3; k++) count[m->indices[3 * t + k]]++;
-    for (size_t v = 0; v < V; v++) assert_true(count[v] >= 3);
-    /* outgoing edges of v in sorted e: from v to each neighbour; walking w -> next
-       neighbour (the vertex after w in the triangle v, w, x) must cycle through all */
+    /* around v, triangle (v, w, x) leads from neighbour w to x: from one outgoing edge
+       the walk must visit all of v's triangles before it comes back */
     size_t lo = 0;
     for (size_t v = 0; v < V; v++) {
-        while (lo < 3 * T && e[lo].a < v) lo++;
+        assert_true(lo < 3 * T && e[lo].a == v); /* every vertex is used */
         size_t hi = lo;
         while (hi < 3 * T && e[hi].a == v) hi++;
-        assert_int_equal(hi - lo, count[v]);
+        assert_true(hi - lo >= 3);
+        uint32_t w = e[lo].b;
+        size_t steps = 0;
+        do {
+            edge key = {(uint32_t)v, w, 0};
+            const edge *d = bsearch(&key, e + lo, hi - lo, sizeof *e, edge_cmp);
+            assert_non_null(d);
+            w = d->c;
+            steps++;
+        } while (w != e[lo].b && steps <= hi - lo);
+        assert_int_equal(steps, hi - lo);
+        lo = hi;
     }
-    free(count);
     free(e);
     return (long)V - (long)(3 * T / 2) + (long)T;
 }
@@ -517,6 +524,8 @@ static void test_levels_of_detail(void **state)
         sk_hand_surface *c;
         assert_int_equal(sk_hand_surface_simplify(&c, fx->surface, sk_hand_lod_triangles[l], NULL), SK_OK);
         const sk_mesh *m = sk_hand_surface_mesh(c);
+        /* one closed surface of genus 0 at every level, as the full mesh */
+        assert_int_equal(check_manifold(m), 2);
         assert_true(m->triangle_count <= (size_t)sk_hand_lod_triangles[l]);
         assert_true(m->triangle_count >= (size_t)sk_hand_lod_triangles[l] * 9 / 10);
         assert_true(signed_volume(m) > 0.8 * signed_volume(base));
@@ -531,8 +540,29 @@ static void test_levels_of_detail(void **state)
             assert_memory_equal(cw + 4 * v, bw + 4 * j, 4 * sizeof(float));
             assert_memory_equal(cl + 4 * v, bl + 4 * j, 4 * sizeof(uint16_t));
         }
+        /* the atlas keeps the full surface's bounds: a kept vertex has its uv in each
+           chart, so one texture serves every level */
+        sk_mesh ce, be;
+        assert_int_equal(sk_hand_surface_export_mesh(c, NULL, NULL, false, &ce, NULL), SK_OK);
+        assert_int_equal(sk_hand_surface_export_mesh(fx->surface, NULL, NULL, false, &be, NULL), SK_OK);
+        size_t matched = 0;
+        for (size_t v = 0; v < ce.vertex_count; v += 7)
+            for (size_t k = 0; k < be.vertex_count; k++)
+                if (memcmp(be.positions + 3 * k, ce.positions + 3 * v, 3 * sizeof(float)) == 0 &&
+                    (be.uvs[2 * k] < 0.5f) == (ce.uvs[2 * v] < 0.5f)) {
+                    assert_memory_equal(be.uvs + 2 * k, ce.uvs + 2 * v, 2 * sizeof(float));
+                    matched++;
+                }
+        assert_true(matched > ce.vertex_count / 7 / 2);
+        sk_mesh_free(&ce);
+        sk_mesh_free(&be);
         sk_hand_surface_destroy(c);
     }
+    /* the left hand's levels too */
+    sk_hand_surface *c;
+    assert_int_equal(sk_hand_surface_simplify(&c, fx->mirror, 500, NULL), SK_OK);
+    assert_int_equal(check_manifold(sk_hand_surface_mesh(c)), 2);
+    sk_hand_surface_destroy(c);
 }
 
 static void test_atlas_export(void **state)

@@ -69,6 +69,13 @@ void sk_hand__relax(sk_hand__trimesh *mesh, const sk_hand__field *field, int ite
 /* Smooths the vertices around crossing triangle pairs until none cross. */
 void sk_hand__untangle(sk_hand__trimesh *mesh, const sk_hand__field *field);
 
+/* 1 if the triangles form a closed, oriented 2-manifold over all vertex_count vertices
+ * (every edge in exactly two triangles wound oppositely, every vertex's triangles one
+ * fan), 0 if not, -1 out of memory; `euler` (may be NULL) gets V - E + F when 1; `bad`
+ * (vertex_count entries, may be NULL) marks the vertices of every defect with 1. */
+int sk_hand__mesh_topology(const uint32_t *tri, size_t triangle_count, size_t vertex_count, long *euler,
+                           uint8_t *bad);
+
 /* Skin weights: 4 links and weights per vertex. */
 void sk_hand__weights_compute(const sk_hand__field *field, const sk_hand_skeleton *right_skeleton,
                               const float *positions, size_t vertex_count, uint16_t *nearest_links,
