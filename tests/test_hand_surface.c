@@ -413,6 +413,53 @@ static void test_rigid_skinning_moves_with_link(void **state)
     free(nrm);
 }
 
+/* Linear blend skinning against its definition in double precision: every vertex at
+ * sum_k w_k (R_k p + t_k) with R_k, t_k taking link k's relaxed frame to its posed one,
+ * its normal sum_k w_k R_k n renormalised (a vertex with one link keeps it as turned). */
+static void test_lbs_matches_definition(void **state)
+{
+    (void)state;
+    const sk_hand_surface *s = fx->surface;
+    const sk_mesh *m = sk_hand_surface_mesh(s);
+    double q[SK_HAND_DOF_COUNT];
+    sk_hand_relaxed(&fx->right, q);
+    sk_hand_frames f0, f1;
+    sk_hand_forward(&fx->right, q, &f0);
+    q[sk_hand_dof_find("wrist.roll")] = 0.7;
+    q[sk_hand_dof_find("I.MCP.flex")] = 1.2;
+    q[sk_hand_dof_find("M.PIP.flex")] = 1.5;
+    q[sk_hand_dof_find("T.CMC.abd")] = 0.9;
+    q[sk_hand_dof_find("L.MCP.abd")] = -0.3;
+    q[1] = 12.0;
+    sk_hand_forward(&fx->right, q, &f1);
+    float *pos = malloc(3 * m->vertex_count * sizeof *pos), *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
+    sk_hand_surface_deform(s, &f1, SK_HAND_SKINNING_LBS, pos, nrm);
+    const uint16_t *ls;
+    const float *ws;
+    sk_hand_surface_weights(s, SK_HAND_WEIGHTS_SMOOTH, &ls, &ws);
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        sk_vec3d p = sk_v3d(m->positions[3 * v], m->positions[3 * v + 1], m->positions[3 * v + 2]);
+        sk_vec3d n = sk_v3d(m->normals[3 * v], m->normals[3 * v + 1], m->normals[3 * v + 2]);
+        sk_vec3d want = sk_v3d(0, 0, 0), wn = sk_v3d(0, 0, 0);
+        for (int k = 0; k < 4 && ws[4 * v + k] > 0; k++) {
+            int j = ls[4 * v + k];
+            sk_mat3d r = sk_m3d_mul(f1.rotation[j], sk_m3d_transpose(f0.rotation[j]));
+            sk_vec3d t = sk_v3d_sub(f1.point[sk_hand_link_point(j)], sk_m3d_apply(r, f0.point[sk_hand_link_point(j)]));
+            want = sk_v3d_add(want, sk_v3d_scale(sk_v3d_add(sk_m3d_apply(r, p), t), ws[4 * v + k]));
+            wn = sk_v3d_add(wn, sk_v3d_scale(sk_m3d_apply(r, n), ws[4 * v + k]));
+        }
+        wn = sk_v3d_normalize(wn);
+        assert_float_equal(pos[3 * v], want.x, 1e-3);
+        assert_float_equal(pos[3 * v + 1], want.y, 1e-3);
+        assert_float_equal(pos[3 * v + 2], want.z, 1e-3);
+        assert_float_equal(nrm[3 * v], wn.x, 1e-4);
+        assert_float_equal(nrm[3 * v + 1], wn.y, 1e-4);
+        assert_float_equal(nrm[3 * v + 2], wn.z, 1e-4);
+    }
+    free(pos);
+    free(nrm);
+}
+
 /* Candy wrapper: turn a finger about its own axis (not a DOF of the hand, so the frames
  * are built by hand): linear blending pulls the blended vertices toward the axis, dual
  * quaternions keep their distance. */
@@ -719,6 +766,7 @@ int main(void)
         cmocka_unit_test(test_field_and_distance),
         cmocka_unit_test(test_weights),
         cmocka_unit_test(test_rigid_skinning_moves_with_link),
+        cmocka_unit_test(test_lbs_matches_definition),
         cmocka_unit_test(test_dqs_keeps_radius_under_twist),
         cmocka_unit_test(test_defect_measure),
         cmocka_unit_test(test_desc_errors_and_threads),

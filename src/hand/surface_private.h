@@ -91,6 +91,11 @@ struct sk_hand_surface {
     uint16_t *links[2];             /* [0] nearest, [1] smooth: vertex_count x 4 */
     float *weights[2];
     uint8_t *influences;            /* non-zero smooth weights per vertex (1..4) */
+    uint32_t *by_influence;         /* the vertices grouped by influence count, ascending
+                                       within each group: the skinning loops run one
+                                       count at a time, without a branch per vertex */
+    uint32_t influence_first[5];    /* group n (1..4) is by_influence[first[n-1] ..
+                                       first[n]); first[0] = 0 */
     /* atlas: export vertices (seam split) */
     size_t export_count;
     uint32_t *export_map;           /* export vertex -> mesh vertex */
