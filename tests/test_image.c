@@ -931,12 +931,49 @@ static void test_write_auto_by_extension(void **state)
     sk_image_free(&im);
 }
 
+/* The codes for callers that encode files themselves are the PNG writer's codes: every
+ * encoding and depth, read back raw (LINEAR decoding gives code / max). */
+static void test_codes_match_png_writer(void **state)
+{
+    (void)state;
+    sk_image img;
+    assert_int_equal(sk_image_create(&img, 613, 3, 4, NULL), SK_OK);
+    size_t n = (size_t)img.width * img.height * 4;
+    for (size_t i = 0; i < n; i++) img.data[i] = (float)i / (float)(n - 40) - 0.01f;
+    img.data[5] = NAN;
+    const sk_png_encoding encodings[2] = {SK_PNG_ENCODING_SRGB, SK_PNG_ENCODING_LINEAR};
+    uint8_t *c8 = malloc(n);
+    uint16_t *c16 = malloc(n * 2);
+    for (int e = 0; e < 2; e++)
+        for (int depth = 8; depth <= 16; depth += 8) {
+            const char *path = sk_test_path(depth == 8 ? "codes/c8.png" : "codes/c16.png");
+            sk_png_write_desc wd = {.bit_depth = depth, .encoding = encodings[e]};
+            assert_int_equal(sk_image_write_png(&img, path, &wd, NULL), SK_OK);
+            sk_image back;
+            sk_png_read_desc rd = {.encoding = SK_PNG_ENCODING_LINEAR};
+            assert_int_equal(sk_image_read_png(&back, path, &rd, NULL, NULL, NULL), SK_OK);
+            if (depth == 8) sk_image_codes8(img.data, (size_t)img.width * img.height, 4, encodings[e], c8);
+            else sk_image_codes16(img.data, (size_t)img.width * img.height, 4, encodings[e], c16);
+            double max = depth == 8 ? 255.0 : 65535.0;
+            for (size_t i = 0; i < n; i++) {
+                long file_code = lround(back.data[i] * max);
+                long code = depth == 8 ? c8[i] : c16[i];
+                assert_int_equal(code, file_code);
+            }
+            sk_image_free(&back);
+        }
+    free(c8);
+    free(c16);
+    sk_image_free(&img);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_image_create_caps),
         cmocka_unit_test(test_metadata_set_get),
         cmocka_unit_test(test_srgb_curve),
+        cmocka_unit_test(test_codes_match_png_writer),
         cmocka_unit_test(test_png_roundtrip_all_layouts),
         cmocka_unit_test(test_png_16bit_gradient_exact),
         cmocka_unit_test(test_png_compression_level),

@@ -100,6 +100,15 @@ typedef struct sk_png_read_desc {
 sk_result sk_image_read_png(sk_image *image, const char *path, const sk_png_read_desc *desc,
                             sk_image_metadata *metadata, int *bit_depth, sk_error *err);
 
+/* The integer codes the PNG writer stores for `pixels` x `channels` float samples
+ * (interleaved): LINEAR round(v * max); SRGB (0 = default) the code nearest to
+ * max * srgb(v) for colour channels, alpha (channel 2 of 2, 4 of 4) linear; values
+ * clamped to [0, 1], NaN to 0. For callers that encode files themselves. */
+void sk_image_codes8(const float *samples, size_t pixels, int channels, sk_png_encoding encoding,
+                     uint8_t *codes);
+void sk_image_codes16(const float *samples, size_t pixels, int channels, sk_png_encoding encoding,
+                      uint16_t *codes);
+
 /* ------------------------------------------------------------------------ EXR */
 typedef enum sk_exr_pixel_type {
     SK_EXR_PIXEL_DEFAULT = 0, /* = FLOAT */
