@@ -21,7 +21,7 @@ held=(--group person --ignore-columns trial)
 
 "$SK" hand evaluate "$data" "${pins[@]}" "${held[@]}" --model natural \
   --report "$out/prior-eval-natural.json" --plot "$out/prior-eval-natural.png" \
-  --plot-title "Before: the natural set and built-in relaxed posture (synthetic grasps, held out by person)" \
+  --plot-title "Before: the natural set (synthetic grasps, held out by person)" \
   > "$out/prior-eval-natural.txt"
 "$SK" hand evaluate "$data" "${pins[@]}" "${held[@]}" -q --model yasumuro-table-3.2 \
   --report "$out/prior-eval-table32.json"
