@@ -105,6 +105,39 @@ static void parse_samples(const char *text, sk_hand_samples *s)
     assert_int_equal(sk_hand_samples_parse(text, strlen(text), "known.csv", s, &err), SK_OK);
 }
 
+/* Samples of n draws: the header, then one line per draw written by `row` (degrees). */
+typedef int (*row_writer)(int k, sk_rng *r, char *line, size_t size);
+static void drawn_samples(const char *header, int n, uint64_t seed, row_writer row, sk_hand_samples *s)
+{
+    size_t cap = (size_t)n * 64 + strlen(header) + 2, len = 0;
+    char *text = malloc(cap);
+    len += (size_t)snprintf(text, cap, "%s\n", header);
+    for (int k = 0; k < n; k++) {
+        sk_rng r = sk_rng_make(seed, (uint64_t)k, 0, 0);
+        len += (size_t)row(k, &r, text + len, cap - len);
+    }
+    parse_samples(text, s);
+    free(text);
+}
+
+/* Two clusters: an open and a closed index finger. */
+static int open_or_closed(int k, sk_rng *r, char *line, size_t size)
+{
+    bool closed = k % 2;
+    double mcp = (closed ? 70 : 10) + 4 * sk_rng_normal(r), pip = (closed ? 90 : 12) + 4 * sk_rng_normal(r);
+    return snprintf(line, size, "%.4f,%.4f\n", mcp, pip);
+}
+
+/* The DIP a hinge of the PIP (none below 40 degrees), an independent MCP. */
+static int dip_hinge(int k, sk_rng *r, char *line, size_t size)
+{
+    (void)k;
+    double pip = sk_rng_range(r, 5, 95);
+    double dip = (pip < 40 ? 0.0 : 0.9 * (pip - 40)) + 2.0 * sk_rng_normal(r);
+    double mcp = 40 + 10 * sk_rng_normal(r);
+    return snprintf(line, size, "%.4f,%.4f,%.4f\n", mcp, pip, dip < 0 ? 0 : dip);
+}
+
 static void test_gaussian_recovered(void **state)
 {
     (void)state;
@@ -327,19 +360,8 @@ static void test_mixture_torques(void **state)
 {
     (void)state;
     sk_hand_skeleton skel = skeleton();
-    int n = 1200;
-    size_t cap = (size_t)n * 40 + 64, len = 0;
-    char *text = malloc(cap);
-    len += (size_t)snprintf(text, cap, "I.MCP.flex,I.PIP.flex\n");
-    for (int k = 0; k < n; k++) {
-        sk_rng r = sk_rng_make(21, (uint64_t)k, 0, 0);
-        bool closed = k % 2;
-        double mcp = (closed ? 70 : 10) + 4 * sk_rng_normal(&r), pip = (closed ? 90 : 12) + 4 * sk_rng_normal(&r);
-        len += (size_t)snprintf(text + len, cap - len, "%.4f,%.4f\n", mcp, pip);
-    }
     sk_hand_samples s;
-    parse_samples(text, &s);
-    free(text);
+    drawn_samples("I.MCP.flex,I.PIP.flex", 1200, 21, open_or_closed, &s);
     sk_hand_potential_desc d = {.method = SK_HAND_POTENTIAL_MIXTURE, .components = 2, .prior_strength = -1};
     sk_hand_potential p;
     sk_error err;
@@ -376,20 +398,8 @@ static void test_mixture_beats_gaussian_on_nonlinear_relation(void **state)
 {
     (void)state;
     sk_hand_skeleton skel = skeleton();
-    int n = 2000;
-    size_t cap = (size_t)n * 48 + 64, len = 0;
-    char *text = malloc(cap);
-    len += (size_t)snprintf(text, cap, "I.MCP.flex,I.PIP.flex,I.DIP.flex\n");
-    for (int k = 0; k < n; k++) {
-        sk_rng r = sk_rng_make(5, (uint64_t)k, 0, 0);
-        double pip = sk_rng_range(&r, 5, 95);
-        double dip = (pip < 40 ? 0.0 : 0.9 * (pip - 40)) + 2.0 * sk_rng_normal(&r);
-        double mcp = 40 + 10 * sk_rng_normal(&r);
-        len += (size_t)snprintf(text + len, cap - len, "%.4f,%.4f,%.4f\n", mcp, pip, dip < 0 ? 0 : dip);
-    }
     sk_hand_samples s;
-    parse_samples(text, &s);
-    free(text);
+    drawn_samples("I.MCP.flex,I.PIP.flex,I.DIP.flex", 2000, 5, dip_hinge, &s);
     sk_hand_pin_set pins = {1, {sk_hand_dof_find("I.PIP.flex")}};
     sk_hand_evaluation *g = malloc(sizeof *g), *m = malloc(sizeof *m);
     sk_hand_evaluation_desc ed = {0};
