@@ -761,6 +761,13 @@ static void test_cli_evaluate(void **state)
                                  csv),
                      0);
     assert_non_null(strstr(run->out, "pins L.MCP.flex: held-out RMS error"));
+    /* the group's help lists its commands; an unknown one is a one-line error */
+    assert_int_equal(sk_test_cli(run, "hand --help"), 0);
+    assert_non_null(strstr(run->out, "hand evaluate"));
+    assert_non_null(strstr(run->out, "hand calibrate"));
+    assert_int_equal(sk_test_cli(run, "hand evalute"), 2);
+    assert_int_equal(sk_test_count_lines(run->err), 1);
+    assert_non_null(strstr(run->err, "unknown command 'hand evalute'"));
     /* errors: one line, exit 2, no report */
     const char *none = sk_test_path("prior/cli-none.json");
     assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins T.MCP.flex --ignore-columns trial,person --report '%s'",

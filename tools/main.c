@@ -1,5 +1,6 @@
 /* The `shitsukan` command: dispatches to a subcommand (one or two words) and maps
  * results to exit codes (0 ok, 1 runtime failure, 2 bad usage or input). */
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -16,6 +17,23 @@ static void print_tool_help(FILE *out)
         fprintf(out, "  %-16s %s\n", cli_commands[i]->name, cli_commands[i]->summary);
     fprintf(out, "\n'shitsukan <command> --help' shows a command's options.\n"
                  "Exit status: 0 success, 1 runtime failure, 2 bad usage or input.\n");
+}
+
+/* The commands whose name starts with the word `group` and a space ("hand pose", ...);
+ * false if there are none (`out` NULL: only the check). */
+static bool print_group_help(const char *group, FILE *out)
+{
+    size_t len = strlen(group);
+    int count = 0;
+    for (int i = 0; cli_commands[i]; i++) {
+        const char *name = cli_commands[i]->name;
+        if (strncmp(name, group, len) != 0 || name[len] != ' ') continue;
+        if (!out) return true;
+        if (count++ == 0) fprintf(out, "usage: shitsukan %s <command> [options]\n\ncommands:\n", group);
+        fprintf(out, "  %-16s %s\n", name, cli_commands[i]->summary);
+    }
+    if (count > 0) fprintf(out, "\n'shitsukan %s <command> --help' shows a command's options.\n", group);
+    return count > 0;
 }
 
 /* The command whose name matches argv[1] (and argv[2] for two-word names). */
@@ -57,8 +75,16 @@ int main(int argc, char **argv)
     }
     int words;
     const cli_command *command = find_command(argc, argv, &words);
-    if (!command)
+    if (!command) {
+        /* a group of two-word commands: its list, on --help to stdout, else as an error */
+        bool help = argc == 3 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0);
+        if (help && print_group_help(argv[1], stdout)) return CLI_EXIT_OK;
+        if (argc == 2 && print_group_help(argv[1], stderr)) return CLI_EXIT_USAGE;
+        if (argc > 2 && print_group_help(argv[1], NULL))
+            return cli_fail(CLI_EXIT_USAGE, "unknown command '%s %s' (see 'shitsukan %s --help')", argv[1], argv[2],
+                            argv[1]);
         return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (see 'shitsukan --help')", argv[1]);
+    }
     cli_args args;
     int status = cli_parse(command, argc - 1 - words, argv + 1 + words, &args);
     if (status < 0) return CLI_EXIT_OK; /* --help */
