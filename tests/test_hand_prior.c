@@ -664,6 +664,21 @@ static void test_evaluation_deterministic_over_threads(void **state)
     assert_true(one->result[0].model_all < one->result[0].mean_all);
     assert_int_equal(one->result[0].unconverged, 0);
     assert_int_equal(one->result[0].joint_count, 10);
+    /* the same for the thesis's form with the pairs chosen and for lookup tables */
+    int pair[2][2] = {{sk_hand_dof_find("R.MCP.flex"), sk_hand_dof_find("L.MCP.flex")},
+                      {sk_hand_dof_find("I.PIP.flex"), sk_hand_dof_find("M.PIP.flex")}};
+    sk_hand_evaluation_desc other[2] = {
+        {.by_group = true, .potential = {.method = SK_HAND_POTENTIAL_PAIRS}},
+        {.by_group = true, .model = SK_HAND_EVAL_MODEL_LUT, .pairs = (const int(*)[2])pair, .pair_count = 2}};
+    for (int m = 0; m < 2; m++) {
+        sk_threads_set(1);
+        assert_int_equal(sk_hand_evaluate(&skel, &s, pins, 2, &other[m], one, &err), SK_OK);
+        sk_threads_set(2);
+        assert_int_equal(sk_hand_evaluate(&skel, &s, pins, 2, &other[m], two, &err), SK_OK);
+        sk_threads_set(0);
+        assert_memory_equal(one, two, sizeof *one);
+        assert_int_equal(one->result[1].unconverged, 0);
+    }
     free(one);
     free(two);
     sk_hand_samples_free(&s);
