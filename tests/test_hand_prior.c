@@ -652,7 +652,7 @@ static void test_evaluation_deterministic_over_threads(void **state)
     assert_int_equal(sk_hand_parse_pin_set("I.MCP.flex,I.PIP.flex", &pins[0], &err), SK_OK);
     assert_int_equal(sk_hand_parse_pin_set("L.MCP.flex", &pins[1], &err), SK_OK);
     sk_hand_evaluation *one = malloc(sizeof *one), *two = malloc(sizeof *two);
-    sk_hand_evaluation_desc ed = {.by_group = true};
+    sk_hand_evaluation_desc ed = {.by_group = true, .potential = {.max_components = 4}};
     sk_threads_set(1);
     assert_int_equal(sk_hand_evaluate(&skel, &s, pins, 2, &ed, one, &err), SK_OK);
     sk_threads_set(2);
@@ -668,8 +668,10 @@ static void test_evaluation_deterministic_over_threads(void **state)
     int pair[2][2] = {{sk_hand_dof_find("R.MCP.flex"), sk_hand_dof_find("L.MCP.flex")},
                       {sk_hand_dof_find("I.PIP.flex"), sk_hand_dof_find("M.PIP.flex")}};
     sk_hand_evaluation_desc other[2] = {
-        {.by_group = true, .potential = {.method = SK_HAND_POTENTIAL_PAIRS}},
-        {.by_group = true, .model = SK_HAND_EVAL_MODEL_LUT, .pairs = (const int(*)[2])pair, .pair_count = 2}};
+        {.by_group = true,
+         .potential = {.method = SK_HAND_POTENTIAL_PAIRS, .pairs = (const int(*)[2])pair, .pair_count = 2}},
+        {.by_group = true, .model = SK_HAND_EVAL_MODEL_LUT, .pairs = (const int(*)[2])pair, .pair_count = 2,
+         .lut = {.resolution = 24}}};
     for (int m = 0; m < 2; m++) {
         sk_threads_set(1);
         assert_int_equal(sk_hand_evaluate(&skel, &s, pins, 2, &other[m], one, &err), SK_OK);
@@ -743,7 +745,8 @@ static void test_cli_evaluate(void **state)
     assert_non_null(strstr(run->err, "--model lookup-tables needs --pairs"));
     /* calibrate a potential and pose with it */
     const char *pose = sk_test_path("prior/cli-pose.json");
-    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial -o '%s' -q", csv, pot),
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --components 3 -o '%s' -q",
+                                 csv, pot),
                      0);
     assert_int_equal(sk_test_cli(run, "hand pose --potential '%s' --pin I.MCP.flex=60 -o '%s'", pot, pose), 0);
     assert_true(sk_test_file_exists(pose));
@@ -761,7 +764,8 @@ static void test_cli_evaluate(void **state)
     assert_true(sk_test_file_exists(mesh));
     /* the thesis's form with the pairs chosen, written as a potential */
     const char *pairs_pot = sk_test_path("prior/cli-pairs.json");
-    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --method pairs -o '%s'",
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --method pairs "
+                                 "--pairs R.MCP.flex:L.MCP.flex,L.MCP.flex:L.PIP.flex,I.PIP.flex:M.PIP.flex -o '%s'",
                                  csv, pairs_pot),
                      0);
     assert_non_null(strstr(run->out, "weight scale"));
