@@ -1,0 +1,123 @@
+/* What each point carries (Shigemori & Kawai sec. 4-5): masses of the fat and skin points
+ * (from the fat density and a skin sheet), the local coordinates of muscle and bone
+ * points (sec. 4: "their positions in the local frame are stored"), and for every fat and
+ * skin point the bone nearest it at rest, whose motion carries it where the paper's model
+ * leaves the choice open (the start of a run, a teleport, the skin without fat). */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tissue/tissue_internal.h"
+
+/* Distance from p to the bone's axis segment less its radius (rest, world). */
+static double bone_distance(const sk_tissue_model *m, int b, sk_vec3d p)
+{
+    const sk__bone *bone = &m->bones[b];
+    sk_vec3d j = m->skeleton.rest[bone->joint];
+    sk_vec3d a = sk_v3d_add(j, bone->start), ab = sk_v3d_sub(sk_v3d_add(j, bone->end), a);
+    double t = sk_clampd(sk_v3d_dot(sk_v3d_sub(p, a), ab) / sk_v3d_dot(ab, ab), 0.0, 1.0);
+    double d = sk_v3d_length(sk_v3d_sub(p, sk_v3d_add(a, sk_v3d_scale(ab, t))));
+    return d - m->desc.bones[b].radius_mm;
+}
+
+static void rest_pose(const sk_tissue_model *m, sk_tissue_pose *pose)
+{
+    sk_quatd local[SK_TISSUE_MAX_JOINTS];
+    for (int j = 0; j < m->skeleton.count; j++) local[j] = sk_qd_identity();
+    sk__skeleton_pose(&m->skeleton, local, m->skeleton.rest[m->skeleton.root], pose);
+}
+
+static void track(sk_tissue_model *m)
+{
+    const sk_tissue_character_desc *d = &m->desc;
+    for (int k = 0; k < d->tracked_count; k++) {
+        const sk_tissue_tracked_desc *t = &d->tracked[k];
+        const sk__bone *b = &m->bones[sk__bone_find(d, t->bone)];
+        sk_vec3d o = sk_v3d_add(m->skeleton.rest[b->joint], sk__bone_point(b, t->at, sk_v3d(0, 0, 0)));
+        sk_vec3d dir = sk_v3d_normalize(sk_v3d(t->direction[0], t->direction[1], t->direction[2]));
+        double near = 1.5 * m->grid.spacing, best_t = DBL_MAX, best_perp = DBL_MAX;
+        int first = -1, closest = -1;
+        for (size_t p = 0; p < m->skin_count; p++) {
+            sk_vec3d v = sk_v3d_sub(m->rest[p], o);
+            double along = sk_v3d_dot(v, dir);
+            if (along <= 0) continue;
+            double perp = sk_v3d_length(sk_v3d_sub(v, sk_v3d_scale(dir, along)));
+            if (perp <= near && along < best_t) {
+                best_t = along;
+                first = (int)p;
+            }
+            if (perp < best_perp) {
+                best_perp = perp;
+                closest = (int)p;
+            }
+        }
+        m->tracked_point[k] = first >= 0 ? first : closest;
+    }
+}
+
+void sk__model_attach(sk_tissue_model *m, const sk__tissue_shapes *t)
+{
+    const sk_tissue_material_desc *mat = &m->desc.material;
+    double a = m->grid.spacing * 1e-3; /* m */
+    double cell = a * a * a;
+    size_t nfree = m->skin_count + m->fat_count;
+    /* skin sheet: a third of each incident triangle's area */
+    double *area = calloc(m->skin_count ? m->skin_count : 1, sizeof *area);
+    for (size_t i = 0; area && i < m->triangle_count; i++) {
+        const uint32_t *v = m->triangles + 3 * i;
+        sk_vec3d e1 = sk_v3d_sub(m->rest[v[1]], m->rest[v[0]]), e2 = sk_v3d_sub(m->rest[v[2]], m->rest[v[0]]);
+        double third = 0.5 * sk_v3d_length(sk_v3d_cross(e1, e2)) * 1e-6 / 3.0;
+        for (int k = 0; k < 3; k++) area[v[k]] += third;
+    }
+    double skin_sheet = mat->skin_density * mat->skin_thickness_mm * 1e-3;
+#pragma omp parallel for schedule(static)
+    for (size_t p = 0; p < m->point_count; p++) {
+        if (p < m->skin_count)
+            m->mass[p] = 0.5 * mat->fat_density * cell + skin_sheet * (area ? area[p] : 0.0);
+        else if (p < nfree)
+            m->mass[p] = mat->fat_density * cell;
+        else
+            m->mass[p] = 0.0;
+    }
+    free(area);
+    sk_tissue_pose rest;
+    rest_pose(m, &rest);
+#pragma omp parallel for schedule(dynamic, 256)
+    for (size_t p = 0; p < m->point_count; p++) {
+        sk_vec3d x = m->rest[p];
+        if (p < nfree) {
+            int best = 0;
+            double dist = DBL_MAX;
+            for (int b = 0; b < m->desc.bone_count; b++) {
+                double d = bone_distance(m, b, x);
+                if (d < dist) {
+                    dist = d;
+                    best = b;
+                }
+            }
+            m->owner[p] = best;
+            m->local[p] = sk_v3d_sub(x, m->skeleton.rest[m->bones[best].joint]);
+        } else if (p < nfree + m->muscle_count) {
+            sk__label l = sk__tissue_label_at(t, x);
+            int mi = l >= SK__LABEL_MUSCLE0 ? l - SK__LABEL_MUSCLE0 : 0;
+            sk__ellipsoid e;
+            sk__muscle_shape(&m->muscles[mi], &rest, &e);
+            sk_vec3d d = sk_v3d_sub(x, e.centre);
+            const sk_mat3d ax = e.axes;
+            m->owner[p] = mi;
+            m->local[p] = sk_v3d((ax.m[0][0] * d.x + ax.m[1][0] * d.y + ax.m[2][0] * d.z) / e.radii.x,
+                                 (ax.m[0][1] * d.x + ax.m[1][1] * d.y + ax.m[2][1] * d.z) / e.radii.y,
+                                 (ax.m[0][2] * d.x + ax.m[1][2] * d.y + ax.m[2][2] * d.z) / e.radii.z);
+        } else {
+            sk__label l = sk__tissue_label_at(t, x);
+            int bi = l != SK__LABEL_NONE && l < SK__LABEL_MUSCLE0 ? l - 1 : 0;
+            m->owner[p] = bi;
+            m->local[p] = sk_v3d_sub(x, m->skeleton.rest[m->bones[bi].joint]);
+        }
+    }
+    double total = 0.0;
+    for (size_t p = 0; p < nfree; p++) total += m->mass[p];
+    m->stats.free_mass_kg = total;
+    track(m);
+}

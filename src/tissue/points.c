@@ -1,0 +1,131 @@
+/* The points of the model (Shigemori & Kawai sec. 4): grid points inside the skin are
+ * "points"; those on the skin triangles are skin points, those outside the tissue fat
+ * points, and those inside a muscle or bone next to a fat point muscle and bone points.
+ * Also the rest skin's triangles over the skin points. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "tissue/tissue_internal.h"
+
+static int compare_size(const void *a, const void *b)
+{
+    size_t x = *(const size_t *)a, y = *(const size_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* Whether grid point (x, y, z) is a corner of an inside cell. */
+static bool in_volume(const sk__grid *g, const uint8_t *inside, int x, int y, int z)
+{
+    for (int b = 0; b < 8; b++) {
+        int cx = x - (b & 1), cy = y - (b >> 1 & 1), cz = z - (b >> 2 & 1);
+        if (cx < 0 || cy < 0 || cz < 0 || cx >= g->n[0] - 1 || cy >= g->n[1] - 1 || cz >= g->n[2] - 1) continue;
+        if (inside[sk__grid_index(g, cx, cy, cz)]) return true;
+    }
+    return false;
+}
+
+/* Classes during the build. */
+enum { C_OUT = 0, C_SKIN, C_FAT, C_MUSCLE_CANDIDATE, C_BONE_CANDIDATE, C_MUSCLE, C_BONE };
+
+sk_result sk__model_points(sk_tissue_model *m, const sk__skin_build *b, sk_error *err)
+{
+    const sk__grid *g = b->grid;
+    /* skin points: the distinct triangle corners, in grid order */
+    size_t nc = 3 * b->triangles;
+    size_t *skin = malloc((nc ? nc : 1) * sizeof *skin);
+    uint8_t *cls = calloc(g->count, 1);
+    if (!skin || !cls) {
+        free(skin);
+        free(cls);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the points");
+    }
+    memcpy(skin, b->corners, nc * sizeof *skin);
+    qsort(skin, nc, sizeof *skin, compare_size);
+    size_t ns = 0;
+    for (size_t i = 0; i < nc; i++)
+        if (ns == 0 || skin[ns - 1] != skin[i]) skin[ns++] = skin[i];
+    for (size_t i = 0; i < ns; i++) cls[skin[i]] = C_SKIN;
+
+    /* interior points by their tissue label */
+#pragma omp parallel for schedule(dynamic, 4)
+    for (int z = 0; z < g->n[2]; z++)
+        for (int y = 0; y < g->n[1]; y++)
+            for (int x = 0; x < g->n[0]; x++) {
+                size_t i = sk__grid_index(g, x, y, z);
+                if (cls[i] == C_SKIN || !in_volume(g, b->inside, x, y, z)) continue;
+                sk__label l = b->labels[i];
+                cls[i] = l == SK__LABEL_NONE ? C_FAT : (l >= SK__LABEL_MUSCLE0 ? C_MUSCLE_CANDIDATE : C_BONE_CANDIDATE);
+            }
+    /* the skin must lie outside the tissue */
+    for (size_t i = 0; i < ns; i++)
+        if (b->labels[skin[i]] != SK__LABEL_NONE) {
+            sk_vec3d p = sk__grid_position(g, skin[i]);
+            free(skin);
+            free(cls);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "the skin cuts into the tissue at (%.1f, %.1f, %.1f) mm: raise skin.dilations or "
+                           "skin.dilation_radius_mm, or lower skin.threshold",
+                           p.x, p.y, p.z);
+        }
+    /* muscle and bone points: tissue points next to a fat point */
+    int dirs[13][3];
+    int nd = sk__lattice_directions(m->neighbourhood, dirs);
+    uint8_t *touch = calloc(g->count, 1);
+    if (!touch) {
+        free(skin);
+        free(cls);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the points");
+    }
+#pragma omp parallel for schedule(dynamic, 4)
+    for (int z = 1; z < g->n[2] - 1; z++)
+        for (int y = 1; y < g->n[1] - 1; y++)
+            for (int x = 1; x < g->n[0] - 1; x++) {
+                size_t i = sk__grid_index(g, x, y, z);
+                if (cls[i] != C_MUSCLE_CANDIDATE && cls[i] != C_BONE_CANDIDATE) continue;
+                bool touches = false;
+                for (int k = 0; k < nd && !touches; k++)
+                    for (int s = -1; s <= 1 && !touches; s += 2) {
+                        size_t q = sk__grid_index(g, x + s * dirs[k][0], y + s * dirs[k][1], z + s * dirs[k][2]);
+                        touches = cls[q] == C_FAT;
+                    }
+                touch[i] = touches;
+            }
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < g->count; i++)
+        if (touch[i]) cls[i] = cls[i] == C_MUSCLE_CANDIDATE ? C_MUSCLE : C_BONE;
+    free(touch);
+    /* counts per class */
+    size_t nf = 0, nm = 0, nb = 0;
+    for (size_t i = 0; i < g->count; i++) {
+        nf += cls[i] == C_FAT;
+        nm += cls[i] == C_MUSCLE;
+        nb += cls[i] == C_BONE;
+    }
+    m->skin_count = ns;
+    m->fat_count = nf;
+    m->muscle_count = nm;
+    m->bone_count = nb;
+    m->point_count = ns + nf + nm + nb;
+    m->grid_of = malloc(m->point_count * sizeof *m->grid_of);
+    m->grid_point = malloc(g->count * sizeof *m->grid_point);
+    m->triangles = malloc((b->triangles ? b->triangles : 1) * 3 * sizeof *m->triangles);
+    if (!m->grid_of || !m->grid_point || !m->triangles) {
+        free(skin);
+        free(cls);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu points", m->point_count);
+    }
+    memcpy(m->grid_of, skin, ns * sizeof *skin);
+    size_t next[3] = {ns, ns + nf, ns + nf + nm};
+    for (size_t i = 0; i < g->count; i++) {
+        int c = cls[i] == C_FAT ? 0 : cls[i] == C_MUSCLE ? 1 : cls[i] == C_BONE ? 2 : -1;
+        if (c >= 0) m->grid_of[next[c]++] = i;
+    }
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < g->count; i++) m->grid_point[i] = -1;
+    for (size_t p = 0; p < m->point_count; p++) m->grid_point[m->grid_of[p]] = (int32_t)p;
+    m->triangle_count = b->triangles;
+    for (size_t i = 0; i < nc; i++) m->triangles[i] = (uint32_t)m->grid_point[b->corners[i]];
+    free(skin);
+    free(cls);
+    return SK_OK;
+}
