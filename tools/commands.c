@@ -13,6 +13,8 @@ extern const cli_command cmd_wood_cut;
 extern const cli_command cmd_wood_sweep;
 extern const cli_command cmd_render;
 extern const cli_command cmd_tissue_skin;
+extern const cli_command cmd_tissue_run;
+extern const cli_command cmd_tissue_motion;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -27,5 +29,7 @@ const cli_command *const cli_commands[] = {
     &cmd_wood_sweep,
     &cmd_render,
     &cmd_tissue_skin,
+    &cmd_tissue_run,
+    &cmd_tissue_motion,
     NULL,
 };

@@ -28,6 +28,10 @@
  *   boundary would not be manifold, quads split into two triangles.
  * - Springs join grid neighbours (18- or 26-neighbourhood) of the classes the paper
  *   names; skin springs run along the triangle edges.
+ * - Every fat and skin point is also tied by a weak zero-length spring (the tether) to
+ *   where the bones and muscles alone carry it, so a violent motion cannot leave the
+ *   flesh tangled and it returns exactly to rest when the bones stop (the principle of
+ *   Complementary Dynamics, Zhang et al. 2020: secondary motion adds to the rig).
  * - Integration: XPBD (Macklin, Mueller, Chentanez 2016) with one iteration per substep
  *   at a fixed internal step ("Small steps", Macklin et al. 2019), springs in coloured
  *   Gauss-Seidel order, compliance 1/k, per-spring damping of a stated damping ratio.
@@ -158,6 +162,10 @@ typedef struct sk_tissue_material_desc {
                                          [1e-3, 1e6] */
     float anchor_stiffness;           /* N/m, fat to muscle and bone points; 0 = fat */
     float skin_stiffness;             /* N/m, along skin triangle edges; 0 = 4 x fat */
+    float tether_stiffness;           /* N/m, a zero-length spring from every fat and skin
+                                         point to where the tissue alone carries it (beyond
+                                         the paper: the flesh cannot stay tangled, and it
+                                         returns exactly to rest); 0 = fat / 10; [1e-4, 1e6] */
     float fat_density;                /* kg/m^3; 0 = 900; [100, 20000] */
     float skin_density;               /* kg/m^3; 0 = 1100; [100, 20000] */
     float skin_thickness_mm;          /* mass of the skin sheet; 0 = 1.5; [0, 20] */
@@ -356,6 +364,44 @@ sk_result sk_tissue_sim_save_state(const sk_tissue_sim *sim, void *buffer, size_
 sk_result sk_tissue_sim_load_state(sk_tissue_sim *sim, const void *buffer, size_t size, sk_error *err);
 sk_result sk_tissue_sim_save_state_file(const sk_tissue_sim *sim, const char *path, sk_error *err);
 sk_result sk_tissue_sim_load_state_file(sk_tissue_sim *sim, const char *path, sk_error *err);
+
+/* ============================================================ a whole run */
+/* What `shitsukan tissue run` writes into a folder: rest.obj (the rest skin), skin.pc2 (a
+ * point cache of the skin, one sample per output frame, for Blender's Mesh Cache modifier
+ * on rest.obj), skin.glb (glTF 2.0, the skin's frames as morph targets), stats.json, and
+ * on request frames/NNNN.obj, render/NNNN.png (the skin through the renderer), a plot of
+ * the tracked skin points and the final state. Frames are numbered at `fps` from the
+ * motion's start; the simulation always runs from time 0 (or a resumed state), whatever
+ * frames are written. */
+typedef struct sk_tissue_run_desc {
+    const char *output_dir;           /* required; created */
+    int fps;                          /* output frames per second; 0 = 30; [1, 1000] */
+    int first_frame;                  /* first frame written; default 0 */
+    int last_frame;                   /* last frame written; 0 = the motion's end */
+    bool obj_frames;                  /* frames/NNNN.obj */
+    bool render;                      /* render/NNNN.png */
+    int render_width;                 /* pixels; 0 = 480; [64, 4096] */
+    bool no_pc2, no_glb;              /* leave those out */
+    const char *plot;                 /* PNG of the tracked points' displacement, or NULL */
+    const char *save_state;           /* the state after the last frame, or NULL */
+    const char *resume_state;         /* start from this state (at or before first_frame) */
+    sk_progress progress;             /* fraction of the frames done */
+} sk_tissue_run_desc;
+
+typedef struct sk_tissue_run_stats {
+    int frames, first_frame, fps;
+    int64_t steps;                    /* internal steps taken */
+    double simulated_seconds;         /* motion time covered */
+    double seconds_simulate, seconds_write, seconds_render; /* wall time */
+    double frames_per_second;         /* output frames simulated per wall second */
+    double max_displacement_mm;       /* largest distance of a skin point from where the
+                                         bones carry its rest position */
+    double tracked_max_mm[SK_TISSUE_MAX_TRACKED];
+} sk_tissue_run_stats;
+
+/* Runs the motion on the model and writes the folder (see above). `stats` may be NULL. */
+sk_result sk_tissue_run(const sk_tissue_model *model, const sk_tissue_motion *motion, const sk_tissue_run_desc *desc,
+                        sk_tissue_run_stats *stats, sk_error *err);
 
 /* ============================================================ outputs */
 /* The model's counts and build timings as JSON. */

@@ -1,8 +1,9 @@
 /* What each point carries (Shigemori & Kawai sec. 4-5): masses of the fat and skin points
  * (from the fat density and a skin sheet), the local coordinates of muscle and bone
  * points (sec. 4: "their positions in the local frame are stored"), and for every fat and
- * skin point the bone nearest it at rest, whose motion carries it where the paper's model
- * leaves the choice open (the start of a run, a teleport, the skin without fat). */
+ * skin point the tissue nearest it at rest (a bone, or a muscle whose deformation it then
+ * follows), which carries it where the paper's model leaves the choice open: the start of
+ * a run, a teleport, and the skin without the fat layer (Wilhelms' skin on the tissue). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -10,15 +11,49 @@
 
 #include "tissue/tissue_internal.h"
 
-/* Distance from p to the bone's axis segment less its radius (rest, world). */
-static double bone_distance(const sk_tissue_model *m, int b, sk_vec3d p)
+/* Distance from p to an ellipsoid's surface along the ray from its centre (0 inside). */
+static double surface_distance(const sk__ellipsoid *e, sk_vec3d p)
 {
-    const sk__bone *bone = &m->bones[b];
-    sk_vec3d j = m->skeleton.rest[bone->joint];
-    sk_vec3d a = sk_v3d_add(j, bone->start), ab = sk_v3d_sub(sk_v3d_add(j, bone->end), a);
-    double t = sk_clampd(sk_v3d_dot(sk_v3d_sub(p, a), ab) / sk_v3d_dot(ab, ab), 0.0, 1.0);
-    double d = sk_v3d_length(sk_v3d_sub(p, sk_v3d_add(a, sk_v3d_scale(ab, t))));
-    return d - m->desc.bones[b].radius_mm;
+    double q = sk__ellipsoid_level(e, p);
+    if (q <= 1.0) return 0.0;
+    return sk_v3d_length(sk_v3d_sub(p, e->centre)) * (1.0 - 1.0 / sqrt(q));
+}
+
+/* p in the muscle's rest shape, in units of its semi-axes (what the muscle's deformation
+ * scales, sec. 5). */
+static sk_vec3d muscle_coordinates(const sk__ellipsoid *e, sk_vec3d x)
+{
+    sk_vec3d d = sk_v3d_sub(x, e->centre);
+    const sk_mat3d ax = e->axes;
+    return sk_v3d((ax.m[0][0] * d.x + ax.m[1][0] * d.y + ax.m[2][0] * d.z) / e->radii.x,
+                  (ax.m[0][1] * d.x + ax.m[1][1] * d.y + ax.m[2][1] * d.z) / e->radii.y,
+                  (ax.m[0][2] * d.x + ax.m[1][2] * d.y + ax.m[2][2] * d.z) / e->radii.z);
+}
+
+/* The tissue nearest a free point at rest: a bone (returns -1) or a muscle (its index);
+ * *bone gets the bone, or the muscle's origin bone. */
+static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, sk_vec3d x, int *bone)
+{
+    double best = HUGE_VAL;
+    int muscle = -1;
+    *bone = 0;
+    for (int b = 0; b < t->bone_count; b++)
+        for (int k = 0; k < 3; k++) {
+            double d = surface_distance(&t->bone[b][k], x);
+            if (d < best) {
+                best = d;
+                *bone = b;
+            }
+        }
+    for (int i = 0; i < t->muscle_count; i++) {
+        double d = surface_distance(&t->muscle[i], x);
+        if (d < best) {
+            best = d;
+            muscle = i;
+        }
+    }
+    if (muscle >= 0) *bone = m->muscles[muscle].origin_bone;
+    return muscle;
 }
 
 static void rest_pose(const sk_tissue_model *m, sk_tissue_pose *pose)
@@ -87,32 +122,29 @@ void sk__model_attach(sk_tissue_model *m, const sk__tissue_shapes *t)
     for (size_t p = 0; p < m->point_count; p++) {
         sk_vec3d x = m->rest[p];
         if (p < nfree) {
-            int best = 0;
-            double dist = DBL_MAX;
-            for (int b = 0; b < m->desc.bone_count; b++) {
-                double d = bone_distance(m, b, x);
-                if (d < dist) {
-                    dist = d;
-                    best = b;
-                }
+            int bone, muscle = nearest_tissue(m, t, x, &bone);
+            m->owner[p] = bone;
+            m->carrier_muscle[p] = muscle;
+            if (muscle >= 0) {
+                sk__ellipsoid e;
+                sk__muscle_shape(&m->muscles[muscle], &rest, &e);
+                m->local[p] = muscle_coordinates(&e, x);
+            } else {
+                m->local[p] = sk_v3d_sub(x, m->skeleton.rest[m->bones[bone].joint]);
             }
-            m->owner[p] = best;
-            m->local[p] = sk_v3d_sub(x, m->skeleton.rest[m->bones[best].joint]);
         } else if (p < nfree + m->muscle_count) {
             sk__label l = sk__tissue_label_at(t, x);
             int mi = l >= SK__LABEL_MUSCLE0 ? l - SK__LABEL_MUSCLE0 : 0;
             sk__ellipsoid e;
             sk__muscle_shape(&m->muscles[mi], &rest, &e);
-            sk_vec3d d = sk_v3d_sub(x, e.centre);
-            const sk_mat3d ax = e.axes;
             m->owner[p] = mi;
-            m->local[p] = sk_v3d((ax.m[0][0] * d.x + ax.m[1][0] * d.y + ax.m[2][0] * d.z) / e.radii.x,
-                                 (ax.m[0][1] * d.x + ax.m[1][1] * d.y + ax.m[2][1] * d.z) / e.radii.y,
-                                 (ax.m[0][2] * d.x + ax.m[1][2] * d.y + ax.m[2][2] * d.z) / e.radii.z);
+            m->carrier_muscle[p] = -1;
+            m->local[p] = muscle_coordinates(&e, x);
         } else {
             sk__label l = sk__tissue_label_at(t, x);
             int bi = l != SK__LABEL_NONE && l < SK__LABEL_MUSCLE0 ? l - 1 : 0;
             m->owner[p] = bi;
+            m->carrier_muscle[p] = -1;
             m->local[p] = sk_v3d_sub(x, m->skeleton.rest[m->bones[bi].joint]);
         }
     }

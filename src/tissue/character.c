@@ -60,6 +60,7 @@ void sk_tissue_character_desc_resolve(sk_tissue_character_desc *d)
     m->fat_stiffness = or_default(m->fat_stiffness, 40.0f);
     m->anchor_stiffness = or_default(m->anchor_stiffness, m->fat_stiffness);
     m->skin_stiffness = or_default(m->skin_stiffness, 4.0f * m->fat_stiffness);
+    m->tether_stiffness = or_default(m->tether_stiffness, 0.1f * m->fat_stiffness);
     m->fat_density = or_default(m->fat_density, 900.0f);
     m->skin_density = or_default(m->skin_density, 1100.0f);
     m->skin_thickness_mm = or_default(m->skin_thickness_mm, 1.5f);
@@ -272,6 +273,7 @@ static sk_result check_parameters(const sk_tissue_character_desc *d, sk_error *e
     if ((r = sk_check_range_f(err, "material.fat_stiffness", m->fat_stiffness, 1e-3, 1e6)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "material.anchor_stiffness", m->anchor_stiffness, 1e-3, 1e6)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "material.skin_stiffness", m->skin_stiffness, 1e-3, 1e6)) != SK_OK) return r;
+    if ((r = sk_check_range_f(err, "material.tether_stiffness", m->tether_stiffness, 1e-4, 1e6)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "material.fat_density", m->fat_density, 100, 20000)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "material.skin_density", m->skin_density, 100, 20000)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "material.skin_thickness_mm", m->skin_thickness_mm, 0, 20)) != SK_OK) return r;

@@ -108,6 +108,8 @@ static const sk_schema_field material_fields[] = {
           "N/m, fat to muscle and bone points; 0 = fat_stiffness"),
     FLOAT("skin_stiffness", sk_tissue_material_desc, skin_stiffness, 0, 1e6,
           "N/m, along skin triangle edges; 0 = 4 x fat_stiffness"),
+    FLOAT("tether_stiffness", sk_tissue_material_desc, tether_stiffness, 0, 1e6,
+          "N/m, zero-length spring from each fat and skin point to where the tissue carries it; 0 = fat / 10; from 1e-4"),
     FLOAT("fat_density", sk_tissue_material_desc, fat_density, 0, 20000, "kg/m^3; 0 = 900; from 100"),
     FLOAT("skin_density", sk_tissue_material_desc, skin_density, 0, 20000, "kg/m^3; 0 = 1100; from 100"),
     FLOAT("skin_thickness_mm", sk_tissue_material_desc, skin_thickness_mm, 0, 20, "mass of the skin sheet, mm; 0 = 1.5"),

@@ -38,4 +38,19 @@ sk_result sk__beads(const sk_mesh *cloud, double radius, const sk__wedge *w, sk_
 /* The layers cut open, rendered to a PNG `width` pixels wide. */
 sk_result sk__draw_layers(const sk_tissue_model *m, const char *png_path, int width, sk_error *err);
 
+/* The tracked skin points over a run: their height (world Y, mm) with the fat layer and
+ * carried by the bones alone, `samples` values each (point-major), at `time` (s). */
+typedef struct sk__tracked_series {
+    int count, samples;
+    const char *name[SK_TISSUE_MAX_TRACKED];
+    const float *time, *with_fat, *without_fat;
+} sk__tracked_series;
+sk_result sk__plot_tracked(const sk__tracked_series *t, const char *png_path, sk_error *err);
+
+/* A fixed camera for a run whose skin stays inside [lo, hi]; writes the image aspect. */
+sk__view sk__jiggle_view(sk_vec3d lo, sk_vec3d hi, double *aspect);
+/* One frame of the skin, rendered. */
+sk_result sk__render_skin(const sk_mesh *skin, const sk__view *view, int width, int height, const char *png_path,
+                          sk_error *err);
+
 #endif

@@ -53,8 +53,18 @@ sk_result sk__muscles_build(const sk_tissue_character_desc *d, const sk__skeleto
         }
         sk_mat3d f = sk__frame_from_z(z, hint);
         m->x_rest = sk_v3d(f.m[0][0], f.m[1][0], f.m[2][0]); /* rest frames are world-aligned */
+        m->z_rest = sk_v3d(f.m[0][2], f.m[1][2], f.m[2][2]);
     }
     return SK_OK;
+}
+
+/* The smallest rotation turning unit vector a onto unit vector b. */
+static sk_quatd swing(sk_vec3d a, sk_vec3d b)
+{
+    double d = sk_v3d_dot(a, b);
+    if (d < -0.999999) return sk_qd_axis_angle(sk__axis_across(a), SK_PI); /* opposite: any axis across */
+    sk_vec3d c = sk_v3d_cross(a, b);
+    return sk_qd_normalize(sk_qd(1.0 + d, c.x, c.y, c.z));
 }
 
 void sk__muscle_shape(const sk__muscle *m, const sk_tissue_pose *pose, sk__ellipsoid *out)
@@ -63,8 +73,13 @@ void sk__muscle_shape(const sk__muscle *m, const sk_tissue_pose *pose, sk__ellip
     sk_vec3d in = sk__pose_apply(pose, m->insertion_joint, m->insertion);
     sk_vec3d z = sk_v3d_sub(in, o);
     double length = sk_v3d_length(z);
-    sk_vec3d x = sk_qd_rotate(pose->rotation[m->origin_joint], m->x_rest);
-    out->axes = sk__frame_from_z(length > 0 ? z : sk_qd_rotate(pose->rotation[m->origin_joint], sk_v3d(0, 0, 1)), x);
+    /* the muscle's frame as the origin bone carries it, then swung (without twist about the
+       muscle's own axis) onto the line between the tendons */
+    sk_quatd carried = pose->rotation[m->origin_joint];
+    sk_vec3d z_carried = sk_qd_rotate(carried, m->z_rest);
+    sk_vec3d zn = length > 0 ? sk_v3d_scale(z, 1.0 / length) : z_carried;
+    sk_vec3d x = sk_qd_rotate(swing(z_carried, zn), sk_qd_rotate(carried, m->x_rest));
+    out->axes = sk__frame_from_z(zn, x);
     sk_tissue_muscle_axes(m->a0, m->b0, m->c0, m->rest_length, length, &out->radii.x, &out->radii.y, &out->radii.z);
     out->centre = sk_v3d_scale(sk_v3d_add(o, in), 0.5);
 }

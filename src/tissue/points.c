@@ -67,14 +67,28 @@ sk_result sk__model_points(sk_tissue_model *m, const sk__skin_build *b, sk_error
                            "skin.dilation_radius_mm, or lower skin.threshold",
                            p.x, p.y, p.z);
         }
-    /* muscle and bone points: tissue points next to a fat point */
-    int dirs[13][3];
-    int nd = sk__lattice_directions(m->neighbourhood, dirs);
-    uint8_t *touch = calloc(g->count, 1);
-    if (!touch) {
+    /* muscle and bone points: tissue points next to a fat point (in the springs'
+       neighbourhood), or next to a skin point that has no fat point among its 26
+       neighbours (where the skin lies on the tissue, the fat thinner than one spacing) */
+    int dirs[13][3], all[13][3];
+    int nd = sk__lattice_directions(m->neighbourhood, dirs), na = sk__lattice_directions(26, all);
+    uint8_t *touch = calloc(g->count, 1), *on_tissue = calloc(g->count, 1);
+    if (!touch || !on_tissue) {
+        free(touch);
+        free(on_tissue);
         free(skin);
         free(cls);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the points");
+    }
+#pragma omp parallel for schedule(dynamic, 64)
+    for (size_t i = 0; i < ns; i++) {
+        int c[3];
+        sk__grid_coords(g, skin[i], c);
+        bool fat = false;
+        for (int k = 0; k < na && !fat; k++)
+            for (int sgn = -1; sgn <= 1 && !fat; sgn += 2)
+                fat = cls[sk__grid_index(g, c[0] + sgn * all[k][0], c[1] + sgn * all[k][1], c[2] + sgn * all[k][2])] == C_FAT;
+        on_tissue[skin[i]] = !fat;
     }
 #pragma omp parallel for schedule(dynamic, 4)
     for (int z = 1; z < g->n[2] - 1; z++)
@@ -83,17 +97,19 @@ sk_result sk__model_points(sk_tissue_model *m, const sk__skin_build *b, sk_error
                 size_t i = sk__grid_index(g, x, y, z);
                 if (cls[i] != C_MUSCLE_CANDIDATE && cls[i] != C_BONE_CANDIDATE) continue;
                 bool touches = false;
-                for (int k = 0; k < nd && !touches; k++)
-                    for (int s = -1; s <= 1 && !touches; s += 2) {
-                        size_t q = sk__grid_index(g, x + s * dirs[k][0], y + s * dirs[k][1], z + s * dirs[k][2]);
-                        touches = cls[q] == C_FAT;
+                for (int k = 0; k < na && !touches; k++)
+                    for (int sgn = -1; sgn <= 1 && !touches; sgn += 2) {
+                        size_t q = sk__grid_index(g, x + sgn * all[k][0], y + sgn * all[k][1], z + sgn * all[k][2]);
+                        bool near = m->neighbourhood == 26 || sk__lattice_direction_index(dirs, nd, all[k]) >= 0;
+                        touches = (near && cls[q] == C_FAT) || on_tissue[q];
                     }
-                touch[i] = touches;
+                if (touches) touch[i] = 1;
             }
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < g->count; i++)
         if (touch[i]) cls[i] = cls[i] == C_MUSCLE_CANDIDATE ? C_MUSCLE : C_BONE;
     free(touch);
+    free(on_tissue);
     /* counts per class */
     size_t nf = 0, nm = 0, nb = 0;
     for (size_t i = 0; i < g->count; i++) {

@@ -1,9 +1,12 @@
 /* The springs (Shigemori & Kawai sec. 4, Fig. 2): skin points joined along the skin
  * triangles' edges, skin points to fat points, fat points to each other and to muscle and
- * bone points. Between points that are grid neighbours (18- or 26-neighbourhood; the
- * triangle edges are grid neighbours too). Every spring gets a colour, its direction on
- * the lattice and the parity of its first end along that direction, so the springs of one
- * colour share no point and can be solved side by side. */
+ * bone points. Between points that are grid neighbours: fat to fat and fat to tissue in
+ * the character's neighbourhood (18 or 26), skin to fat in the 26-neighbourhood (a vertex
+ * at a convex corner of the cuberille skin reaches the fat only diagonally), and where the
+ * skin lies on the tissue with no fat point around it, skin to the tissue points beside it
+ * (the paper does not say what joins the skin where the fat is thinner than the grid).
+ * Every spring gets a colour, its direction on the lattice and the parity of its first
+ * end along that direction, so the springs of one colour share no point. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -38,13 +41,19 @@ int sk__lattice_direction_index(int dirs[13][3], int count, const int d[3])
 static bool is_free(const sk_tissue_model *m, size_t p) { return p < m->skin_count + m->fat_count; }
 static bool is_skin(const sk_tissue_model *m, size_t p) { return p < m->skin_count; }
 
-/* Class of the spring between points p and q (grid neighbours), or -1 for none. */
-static int spring_class(const sk_tissue_model *m, size_t p, size_t q)
+/* Class of the spring between points p and q, grid neighbours along a direction that is
+ * (`near`) or is not in the character's neighbourhood; -1 for none. `on_tissue[p]` marks
+ * skin points with no fat point among their 26 neighbours. */
+static int spring_class(const sk_tissue_model *m, const uint8_t *on_tissue, size_t p, size_t q, bool near)
 {
-    bool fp = is_free(m, p), fq = is_free(m, q);
-    if (!fp && !fq) return -1;                 /* both driven */
-    if (is_skin(m, p) && is_skin(m, q)) return -1; /* skin springs follow the triangles */
-    if (is_skin(m, p) || is_skin(m, q)) return (fp && fq) ? SK__SPRING_SKIN_FAT : -1; /* skin-tissue: none */
+    bool fp = is_free(m, p), fq = is_free(m, q), sp = is_skin(m, p), sq = is_skin(m, q);
+    if (!fp && !fq) return -1;     /* both driven */
+    if (sp && sq) return -1;       /* skin springs follow the triangles */
+    if (sp || sq) {
+        if (fp && fq) return SK__SPRING_SKIN_FAT;
+        return on_tissue[sp ? p : q] ? SK__SPRING_ANCHOR : -1;
+    }
+    if (!near) return -1;
     return (fp && fq) ? SK__SPRING_FAT : SK__SPRING_ANCHOR;
 }
 
@@ -75,15 +84,34 @@ static int compare_edge(const void *x, const void *y)
 sk_result sk__model_springs(sk_tissue_model *m, sk_error *err)
 {
     const sk__grid *g = &m->grid;
-    int dirs[13][3];
-    int nd = sk__lattice_directions(m->neighbourhood, dirs);
+    int dirs[13][3], own[13][3];
+    int nd = sk__lattice_directions(26, dirs), no = sk__lattice_directions(m->neighbourhood, own);
+    bool near[13];
+    for (int k = 0; k < nd; k++) near[k] = sk__lattice_direction_index(own, no, dirs[k]) >= 0;
     size_t np = m->point_count;
     size_t *start = malloc((np + 1) * sizeof *start);
     uint32_t *edges = malloc((m->triangle_count ? m->triangle_count : 1) * 6 * sizeof *edges);
-    if (!start || !edges) {
+    uint8_t *on_tissue = calloc(np ? np : 1, 1);
+    if (!start || !edges || !on_tissue) {
         free(start);
         free(edges);
+        free(on_tissue);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the springs");
+    }
+    /* skin points with no fat point among their 26 neighbours */
+#pragma omp parallel for schedule(static)
+    for (size_t p = 0; p < m->skin_count; p++) {
+        int c[3];
+        sk__grid_coords(g, m->grid_of[p], c);
+        bool fat = false;
+        for (int k = 0; k < nd && !fat; k++)
+            for (int sgn = -1; sgn <= 1 && !fat; sgn += 2) {
+                int x = c[0] + sgn * dirs[k][0], y = c[1] + sgn * dirs[k][1], z = c[2] + sgn * dirs[k][2];
+                if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2]) continue;
+                int32_t q = m->grid_point[sk__grid_index(g, x, y, z)];
+                fat = q >= 0 && (size_t)q >= m->skin_count && (size_t)q < m->skin_count + m->fat_count;
+            }
+        on_tissue[p] = !fat;
     }
     /* lattice springs from each point towards the half-directions */
     start[0] = 0;
@@ -96,7 +124,7 @@ sk_result sk__model_springs(sk_tissue_model *m, sk_error *err)
             int x = c[0] + dirs[k][0], y = c[1] + dirs[k][1], z = c[2] + dirs[k][2];
             if (x >= g->n[0] || y >= g->n[1] || y < 0 || z >= g->n[2] || z < 0) continue;
             int32_t q = m->grid_point[sk__grid_index(g, x, y, z)];
-            if (q >= 0 && spring_class(m, p, (size_t)q) >= 0) n++;
+            if (q >= 0 && spring_class(m, on_tissue, p, (size_t)q, near[k]) >= 0) n++;
         }
         start[p + 1] = n;
     }
@@ -138,7 +166,7 @@ sk_result sk__model_springs(sk_tissue_model *m, sk_error *err)
                 int x = c[0] + dirs[k][0], y = c[1] + dirs[k][1], z = c[2] + dirs[k][2];
                 if (x >= g->n[0] || y >= g->n[1] || y < 0 || z >= g->n[2] || z < 0) continue;
                 int32_t q = m->grid_point[sk__grid_index(g, x, y, z)];
-                int cls = q >= 0 ? spring_class(m, p, (size_t)q) : -1;
+                int cls = q >= 0 ? spring_class(m, on_tissue, p, (size_t)q, near[k]) : -1;
                 if (cls < 0) continue;
                 si[n] = (uint32_t)p;
                 sj[n] = (uint32_t)q;
@@ -191,6 +219,7 @@ sk_result sk__model_springs(sk_tissue_model *m, sk_error *err)
     }
     free(start);
     free(edges);
+    free(on_tissue);
     free(si);
     free(sj);
     free(sc);

@@ -74,7 +74,7 @@ typedef struct sk__muscle {
     sk_vec3d origin, insertion;   /* in their joints' rest frames */
     double rest_length;           /* L0 */
     double a0, b0, c0;            /* rest semi-axes */
-    sk_vec3d x_rest;              /* X direction in the origin joint's rest frame */
+    sk_vec3d x_rest, z_rest;      /* X and Z directions in the origin joint's rest frame */
 } sk__muscle;
 
 /* A muscle's current shape: its ellipsoid in the world. */
@@ -186,11 +186,14 @@ struct sk_tissue_model {
     size_t *grid_of;           /* grid index of every point */
     sk_vec3d *rest;            /* rest world position (skin points: after smoothing) */
     double *mass;              /* kg; 0 for muscle and bone points */
-    int *owner;                /* muscle/bone points: muscle or bone index; free: reference bone */
+    int *owner;                /* muscle/bone points: muscle or bone index; free points: the
+                                  bone that carries them (or their muscle's origin bone) */
+    int *carrier_muscle;       /* free points: the muscle that carries them, or -1 (a bone) */
     sk_vec3d *local;           /* bone points: position in the bone joint's rest frame;
                                   muscle points: coordinates in units of the rest semi-axes;
-                                  free points: rest position in the reference bone joint's
-                                  rest frame */
+                                  free points: the same for the tissue nearest them at rest
+                                  (their carrier), so the tissue alone can carry them: the
+                                  skin without the fat layer */
     /* Springs sorted by colour: colour c holds springs colour_start[c] .. [c + 1]. */
     size_t spring_count;
     uint32_t *spring_i, *spring_j;
