@@ -158,14 +158,15 @@ typedef struct sk_tissue_skin_desc {
 
 /* Material of the springs and points (the paper leaves them open). */
 typedef struct sk_tissue_material_desc {
-    float fat_stiffness;              /* N/m, fat-fat and fat-skin springs; 0 = 40;
-                                         [1e-3, 1e6] */
+    float fat_stiffness;              /* N/m, fat-fat and fat-skin springs; 0 = 5 (fat's
+                                         Young's modulus of about 1 kPa times a 4 mm
+                                         spacing); [1e-3, 1e6] */
     float anchor_stiffness;           /* N/m, fat to muscle and bone points; 0 = fat */
-    float skin_stiffness;             /* N/m, along skin triangle edges; 0 = 4 x fat */
+    float skin_stiffness;             /* N/m, along skin triangle edges; 0 = 5 x fat */
     float tether_stiffness;           /* N/m, a zero-length spring from every fat and skin
                                          point to where the tissue alone carries it (beyond
                                          the paper: the flesh cannot stay tangled, and it
-                                         returns exactly to rest); 0 = fat / 10; [1e-4, 1e6] */
+                                         returns exactly to rest); 0 = 0.4 x fat; [1e-4, 1e6] */
     float fat_density;                /* kg/m^3; 0 = 900; [100, 20000] */
     float skin_density;               /* kg/m^3; 0 = 1100; [100, 20000] */
     float skin_thickness_mm;          /* mass of the skin sheet; 0 = 1.5; [0, 20] */
@@ -178,6 +179,8 @@ typedef struct sk_tissue_simulation_desc {
     int step_hz;                      /* fixed internal steps per second; 0 = 480;
                                          [60, 20000]; a multiple of 120 makes 24, 30 and
                                          60 fps frames fall on steps exactly */
+    int iterations;                   /* solver sweeps per step (XPBD converges to implicit
+                                         Euler as they grow); 0 = 1; [1, 64] */
     float teleport_speed_m_s;         /* a bone end moving faster than this in one step
                                          carries its flesh along instead of stretching
                                          it; 0 = 50; [0.1, 1e6] */
@@ -246,9 +249,8 @@ typedef struct sk_tissue_model_stats {
     size_t springs, skin_springs, skin_fat_springs, fat_springs, anchor_springs;
     size_t skin_triangles;
     size_t removed_cells;             /* cells removed to keep the skin manifold */
-    double skin_offset_mm[2];         /* min and max distance of a skin point from tissue */
     double free_mass_kg;              /* fat and skin points */
-    double seconds_voxelise, seconds_distance, seconds_dilate, seconds_extract,
+    double seconds_voxelise, seconds_fat, seconds_dilate, seconds_extract,
         seconds_classify, seconds_springs, seconds_total;
 } sk_tissue_model_stats;
 

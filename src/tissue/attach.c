@@ -30,6 +30,14 @@ static sk_vec3d muscle_coordinates(const sk__ellipsoid *e, sk_vec3d x)
                   (ax.m[0][2] * d.x + ax.m[1][2] * d.y + ax.m[2][2] * d.z) / e->radii.z);
 }
 
+/* Whether the ellipsoid may lie closer to p than `best` (its centre's distance less its
+ * longest semi-axis bounds the distance from below). */
+static bool may_be_closer(const sk__ellipsoid *e, sk_vec3d p, double best)
+{
+    double r = fmax(e->radii.x, fmax(e->radii.y, e->radii.z));
+    return sk_v3d_length(sk_v3d_sub(p, e->centre)) - r < best;
+}
+
 /* The tissue nearest a free point at rest: a bone (returns -1) or a muscle (its index);
  * *bone gets the bone, or the muscle's origin bone. */
 static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, sk_vec3d x, int *bone)
@@ -39,6 +47,7 @@ static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, 
     *bone = 0;
     for (int b = 0; b < t->bone_count; b++)
         for (int k = 0; k < 3; k++) {
+            if (!may_be_closer(&t->bone[b][k], x, best)) continue;
             double d = surface_distance(&t->bone[b][k], x);
             if (d < best) {
                 best = d;
@@ -46,6 +55,7 @@ static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, 
             }
         }
     for (int i = 0; i < t->muscle_count; i++) {
+        if (!may_be_closer(&t->muscle[i], x, best)) continue;
         double d = surface_distance(&t->muscle[i], x);
         if (d < best) {
             best = d;

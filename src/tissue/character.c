@@ -57,16 +57,17 @@ void sk_tissue_character_desc_resolve(sk_tissue_character_desc *d)
     s->threshold = or_default(s->threshold, 0.3f);
     if (s->neighbourhood == 0) s->neighbourhood = 18;
     sk_tissue_material_desc *m = &d->material;
-    m->fat_stiffness = or_default(m->fat_stiffness, 40.0f);
+    m->fat_stiffness = or_default(m->fat_stiffness, 5.0f);
     m->anchor_stiffness = or_default(m->anchor_stiffness, m->fat_stiffness);
-    m->skin_stiffness = or_default(m->skin_stiffness, 4.0f * m->fat_stiffness);
-    m->tether_stiffness = or_default(m->tether_stiffness, 0.1f * m->fat_stiffness);
+    m->skin_stiffness = or_default(m->skin_stiffness, 5.0f * m->fat_stiffness);
+    m->tether_stiffness = or_default(m->tether_stiffness, 0.4f * m->fat_stiffness);
     m->fat_density = or_default(m->fat_density, 900.0f);
     m->skin_density = or_default(m->skin_density, 1100.0f);
     m->skin_thickness_mm = or_default(m->skin_thickness_mm, 1.5f);
     m->damping_ratio = or_default(m->damping_ratio, 0.1f);
     sk_tissue_simulation_desc *sim = &d->simulation;
     if (sim->step_hz == 0) sim->step_hz = 480;
+    if (sim->iterations == 0) sim->iterations = 1;
     sim->teleport_speed_m_s = or_default(sim->teleport_speed_m_s, 50.0f);
 }
 
@@ -279,6 +280,7 @@ static sk_result check_parameters(const sk_tissue_character_desc *d, sk_error *e
     if ((r = sk_check_range_f(err, "material.skin_thickness_mm", m->skin_thickness_mm, 0, 20)) != SK_OK) return r;
     if ((r = check_positive(err, "material.damping_ratio", m->damping_ratio, 4)) != SK_OK) return r;
     if ((r = sk_check_range_i(err, "simulation.step_hz", d->simulation.step_hz, 60, 20000)) != SK_OK) return r;
+    if ((r = sk_check_range_i(err, "simulation.iterations", d->simulation.iterations, 1, 64)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "simulation.teleport_speed_m_s", d->simulation.teleport_speed_m_s, 0.1, 1e6)) !=
         SK_OK)
         return r;

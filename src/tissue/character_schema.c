@@ -103,13 +103,13 @@ static const sk_schema skin_schema = {"skin", skin_fields, COUNT_OF(skin_fields)
 
 static const sk_schema_field material_fields[] = {
     FLOAT("fat_stiffness", sk_tissue_material_desc, fat_stiffness, 0, 1e6,
-          "N/m, fat-fat and fat-skin springs; 0 = 40; from 1e-3"),
+          "N/m, fat-fat and fat-skin springs; 0 = 5 (about 1 kPa fat at 4 mm); from 1e-3"),
     FLOAT("anchor_stiffness", sk_tissue_material_desc, anchor_stiffness, 0, 1e6,
           "N/m, fat to muscle and bone points; 0 = fat_stiffness"),
     FLOAT("skin_stiffness", sk_tissue_material_desc, skin_stiffness, 0, 1e6,
-          "N/m, along skin triangle edges; 0 = 4 x fat_stiffness"),
+          "N/m, along skin triangle edges; 0 = 5 x fat_stiffness"),
     FLOAT("tether_stiffness", sk_tissue_material_desc, tether_stiffness, 0, 1e6,
-          "N/m, zero-length spring from each fat and skin point to where the tissue carries it; 0 = fat / 10; from 1e-4"),
+          "N/m, zero-length spring from each fat and skin point to where the tissue carries it; 0 = 0.4 x fat; from 1e-4"),
     FLOAT("fat_density", sk_tissue_material_desc, fat_density, 0, 20000, "kg/m^3; 0 = 900; from 100"),
     FLOAT("skin_density", sk_tissue_material_desc, skin_density, 0, 20000, "kg/m^3; 0 = 1100; from 100"),
     FLOAT("skin_thickness_mm", sk_tissue_material_desc, skin_thickness_mm, 0, 20, "mass of the skin sheet, mm; 0 = 1.5"),
@@ -120,6 +120,8 @@ static const sk_schema material_schema = {"material", material_fields, COUNT_OF(
 static const sk_schema_field simulation_fields[] = {
     {.key = "step_hz", .type = SK_FIELD_INT, .offset = offsetof(sk_tissue_simulation_desc, step_hz), .min = 0,
      .max = 20000, .doc = "fixed internal steps per second, from 60; 0 = 480 (a multiple of 120 suits 24/30/60 fps)"},
+    {.key = "iterations", .type = SK_FIELD_INT, .offset = offsetof(sk_tissue_simulation_desc, iterations), .min = 0,
+     .max = 64, .doc = "solver sweeps per step (more: closer to implicit Euler's exact stiffness); 0 = 1"},
     FLOAT("teleport_speed_m_s", sk_tissue_simulation_desc, teleport_speed_m_s, 0, 1e6,
           "a bone end faster than this (m/s) carries its flesh along; 0 = 50; from 0.1"),
     {.key = "no_fat", .type = SK_FIELD_BOOL, .offset = offsetof(sk_tissue_simulation_desc, no_fat),

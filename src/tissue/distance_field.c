@@ -38,14 +38,14 @@ static void transform_line(const double *f, double *d, int n, int *v, double *z)
     }
 }
 
-/* One pass along axis `axis` over every line of the grid, in place on `sq` (squared
- * distances in cells). Lines without any finite value are left alone. */
-static void pass(const sk__grid *g, int axis, float *sq, double *scratch, int *vscratch, int longest)
+/* One pass along axis `axis` over every line of the box (n[] points, `sq` its squared
+ * distances in cells, x fastest), in place. Lines without any finite value are left. */
+static void pass(const int n[3], int axis, float *sq, double *scratch, int *vscratch, int longest)
 {
-    size_t stride = axis == 0 ? 1 : (axis == 1 ? (size_t)g->n[0] : (size_t)g->n[0] * (size_t)g->n[1]);
-    int n = g->n[axis];
+    size_t stride = axis == 0 ? 1 : (axis == 1 ? (size_t)n[0] : (size_t)n[0] * (size_t)n[1]);
+    int len = n[axis];
     int a = axis == 0 ? 1 : 0, b = axis == 2 ? 1 : 2; /* the other two axes */
-    long lines = (long)g->n[a] * g->n[b];
+    long lines = (long)n[a] * n[b];
 #pragma omp parallel
     {
         int t = omp_get_thread_num();
@@ -56,26 +56,27 @@ static void pass(const sk__grid *g, int axis, float *sq, double *scratch, int *v
         for (long line = 0; line < lines; line++) {
             int c[3];
             c[axis] = 0;
-            c[a] = (int)(line % g->n[a]);
-            c[b] = (int)(line / g->n[a]);
-            size_t base = sk__grid_index(g, c[0], c[1], c[2]);
+            c[a] = (int)(line % n[a]);
+            c[b] = (int)(line / n[a]);
+            size_t base = ((size_t)c[2] * (size_t)n[1] + (size_t)c[1]) * (size_t)n[0] + (size_t)c[0];
             bool any = false;
-            for (int q = 0; q < n; q++) {
+            for (int q = 0; q < len; q++) {
                 f[q] = sq[base + (size_t)q * stride];
                 any |= f[q] < FAR;
             }
             if (!any) continue;
-            transform_line(f, d, n, v, z);
-            for (int q = 0; q < n; q++) sq[base + (size_t)q * stride] = (float)fmin(d[q], FAR);
+            transform_line(f, d, len, v, z);
+            for (int q = 0; q < len; q++) sq[base + (size_t)q * stride] = (float)fmin(d[q], FAR);
         }
     }
 }
 
-sk_result sk__distance_to_tissue(const sk__grid *g, const sk__label *labels, double cap_mm, float *distance,
-                                 sk_error *err)
+sk_result sk__distance_to_tissue(const sk__grid *g, const sk__label *labels, const int lo[3], const int hi[3],
+                                 float *distance, sk_error *err)
 {
-    int longest = g->n[0] > g->n[1] ? g->n[0] : g->n[1];
-    if (g->n[2] > longest) longest = g->n[2];
+    int n[3] = {hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1};
+    int longest = n[0] > n[1] ? n[0] : n[1];
+    if (n[2] > longest) longest = n[2];
     int threads = omp_get_max_threads();
     double *scratch = malloc((size_t)threads * 3 * (size_t)(longest + 1) * sizeof *scratch);
     int *vscratch = malloc((size_t)threads * (size_t)(longest + 1) * sizeof *vscratch);
@@ -85,11 +86,16 @@ sk_result sk__distance_to_tissue(const sk__grid *g, const sk__label *labels, dou
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the distance field");
     }
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < g->count; i++) distance[i] = labels[i] != SK__LABEL_NONE ? 0.0f : (float)FAR;
-    for (int axis = 0; axis < 3; axis++) pass(g, axis, distance, scratch, vscratch, longest);
-    float cap = (float)cap_mm;
+    for (int z = 0; z < n[2]; z++)
+        for (int y = 0; y < n[1]; y++)
+            for (int x = 0; x < n[0]; x++) {
+                sk__label l = labels[sk__grid_index(g, lo[0] + x, lo[1] + y, lo[2] + z)];
+                distance[((size_t)z * (size_t)n[1] + (size_t)y) * (size_t)n[0] + (size_t)x] = l != SK__LABEL_NONE ? 0.0f : (float)FAR;
+            }
+    for (int axis = 0; axis < 3; axis++) pass(n, axis, distance, scratch, vscratch, longest);
+    size_t count = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < g->count; i++) distance[i] = fminf((float)(sqrt(distance[i]) * g->spacing), cap);
+    for (size_t i = 0; i < count; i++) distance[i] = (float)(sqrt(distance[i]) * g->spacing);
     free(scratch);
     free(vscratch);
     return SK_OK;

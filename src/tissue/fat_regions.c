@@ -3,6 +3,7 @@
  * two places along it and on one side of it, are made fat before the dilations of sec. 4,
  * so the skin passes outside them. */
 #include <math.h>
+#include <stdlib.h>
 
 #include "tissue/tissue_internal.h"
 
@@ -65,28 +66,47 @@ static bool in_region(const region *r, sk_vec3d p)
     return len > 0.0 && sk_v3d_dot(v, r->side) >= r->cos_spread * len;
 }
 
-void sk__fat_regions_mark(const sk_tissue_character_desc *d, const sk__skeleton *s, const sk__bone *bones,
-                          const sk__muscle *muscles, const sk__grid *g, const float *distance, uint8_t *fat)
+sk_result sk__fat_regions_mark(const sk_tissue_character_desc *d, const sk__skeleton *s, const sk__bone *bones,
+                               const sk__muscle *muscles, const sk__grid *g, const sk__label *labels, uint8_t *fat,
+                               sk_error *err)
 {
     for (int k = 0; k < d->fat_count; k++) {
         region r;
         make_region(&d->fat[k], d, s, bones, muscles, &r);
-        int lo[3], hi[3];
+        int lo[3], hi[3], blo[3], bhi[3];
         double l[3] = {r.lo.x, r.lo.y, r.lo.z}, h[3] = {r.hi.x, r.hi.y, r.hi.z};
         double o[3] = {g->origin.x, g->origin.y, g->origin.z};
+        /* the distance is needed up to the thickness: the box around the region, grown by
+           it, holds all the tissue that near */
+        int grow = (int)ceil(r.thickness / g->spacing) + 1;
         for (int a = 0; a < 3; a++) {
             lo[a] = (int)ceil((l[a] - o[a]) / g->spacing);
             hi[a] = (int)floor((h[a] - o[a]) / g->spacing);
             if (lo[a] < 0) lo[a] = 0;
             if (hi[a] > g->n[a] - 1) hi[a] = g->n[a] - 1;
+            blo[a] = lo[a] - grow < 0 ? 0 : lo[a] - grow;
+            bhi[a] = hi[a] + grow > g->n[a] - 1 ? g->n[a] - 1 : hi[a] + grow;
+        }
+        if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]) continue;
+        int bn[3] = {bhi[0] - blo[0] + 1, bhi[1] - blo[1] + 1, bhi[2] - blo[2] + 1};
+        float *distance = malloc((size_t)bn[0] * (size_t)bn[1] * (size_t)bn[2] * sizeof *distance);
+        if (!distance) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for fat[%d]", k);
+        sk_result res = sk__distance_to_tissue(g, labels, blo, bhi, distance, err);
+        if (res != SK_OK) {
+            free(distance);
+            return res;
         }
 #pragma omp parallel for schedule(dynamic, 2)
         for (int z = lo[2]; z <= hi[2]; z++)
             for (int y = lo[1]; y <= hi[1]; y++)
                 for (int x = lo[0]; x <= hi[0]; x++) {
                     size_t i = sk__grid_index(g, x, y, z);
-                    if (fat[i] || distance[i] <= 0.0f || distance[i] > r.thickness) continue;
+                    float dist = distance[((size_t)(z - blo[2]) * (size_t)bn[1] + (size_t)(y - blo[1])) * (size_t)bn[0] +
+                                          (size_t)(x - blo[0])];
+                    if (fat[i] || dist <= 0.0f || dist > r.thickness) continue;
                     if (in_region(&r, sk__grid_position(g, i))) fat[i] = 1;
                 }
+        free(distance);
     }
+    return SK_OK;
 }

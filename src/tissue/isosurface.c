@@ -49,6 +49,52 @@ static int components(int mask, int *label)
 
 static size_t cell_of(const sk__grid *g, int x, int y, int z) { return sk__grid_index(g, x, y, z); }
 
+sk_result sk__cell_rows_make(const sk__grid *g, const uint8_t *inside, sk__cell_rows *rows, sk_error *err)
+{
+    size_t n = (size_t)g->n[1] * (size_t)g->n[2];
+    rows->lo = malloc(n * sizeof *rows->lo);
+    rows->hi = malloc(n * sizeof *rows->hi);
+    if (!rows->lo || !rows->hi) {
+        sk__cell_rows_free(rows);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the skin cells");
+    }
+#pragma omp parallel for schedule(static)
+    for (size_t r = 0; r < n; r++) {
+        const uint8_t *row = inside + r * (size_t)g->n[0];
+        int lo = g->n[0], hi = -1;
+        for (int x = 0; x < g->n[0]; x++)
+            if (row[x]) {
+                if (lo > x) lo = x;
+                hi = x;
+            }
+        rows->lo[r] = lo;
+        rows->hi[r] = hi;
+    }
+    return SK_OK;
+}
+
+void sk__cell_rows_free(sk__cell_rows *rows)
+{
+    free(rows->lo);
+    free(rows->hi);
+    rows->lo = rows->hi = NULL;
+}
+
+bool sk__cell_rows_corners(const sk__grid *g, const sk__cell_rows *rows, int y, int z, int *lo, int *hi)
+{
+    *lo = g->n[0];
+    *hi = -1;
+    for (int cz = z - 1; cz <= z; cz++)
+        for (int cy = y - 1; cy <= y; cy++) {
+            if (cy < 0 || cz < 0 || cy >= g->n[1] || cz >= g->n[2]) continue;
+            size_t r = (size_t)cz * (size_t)g->n[1] + (size_t)cy;
+            if (rows->lo[r] > rows->hi[r]) continue;
+            if (rows->lo[r] < *lo) *lo = rows->lo[r];
+            if (rows->hi[r] + 1 > *hi) *hi = rows->hi[r] + 1;
+        }
+    return *lo <= *hi;
+}
+
 static int vertex_mask(const sk__grid *g, const uint8_t *inside, int x, int y, int z)
 {
     int m = 0;
@@ -118,21 +164,31 @@ static sk_result make_manifold(const sk__grid *g, const uint8_t *ok, uint8_t *in
 {
     int nz = g->n[2];
     uint8_t *bad_slice = calloc((size_t)nz, 1);
+    sk__cell_rows rows = {0};
     if (!bad_slice) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the skin cells");
+    sk_result r = sk__cell_rows_make(g, inside, &rows, err);
+    if (r != SK_OK) {
+        free(bad_slice);
+        return r;
+    }
 #pragma omp parallel for schedule(dynamic, 4)
     for (int z = 1; z < nz - 1; z++)
-        for (int y = 1; y < g->n[1] - 1 && !bad_slice[z]; y++)
-            for (int x = 1; x < g->n[0] - 1; x++)
+        for (int y = 1; y < g->n[1] - 1 && !bad_slice[z]; y++) {
+            int x0, x1;
+            if (!sk__cell_rows_corners(g, &rows, y, z, &x0, &x1)) continue;
+            for (int x = x0 > 1 ? x0 : 1; x <= x1 && x < g->n[0] - 1; x++)
                 if (!ok[vertex_mask(g, inside, x, y, z)]) {
                     bad_slice[z] = 1;
                     break;
                 }
+        }
     worklist w = {0};
     bool fine = true;
     for (int z = 1; z < nz - 1 && fine; z++)
         for (int y = 1; bad_slice[z] && y < g->n[1] - 1 && fine; y++)
             for (int x = 1; x < g->n[0] - 1 && fine; x++)
                 if (!ok[vertex_mask(g, inside, x, y, z)]) fine = push(&w, sk__grid_index(g, x, y, z));
+    sk__cell_rows_free(&rows);
     *removed = 0;
     while (fine && w.head < w.count) {
         int c[3];
@@ -267,18 +323,26 @@ sk_result sk__skin_faces(const sk__grid *g, const uint8_t *inside, size_t **out_
 {
     int nz = g->n[2];
     size_t *start = calloc((size_t)nz + 1, sizeof *start);
+    sk__cell_rows rows = {0};
     if (!start) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the skin");
+    sk_result r = sk__cell_rows_make(g, inside, &rows, err);
+    if (r != SK_OK) {
+        free(start);
+        return r;
+    }
+#define ROW(y, z) ((size_t)(z) * (size_t)g->n[1] + (size_t)(y))
 #pragma omp parallel for schedule(dynamic, 4)
     for (int z = 0; z < nz; z++) {
         size_t n = 0;
         for (int y = 0; y < g->n[1]; y++)
-            for (int x = 0; x < g->n[0]; x++) n += cell_faces(g, inside, x, y, z, NULL);
+            for (int x = rows.lo[ROW(y, z)]; x <= rows.hi[ROW(y, z)]; x++) n += cell_faces(g, inside, x, y, z, NULL);
         start[z + 1] = n;
     }
     for (int z = 0; z < nz; z++) start[z + 1] += start[z];
     size_t total = start[nz];
     size_t *corners = malloc((total ? total : 1) * 3 * sizeof *corners);
     if (!corners) {
+        sk__cell_rows_free(&rows);
         free(start);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu skin triangles", total);
     }
@@ -286,8 +350,10 @@ sk_result sk__skin_faces(const sk__grid *g, const uint8_t *inside, size_t **out_
     for (int z = 0; z < nz; z++) {
         size_t n = start[z];
         for (int y = 0; y < g->n[1]; y++)
-            for (int x = 0; x < g->n[0]; x++) n += cell_faces(g, inside, x, y, z, corners + 3 * n);
+            for (int x = rows.lo[ROW(y, z)]; x <= rows.hi[ROW(y, z)]; x++) n += cell_faces(g, inside, x, y, z, corners + 3 * n);
     }
+#undef ROW
+    sk__cell_rows_free(&rows);
     free(start);
     *out_corners = corners;
     *out_triangles = total;

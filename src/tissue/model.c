@@ -62,7 +62,7 @@ static sk_result make_grid(const sk_tissue_model *m, const sk__tissue_shapes *t,
 
 typedef struct scratch {
     sk__label *labels;
-    float *distance, *value;
+    float *value;
     uint8_t *seed, *inside;
     size_t *corners;
 } scratch;
@@ -70,7 +70,6 @@ typedef struct scratch {
 static void free_scratch(scratch *s)
 {
     free(s->labels);
-    free(s->distance);
     free(s->value);
     free(s->seed);
     free(s->inside);
@@ -103,16 +102,9 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
     t1 = sk_time_seconds();
     m->stats.seconds_voxelise = t1 - t0;
     t0 = t1;
-    if (r == SK_OK && d->fat_count > 0) {
-        double cap = 0.0;
-        for (int i = 0; i < d->fat_count; i++) cap = fmax(cap, d->fat[i].thickness_mm);
-        s.distance = malloc(g->count * sizeof *s.distance);
-        r = s.distance ? sk__distance_to_tissue(g, s.labels, cap + g->spacing, s.distance, err)
-                       : sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the distance field");
-        if (r == SK_OK) sk__fat_regions_mark(d, &m->skeleton, m->bones, m->muscles, g, s.distance, s.seed);
-    }
+    if (r == SK_OK) r = sk__fat_regions_mark(d, &m->skeleton, m->bones, m->muscles, g, s.labels, s.seed, err);
     t1 = sk_time_seconds();
-    m->stats.seconds_distance = t1 - t0;
+    m->stats.seconds_fat = t1 - t0;
     t0 = t1;
     sk_progress_report(progress, 0.2);
     size_t tissue = 0;
@@ -185,14 +177,6 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
         st->fat_springs = m->class_count[SK__SPRING_FAT];
         st->anchor_springs = m->class_count[SK__SPRING_ANCHOR];
         st->skin_triangles = m->triangle_count;
-        if (s.distance) {
-            st->skin_offset_mm[0] = HUGE_VAL;
-            for (size_t p = 0; p < m->skin_count; p++) {
-                double dist = s.distance[m->grid_of[p]];
-                st->skin_offset_mm[0] = fmin(st->skin_offset_mm[0], dist);
-                st->skin_offset_mm[1] = fmax(st->skin_offset_mm[1], dist);
-            }
-        }
     }
     free(m->grid_point);
     m->grid_point = NULL;

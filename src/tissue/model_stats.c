@@ -36,7 +36,7 @@ cJSON *sk__model_stats_json(const sk_tissue_model *m)
     cJSON_AddNumberToObject(o, "free_mass_kg", s->free_mass_kg);
     cJSON *sec = cJSON_AddObjectToObject(o, "seconds");
     cJSON_AddNumberToObject(sec, "voxelise", s->seconds_voxelise);
-    cJSON_AddNumberToObject(sec, "distance", s->seconds_distance);
+    cJSON_AddNumberToObject(sec, "fat_regions", s->seconds_fat);
     cJSON_AddNumberToObject(sec, "dilate", s->seconds_dilate);
     cJSON_AddNumberToObject(sec, "extract", s->seconds_extract);
     cJSON_AddNumberToObject(sec, "classify", s->seconds_classify);

@@ -35,12 +35,12 @@ sk_result sk__plot_tracked(const sk__tracked_series *t, const char *png_path, sk
         sk_plot_desc d = {0};
         d.width = 900;
         d.height = 380;
-        d.title = "Height of tracked skin points, with and without the fat layer";
+        d.title = "Tracked skin points: height with and without fat";
         d.x_label = "time (s)";
         d.y_label = "height (mm)";
         r = sk_plot_lines(height, 2 * n, &d, &plots[0], err);
         if (r == SK_OK) {
-            d.title = "The fat's jiggle: with fat minus without (the skin carried by the bones)";
+            d.title = "The jiggle: with fat minus without";
             d.y_label = "height difference (mm)";
             r = sk_plot_lines(jiggle, n, &d, &plots[1], err);
         }

@@ -17,6 +17,9 @@
 #include "tissue/sim_internal.h"
 
 #define MAX_FRAMES 100000
+/* The tracked points are sampled at this rate for the plot (finer than any output frame
+ * rate, so the jiggle shows). */
+#define PLOT_HZ 240
 
 typedef struct run_buffers {
     float *xyz, *ref;
@@ -129,13 +132,15 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
     run_buffers b;
     memset(&b, 0, sizeof b);
     size_t ns = m->skin_count;
-    int tracked = m->desc.tracked_count;
+    int tracked = d->plot ? m->desc.tracked_count : 0;
+    /* plot samples from the first frame to the last */
+    size_t plot_cap = (size_t)ceil((double)(last - first) / fps * PLOT_HZ) + 2, samples = 0;
     if (r == SK_OK) {
         b.xyz = malloc(3 * ns * sizeof *b.xyz);
         b.ref = malloc(3 * ns * sizeof *b.ref);
-        b.track_time = malloc((size_t)frames * sizeof *b.track_time);
-        b.track_with = malloc((size_t)frames * (size_t)(tracked ? tracked : 1) * sizeof *b.track_with);
-        b.track_without = malloc((size_t)frames * (size_t)(tracked ? tracked : 1) * sizeof *b.track_without);
+        b.track_time = malloc(plot_cap * sizeof *b.track_time);
+        b.track_with = malloc(plot_cap * (size_t)(tracked ? tracked : 1) * sizeof *b.track_with);
+        b.track_without = malloc(plot_cap * (size_t)(tracked ? tracked : 1) * sizeof *b.track_without);
         if (!b.xyz || !b.ref || !b.track_time || !b.track_with || !b.track_without)
             r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu skin points", ns);
     }
@@ -171,23 +176,35 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
     int64_t steps0 = sim ? sk_tissue_sim_steps(sim) : 0;
     for (int f = first; r == SK_OK && f <= last; f++) {
         double t = (double)f / fps, t0 = sk_time_seconds();
-        r = sk_tissue_sim_skin(sim, t, b.xyz, err);
+        /* the plot's samples up to this frame (the simulation does not depend on how its
+           time is split into calls) */
+        while (tracked > 0 && samples < plot_cap && (double)first / fps + (double)samples / PLOT_HZ <= t + 1e-9) {
+            double ts = (double)first / fps + (double)samples / PLOT_HZ;
+            r = sk_tissue_sim_advance(sim, ts, err);
+            if (r != SK_OK) break;
+            b.track_time[samples] = (float)ts;
+            for (int k = 0; k < tracked; k++) {
+                size_t p = (size_t)m->tracked_point[k];
+                sk_vec3d ref = sk__sim_carried(sim, &sim->pose, sim->muscle, p);
+                b.track_with[(size_t)k * plot_cap + samples] = (float)sim->x[3 * p + 1];
+                b.track_without[(size_t)k * plot_cap + samples] = (float)ref.y;
+            }
+            samples++;
+        }
+        if (r == SK_OK) r = sk_tissue_sim_skin(sim, t, b.xyz, err);
         double t1 = sk_time_seconds();
         st.seconds_simulate += t1 - t0;
         if (r != SK_OK) break;
         sk_tissue_sim_skin_reference(sim, b.ref);
         int i = f - first;
-        b.track_time[i] = (float)t;
         for (size_t p = 0; p < ns; p++) {
             float dx = b.xyz[3 * p] - b.ref[3 * p], dy = b.xyz[3 * p + 1] - b.ref[3 * p + 1], dz = b.xyz[3 * p + 2] - b.ref[3 * p + 2];
             st.max_displacement_mm = fmax(st.max_displacement_mm, sqrt(dx * dx + dy * dy + dz * dz));
         }
-        for (int k = 0; k < tracked; k++) {
+        for (int k = 0; k < m->desc.tracked_count; k++) {
             size_t p = (size_t)m->tracked_point[k];
             float dx = b.xyz[3 * p] - b.ref[3 * p], dy = b.xyz[3 * p + 1] - b.ref[3 * p + 1], dz = b.xyz[3 * p + 2] - b.ref[3 * p + 2];
             st.tracked_max_mm[k] = fmax(st.tracked_max_mm[k], sqrt(dx * dx + dy * dy + dz * dz));
-            b.track_with[(size_t)k * (size_t)frames + (size_t)i] = b.xyz[3 * p + 1];
-            b.track_without[(size_t)k * (size_t)frames + (size_t)i] = b.ref[3 * p + 1];
         }
         if (!d->no_pc2) r = sk_pc2_append(&pc2, b.xyz, err);
         if (r == SK_OK && (d->obj_frames || d->render)) {
@@ -215,8 +232,13 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
     if (r == SK_OK && !d->no_pc2) r = sk_pc2_close(&pc2, err);
     else sk_pc2_abort(&pc2);
     if (r == SK_OK && d->save_state) r = sk_tissue_sim_save_state_file(sim, d->save_state, err);
-    if (r == SK_OK && d->plot && tracked > 0) {
-        sk__tracked_series ts = {tracked, frames, {0}, b.track_time, b.track_with, b.track_without};
+    if (r == SK_OK && d->plot && tracked > 0 && samples >= 2) {
+        /* the series are point-major with plot_cap samples each: pack them to `samples` */
+        for (int k = 1; k < tracked; k++) {
+            memmove(b.track_with + (size_t)k * samples, b.track_with + (size_t)k * plot_cap, samples * sizeof(float));
+            memmove(b.track_without + (size_t)k * samples, b.track_without + (size_t)k * plot_cap, samples * sizeof(float));
+        }
+        sk__tracked_series ts = {tracked, (int)samples, {0}, b.track_time, b.track_with, b.track_without};
         for (int k = 0; k < tracked; k++) ts.name[k] = m->desc.tracked[k].name;
         r = sk__plot_tracked(&ts, d->plot, err);
     }

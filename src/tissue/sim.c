@@ -84,6 +84,7 @@ static uint64_t fingerprint(const sk_tissue_model *m, int step_hz)
     uint32_t bits[8];
     memcpy(bits, params, sizeof bits);
     for (int i = 0; i < 8; i++) h = sk_hash(h, bits[i], (uint64_t)i, m->desc.simulation.no_fat);
+    h = sk_hash(h, (uint64_t)m->desc.simulation.iterations, 0, 0);
     return h;
 }
 

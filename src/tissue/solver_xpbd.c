@@ -31,10 +31,13 @@
 
 #define MAX_SLABS 64
 
+/* One spring as the solve reads it: its ends, rest length, w_i / denominator,
+ * w_j / denominator, gamma and (alpha / h^2) / denominator (32 bytes, two springs per
+ * cache line). */
 typedef struct spring {
     uint32_t i, j;
-    float inv_denom, gamma;
     double rest;
+    float ci, cj, gamma, ca;
 } spring;
 
 struct sk__solver {
@@ -44,7 +47,13 @@ struct sk__solver {
     spring *springs;
     double *w; /* inverse mass of every point */
     size_t free_count;
-    double *tether_coef, *tether_gamma; /* per free point: w / ((1 + gamma) w + alpha / h^2), gamma */
+    double *tether_coef, *tether_gamma, *tether_ca; /* per free point: w / ((1 + gamma) w + alpha / h^2),
+                                                       gamma, (alpha / h^2) / the same */
+    int iterations;
+    /* with more than one iteration: alpha lambda of every spring and tether axis (lambda
+       accumulates over a step's iterations, eq. 18) */
+    float *mu;
+    double *tether_mu;
 };
 
 void sk__spring_constants(const sk_tissue_model *m, size_t s, double *stiffness, double *damping)
@@ -74,6 +83,9 @@ static void destroy(sk__solver *s)
     free(s->w);
     free(s->tether_coef);
     free(s->tether_gamma);
+    free(s->tether_ca);
+    free(s->mu);
+    free(s->tether_mu);
     free(s);
 }
 
@@ -89,7 +101,14 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
     s->free_count = m->skin_count + m->fat_count;
     s->tether_coef = malloc((s->free_count ? s->free_count : 1) * sizeof *s->tether_coef);
     s->tether_gamma = malloc((s->free_count ? s->free_count : 1) * sizeof *s->tether_gamma);
-    if (!s->springs || !s->w || !slab || !s->tether_coef || !s->tether_gamma) {
+    s->tether_ca = malloc((s->free_count ? s->free_count : 1) * sizeof *s->tether_ca);
+    s->iterations = m->desc.simulation.iterations > 0 ? m->desc.simulation.iterations : 1;
+    if (s->iterations > 1) {
+        s->mu = calloc(n ? n : 1, sizeof *s->mu);
+        s->tether_mu = calloc(3 * (s->free_count ? s->free_count : 1), sizeof *s->tether_mu);
+    }
+    if (!s->springs || !s->w || !slab || !s->tether_coef || !s->tether_gamma || !s->tether_ca ||
+        (s->iterations > 1 && (!s->mu || !s->tether_mu))) {
         free(slab);
         destroy(s);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu springs", n);
@@ -128,8 +147,11 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
         sp->i = m->spring_i[k];
         sp->j = m->spring_j[k];
         sp->rest = m->spring_rest[k];
+        double inv_denom = 1.0 / ((1.0 + gamma) * wsum + alpha / (h * h));
         sp->gamma = (float)gamma;
-        sp->inv_denom = (float)(1.0 / ((1.0 + gamma) * wsum + alpha / (h * h)));
+        sp->ci = (float)(s->w[m->spring_i[k]] * inv_denom);
+        sp->cj = (float)(s->w[m->spring_j[k]] * inv_denom);
+        sp->ca = (float)(alpha / (h * h) * inv_denom);
     }
     free(slab);
     const sk_tissue_material_desc *mat = &m->desc.material;
@@ -138,14 +160,16 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
         double alpha = 1.0 / k, gamma = damping_gamma(zeta, sqrt(k * w) * h);
         s->tether_gamma[p] = gamma;
         s->tether_coef[p] = w / ((1.0 + gamma) * w + alpha / (h * h));
+        s->tether_ca[p] = alpha / (h * h) / ((1.0 + gamma) * w + alpha / (h * h));
     }
     *out = s;
     return SK_OK;
 }
 
-static void solve_slab(const sk__solver *s, int slab, double *x, const double *base)
+/* One Gauss-Seidel sweep of a slab's springs; `mu` (alpha lambda per spring) when the step
+ * iterates, NULL for a single iteration (lambda starts at 0 each step). */
+static void solve_slab(const sk__solver *s, int slab, double *x, const double *base, float *mu)
 {
-    const double *w = s->w;
     for (size_t k = s->start[slab]; k < s->start[slab + 1]; k++) {
         const spring *sp = &s->springs[k];
         size_t a = sp->i, b = sp->j;
@@ -160,8 +184,12 @@ static void solve_slab(const sk__solver *s, int slab, double *x, const double *b
         const double *ba = base + 3 * a, *bb = base + 3 * b;
         double rel = dx * ((xa[0] - ba[0]) - (xb[0] - bb[0])) + dy * ((xa[1] - ba[1]) - (xb[1] - bb[1])) +
                      dz * ((xa[2] - ba[2]) - (xb[2] - bb[2]));
-        double lambda = -((len - sp->rest) + sp->gamma * rel) * sp->inv_denom;
-        double ga = w[a] * lambda, gb = w[b] * lambda;
+        double force = (len - sp->rest) + sp->gamma * rel; /* -dlambda times the denominator */
+        if (mu) {
+            force += mu[k];
+            mu[k] -= (float)(sp->ca * force);
+        }
+        double ga = -sp->ci * force, gb = -sp->cj * force;
         xa[0] += ga * dx;
         xa[1] += ga * dy;
         xa[2] += ga * dz;
@@ -173,17 +201,31 @@ static void solve_slab(const sk__solver *s, int slab, double *x, const double *b
 
 static void step(sk__solver *s, double *x, const double *base, const double *target, const double *target_base)
 {
-    for (int parity = 0; parity < 2; parity++) {
-#pragma omp for schedule(dynamic, 1)
-        for (int slab = parity; slab < s->slabs; slab += 2) solve_slab(s, slab, x, base);
-    }
+    bool iterate = s->iterations > 1;
+    if (iterate) {
 #pragma omp for schedule(static)
-    for (size_t p = 0; p < s->free_count; p++) {
-        double a = s->tether_coef[p], g = s->tether_gamma[p];
-        for (int c = 0; c < 3; c++) {
-            size_t i = 3 * p + (size_t)c;
-            double d = x[i] - target[i], rel = (x[i] - base[i]) - (target[i] - target_base[i]);
-            x[i] -= a * (d + g * rel);
+        for (size_t k = 0; k < s->count; k++) s->mu[k] = 0.0f;
+#pragma omp for schedule(static)
+        for (size_t i = 0; i < 3 * s->free_count; i++) s->tether_mu[i] = 0.0;
+    }
+    for (int it = 0; it < s->iterations; it++) {
+        for (int parity = 0; parity < 2; parity++) {
+#pragma omp for schedule(dynamic, 1)
+            for (int slab = parity; slab < s->slabs; slab += 2) solve_slab(s, slab, x, base, iterate ? s->mu : NULL);
+        }
+#pragma omp for schedule(static)
+        for (size_t p = 0; p < s->free_count; p++) {
+            double a = s->tether_coef[p], g = s->tether_gamma[p], ca = s->tether_ca[p];
+            for (int c = 0; c < 3; c++) {
+                size_t i = 3 * p + (size_t)c;
+                double d = x[i] - target[i], rel = (x[i] - base[i]) - (target[i] - target_base[i]);
+                double force = d + g * rel;
+                if (iterate) {
+                    force += s->tether_mu[i];
+                    s->tether_mu[i] -= ca * force;
+                }
+                x[i] -= a * force;
+            }
         }
     }
 }

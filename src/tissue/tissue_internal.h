@@ -135,15 +135,17 @@ sk__label sk__tissue_label_at(const sk__tissue_shapes *t, sk_vec3d p);
 /* Labels every grid point (parallel over slices). */
 sk_result sk__voxelise(const sk__grid *g, const sk__tissue_shapes *t, sk__label *labels, sk_error *err);
 
-/* Euclidean distance (mm) from every grid point to the nearest labelled point, exact
- * (Felzenszwalb & Huttenlocher 2012, separable squared distance transform), capped at
- * `cap_mm` (farther points get cap_mm). */
-sk_result sk__distance_to_tissue(const sk__grid *g, const sk__label *labels, double cap_mm, float *distance,
-                                 sk_error *err);
+/* Euclidean distance (mm) from every grid point of the box [lo, hi] (grid indices) to the
+ * nearest labelled point inside the box, exact (Felzenszwalb & Huttenlocher 2012,
+ * separable squared distance transform); `distance` holds the box's points, x fastest.
+ * (A point's distance is exact if the nearest tissue lies inside the box.) */
+sk_result sk__distance_to_tissue(const sk__grid *g, const sk__label *labels, const int lo[3], const int hi[3],
+                                 float *distance, sk_error *err);
 
 /* Marks (sets 1) the grid points of the character's fat regions. */
-void sk__fat_regions_mark(const sk_tissue_character_desc *desc, const sk__skeleton *s, const sk__bone *bones,
-                          const sk__muscle *muscles, const sk__grid *g, const float *distance, uint8_t *fat);
+sk_result sk__fat_regions_mark(const sk_tissue_character_desc *desc, const sk__skeleton *s, const sk__bone *bones,
+                               const sk__muscle *muscles, const sk__grid *g, const sk__label *labels, uint8_t *fat,
+                               sk_error *err);
 
 /* The paper's dilation: values start at 1 on seeds, `passes` times every positive point
  * adds w(d) to the points within radius (see tissue.h). */
@@ -156,6 +158,17 @@ sk_result sk__dilate(const sk__grid *g, const uint8_t *seed, int passes, double 
  * cells removed to keep the boundary manifold. */
 sk_result sk__skin_cells(const sk__grid *g, const uint8_t *is_point, const sk__label *labels, uint8_t *inside,
                          size_t *removed, sk_error *err);
+/* Where the inside cells are: for each row (y, z) of cells the range of x holding inside
+ * cells (lo > hi for none), so scans over the grid skip the empty rows. */
+typedef struct sk__cell_rows {
+    int *lo, *hi; /* n[1] x n[2] rows, y fastest */
+} sk__cell_rows;
+sk_result sk__cell_rows_make(const sk__grid *g, const uint8_t *inside, sk__cell_rows *rows, sk_error *err);
+void sk__cell_rows_free(sk__cell_rows *rows);
+/* The x range [lo, hi] of grid points (or vertices) of row (y, z) that are corners of
+ * inside cells: the union of the four cell rows around it (false if none). */
+bool sk__cell_rows_corners(const sk__grid *g, const sk__cell_rows *rows, int y, int z, int *lo, int *hi);
+
 /* The boundary of the inside cells as triangles whose vertices are grid points
  * (counter-clockwise seen from outside): grid indices of the vertices, 3 per triangle. */
 sk_result sk__skin_faces(const sk__grid *g, const uint8_t *inside, size_t **out_corners, size_t *out_triangles,
