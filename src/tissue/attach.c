@@ -39,8 +39,10 @@ static bool may_be_closer(const sk__ellipsoid *e, sk_vec3d p, double best)
 }
 
 /* The tissue nearest a free point at rest: a bone (returns -1) or a muscle (its index);
- * *bone gets the bone, or the muscle's origin bone. */
-static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, sk_vec3d x, int *bone)
+ * *bone gets the bone, or the muscle's origin bone; *near the muscles within two grid
+ * spacings of that nearest distance (the muscles the point lies against, which it is kept
+ * out of; muscles of other limbs it may meet in a pose are not obstacles to it). */
+static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, sk_vec3d x, int *bone, uint64_t *near)
 {
     double best = HUGE_VAL;
     int muscle = -1;
@@ -63,6 +65,10 @@ static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, 
         }
     }
     if (muscle >= 0) *bone = m->muscles[muscle].origin_bone;
+    *near = 0;
+    double reach = best + 2.0 * m->grid.spacing;
+    for (int i = 0; i < t->muscle_count; i++)
+        if (may_be_closer(&t->muscle[i], x, reach) && surface_distance(&t->muscle[i], x) <= reach) *near |= (uint64_t)1 << i;
     return muscle;
 }
 
@@ -132,7 +138,7 @@ void sk__model_attach(sk_tissue_model *m, const sk__tissue_shapes *t)
     for (size_t p = 0; p < m->point_count; p++) {
         sk_vec3d x = m->rest[p];
         if (p < nfree) {
-            int bone, muscle = nearest_tissue(m, t, x, &bone);
+            int bone, muscle = nearest_tissue(m, t, x, &bone, &m->near_muscles[p]);
             m->owner[p] = bone;
             m->carrier_muscle[p] = muscle;
             if (muscle >= 0) {

@@ -124,33 +124,54 @@ static int near_block(const sk__obstacle *obstacles, int count, int parts, const
     return n;
 }
 
-void sk__collide(const sk__obstacle *obstacles, int obstacle_count, double *x, size_t count)
+/* The collisions of the points of one block. */
+static void collide_block(const sk__obstacle *obstacles, int obstacle_count, int bone_count,
+                          const uint64_t *near_muscles, double *x, size_t p0, size_t p1)
+{
+    double lo[3], hi[3];
+    int near[SK__MAX_OBSTACLES];
+    block_bounds(x, p0, p1, lo, hi);
+    /* muscles first, bones last: no point may end in a bone */
+    int n = near_block(obstacles, obstacle_count, 1, lo, hi, near);
+    bool moved = false;
+    for (size_t p = p0; p < p1; p++)
+        for (int k = 0; k < n; k++)
+            if ((near_muscles[p] >> (near[k] - bone_count) & 1) &&
+                in_box(x + 3 * p, obstacles[near[k]].lo, obstacles[near[k]].hi))
+                moved |= push_out(&obstacles[near[k]], x + 3 * p);
+    /* bones overlap at the joints: out of one may be into the next, so repeat (with
+       the bones near where the points now are) */
+    for (int pass = 0; pass < 8; pass++) {
+        if (moved || pass == 0) block_bounds(x, p0, p1, lo, hi);
+        n = near_block(obstacles, obstacle_count, 3, lo, hi, near);
+        moved = false;
+        for (size_t p = p0; p < p1; p++)
+            for (int k = 0; k < n; k++)
+                if (in_box(x + 3 * p, obstacles[near[k]].lo, obstacles[near[k]].hi))
+                    moved |= push_out(&obstacles[near[k]], x + 3 * p);
+        if (!moved) break;
+    }
+}
+
+void sk__collide(const sk__obstacle *obstacles, int obstacle_count, int bone_count, const uint64_t *near_muscles,
+                 double *x, size_t count)
 {
     size_t blocks = (count + BLOCK - 1) / BLOCK;
 #pragma omp for schedule(dynamic, 16)
     for (size_t blk = 0; blk < blocks; blk++) {
         size_t p0 = blk * BLOCK, p1 = p0 + BLOCK < count ? p0 + BLOCK : count;
-        double lo[3], hi[3];
-        int near[SK__MAX_OBSTACLES];
-        block_bounds(x, p0, p1, lo, hi);
-        /* muscles first, bones last: no point may end in a bone */
-        int n = near_block(obstacles, obstacle_count, 1, lo, hi, near);
-        bool moved = false;
-        for (size_t p = p0; p < p1; p++)
-            for (int k = 0; k < n; k++)
-                if (in_box(x + 3 * p, obstacles[near[k]].lo, obstacles[near[k]].hi))
-                    moved |= push_out(&obstacles[near[k]], x + 3 * p);
-        /* bones overlap at the joints: out of one may be into the next, so repeat (with
-           the bones near where the points now are) */
-        for (int pass = 0; pass < 8; pass++) {
-            if (moved || pass == 0) block_bounds(x, p0, p1, lo, hi);
-            n = near_block(obstacles, obstacle_count, 3, lo, hi, near);
-            moved = false;
-            for (size_t p = p0; p < p1; p++)
-                for (int k = 0; k < n; k++)
-                    if (in_box(x + 3 * p, obstacles[near[k]].lo, obstacles[near[k]].hi))
-                        moved |= push_out(&obstacles[near[k]], x + 3 * p);
-            if (!moved) break;
-        }
+        collide_block(obstacles, obstacle_count, bone_count, near_muscles, x, p0, p1);
+    }
+}
+
+void sk__collide_finish(const sk__obstacle *obstacles, int obstacle_count, int bone_count, const uint64_t *near_muscles,
+                        double *x, const double *base, double *v, double inv_h, size_t count)
+{
+    size_t blocks = (count + BLOCK - 1) / BLOCK;
+#pragma omp for schedule(dynamic, 16)
+    for (size_t blk = 0; blk < blocks; blk++) {
+        size_t p0 = blk * BLOCK, p1 = p0 + BLOCK < count ? p0 + BLOCK : count;
+        if (obstacle_count > 0) collide_block(obstacles, obstacle_count, bone_count, near_muscles, x, p0, p1);
+        for (size_t i = 3 * p0; i < 3 * p1; i++) v[i] = (x[i] - base[i]) * inv_h;
     }
 }

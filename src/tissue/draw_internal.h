@@ -21,9 +21,10 @@ typedef struct sk__render_item {
  * eye), `up` up in the image, that shows all of it in an image of width / height = aspect. */
 sk__view sk__view_framing(sk_vec3d lo, sk_vec3d hi, sk_vec3d direction, sk_vec3d up, double fov_deg,
                           double aspect);
-/* Renders the meshes to a PNG (white ground, key and fill lights, sky with occlusion). */
+/* Renders the meshes to a PNG (white ground, key and fill lights, a sky, with ambient
+ * occlusion on request). */
 sk_result sk__render_items(const sk__render_item *items, int count, const sk__view *view, int width, int height,
-                           int samples, const char *png_path, sk_error *err);
+                           int samples, bool occlusion, const char *png_path, sk_error *err);
 /* A wedge cut out of a model: the points beyond both planes dot(p, n[k]) > offset[k]. */
 typedef struct sk__wedge {
     sk_vec3d n[2];

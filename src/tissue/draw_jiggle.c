@@ -26,5 +26,6 @@ sk_result sk__render_skin(const sk_mesh *skin, const sk__view *view, int width, 
                           sk_error *err)
 {
     sk__render_item item = {skin, {0.80f, 0.56f, 0.46f}, 0.08f};
-    return sk__render_items(&item, 1, view, width, height, 2, png_path, err);
+    /* many frames: direct light only, two samples a pixel */
+    return sk__render_items(&item, 1, view, width, height, 2, false, png_path, err);
 }

@@ -1,6 +1,7 @@
 /* The layers of the model (Shigemori & Kawai Figs. 1-2: bones and muscles as ellipsoids,
  * fat points between them and the skin) written as point clouds and meshes, and shown cut
- * open: the front half of the muscles, the fat and the skin removed, the bones whole. */
+ * open: everything beyond a plane through the root removed, the fat points at the cut
+ * drawn as beads. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <string.h>
@@ -42,44 +43,78 @@ static sk_result write_files(const sk_tissue_model *m, const char *dir, sk_error
     return r;
 }
 
+/* The fat points within two spacings behind the cut plane (so the cut shows a band of
+ * fat, not the fat hidden under the skin). */
+static sk_result fat_slice(const sk_mesh *fat, sk_vec3d n, double offset, double depth, sk_mesh *out, sk_error *err)
+{
+    sk__wedge keep_out = {{n, n}, {offset, offset}};
+    sk_mesh near = {0};
+    size_t count = 0;
+    for (size_t i = 0; i < fat->vertex_count; i++) {
+        const float *p = fat->positions + 3 * i;
+        double d = p[0] * n.x + p[1] * n.y + p[2] * n.z;
+        count += d <= offset && d > offset - depth;
+    }
+    if (count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no fat points at the cut");
+    sk_result r = sk_mesh_create(&near, count, 0, 0, err);
+    if (r != SK_OK) return r;
+    size_t k = 0;
+    for (size_t i = 0; i < fat->vertex_count; i++) {
+        const float *p = fat->positions + 3 * i;
+        double d = p[0] * n.x + p[1] * n.y + p[2] * n.z;
+        if (d <= offset && d > offset - depth) memcpy(near.positions + 3 * k++, p, 3 * sizeof(float));
+    }
+    r = sk__beads(&near, 0.32 * depth / 2.0, &keep_out, out, err);
+    sk_mesh_free(&near);
+    return r;
+}
+
 sk_result sk__draw_layers(const sk_tissue_model *m, const char *png_path, int width, sk_error *err)
 {
-    sk_mesh skin = {0}, bones = {0}, muscles = {0}, fat = {0}, skin_cut = {0}, muscles_cut = {0}, beads = {0};
-    /* a quarter cut out towards the viewer (front, +x side), through the root */
-    sk_vec3d root = m->skeleton.rest[m->skeleton.root];
-    sk__wedge w = {{sk_v3d(1, 0, 0), sk_v3d(0, 0, 1)}, {root.x, root.z}};
+    sk_mesh skin = {0}, bones = {0}, muscles = {0}, fat = {0}, skin_cut = {0}, bones_cut = {0}, muscles_cut = {0},
+            beads = {0};
     sk_result r = sk_tissue_model_rest_skin(m, &skin, err);
-    if (r == SK_OK) r = sk_tissue_model_ellipsoids(m, SK_TISSUE_POINT_BONE, 48, &bones, err);
+    if (r != SK_OK) return r;
+    sk_vec3f lo, hi;
+    sk_mesh_bounds(&skin, &lo, &hi);
+    sk_vec3d l = sk_v3f_to_d(lo), h = sk_v3f_to_d(hi);
+    /* a limb is cut along its length, seen from the side; a body through its middle, from
+       the front: everything beyond the plane through the root is removed */
+    bool limb = h.y - l.y > 2.0 * (h.x - l.x);
+    sk_vec3d root = m->skeleton.rest[m->skeleton.root];
+    sk_vec3d n = limb ? sk_v3d(1, 0, 0) : sk_v3d(0, 0, 1);
+    double offset = sk_v3d_dot(n, root) + 0.25 * m->grid.spacing;
+    sk__wedge cut = {{n, n}, {offset, offset}};
+    r = sk_tissue_model_ellipsoids(m, SK_TISSUE_POINT_BONE, 48, &bones, err);
     bool has_muscles = m->desc.muscle_count > 0;
     if (r == SK_OK && has_muscles) r = sk_tissue_model_ellipsoids(m, SK_TISSUE_POINT_MUSCLE, 48, &muscles, err);
     if (r == SK_OK) r = sk_tissue_model_points(m, SK_TISSUE_POINT_FAT, &fat, err);
-    if (r == SK_OK) r = sk__mesh_cut(&skin, &w, &skin_cut, err);
-    if (r == SK_OK && has_muscles) r = sk__mesh_cut(&muscles, &w, &muscles_cut, err);
-    if (r == SK_OK) r = sk__beads(&fat, 0.3 * m->grid.spacing, &w, &beads, err);
+    if (r == SK_OK) r = sk__mesh_cut(&skin, &cut, &skin_cut, err);
+    if (r == SK_OK) r = sk__mesh_cut(&bones, &cut, &bones_cut, err);
+    if (r == SK_OK && has_muscles) r = sk__mesh_cut(&muscles, &cut, &muscles_cut, err);
+    if (r == SK_OK) r = fat_slice(&fat, n, offset, 2.0 * m->grid.spacing, &beads, err);
     if (r == SK_OK) {
-        sk_vec3f lo, hi;
-        sk_mesh_bounds(&skin, &lo, &hi);
-        sk_vec3d l = sk_v3f_to_d(lo), h = sk_v3f_to_d(hi);
-        /* a long limb lies across the picture */
-        bool tall = h.y - l.y > 2.0 * (h.x - l.x);
-        sk_vec3d up = tall ? sk_v3d(1, 0, 0) : sk_v3d(0, 1, 0);
-        double across = h.x - l.x + 0.5 * (h.z - l.z), along = h.y - l.y;
-        double aspect = sk_clampd(tall ? along / across : across / along, 0.5, 2.5);
+        sk_vec3d up = limb ? sk_v3d(0, 0, 1) : sk_v3d(0, 1, 0);
+        sk_vec3d dir = limb ? sk_v3d(1.0, 0.15, 0.3) : sk_v3d(0.3, 0.15, 1.0);
+        double across = limb ? h.y - l.y : h.x - l.x, along = limb ? h.z - l.z + 0.3 * (h.x - l.x) : h.y - l.y;
+        if (limb) up = sk_v3d(0, 0, 1); /* the limb lies across the picture */
+        double aspect = sk_clampd(across / along, 0.5, 3.0);
         int height = (int)(width / aspect + 0.5);
-        sk__view view = sk__view_framing(l, h, tall ? sk_v3d(0.7, 0.0, 1.0) : sk_v3d(0.7, 0.25, 1.0), up, 30.0, aspect);
+        sk__view view = sk__view_framing(l, h, dir, up, 30.0, aspect);
         sk__render_item items[4] = {
-            {&bones, {0.85f, 0.82f, 0.74f}, 0.1f},
+            {&bones_cut, {0.85f, 0.82f, 0.74f}, 0.1f},
             {&beads, {0.95f, 0.72f, 0.18f}, 0.0f},
             {&skin_cut, {0.80f, 0.55f, 0.45f}, 0.05f},
             {&muscles_cut, {0.62f, 0.10f, 0.09f}, 0.15f},
         };
-        r = sk__render_items(items, has_muscles ? 4 : 3, &view, width, height, 4, png_path, err);
+        r = sk__render_items(items, has_muscles ? 4 : 3, &view, width, height, 4, true, png_path, err);
     }
     sk_mesh_free(&skin);
     sk_mesh_free(&bones);
     sk_mesh_free(&muscles);
     sk_mesh_free(&fat);
     sk_mesh_free(&skin_cut);
+    sk_mesh_free(&bones_cut);
     sk_mesh_free(&muscles_cut);
     sk_mesh_free(&beads);
     return r;

@@ -42,7 +42,7 @@ static void put3(float *dst, sk_vec3d v)
 }
 
 sk_result sk__render_items(const sk__render_item *items, int count, const sk__view *view, int width, int height,
-                           int samples, const char *png_path, sk_error *err)
+                           int samples, bool occlusion, const char *png_path, sk_error *err)
 {
     if (count > SK_RENDER_MAX_MATERIALS) return sk_fail(err, SK_ERROR_LIMIT, "too many layers to render");
     sk_render_scene_desc *d = calloc(1, sizeof *d);
@@ -59,7 +59,7 @@ sk_result sk__render_items(const sk__render_item *items, int count, const sk__vi
     put3(d->camera.target, view->target);
     put3(d->camera.up, view->up);
     d->environment.radiance[0] = d->environment.radiance[1] = d->environment.radiance[2] = 0.3f;
-    d->environment.ambient_occlusion = true;
+    d->environment.ambient_occlusion = occlusion;
     d->environment.ao_samples = 1;
     d->environment.ao_distance = 60.0f;
     d->light_count = 2;

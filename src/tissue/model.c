@@ -147,7 +147,8 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
         m->owner = malloc(m->point_count * sizeof *m->owner);
         m->local = malloc(m->point_count * sizeof *m->local);
         m->carrier_muscle = malloc(m->point_count * sizeof *m->carrier_muscle);
-        if (!m->rest || !m->mass || !m->owner || !m->local || !m->carrier_muscle) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+        m->near_muscles = calloc(m->point_count, sizeof *m->near_muscles);
+        if (!m->rest || !m->mass || !m->owner || !m->local || !m->carrier_muscle || !m->near_muscles) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     }
     if (r == SK_OK) {
         for (size_t p = 0; p < m->point_count; p++) m->rest[p] = sk__grid_position(g, m->grid_of[p]);
@@ -217,6 +218,7 @@ void sk_tissue_model_destroy(sk_tissue_model *m)
     free(m->owner);
     free(m->local);
     free(m->carrier_muscle);
+    free(m->near_muscles);
     free(m->spring_i);
     free(m->spring_j);
     free(m->spring_rest);

@@ -117,7 +117,8 @@ static sk_result make_body(sk_bvh *b, body_joints *j, sk_error *err)
     builder bd = {b, SK_OK, err};
     static const char *const side[2] = {"Left", "Right"}, *const ab[2] = {"L", "R"};
     char name[64];
-    j->hips = add(&bd, "Hips", -1, 0, 94, 0, false);
+    /* the root's position is in its channels (its OFFSET 0), as motion capture writes it */
+    j->hips = add(&bd, "Hips", -1, 0, 0, 0, false);
     for (int s = 0; s < 2; s++) {
         double x = s == 0 ? 1 : -1;
         snprintf(name, sizeof name, "%sHipJoint", ab[s]);

@@ -12,9 +12,14 @@
 
 #include "tissue/sim_internal.h"
 
-/* Relaxation steps at the start pose before time 0 (the flesh carried there rigidly is
- * let settle, so a motion that does not start at rest does not start with a jolt). */
+/* Relaxation steps at the start pose before time 0 (the flesh carried there by the tissue
+ * is let settle, so a motion that does not start at rest does not start with a jolt), until
+ * no point moves more than SETTLED_MM in a step. */
 #define SETTLE_STEPS 240
+#define SETTLED_MM 1e-6
+/* Steps timed on one thread and on all to choose, and steps until the choice is made again. */
+#define PROBE_STEPS 12
+#define REPROBE_STEPS 1200
 
 void sk__sim_pose_at(const sk_tissue_sim *s, int64_t k, sk_tissue_pose *pose)
 {
@@ -103,14 +108,28 @@ static void carry_all(sk_tissue_sim *s)
  * saves (the solver synchronises a few times per step). */
 static int threads_for(const sk_tissue_sim *s) { return s->nfree >= s->parallel_points ? omp_get_max_threads() : 1; }
 
-/* The flesh relaxed at the start pose (no inertia): every thread of a region calls it. */
+/* The flesh relaxed at the start pose (no inertia): every thread of a region calls it.
+ * The largest move of a step is a max over the threads' maxima, the same for any count. */
 static void settle(sk_tissue_sim *s)
 {
     for (int i = 0; i < SETTLE_STEPS; i++) {
 #pragma omp for schedule(static)
         for (size_t k = 0; k < 3 * s->n; k++) s->base[k] = s->x[k];
         s->ops->step(s->solver, s->x, s->base, s->target, s->target);
-        sk__collide(s->obstacles, s->obstacle_count, s->x, s->nfree);
+        sk__collide(s->obstacles, s->obstacle_count, s->m->desc.bone_count, s->m->near_muscles, s->x, s->nfree);
+#pragma omp single
+        s->settle_move = 0.0;
+        double move = 0.0; /* this thread's largest (a max is the same in any order) */
+#pragma omp for schedule(static)
+        for (size_t k = 0; k < 3 * s->nfree; k++) {
+            double d = fabs(s->x[k] - s->base[k]);
+            if (d > move) move = d;
+        }
+#pragma omp critical(sk_tissue_settle)
+        if (move > s->settle_move) s->settle_move = move;
+#pragma omp barrier
+        if (s->settle_move < SETTLED_MM) break;
+#pragma omp barrier
     }
 }
 
@@ -144,6 +163,7 @@ sk_result sk_tissue_sim_create(const sk_tissue_model *m, const sk_tissue_motion 
     }
     s->fingerprint = fingerprint(m, s->step_hz);
     s->parallel_points = 20000;
+    s->threads = omp_get_max_threads();
     sk__sim_pose_at(s, 0, &s->pose);
     s->pose_prev = s->pose;
     sk__sim_shape_muscles(s, &s->pose, s->muscle);
@@ -216,12 +236,21 @@ static bool anchor_jumped(const sk_tissue_sim *s, size_t p)
     return s->carry[m->owner[p]];
 }
 
-/* One internal step; every thread of a parallel region calls it. */
+/* The step taken: the pose at its end becomes the current one. */
+static void finish_step(sk_tissue_sim *s)
+{
+    s->pose_prev = s->pose;
+    s->pose = s->next;
+    memcpy(s->muscle_prev, s->muscle, sizeof s->muscle);
+    memcpy(s->muscle, s->muscle_next, sizeof s->muscle);
+    s->step++;
+}
+
+/* One internal step, prepared (prepare_step); every thread of a parallel region calls it.
+ * Returns with the points moved; the caller finishes it (finish_step) in one thread. */
 static void step_parallel(sk_tissue_sim *s)
 {
     const sk_tissue_model *m = s->m;
-#pragma omp single
-    prepare_step(s);
     /* driven points: to the new pose; the springs' damping sees their motion over the step,
        unless their bone jumped (then they are taken to have been carried there) */
 #pragma omp for schedule(static) nowait
@@ -265,20 +294,26 @@ static void step_parallel(sk_tissue_sim *s)
         x[1] = q.y + s->h * vel.y;
         x[2] = q.z + s->h * vel.z;
     }
-    if (!no_fat) {
-        s->ops->step(s->solver, s->x, s->base, s->target, s->target_base);
-        sk__collide(s->obstacles, s->obstacle_count, s->x, s->nfree);
-    }
-    double inv_h = 1.0 / s->h;
-#pragma omp for schedule(static)
-    for (size_t i = 0; i < 3 * s->nfree; i++) s->v[i] = (s->x[i] - s->base[i]) * inv_h;
+    if (!no_fat) s->ops->step(s->solver, s->x, s->base, s->target, s->target_base);
+    /* out of the bones and muscles, then the velocities, block by block */
+    sk__collide_finish(s->obstacles, no_fat ? 0 : s->obstacle_count, s->m->desc.bone_count, s->m->near_muscles, s->x,
+                       s->base, s->v, 1.0 / s->h, s->nfree);
+}
+
+/* Steps on `threads` threads until step `end`. */
+static void run_steps(sk_tissue_sim *s, int64_t end, int threads)
+{
+    if (s->step >= end) return;
+    prepare_step(s);
+#pragma omp parallel num_threads(threads)
+    while (s->step < end) {
+        step_parallel(s);
+        /* one synchronisation between steps: this one, then the next prepared */
 #pragma omp single
-    {
-        s->pose_prev = s->pose;
-        s->pose = s->next;
-        memcpy(s->muscle_prev, s->muscle, sizeof s->muscle);
-        memcpy(s->muscle, s->muscle_next, sizeof s->muscle);
-        s->step++;
+        {
+            finish_step(s);
+            if (s->step < end) prepare_step(s);
+        }
     }
 }
 
@@ -288,9 +323,26 @@ sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "time %g s is not a finite time up to 1e7 s", seconds);
     double k = seconds * s->step_hz;
     int64_t target = (int64_t)ceil(k - 1e-6);
-    if (s->step >= target) return SK_OK;
-#pragma omp parallel num_threads(threads_for(s))
-    while (s->step < target) step_parallel(s);
+    int most = threads_for(s);
+    while (s->step < target) {
+        if (most > 1 && s->step >= s->next_probe) {
+            /* time a few steps on one thread and on all, keep the faster (the machine may be
+               shared; the result is the same either way) */
+            int64_t a0 = s->step;
+            double t0 = sk_time_seconds();
+            run_steps(s, a0 + PROBE_STEPS < target ? a0 + PROBE_STEPS : target, 1);
+            int64_t a1 = s->step;
+            double t1 = sk_time_seconds();
+            run_steps(s, a1 + PROBE_STEPS < target ? a1 + PROBE_STEPS : target, most);
+            int64_t a2 = s->step;
+            double t2 = sk_time_seconds();
+            if (a1 > a0 && a2 > a1) s->threads = (t2 - t1) / (double)(a2 - a1) < (t1 - t0) / (double)(a1 - a0) ? most : 1;
+            s->next_probe = s->step + REPROBE_STEPS;
+            continue;
+        }
+        int64_t end = most > 1 && s->next_probe < target ? s->next_probe : target;
+        run_steps(s, end, most > 1 ? s->threads : 1);
+    }
     return SK_OK;
 }
 

@@ -22,9 +22,17 @@ typedef struct sk__obstacle {
 /* The bones (then the muscles, given their shapes) at a pose; returns how many. */
 int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
                   sk__obstacle *out);
-/* Moves the first `count` points of x (3 doubles each) out of the obstacles. Shares its
- * work with an orphaned loop (call it from every thread of a parallel region, or from one). */
-void sk__collide(const sk__obstacle *obstacles, int count_obstacles, double *x, size_t count);
+/* Moves the first `count` points of x (3 doubles each) out of the obstacles: every bone,
+ * and the muscles whose bit is set in the point's `near_muscles` mask (muscle i is
+ * obstacle bone_count + i). Shares its work with an orphaned loop (call it from every
+ * thread of a parallel region, or from one). */
+void sk__collide(const sk__obstacle *obstacles, int count_obstacles, int bone_count, const uint64_t *near_muscles,
+                 double *x, size_t count);
+/* The same, each block's velocities then set from its moves: v = (x - base) inv_h (one
+ * loop, one synchronisation). */
+void sk__collide_finish(const sk__obstacle *obstacles, int obstacle_count, int bone_count,
+                        const uint64_t *near_muscles, double *x, const double *base, double *v, double inv_h,
+                        size_t count);
 
 struct sk_tissue_sim {
     const sk_tissue_model *m;
@@ -53,6 +61,9 @@ struct sk_tissue_sim {
     int obstacle_count;
     uint64_t fingerprint;     /* of the model, for saved states */
     size_t parallel_points;   /* below this many free points one thread runs the steps */
+    double settle_move;       /* the largest move of the last settling step */
+    int threads;              /* threads the steps run on (chosen by timing, see sim.c) */
+    int64_t next_probe;       /* step at which the thread count is chosen again */
 };
 
 /* The pose of the motion at step k. */

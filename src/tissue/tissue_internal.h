@@ -202,6 +202,8 @@ struct sk_tissue_model {
     int *owner;                /* muscle/bone points: muscle or bone index; free points: the
                                   bone that carries them (or their muscle's origin bone) */
     int *carrier_muscle;       /* free points: the muscle that carries them, or -1 (a bone) */
+    uint64_t *near_muscles;    /* free points: bit i set when muscle i is near at rest (the
+                                  muscles the point is kept out of) */
     sk_vec3d *local;           /* bone points: position in the bone joint's rest frame;
                                   muscle points: coordinates in units of the rest semi-axes;
                                   free points: the same for the tissue nearest them at rest
