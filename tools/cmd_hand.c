@@ -2,7 +2,6 @@
  * coupling (Yasumuro 2000, ch. 3), keyframe animation to BVH and joint positions, and
  * calibration of constraint rows from measured samples. Argument parsing only; the model
  * is in the library (include/shitsukan/hand.h). */
-#include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -10,83 +9,14 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cmd_hand_surface.h"
+#include "cmd_hand_prior.h"
+#include "hand_args.h"
 #include "shitsukan/hand.h"
 
 #define MAX_PINS 64
 
 /* ------------------------------------------------------------ helpers */
-
-static int parse_side(const char *text, sk_hand_side *side)
-{
-    if (!text || strcmp(text, "right") == 0) *side = SK_HAND_SIDE_RIGHT;
-    else if (strcmp(text, "left") == 0) *side = SK_HAND_SIDE_LEFT;
-    else return cli_fail(CLI_EXIT_USAGE, "--side '%s' must be right or left", text);
-    return 0;
-}
-
-/* Skeleton from --side, --hand-length, --hand-breadth, --anatomy (each may be absent). */
-static int build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side,
-                          double length_mm, double breadth_mm, sk_hand_skeleton *skel)
-{
-    sk_error err = {0};
-    sk_hand_anatomy anatomy;
-    sk_hand_skeleton_desc desc = {0};
-    const char *anatomy_path = cli_get(cmd, args, "anatomy");
-    if (anatomy_path) {
-        if (sk_hand_anatomy_load_file(anatomy_path, &anatomy, &err) != SK_OK) return cli_fail_error(&err);
-        desc.anatomy = &anatomy;
-    }
-    double hl = length_mm, hb = breadth_mm;
-    int rc = cli_get_double(cmd, args, "hand-length", hl, 60, 400, &hl);
-    if (rc == 0) rc = cli_get_double(cmd, args, "hand-breadth", hb, 30, 200, &hb);
-    if (rc) return rc;
-    const char *side_text = cli_get(cmd, args, "side");
-    if (side_text && (rc = parse_side(side_text, &side))) return rc;
-    desc.side = side;
-    desc.hand_length_mm = hl;
-    desc.hand_breadth_mm = hb;
-    if (sk_hand_skeleton_init(skel, &desc, &err) != SK_OK) return cli_fail_error(&err);
-    return 0;
-}
-
-/* "natural", "yasumuro-table-3.2", "none" or a file. `out` is zeroed for "none". */
-static int load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out)
-{
-    memset(out, 0, sizeof *out);
-    if (strcmp(name, "none") == 0) return 0;
-    char path[PATH_MAX];
-    bool looks_like_file = strchr(name, '/') || strstr(name, ".json");
-    if (looks_like_file) snprintf(path, sizeof path, "%s", name);
-    else if (!cli_find_preset("hand", name, path, sizeof path))
-        return cli_fail(CLI_EXIT_USAGE,
-                        "--constraints '%s': no such set (natural, yasumuro-table-3.2, none, or a "
-                        "JSON file)", name);
-    sk_error err = {0};
-    if (sk_hand_constraints_load_file(path, skel, out, &err) != SK_OK) return cli_fail_error(&err);
-    return 0;
-}
-
-/* "DOF=value" -> dof index and the number (in file units). */
-static int parse_assignment(const char *option, const char *text, int *dof, double *value)
-{
-    const char *eq = strchr(text, '=');
-    if (!eq) return cli_fail(CLI_EXIT_USAGE, "--%s '%s': expected DOF=value, e.g. L.MCP.flex=60", option, text);
-    char name[64];
-    size_t n = (size_t)(eq - text);
-    if (n >= sizeof name) n = sizeof name - 1;
-    memcpy(name, text, n);
-    name[n] = '\0';
-    *dof = sk_hand_dof_find(name);
-    if (*dof < 0)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)",
-                        option, text, name);
-    char *end;
-    errno = 0;
-    *value = strtod(eq + 1, &end);
-    if (!eq[1] || *end || errno == ERANGE || !isfinite(*value) || fabs(*value) > 1e6)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': \"%s\" is not a finite number", option, text, eq + 1);
-    return 0;
-}
 
 static int write_positions(const sk_hand_skeleton *skel, const double *dofs, int frames, const char *path)
 {
@@ -230,10 +160,28 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
 
 /* ------------------------------------------------------------ hand pose */
 
+/* The equilibrium of a calibrated potential (hand calibrate) for the inputs. */
+static int pose_with_potential(const sk_hand_skeleton *skel, const char *path, const sk_hand_input *in, double *q,
+                               sk_hand_solve_info *info)
+{
+    sk_error err = {0};
+    sk_hand_potential pot;
+    if (sk_hand_potential_load_file(path, skel, &pot, &err) != SK_OK) return cli_fail_error(&err);
+    sk_hand_potential_solver *ps = NULL;
+    int rc = 0;
+    if (sk_hand_potential_solver_create(&ps, skel, &pot, NULL, &err) != SK_OK ||
+        sk_hand_potential_solve(ps, in, q, info, NULL, &err) != SK_OK)
+        rc = cli_fail_error(&err);
+    sk_hand_potential_solver_destroy(ps);
+    sk_hand_potential_free(&pot);
+    return rc;
+}
+
 static const cli_option pose_options[] = {
     {"pin", 0, "DOF=DEG", "hold a DOF at an absolute angle in degrees (mm for wrist.tx/ty/tz); repeatable", true},
     {"torque", 0, "DOF=T", "directed input torque on a DOF (stiffness x radians); repeatable", true},
     {"constraints", 0, "SET", "natural (default), yasumuro-table-3.2, none, or a constraint JSON file", false},
+    {"potential", 0, "FILE", "a calibrated potential (hand calibrate) instead of --constraints", false},
     {"samples", 0, "CSV", "joint-angle samples (header of DOF names, degrees) for lookup-table potentials", false},
     {"pairs", 0, "A:B,...", "DOF pairs that get a lookup-table potential from --samples", false},
     {"lut-resolution", 0, "N", "lookup-table grid nodes per axis (default 100)", false},
@@ -259,19 +207,19 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     int rc = require_option(cmd, args, "png", picture_options);
     if (rc) return rc;
     sk_hand_skeleton skel;
-    rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    rc = hand_build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
     const char *set = cli_get(cmd, args, "constraints");
     sk_hand_constraints *c = malloc(sizeof *c);
     if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
-    rc = load_constraints(set ? set : "natural", &skel, c);
+    rc = hand_load_constraints(set ? set : "natural", &skel, c);
     sk_hand_input in = {0};
     const char *values[MAX_PINS];
     int n = rc ? 0 : cli_get_all(cmd, args, "pin", values, MAX_PINS);
     for (int i = 0; i < n && !rc; i++) {
         int dof;
         double v;
-        rc = parse_assignment("pin", values[i], &dof, &v);
+        rc = hand_parse_assignment("pin", values[i], &dof, &v);
         if (!rc) {
             in.pinned[dof] = true;
             in.pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
@@ -281,7 +229,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     for (int i = 0; i < n && !rc; i++) {
         int dof;
         double v;
-        rc = parse_assignment("torque", values[i], &dof, &v);
+        rc = hand_parse_assignment("torque", values[i], &dof, &v);
         if (!rc) in.torque[dof] = v;
     }
     sk_hand_lut luts[16];
@@ -291,8 +239,16 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     sk_error err = {0};
     double q[SK_HAND_DOF_COUNT];
     sk_hand_solve_info info;
-    if (!rc && sk_hand_solver_create(&solver, &skel, c, luts, lut_count, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
-    if (!rc && sk_hand_solve(solver, &in, q, &info, &err) != SK_OK) rc = cli_fail_error(&err);
+    const char *potential = cli_get(cmd, args, "potential");
+    if (!rc && potential && (set || lut_count > 0))
+        rc = cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints or --samples");
+    if (!rc && potential) {
+        rc = pose_with_potential(&skel, potential, &in, q, &info);
+    } else {
+        if (!rc && sk_hand_solver_create(&solver, &skel, c, luts, lut_count, NULL, &err) != SK_OK)
+            rc = cli_fail_error(&err);
+        if (!rc && sk_hand_solve(solver, &in, q, &info, &err) != SK_OK) rc = cli_fail_error(&err);
+    }
     if (!rc && info.pins_clamped > 0)
         fprintf(stderr, "shitsukan: note: %d pinned value(s) were outside the joint limits and were clamped\n",
                 info.pins_clamped);
@@ -371,6 +327,15 @@ static const cli_option animate_options[] = {
     {"plot-dofs", 0, "LIST", "DOFs to plot, comma-separated (default: the driven ones, then the most moving)", false},
     {"plot-title", 0, "TEXT", "title of the plot (default: the animation file's name)", false},
     {"plot-size", 0, "WxH", "plot size in pixels (default 800x560)", false},
+    {"glb", 0, "FILE", "write the skinned, animated hand surface as glTF binary (skeleton, weights, 3 LODs)", false},
+    {"landmarks", 0, "FILE", "write the 21 hand landmarks of every frame (.json or .csv)", false},
+    {"meshes-dir", 0, "DIR", "write the hand surface of frames as DIR/frame_0000.obj, ... (with --mesh-frames)", false},
+    {"mesh-frames", 0, "LIST", "frames for --meshes-dir, comma-separated (default all)", false},
+    {"skinning", 0, "METHOD", "skinning of the surface outputs: rigid, lbs or dqs (default)", false},
+    {"texture", 0, "PREFIX", "with --meshes-dir: also bake the skin texture PREFIX-albedo.png, PREFIX-normal.png", false},
+    {"texture-size", 0, "N", "atlas size of --texture in pixels (default 1024)", false},
+    {"triangles", 0, "N", "triangles of the surface's level 0 (default 8000)", false},
+    {"flesh", 0, "FILE", "flesh sizes JSON of the surface (default built in)", false},
 };
 
 /* --plot: the listed DOFs (or the driven ones and those that move most) over the frames. */
@@ -451,8 +416,10 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
     const char *angles = cli_get(cmd, args, "angles");
     const char *frames_dir = cli_get(cmd, args, "frames-dir"), *plot = cli_get(cmd, args, "plot");
-    if (!bvh && !positions && !angles && !frames_dir && !plot)
-        return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions, --angles, --plot or --frames-dir");
+    bool surface_outputs = cli_has(cmd, args, "glb") || cli_has(cmd, args, "landmarks") || cli_has(cmd, args, "meshes-dir");
+    if (!bvh && !positions && !angles && !frames_dir && !plot && !surface_outputs)
+        return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions, --angles, --plot, --frames-dir, --glb, "
+                                        "--landmarks or --meshes-dir");
     static const char *const frame_options[] = {"views", "png-size", "labels", "bare", NULL};
     static const char *const plot_options[] = {"plot-dofs", "plot-title", "plot-size", NULL};
     sk_hand_draw_desc draw;
@@ -470,9 +437,9 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     const char *path = args->positional[0];
     if (!rc && sk_hand_animation_load_file(path, anim, &err) != SK_OK) rc = cli_fail_error(&err);
     sk_hand_skeleton skel;
-    if (!rc) rc = build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
+    if (!rc) rc = hand_build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
     const char *set = cli_get(cmd, args, "constraints");
-    if (!rc) rc = load_constraints(set ? set : anim->constraints, &skel, c);
+    if (!rc) rc = hand_load_constraints(set ? set : anim->constraints, &skel, c);
     if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
     int frames = rc ? 0 : sk_hand_animation_frame_count(anim);
     if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))
@@ -494,6 +461,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_fail_error(&err);
     if (!rc && plot) rc = write_angle_plot(cmd, args, anim, dofs, frames, plot);
     if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
+    if (!rc && surface_outputs) rc = hand_animate_surface_outputs(cmd, args, &skel, dofs, frames, anim->fps);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
     sk_hand_solver_destroy(solver);
     free(dofs);
@@ -529,14 +497,29 @@ const cli_command cmd_hand_animate = {
 /* ------------------------------------------------------------ hand calibrate */
 
 static const cli_option calibrate_options[] = {
-    {"pairs", 0, "A:B,...", "joint pairs to fit, each 'x:y' for the line y = A x + b (required)", false},
-    {"weights", 0, "RULE", "thesis (eq. 3.18, default) or inverse-variance", false},
+    {"pairs", 0, "A:B,...", "fit the thesis's pair lines y = A x + b instead (constraint rows file)", false},
+    {"weights", 0, "RULE", "pair lines: thesis (eq. 3.18, default) or inverse-variance", false},
+    {"method", 0, "METHOD", "potential: mixture (default; components chosen on held-out samples) or gaussian", false},
+    {"components", 0, "N", "potential: fixed mixture component count (default: chosen)", false},
+    {"prior-strength", 0, "S", "potential: pseudo-samples of the base set's Gaussian (default: chosen; 0 = none)", false},
+    {"base", 0, "SET", "potential: set kept outside the samples' DOFs and shrunk toward (default natural)", false},
+    {"units", 0, "UNIT", "angles of the CSV: deg (default) or rad", false},
+    {"group", 0, "COLUMN", "CSV column naming the trial or person (held out together when choosing)", false},
+    {"ignore-columns", 0, "A,B", "CSV columns to skip (besides frame and time)", false},
 };
 
 static int run_calibrate(const cli_command *cmd, const cli_args *args)
 {
     const char *pairs_text = cli_get(cmd, args, "pairs");
-    if (!pairs_text) return cli_fail(CLI_EXIT_USAGE, "--pairs is required (e.g. --pairs R.MCP.flex:L.MCP.flex)");
+    if (!pairs_text) {
+        static const char *const pair_only[] = {"weights", NULL};
+        int rc = require_option(cmd, args, "pairs", pair_only);
+        return rc ? rc : hand_calibrate_potential(cmd, args);
+    }
+    static const char *const potential_only[] = {"method", "components", "prior-strength", "base", NULL};
+    for (int i = 0; potential_only[i]; i++)
+        if (cli_has(cmd, args, potential_only[i]))
+            return cli_fail(CLI_EXIT_USAGE, "--%s is for the potential; it does not go with --pairs", potential_only[i]);
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o rows.json is required");
     sk_hand_weight_rule rule = SK_HAND_WEIGHT_THESIS;
     const char *w = cli_get(cmd, args, "weights");
@@ -551,7 +534,8 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
     }
     sk_hand_samples samples;
     const char *path = args->positional[0];
-    if (sk_hand_samples_load_file(path, &samples, &err) != SK_OK) return cli_fail_error(&err);
+    int read_rc = hand_read_samples(cmd, args, path, &samples);
+    if (read_rc) return read_rc;
     sk_hand_fit fits[64];
     int rc = 0;
     if (sk_hand_calibrate((const double *const *)samples.column, samples.count, (const int(*)[2])pairs, n, rule,
@@ -572,18 +556,24 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
 
 const cli_command cmd_hand_calibrate = {
     .name = "hand calibrate",
-    .summary = "fit constraint rows (A, b, W) to measured joint-angle samples (thesis 3.2.2)",
-    .usage = "shitsukan hand calibrate SAMPLES.csv --pairs A:B[,C:D...] -o rows.json",
+    .summary = "fit the natural-posture potential (or the thesis's pair rows) to joint-angle samples (3.2.2)",
+    .usage = "shitsukan hand calibrate SAMPLES.csv -o potential.json [--method mixture|gaussian]\n"
+             "       shitsukan hand calibrate SAMPLES.csv --pairs A:B[,C:D...] -o rows.json",
     .description =
-        "Fits one least-squares line y = A x + b per pair of DOFs to the samples (a CSV with\n"
-        "a header of DOF names and one sample per line, in degrees; columns 'frame' and\n"
-        "'time' are ignored) and sets each row's weight from the spread of the samples about\n"
-        "the line, w = mean l^2 / max over the pairs (eq. 3.18), or by inverse variance.\n"
-        "Writes a constraint file for --constraints.",
-    .examples = "  shitsukan hand calibrate glove.csv --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex -o rows.json",
+        "Reads measured joint angles (a CSV with a header of DOF names and one sample per\n"
+        "line, degrees or --units rad; columns 'frame', 'time', --group and --ignore-columns\n"
+        "are not DOFs). Without --pairs it fits the whole potential of eq. 3.17: the relaxed\n"
+        "posture is the samples' mean and K + A'WA their precision (springs and coupling rows),\n"
+        "shrunk toward the base set, as a mixture of such Gaussians where held-out samples\n"
+        "say it helps; use it with hand pose --potential. With --pairs it fits one\n"
+        "least-squares line y = A x + b per pair and weights it by the spread about the line,\n"
+        "w = mean l^2 / max over the pairs (eq. 3.18: the loosest pair weighs most), or by\n"
+        "inverse variance; the result is a constraint file for --constraints.",
+    .examples = "  shitsukan hand calibrate glove.csv --group person -o potential.json\n"
+                "  shitsukan hand calibrate glove.csv --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex -o rows.json",
     .options = calibrate_options,
     .option_count = (int)(sizeof calibrate_options / sizeof calibrate_options[0]),
-    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET,
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET | CLI_COMMON_SEED,
     .min_positional = 1,
     .max_positional = 1,
     .run = run_calibrate,
