@@ -2,10 +2,12 @@
  * point cache, OBJ frames, statistics), one-line errors with exit code 2 and no partial
  * output, and the shipped motions being what the generator makes. */
 #define _POSIX_C_SOURCE 200809L
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "shitsukan/gltf.h"
 #include "shitsukan/io.h"
 #include "shitsukan/mesh.h"
 #include "shitsukan/pointcache.h"
@@ -66,7 +68,7 @@ static void test_run_writes_its_files(void **state)
     sk_test_run *run = malloc(sizeof *run);
     const char *dir = sk_test_path("tissue-cli/curl"), *plot = sk_test_path("tissue-cli/curl-plot.png");
     assert_int_equal(sk_test_cli(run, "tissue run --character arm --motion curl " COARSE
-                                      " --fps 10 --frames 5:15 --obj-frames --no-glb --plot '%s' -o '%s'",
+                                      " --fps 10 --frames 5:15 --obj-frames --plot '%s' -o '%s'",
                                  plot, dir),
                      0);
     assert_non_null(strstr(run->out, "11 frames at 10 fps"));
@@ -92,6 +94,22 @@ static void test_run_writes_its_files(void **state)
     }
     assert_int_equal(v, pc.points);
     free(obj);
+    /* skin.glb: the rest mesh plus morph target k is frame k */
+    snprintf(path, sizeof path, "%s/skin.glb", dir);
+    sk_gltf_doc *doc = NULL;
+    SK_ASSERT_OK(sk_gltf_read_glb(&doc, path, NULL, &e_));
+    assert_int_equal(sk_gltf_doc_mesh_target_count(doc, 0), 11);
+    float *rest = NULL, *target = NULL;
+    size_t count;
+    int components;
+    SK_ASSERT_OK(sk_gltf_doc_read_accessor(doc, sk_gltf_doc_mesh_accessor(doc, 0, "POSITION"), &rest, &count, &components, &e_));
+    assert_int_equal((int)count, pc.points);
+    SK_ASSERT_OK(sk_gltf_doc_read_accessor(doc, sk_gltf_doc_mesh_target_accessor(doc, 0, 4, "POSITION"), &target, &count,
+                                           &components, &e_));
+    for (size_t i = 0; i < 3 * count; i++) assert_true(fabsf(rest[i] + target[i] - pc.xyz[4 * 3 * (size_t)pc.points + i]) < 1e-3f);
+    free(rest);
+    free(target);
+    sk_gltf_doc_free(doc);
     sk_pc2_free(&pc);
     assert_false(sk_test_file_exists(sk_test_path("tissue-cli/curl/frames/0004.obj")));
     assert_true(sk_test_file_exists(plot));

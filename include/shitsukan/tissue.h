@@ -372,7 +372,9 @@ sk_result sk_tissue_sim_load_state_file(sk_tissue_sim *sim, const char *path, sk
  * point cache of the skin, one sample per output frame, for Blender's Mesh Cache modifier
  * on rest.obj), skin.glb (glTF 2.0, the skin's frames as morph targets), stats.json, and
  * on request frames/NNNN.obj, render/NNNN.png (the skin through the renderer), a plot of
- * the tracked skin points and the final state. Frames are numbered at `fps` from the
+ * the tracked skin points and the final state. skin.glb holds every frame (a morph target
+ * each, their weights animated), so it is left out beyond 4096 frames or 400 MB of them
+ * (stats.json says whether it was written). Frames are numbered at `fps` from the
  * motion's start; the simulation always runs from time 0 (or a resumed state), whatever
  * frames are written. */
 typedef struct sk_tissue_run_desc {
@@ -399,6 +401,8 @@ typedef struct sk_tissue_run_stats {
     double max_displacement_mm;       /* largest distance of a skin point from where the
                                          bones carry its rest position */
     double tracked_max_mm[SK_TISSUE_MAX_TRACKED];
+    bool glb;                         /* skin.glb written (not asked for, or too large:
+                                         more than 4096 frames or 400 MB of frames) */
 } sk_tissue_run_stats;
 
 /* Runs the motion on the model and writes the folder (see above). `stats` may be NULL. */

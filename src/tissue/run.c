@@ -20,9 +20,15 @@
 /* The tracked points are sampled at this rate for the plot (finer than any output frame
  * rate, so the jiggle shows). */
 #define PLOT_HZ 240
+/* skin.glb holds every frame in memory and one morph target per frame: written up to
+   these sizes (larger runs leave it out and say so in stats.json). */
+#define GLB_MAX_FRAMES 4096
+#define GLB_MAX_FLOATS ((size_t)96 << 20)
 
 typedef struct run_buffers {
     float *xyz, *ref;
+    float *glb_positions, *glb_normals;
+    sk_mesh rest;
     sk_mesh mesh;
     float *track_time, *track_with, *track_without;
 } run_buffers;
@@ -31,6 +37,9 @@ static void free_buffers(run_buffers *b)
 {
     free(b->xyz);
     free(b->ref);
+    free(b->glb_positions);
+    free(b->glb_normals);
+    sk_mesh_free(&b->rest);
     sk_mesh_free(&b->mesh);
     free(b->track_time);
     free(b->track_with);
@@ -76,6 +85,7 @@ static sk_result write_stats(const sk_tissue_model *m, const sk_tissue_run_stats
     cJSON_AddNumberToObject(root, "simulated_seconds", st->simulated_seconds);
     cJSON_AddNumberToObject(root, "simulated_frames_per_second", st->frames_per_second);
     cJSON_AddNumberToObject(root, "max_displacement_mm", st->max_displacement_mm);
+    cJSON_AddBoolToObject(root, "glb", st->glb);
     cJSON *tracked = cJSON_AddObjectToObject(root, "tracked_max_displacement_mm");
     for (int k = 0; k < m->desc.tracked_count; k++)
         cJSON_AddNumberToObject(tracked, m->desc.tracked[k].name, st->tracked_max_mm[k]);
@@ -145,6 +155,14 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
             r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu skin points", ns);
     }
     if (r == SK_OK) r = sk_tissue_model_rest_skin(m, &b.mesh, err);
+    if (r == SK_OK) r = sk_tissue_model_rest_skin(m, &b.rest, err);
+    bool glb = !d->no_glb && frames <= GLB_MAX_FRAMES && (size_t)frames * 6 * ns <= GLB_MAX_FLOATS;
+    if (r == SK_OK && glb) {
+        b.glb_positions = malloc((size_t)frames * 3 * ns * sizeof *b.glb_positions);
+        b.glb_normals = malloc((size_t)frames * 3 * ns * sizeof *b.glb_normals);
+        if (!b.glb_positions || !b.glb_normals) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin.glb");
+    }
+    st.glb = glb;
     if (r == SK_OK) {
         path_in(path, sizeof path, d->output_dir, "rest.obj");
         r = sk_mesh_write_obj(&b.mesh, path, NULL, err);
@@ -207,9 +225,13 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
             st.tracked_max_mm[k] = fmax(st.tracked_max_mm[k], sqrt(dx * dx + dy * dy + dz * dz));
         }
         if (!d->no_pc2) r = sk_pc2_append(&pc2, b.xyz, err);
-        if (r == SK_OK && (d->obj_frames || d->render)) {
+        if (r == SK_OK && (d->obj_frames || d->render || glb)) {
             memcpy(b.mesh.positions, b.xyz, 3 * ns * sizeof(float));
             r = sk_mesh_compute_normals(&b.mesh, err);
+        }
+        if (r == SK_OK && glb) {
+            memcpy(b.glb_positions + (size_t)i * 3 * ns, b.xyz, 3 * ns * sizeof(float));
+            memcpy(b.glb_normals + (size_t)i * 3 * ns, b.mesh.normals, 3 * ns * sizeof(float));
         }
         if (r == SK_OK && d->obj_frames) {
             char name[64];
@@ -231,6 +253,10 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
     double t3 = sk_time_seconds();
     if (r == SK_OK && !d->no_pc2) r = sk_pc2_close(&pc2, err);
     else sk_pc2_abort(&pc2);
+    if (r == SK_OK && glb) {
+        path_in(path, sizeof path, d->output_dir, "skin.glb");
+        r = sk__write_skin_glb(&b.rest, b.glb_positions, b.glb_normals, frames, first, fps, path, err);
+    }
     if (r == SK_OK && d->save_state) r = sk_tissue_sim_save_state_file(sim, d->save_state, err);
     if (r == SK_OK && d->plot && tracked > 0 && samples >= 2) {
         /* the series are point-major with plot_cap samples each: pack them to `samples` */

@@ -244,6 +244,10 @@ void sk__model_attach(sk_tissue_model *m, const sk__tissue_shapes *t);
 struct cJSON;
 /* The model's stats as a JSON object (NULL when out of memory). */
 struct cJSON *sk__model_stats_json(const sk_tissue_model *m);
+/* The skin's frames (positions and normals, 3 floats per vertex, frame-major) as a glTF
+ * of the rest mesh (with normals) and one morph target per frame, animated at fps. */
+sk_result sk__write_skin_glb(const sk_mesh *rest, const float *positions, const float *normals, int frames,
+                             int first_frame, int fps, const char *path, sk_error *err);
 /* Prints `root` to `path` atomically and deletes it (NULL root: out of memory). */
 sk_result sk__write_json(struct cJSON *root, const char *path, sk_error *err);
 

@@ -2,6 +2,7 @@
 # conversion, the Mesh Cache modifier playing skin.pc2 on it, and at every frame the
 # evaluated vertices must be those of frames/NNNN.obj. Run as:
 #   blender -b --factory-startup --python blender_pc2.py -- RUN_DIR FRAMES
+# (tests/blender/run.sh runs it, and skips without Blender).
 import sys
 
 import bpy
