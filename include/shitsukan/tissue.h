@@ -176,9 +176,11 @@ typedef struct sk_tissue_material_desc {
 
 /* The simulation's clock and its guards. */
 typedef struct sk_tissue_simulation_desc {
-    int step_hz;                      /* fixed internal steps per second; 0 = 480;
+    int step_hz;                      /* fixed internal steps per second; 0 = 240;
                                          [60, 20000]; a multiple of 120 makes 24, 30 and
-                                         60 fps frames fall on steps exactly */
+                                         60 fps frames fall on steps exactly; 480 brings
+                                         the jiggle's period closer to the converged one
+                                         (docs/tissue.md) at twice the cost */
     int iterations;                   /* solver sweeps per step (XPBD converges to implicit
                                          Euler as they grow); 0 = 1; [1, 64] */
     float teleport_speed_m_s;         /* a bone end moving faster than this in one step

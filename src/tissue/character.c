@@ -66,7 +66,7 @@ void sk_tissue_character_desc_resolve(sk_tissue_character_desc *d)
     m->skin_thickness_mm = or_default(m->skin_thickness_mm, 1.5f);
     m->damping_ratio = or_default(m->damping_ratio, 0.1f);
     sk_tissue_simulation_desc *sim = &d->simulation;
-    if (sim->step_hz == 0) sim->step_hz = 480;
+    if (sim->step_hz == 0) sim->step_hz = 240;
     if (sim->iterations == 0) sim->iterations = 1;
     sim->teleport_speed_m_s = or_default(sim->teleport_speed_m_s, 50.0f);
 }

@@ -119,7 +119,7 @@ static const sk_schema material_schema = {"material", material_fields, COUNT_OF(
 
 static const sk_schema_field simulation_fields[] = {
     {.key = "step_hz", .type = SK_FIELD_INT, .offset = offsetof(sk_tissue_simulation_desc, step_hz), .min = 0,
-     .max = 20000, .doc = "fixed internal steps per second, from 60; 0 = 480 (a multiple of 120 suits 24/30/60 fps)"},
+     .max = 20000, .doc = "fixed internal steps per second, from 60; 0 = 240 (a multiple of 120 suits 24/30/60 fps)"},
     {.key = "iterations", .type = SK_FIELD_INT, .offset = offsetof(sk_tissue_simulation_desc, iterations), .min = 0,
      .max = 64, .doc = "solver sweeps per step (more: closer to implicit Euler's exact stiffness); 0 = 1"},
     FLOAT("teleport_speed_m_s", sk_tissue_simulation_desc, teleport_speed_m_s, 0, 1e6,
