@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_load.h"
 #include "shitsukan/preset.h"
 #include "tissue/sim_internal.h"
 #ifdef SK_BENCH_CHOLMOD
@@ -27,13 +28,8 @@ static void fail(const sk_error *err)
 
 static void load_average(void)
 {
-    FILE *f = fopen("/proc/loadavg", "r");
-    char buf[128] = "?";
-    if (f) {
-        if (!fgets(buf, sizeof buf, f)) buf[0] = '\0';
-        fclose(f);
-    }
-    buf[strcspn(buf, "\n")] = '\0';
+    char buf[128];
+    bench_load_average(buf, sizeof buf);
     printf("load average: %s (on %d cores)\n", buf, omp_get_num_procs());
 }
 

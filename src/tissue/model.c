@@ -76,10 +76,18 @@ static void free_scratch(scratch *s)
     free(s->corners);
 }
 
+/* Seconds since *t0, which becomes now. */
+static double lap(double *t0)
+{
+    double t = sk_time_seconds(), dt = t - *t0;
+    *t0 = t;
+    return dt;
+}
+
 static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error *err)
 {
     const sk_tissue_character_desc *d = &m->desc;
-    double t0 = sk_time_seconds(), t1;
+    double t0 = sk_time_seconds();
     sk_result r = sk__skeleton_build(d, &m->skeleton, err);
     if (r == SK_OK) r = sk__bones_build(d, &m->skeleton, m->bones, err);
     if (r == SK_OK) r = sk__muscles_build(d, &m->skeleton, m->bones, m->muscles, err);
@@ -99,13 +107,9 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
     }
     sk_progress_report(progress, 0.05);
     if (r == SK_OK) r = sk__voxelise(g, shapes, s.labels, err);
-    t1 = sk_time_seconds();
-    m->stats.seconds_voxelise = t1 - t0;
-    t0 = t1;
+    m->stats.seconds_voxelise = lap(&t0);
     if (r == SK_OK) r = sk__fat_regions_mark(d, &m->skeleton, m->bones, m->muscles, g, s.labels, s.seed, err);
-    t1 = sk_time_seconds();
-    m->stats.seconds_fat = t1 - t0;
-    t0 = t1;
+    m->stats.seconds_fat = lap(&t0);
     sk_progress_report(progress, 0.2);
     size_t tissue = 0;
     if (r == SK_OK) {
@@ -115,9 +119,7 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
         }
         r = sk__dilate(g, s.seed, d->skin.dilations, d->skin.dilation_radius_mm, s.value, err);
     }
-    t1 = sk_time_seconds();
-    m->stats.seconds_dilate = t1 - t0;
-    t0 = t1;
+    m->stats.seconds_dilate = lap(&t0);
     sk_progress_report(progress, 0.5);
     size_t triangles = 0;
     if (r == SK_OK) {
@@ -133,9 +135,7 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
     if (r == SK_OK) r = sk__skin_faces(g, s.inside, &s.corners, &triangles, err);
     if (r == SK_OK && triangles == 0)
         r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the character has no skin: every grid point is below skin.threshold");
-    t1 = sk_time_seconds();
-    m->stats.seconds_extract = t1 - t0;
-    t0 = t1;
+    m->stats.seconds_extract = lap(&t0);
     sk_progress_report(progress, 0.7);
     if (r == SK_OK) {
         sk__skin_build b = {g, s.labels, s.inside, s.corners, triangles};
@@ -154,14 +154,11 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
         for (size_t p = 0; p < m->point_count; p++) m->rest[p] = sk__grid_position(g, m->grid_of[p]);
         r = sk__skin_smooth(m, shapes, d->skin.smooth_iterations, err);
     }
-    t1 = sk_time_seconds();
-    m->stats.seconds_classify = t1 - t0;
-    t0 = t1;
+    m->stats.seconds_classify = lap(&t0);
     sk_progress_report(progress, 0.85);
     if (r == SK_OK) r = sk__model_springs(m, err);
     if (r == SK_OK) sk__model_attach(m, shapes);
-    t1 = sk_time_seconds();
-    m->stats.seconds_springs = t1 - t0;
+    m->stats.seconds_springs = lap(&t0);
     if (r == SK_OK) {
         sk_tissue_model_stats *st = &m->stats;
         for (int k = 0; k < 3; k++) st->grid[k] = g->n[k];

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/json_file.h"
 #include "shitsukan/io.h"
 #include "shitsukan/pointcache.h"
 #include "tissue/draw_internal.h"
@@ -95,7 +96,7 @@ static sk_result write_stats(const sk_tissue_model *m, const sk_tissue_run_stats
     cJSON_AddNumberToObject(sec, "render", st->seconds_render);
     cJSON *model = sk__model_stats_json(m);
     if (model) cJSON_AddItemToObject(root, "model", model);
-    return sk__write_json(root, path, err);
+    return sk__json_write_file(root, path, err);
 }
 
 static sk_result check_desc(const sk_tissue_run_desc *d, double duration, int *fps, int *first, int *last,

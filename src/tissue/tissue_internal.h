@@ -248,7 +248,5 @@ struct cJSON *sk__model_stats_json(const sk_tissue_model *m);
  * of the rest mesh (with normals) and one morph target per frame, animated at fps. */
 sk_result sk__write_skin_glb(const sk_mesh *rest, const float *positions, const float *normals, int frames,
                              int first_frame, int fps, const char *path, sk_error *err);
-/* Prints `root` to `path` atomically and deletes it (NULL root: out of memory). */
-sk_result sk__write_json(struct cJSON *root, const char *path, sk_error *err);
 
 #endif /* SK_TISSUE_INTERNAL_H */
