@@ -19,6 +19,7 @@ extern const cli_command cmd_render;
 extern const cli_command cmd_tissue_skin;
 extern const cli_command cmd_tissue_run;
 extern const cli_command cmd_tissue_motion;
+extern const cli_command cmd_studio;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -39,5 +40,6 @@ const cli_command *const cli_commands[] = {
     &cmd_tissue_skin,
     &cmd_tissue_run,
     &cmd_tissue_motion,
+    &cmd_studio,
     NULL,
 };
