@@ -19,21 +19,28 @@ static void print_tool_help(FILE *out)
                  "Exit status: 0 success, 1 runtime failure, 2 bad usage or input.\n");
 }
 
-/* The commands whose name starts with the word `group` and a space ("hand pose", ...);
- * false if there are none (`out` NULL: only the check). */
-static bool print_group_help(const char *group, FILE *out)
+/* Whether `word` is the first word of two-word commands (a group such as "hand"). */
+static bool is_group(const char *word)
 {
-    size_t len = strlen(group);
-    int count = 0;
+    size_t n = strlen(word);
+    for (int i = 0; cli_commands[i]; i++) {
+        const char *space = strchr(cli_commands[i]->name, ' ');
+        if (space && (size_t)(space - cli_commands[i]->name) == n && strncmp(cli_commands[i]->name, word, n) == 0)
+            return true;
+    }
+    return false;
+}
+
+static void print_group_help(FILE *out, const char *group)
+{
+    size_t n = strlen(group);
+    fprintf(out, "usage: shitsukan %s <command> [options]\n\ncommands:\n", group);
     for (int i = 0; cli_commands[i]; i++) {
         const char *name = cli_commands[i]->name;
-        if (strncmp(name, group, len) != 0 || name[len] != ' ') continue;
-        if (!out) return true;
-        if (count++ == 0) fprintf(out, "usage: shitsukan %s <command> [options]\n\ncommands:\n", group);
-        fprintf(out, "  %-16s %s\n", name, cli_commands[i]->summary);
+        if (strncmp(name, group, n) == 0 && (name[n] == ' ' || name[n] == '\0'))
+            fprintf(out, "  %-16s %s\n", name, cli_commands[i]->summary);
     }
-    if (count > 0) fprintf(out, "\n'shitsukan %s <command> --help' shows a command's options.\n", group);
-    return count > 0;
+    fprintf(out, "\n'shitsukan %s <command> --help' shows a command's options.\n", group);
 }
 
 /* The command whose name matches argv[1] (and argv[2] for two-word names). */
@@ -75,16 +82,17 @@ int main(int argc, char **argv)
     }
     int words;
     const cli_command *command = find_command(argc, argv, &words);
-    if (!command) {
-        /* a group of two-word commands: its list, on --help to stdout, else as an error */
-        bool help = argc == 3 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0);
-        if (help && print_group_help(argv[1], stdout)) return CLI_EXIT_OK;
-        if (argc == 2 && print_group_help(argv[1], stderr)) return CLI_EXIT_USAGE;
-        if (argc > 2 && print_group_help(argv[1], NULL))
-            return cli_fail(CLI_EXIT_USAGE, "unknown command '%s %s' (see 'shitsukan %s --help')", argv[1], argv[2],
-                            argv[1]);
-        return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (see 'shitsukan --help')", argv[1]);
+    /* a group's own help: "shitsukan tissue --help" (or the group alone, as usage) */
+    if (!command && is_group(argv[1])) {
+        bool asked = argc > 2 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0);
+        if (asked || argc == 2) {
+            print_group_help(asked ? stdout : stderr, argv[1]);
+            return asked ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+        }
+        return cli_fail(CLI_EXIT_USAGE, "unknown command '%s %s' (see 'shitsukan %s --help')", argv[1], argv[2], argv[1]);
     }
+    if (!command)
+        return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (see 'shitsukan --help')", argv[1]);
     cli_args args;
     int status = cli_parse(command, argc - 1 - words, argv + 1 + words, &args);
     if (status < 0) return CLI_EXIT_OK; /* --help */
