@@ -429,3 +429,78 @@ test('exports the map sets as files the library reads', async ({ page }) => {
   shitsukan('sheet', path.join(dir, 'wood-cut.exr'), path.join(dir, 'wood-fibre.png'), '-o', path.join(TMP, 'export-wood.png'), '--quiet');
   expect(errors).toEqual([]);
 });
+
+// The skin's frames in a point cache (PC2: header of 32 bytes, then float32 x y z).
+function pc2Frames(file) {
+  const buf = fs.readFileSync(file);
+  expect(buf.toString('latin1', 0, 11)).toBe('POINTCACHE2');
+  const points = buf.readInt32LE(16), samples = buf.readInt32LE(28);
+  const frames = [];
+  for (let s = 0; s < samples; s++) {
+    const f = new Float32Array(points * 3);
+    for (let i = 0; i < points * 3; i++) f[i] = buf.readFloatLE(32 + 4 * (s * points * 3 + i));
+    frames.push(f);
+  }
+  return { points, frames };
+}
+
+const maxDiff = (a, b) => a.reduce((m, v, i) => Math.max(m, Math.abs(v - b[i])), 0);
+
+test('the tissue panel plays a motion on the arm as tissue run does', async ({ page }) => {
+  await open(page);
+  await page.click('#tabs button[data-tab=tissue]');
+  await page.waitForFunction(() => window.studio.panels.tissue.builds >= 1 && window.studio.panels.tissue.duration > 0, null, { timeout: 30000 });
+  const tissue = (fn, arg) => page.evaluate(fn, arg);
+  speed.tissue_build_ms = await tissue(() => window.studio.panels.tissue.timings.build_ms);
+  // playing moves the skin
+  await page.waitForFunction(() => window.studio.panels.tissue.time > 0.6, null, { timeout: 30000 });
+  const moved = await tissue(() => {
+    const t = window.studio.panels.tissue, a = t.mesh.geometry.attributes.position.array;
+    return t.rest.reduce((m, v, i) => Math.max(m, Math.abs(v - a[i])), 0);
+  });
+  expect(moved).toBeGreaterThan(5); // mm
+  speed.tissue_realtime_factor = await tissue(() => window.studio.panels.tissue.timings.realtime_factor);
+  // the character saved as the file tissue run reads; the first frames equal its point cache
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('#tissue-save')]);
+  const character = path.join(TMP, 'arm-saved.json');
+  await dl.saveAs(character);
+  const frames = 6, fps = 30;
+  const mine = await tissue(async ([n, fps]) => {
+    const t = window.studio.panels.tissue;
+    await t.startMotion(false);
+    const out = [];
+    for (let f = 0; f < n; f++) out.push(Array.from(t.skinAt(f / fps)));
+    return out;
+  }, [frames, fps]);
+  const dir = path.join(TMP, 'tissue-run');
+  shitsukan('tissue', 'run', '--character', character, '--motion', 'curl', '--fps', String(fps), '--frames', `0:${frames - 1}`, '--no-glb', '--quiet', '-o', dir);
+  const native = pc2Frames(path.join(dir, 'skin.pc2'));
+  expect(native.frames.length).toBe(frames);
+  expect(native.points * 3).toBe(mine[0].length);
+  let worst = 0;
+  for (let f = 0; f < frames; f++) worst = Math.max(worst, maxDiff(mine[f], native.frames[f]));
+  console.log(`tissue: first ${frames} frames at ${fps} fps, ${native.points} skin points: largest difference from tissue run's point cache ${worst.toExponential(2)} mm`);
+  expect(worst).toBeLessThan(1e-3);
+  expect(maxDiff(mine[frames - 1], mine[0])).toBeGreaterThan(0.01);
+  // a slider (the fat's stiffness) changes the motion
+  const at = 1.0;
+  const before = await tissue(async (s) => { const t = window.studio.panels.tissue; await t.startMotion(false); return Array.from(t.skinAt(s)); }, at);
+  // the picture: the forearm level after the curl, the jiggle tinted
+  await tissue(() => {
+    const t = window.studio.panels.tissue;
+    document.getElementById('tissue-tint').click();
+    t.show(t.skinAt(2.6));
+  });
+  await shot(page, 'tissue');
+  const builds = await tissue(() => window.studio.panels.tissue.builds);
+  const k = page.locator('#tissue-sliders .ctl[data-key="material.fat_stiffness"] input[type=number]');
+  await k.fill('0.5');
+  await k.dispatchEvent('change');
+  await page.waitForFunction((b) => window.studio.panels.tissue.builds > b, builds);
+  const after = await tissue(async (s) => { const t = window.studio.panels.tissue; await t.startMotion(false); return Array.from(t.skinAt(s)); }, at);
+  expect(await tissue(() => window.studio.panels.tissue.tree.material.fat_stiffness)).toBe(0.5);
+  const change = maxDiff(before, after);
+  console.log(`tissue: fat stiffness 2 -> 0.5 N/m moves the skin at ${at} s by up to ${change.toFixed(2)} mm`);
+  expect(change).toBeGreaterThan(0.1);
+  expect(errors).toEqual([]);
+});
