@@ -504,3 +504,48 @@ test('the tissue panel plays a motion on the arm as tissue run does', async ({ p
   expect(change).toBeGreaterThan(0.1);
   expect(errors).toEqual([]);
 });
+
+test('the skin material on the hand: the atlas baked as hand mesh --texture bakes it', async ({ page }) => {
+  await open(page);
+  await page.waitForFunction(() => window.studio.panels.hand.model.surface);
+  await page.selectOption('#hand-texture-size', '256');
+  await page.selectOption('#hand-material', 'baked');
+  await page.waitForFunction(() => window.studio.panels.hand.texture && window.studio.panels.hand.texture.size === 256, null, { timeout: 30000 });
+  speed.hand_texture_bake_256_ms = await page.evaluate(() => window.studio.panels.hand.timings.texture_bake_ms);
+  const tex = await page.evaluate(() => { const t = window.studio.panels.hand.texture; return { albedo: Array.from(t.albedo), normal: Array.from(t.normal) }; });
+  const dir = path.join(TMP, 'hand-texture');
+  fs.mkdirSync(dir, { recursive: true });
+  shitsukan('hand', 'mesh', '-o', path.join(dir, 'hand.obj'), '--texture', path.join(dir, 'skin'), '--texture-size', '256', '--quiet');
+  for (const k of ['albedo', 'normal']) {
+    const c = compare(tex[k], await filePixels(page, path.join(dir, `skin-${k}.png`)));
+    console.log(`hand atlas ${k} 256: max difference ${c.max} codes, ${c.off} of ${c.count} beyond 1`);
+    expect(c.max).toBeLessThanOrEqual(1);
+  }
+  const drawn = await page.evaluate(() => {
+    const m = window.studio.panels.hand.model.surfaceMesh;
+    return { map: !!m.material.map, normalMap: !!m.material.normalMap, uvs: m.geometry.attributes.uv.count };
+  });
+  expect([drawn.map, drawn.normalMap]).toEqual([true, true]);
+  expect(drawn.uvs).toBeGreaterThan(4002); // the seam's vertices split
+  // a close view of the back of the hand in a pose, the atlas at 512
+  await page.selectOption('#hand-texture-size', '512');
+  await page.waitForFunction(() => window.studio.panels.hand.texture.size === 512, null, { timeout: 30000 });
+  await page.evaluate(() => {
+    const h = window.studio.panels.hand;
+    h.setSlider('I.PIP.flex', 35);
+    window.studio.view.setContent(h.root, { distance: 2.2, target: [0, 0.9, 0], direction: [0.25, 0.35, 1] });
+  });
+  await shot(page, 'hand-skin');
+  // the skin panel's skin on the back: another preset there gives another normal map
+  await page.click('#tabs button[data-tab=skin]');
+  await page.selectOption('#skin-size', '128');
+  await page.selectOption('#skin-preset', 'fig13a');
+  await page.waitForTimeout(300);
+  await page.click('#tabs button[data-tab=hand]');
+  await page.evaluate(() => { window.studio.panels.hand.textureSize = 256; document.getElementById('hand-texture-size').value = '256'; });
+  await page.selectOption('#hand-material', 'skin-panel');
+  await page.waitForFunction(() => window.studio.panels.hand.texture.size === 256, null, { timeout: 30000 });
+  const other = await page.evaluate(() => Array.from(window.studio.panels.hand.texture.normal));
+  expect(compare(other, tex.normal).off).toBeGreaterThan(1000);
+  expect(errors).toEqual([]);
+});
