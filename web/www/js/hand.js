@@ -89,6 +89,7 @@ export class HandPanel {
           const t0 = performance.now();
           this.model.buildSurface();
           this.timings.surface_build_ms = performance.now() - t0;
+          if (this.materialChoice !== 'plain') this.useMaterial(this.materialChoice);
         }
         this.model.showSurface(surface.checked);
         skinning.disabled = !surface.checked;
