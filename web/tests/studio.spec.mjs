@@ -529,6 +529,7 @@ test('the tissue panel plays a motion on the arm as tissue run does', async ({ p
 });
 
 test('the skin material on the hand: the atlas baked as hand mesh --texture bakes it', async ({ page }) => {
+  test.setTimeout(180000); // three bakes in the page and one on the command line
   await open(page);
   await page.waitForFunction(() => window.studio.panels.hand.model.surface);
   await page.selectOption('#hand-texture-size', '256');
