@@ -14,6 +14,8 @@ extern const cli_command cmd_skin_maps;
 extern const cli_command cmd_wood_cut;
 extern const cli_command cmd_wood_sweep;
 extern const cli_command cmd_render;
+extern const cli_command cmd_showcase;
+extern const cli_command cmd_showcase_midi;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -29,5 +31,7 @@ const cli_command *const cli_commands[] = {
     &cmd_wood_cut,
     &cmd_wood_sweep,
     &cmd_render,
+    &cmd_showcase,
+    &cmd_showcase_midi,
     NULL,
 };
