@@ -178,8 +178,9 @@ int sk_piano_key_objects(const sk_piano *piano, const sk_piano_key *key, double 
  * hand reaches. Costs (in white keys' widths): moving the hand (how far the key step
  * differs from the step between the two fingers' places in the five-finger position,
  * dearer when there is little time), one finger on two different keys in a row, the
- * thumb or little finger on a black key, the weaker fourth finger. Fingers given in the
- * input are kept. */
+ * thumb or little finger on a black key, the weaker fourth finger; neighbouring fingers
+ * busy at once never take keys closer than two fingertips (a half step). Fingers given in
+ * the input are kept. */
 typedef struct sk_fingering_desc {
     double finger_x_mm[5];  /* fingertips across the keyboard in the hand's playing
                                position, thumb first; all 0 = one white key apart
@@ -188,6 +189,18 @@ typedef struct sk_fingering_desc {
                                keys' spacing and their fingers' that the fingers' spread
                                can make up; 0 = 30; [0, 200] */
     double pitch_mm;        /* a white key's width for the costs; 0 = 23.5 */
+    double spacing_mm;      /* neighbouring fingers (index to little) busy at once need
+                               keys at least this far apart: two fingertips' breadth;
+                               0 = 17; [0, 50] */
+    double busy_before_s, busy_after_s; /* a finger is busy from this long before its
+                               note to this long after (its approach and lift); 0 = 0.12,
+                               0.14 */
+    double move_gap_s;      /* the least silence in which one finger moves to another key
+                               while the hand is busy; 0 = 0.05 */
+    bool apart[5][5];       /* pairs of fingers (thumb first) that cannot hold keys down
+                               together (a hand whose fingers reach different depths);
+                               all false = any pair can; the showcase fills it from its
+                               hand */
 } sk_fingering_desc;
 
 /* Chooses the automatic fingers of `melody` in place; keys are placed by `piano` (NULL =
@@ -230,7 +243,7 @@ typedef struct sk_performance_desc {
     double lift_s;          /* back up to the hover height after the key is up; 0 = 0.12;
                                [0.02, 1] */
     double hover_mm;        /* fingertips' height above the white keys in the playing
-                               posture; 0 = 8; [2, 40] */
+                               posture; 0 = 6; [2, 40] */
     double clearance_mm;    /* a finger that does not play stays at least this above any
                                key (it is lifted if the coupling pulls it lower); 0 = 1;
                                [0, 10] */
@@ -238,7 +251,7 @@ typedef struct sk_performance_desc {
                                thesis's piano demo, presets/hand/piano-key.json); [0, 4] */
     double travel_s;        /* how far in time the wrist looks to the notes before and
                                after (Gaussian width of the blend of their positions);
-                               0 = 0.15; [0.01, 2] */
+                               0 = 0.04; [0.01, 2] */
     double strike_drop_mm;  /* the wrist gives way this much at a strike and recovers;
                                0 = 1.5; [0, 10] (negative = none) */
     double tip_radius_mm[5]; /* fingertip pads (spheres at the ends of the distal links);

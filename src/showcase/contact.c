@@ -13,10 +13,15 @@
 #include "showcase/showcase_internal.h"
 
 #define MAX_UNKNOWNS 10 /* two for each finger */
-#define MAX_ITERATIONS 12
+#define MAX_ITERATIONS 16
 #define TOLERANCE_MM 1e-3
 #define DIFF_STEP 1e-4
-#define MAX_STEP 0.5 /* torque units */
+#define MAX_STEP 2.0 /* torque units */
+#define EDGE_RAMP_MM 4.0
+#define LIFT_MAX 4.0 /* torque units */
+#define LIFT_ITERATIONS 12
+#define LIFT_ROUNDS 2
+#define EDGE_RAMP_SLOPE 4.0
 
 sk_result sk__contact_posture(const sk__contact *c, sk_vec3d wrist, const double *extra_torque,
                               double dofs[SK_HAND_DOF_COUNT], sk_hand_frames *frames, sk_vec3d pads[5],
@@ -72,14 +77,17 @@ double sk__keys_surface(const sk_piano *piano, sk_vec3d centre, double radius)
 static double keys_surface_except(const sk_piano *piano, sk_vec3d centre, double radius, int except)
 {
     double best = -INFINITY;
-    double reach = 0.5 * piano->desc.white_pitch_mm + radius;
+    double reach = 0.5 * piano->desc.white_pitch_mm + radius + EDGE_RAMP_MM;
     for (int i = 0; i < SK_PIANO_KEY_COUNT; i++) {
         const sk_piano_key *k = &piano->keys[i];
         if (k->key == except || fabs(k->x_mm - centre.x) > reach + k->width_mm) continue;
         double rho = key_distance_xz(k, centre.x, centre.z);
-        if (rho >= radius) continue;
+        if (rho >= radius + EDGE_RAMP_MM) continue;
         double top = sk_piano_key_top_at(piano, k, 0, centre.z);
-        double v = top - (radius - sqrt(radius * radius - rho * rho));
+        /* the sphere over the key's top; beyond its edge a steep ramp keeps the surface
+           continuous (a pad passes a key's edge above it, never into its side) */
+        double v = rho < radius ? top - (radius - sqrt(radius * radius - rho * rho))
+                                : top - radius - EDGE_RAMP_SLOPE * (rho - radius);
         if (v > best) best = v;
     }
     return best;
@@ -115,7 +123,7 @@ typedef struct problem {
     const sk__intent *in;
     int count;
     unknown u[MAX_UNKNOWNS];
-    bool lifted[5];
+    double lift[5];  /* press amplitude (negative: extension) holding a free finger up */
     int solves;
 } problem;
 
@@ -123,6 +131,10 @@ static void torques_of(const problem *p, const double *x, double *torque)
 {
     const sk__hand_rig *rig = p->c->rig;
     memset(torque, 0, SK_HAND_DOF_COUNT * sizeof *torque);
+    for (int f = 0; f < 5; f++) {
+        torque[rig->press_dof[f][0]] += p->lift[f] * rig->press_dir[f][0];
+        torque[rig->press_dof[f][1]] += p->lift[f] * rig->press_dir[f][1];
+    }
     for (int k = 0; k < p->count; k++) {
         int f = p->u[k].finger;
         if (p->u[k].aim) {
@@ -154,18 +166,14 @@ static sk_result misses(problem *p, const double *x, double *res, double dofs[SK
             continue;
         }
         double bottom = pads[f].y - rad, target;
-        if (p->lifted[f]) {
-            target = sk__keys_surface(c->piano, pads[f], rad) + c->desc->clearance_mm;
-        } else {
-            const sk_piano_key *key = sk_piano_key_get(c->piano, fi->key);
-            if (fi->phase == SK__FINGER_PRESS) {
-                target = sk_piano_key_top_at(c->piano, key, fi->angle, pads[f].z);
-            } else { /* on the way, over the other keys too */
-                target = hover + fi->blend * (sk_piano_key_top_at(c->piano, key, 0, pads[f].z) - hover);
-                double others = keys_surface_except(c->piano, pads[f], rad, fi->key) + c->desc->clearance_mm;
-                if (others > target) target = others;
-            }
-        }
+        const sk_piano_key *key = sk_piano_key_get(c->piano, fi->key);
+        if (fi->phase == SK__FINGER_PRESS)
+            target = sk_piano_key_top_at(c->piano, key, fi->angle, pads[f].z);
+        else
+            target = hover + fi->blend * (sk_piano_key_top_at(c->piano, key, 0, pads[f].z) - hover);
+        /* never into the keys beside it */
+        double others = keys_surface_except(c->piano, pads[f], rad, fi->key) + c->desc->clearance_mm;
+        if (others > target) target = others;
         res[k] = bottom - target;
     }
     return SK_OK;
@@ -180,14 +188,50 @@ static sk_result contact_fn(void *user, const double *x, double *res, sk_error *
     return misses(p, x, res, dofs, &frames, pads, err);
 }
 
-/* Newton from x (in place), then the posture at the result. */
-static sk_result newton(problem *p, double *x, double *res, double dofs[SK_HAND_DOF_COUNT], sk_hand_frames *frames,
-                        sk_vec3d pads[5], sk_error *err)
+/* How far free finger f's pad is above what it may not go below (negative: into a key). */
+static sk_result free_clearance(problem *p, int f, double *x, double *gap, sk_error *err)
 {
-    sk__newton_desc nd = {p->count, contact_fn, p, TOLERANCE_MM, MAX_ITERATIONS, DIFF_STEP, MAX_STEP};
-    sk_result r = sk__newton_solve(&nd, x, res, err);
-    if (r == SK_OK) r = misses(p, x, res, dofs, frames, pads, err);
+    double res[MAX_UNKNOWNS], dofs[SK_HAND_DOF_COUNT];
+    sk_hand_frames frames;
+    sk_vec3d pads[5];
+    sk_result r = misses(p, x, res, dofs, &frames, pads, err);
+    double rad = p->c->rig->tip_radius[f];
+    *gap = pads[f].y - rad - (sk__keys_surface(p->c->piano, pads[f], rad) + p->c->desc->clearance_mm);
     return r;
+}
+
+/* The smallest extension that holds free finger f clear of the keys (the others held):
+ * regula falsi (Illinois) on the lift amplitude in [-LIFT_MAX, 0]. */
+static sk_result lift_finger(problem *p, int f, double *x, sk_error *err)
+{
+    double gap;
+    p->lift[f] = 0;
+    sk_result r = free_clearance(p, f, x, &gap, err);
+    if (r != SK_OK || gap >= -TOLERANCE_MM) return r;
+    double a = -LIFT_MAX, b = 0, ga, gb = gap;
+    p->lift[f] = a;
+    if ((r = free_clearance(p, f, x, &ga, err)) != SK_OK) return r;
+    if (ga < 0) return SK_OK; /* as high as it goes */
+    int side = 0; /* Illinois: halve a stale end's value so the bracket shrinks from both ends */
+    for (int it = 0; it < LIFT_ITERATIONS && b - a > 1e-4; it++) {
+        double m = b - gb * (b - a) / (gb - ga);
+        if (!(m > a && m < b)) m = 0.5 * (a + b);
+        p->lift[f] = m;
+        double gm;
+        if ((r = free_clearance(p, f, x, &gm, err)) != SK_OK) return r;
+        if (gm >= 0) {
+            a = m, ga = gm;
+            if (gm < 0.05) break;
+            if (side == 1) gb *= 0.5;
+            side = 1;
+        } else {
+            b = m, gb = gm;
+            if (side == -1) ga *= 0.5;
+            side = -1;
+        }
+    }
+    p->lift[f] = a; /* on the clear side */
+    return SK_OK;
 }
 
 sk_result sk__contact_solve(const sk__contact *c, const sk__intent *in, double t, sk_showcase_pose *out,
@@ -205,38 +249,25 @@ sk_result sk__contact_solve(const sk__contact *c, const sk__intent *in, double t
     sk_vec3d pads[5];
     memset(out, 0, sizeof *out);
     out->time_s = t;
-    sk_result r = newton(&p, x, res, out->dofs, &out->frames, pads, err);
-    /* fingers that do not play but sink into a key: lift them (and let go of a lift that
-       would push the finger down) */
-    for (int round = 0; round < 3 && r == SK_OK; round++) {
-        bool changed = false;
-        for (int f = 0; f < 5; f++) {
-            if (in->finger[f].phase != SK__FINGER_FREE || p.lifted[f]) continue;
-            double rad = c->rig->tip_radius[f];
-            if (pads[f].y - rad < sk__keys_surface(c->piano, pads[f], rad) + c->desc->clearance_mm - TOLERANCE_MM &&
-                p.count < MAX_UNKNOWNS) {
-                p.lifted[f] = true;
-                x[p.count] = 0;
-                p.u[p.count++] = (unknown){f, false};
-                changed = true;
-            }
+    sk__newton_desc nd = {p.count, contact_fn, &p, TOLERANCE_MM, MAX_ITERATIONS, DIFF_STEP, MAX_STEP};
+    sk_result r = sk__newton_solve(&nd, x, res, err);
+    /* fingers that do not play but sink into a key are lifted one by one, then the
+       playing fingers solved again with those lifts held (a few Gauss-Seidel rounds) */
+    for (int round = 0; round < LIFT_ROUNDS && r == SK_OK; round++) {
+        bool any = false;
+        for (int f = 0; f < 5 && r == SK_OK; f++) {
+            if (in->finger[f].phase != SK__FINGER_FREE) continue;
+            double before = p.lift[f];
+            r = lift_finger(&p, f, x, err);
+            any = any || p.lift[f] != before;
         }
-        for (int k = 0; k < p.count; k++) {
-            int f = p.u[k].finger;
-            if (p.lifted[f] && x[k] > 0) { /* pushing down: not needed */
-                p.lifted[f] = false;
-                for (int j = k; j + 1 < p.count; j++) p.u[j] = p.u[j + 1], x[j] = x[j + 1];
-                p.count--, k--;
-                changed = true;
-            }
-        }
-        if (!changed) break;
-        r = newton(&p, x, res, out->dofs, &out->frames, pads, err);
+        if (r != SK_OK || !any) break;
+        r = sk__newton_solve(&nd, x, res, err);
     }
+    if (r == SK_OK) r = misses(&p, x, res, out->dofs, &out->frames, pads, err);
     if (r != SK_OK) return r;
     out->solves = p.solves;
-    for (int k = 0; k < p.count; k++)
-        if (!p.lifted[p.u[k].finger]) out->contact_error_mm = fmax(out->contact_error_mm, fabs(res[k]));
+    for (int k = 0; k < p.count; k++) out->contact_error_mm = fmax(out->contact_error_mm, fabs(res[k]));
     for (int f = 0; f < 5; f++) {
         out->tip_centre[f] = pads[f];
         out->tip_radius[f] = c->rig->tip_radius[f];

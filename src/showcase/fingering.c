@@ -10,7 +10,12 @@
  *                          more), plus 2 when one finger moves to another key, plus 0.3
  *                          when a repeated key changes finger;
  * and per note: thumb on a black key 1.5, little finger on a black key 0.5, ring finger
- * 0.2. Fingers given in the input are kept (states that contradict them are left out). */
+ * 0.2. Notes held together never use two fingers the hand cannot hold down together
+ * (`apart`). Two notes whose fingers are busy at once (from one's approach to the other's
+ * lift) keep the keys' order (no finger passes another), share a finger only on the same
+ * key or with at least `move_gap_s` between them, and on neighbouring fingers (index to little) take keys at least
+ * `spacing_mm` apart (a half step would put one fingertip into the other). Fingers given in the input are kept (states that contradict them are
+ * left out). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +47,13 @@ static double note_cost(bool black, int f)
     return c;
 }
 
+/* Two fingers of index to little (1..4 here) on keys closer than the fingertips from one
+ * to the other need (the thumb plays in front of the others). */
+static bool cramped(int a, int b, double dx, const sk_fingering_desc *d)
+{
+    return a != b && a > 0 && b > 0 && fabs(dx) < abs(a - b) * d->spacing_mm;
+}
+
 sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
                                    const sk_fingering_desc *desc, double *cost, sk_error *err)
 {
@@ -53,13 +65,20 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
     }
     if (d.pitch_mm == 0) d.pitch_mm = piano->desc.white_pitch_mm;
     if (d.reach_mm == 0) d.reach_mm = 30;
+    if (d.spacing_mm == 0) d.spacing_mm = 17;
+    if (d.busy_before_s == 0) d.busy_before_s = 0.12;
+    if (d.busy_after_s == 0) d.busy_after_s = 0.14;
+    if (d.move_gap_s == 0) d.move_gap_s = 0.05;
     bool any = false;
     for (int f = 0; f < 5; f++) any = any || d.finger_x_mm[f] != 0;
     if (!any)
         for (int f = 0; f < 5; f++) d.finger_x_mm[f] = f * d.pitch_mm;
     sk_result r;
     if ((r = sk_check_range_f(err, "fingering.reach_mm", d.reach_mm, 0, 200)) != SK_OK ||
-        (r = sk_check_range_f(err, "fingering.pitch_mm", d.pitch_mm, 1, 100)) != SK_OK)
+        (r = sk_check_range_f(err, "fingering.pitch_mm", d.pitch_mm, 1, 100)) != SK_OK ||
+        (r = sk_check_range_f(err, "fingering.spacing_mm", d.spacing_mm, 0, 50)) != SK_OK ||
+        (r = sk_check_range_f(err, "fingering.busy_before_s", d.busy_before_s, 0, 2)) != SK_OK ||
+        (r = sk_check_range_f(err, "fingering.busy_after_s", d.busy_after_s, 0, 2)) != SK_OK)
         return r;
     for (int f = 0; f < 5; f++)
         if ((r = sk_check_range_f(err, "fingering.finger_x_mm", d.finger_x_mm[f], -500, 500)) != SK_OK) return r;
@@ -125,8 +144,8 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
                     const sk_note *nj = &notes[st->held[k]];
                     double dx = xi - sk_piano_key_get(piano, nj->key)->x_mm;
                     int a = held_f[k];
-                    if (a == b || (b - a) * dx <= 0 ||
-                        fabs(dx - (d.finger_x_mm[b] - d.finger_x_mm[a])) > d.reach_mm)
+                    if (a == b || (b - a) * dx <= 0 || d.apart[a][b] || d.apart[b][a] ||
+                        fabs(dx - (d.finger_x_mm[b] - d.finger_x_mm[a])) > d.reach_mm || cramped(a, b, dx, &d))
                         ok = false;
                 }
                 if (!ok) continue;
@@ -137,6 +156,10 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
                     double s = fabs(dx - (d.finger_x_mm[b] - d.finger_x_mm[a]));
                     bool held = np->start_s + np->duration_s > ni->start_s + 1e-9;
                     double gap = ni->start_s - np->start_s;
+                    bool busy = np->start_s + np->duration_s + d.busy_after_s > ni->start_s - d.busy_before_s;
+                    if (busy && (cramped(a, b, dx, &d) || (a != b && (b - a) * dx <= 0) ||
+                                 (a == b && np->key != ni->key && ni->start_s - (np->start_s + np->duration_s) < d.move_gap_s)))
+                        continue;
                     if (held)
                         c += s / d.pitch_mm;
                     else

@@ -1,7 +1,8 @@
 /* Damped Gauss-Newton for the small square systems of the showcase: the contact of the
  * fingertips (at most ten unknowns) and the playing posture (fourteen). The Jacobian is
- * taken by forward differences; a step is capped in size and halved until it lowers the
- * sum of squared misses, so joint limits (which flatten the map) cannot throw it off. */
+ * taken by forward differences and kept while it serves (chord steps); a step is capped
+ * in size and, with a fresh Jacobian, halved until it lowers the sum of squared misses,
+ * so joint limits (which flatten the map) cannot throw it off. */
 #include <math.h>
 #include <string.h>
 
@@ -62,31 +63,46 @@ static double max_abs(const double *v, int n)
 sk_result sk__newton_solve(const sk__newton_desc *d, double *x, double *res, sk_error *err)
 {
     int n = d->n;
+    double jac[SK__NEWTON_MAX * SK__NEWTON_MAX], xs[SK__NEWTON_MAX], rs[SK__NEWTON_MAX], dx[SK__NEWTON_MAX];
+    bool fresh = false, have = false; /* Jacobian just taken at x / one at hand */
     sk_result r = d->fn(d->user, x, res, err);
     for (int it = 0; it < d->max_iterations && r == SK_OK && n > 0 && max_abs(res, n) > d->tolerance; it++) {
-        double jac[SK__NEWTON_MAX * SK__NEWTON_MAX], xs[SK__NEWTON_MAX], rs[SK__NEWTON_MAX], dx[SK__NEWTON_MAX];
-        for (int j = 0; j < n && r == SK_OK; j++) {
-            memcpy(xs, x, (size_t)n * sizeof *x);
-            xs[j] += d->diff_step;
-            r = d->fn(d->user, xs, rs, err);
-            for (int i = 0; i < n; i++) jac[i * n + j] = (rs[i] - res[i]) / d->diff_step;
+        if (!have) { /* forward differences at x */
+            for (int j = 0; j < n && r == SK_OK; j++) {
+                memcpy(xs, x, (size_t)n * sizeof *x);
+                xs[j] += d->diff_step;
+                r = d->fn(d->user, xs, rs, err);
+                for (int i = 0; i < n; i++) jac[i * n + j] = (rs[i] - res[i]) / d->diff_step;
+            }
+            if (r != SK_OK) break;
+            have = fresh = true;
         }
-        if (r != SK_OK) break;
         sk__gauss_newton_step(n, jac, res, dx);
         double big = max_abs(dx, n);
         if (big > d->max_step)
             for (int i = 0; i < n; i++) dx[i] *= d->max_step / big;
-        double before = sum_sq(res, n);
-        bool better = false;
-        for (int half = 0; half < 8 && r == SK_OK && !better; half++) {
+        double before = sum_sq(res, n), after = INFINITY;
+        /* the map is nearly linear: the same Jacobian serves several steps (a chord
+           method); a step that does not shrink the misses well takes a fresh one, and a
+           fresh one that does not help is halved */
+        for (int half = 0; half < (fresh ? 8 : 1) && r == SK_OK; half++) {
             for (int i = 0; i < n; i++) xs[i] = x[i] + dx[i];
             r = d->fn(d->user, xs, rs, err);
-            better = sum_sq(rs, n) < before;
+            after = sum_sq(rs, n);
+            if (after < before) break;
             for (int i = 0; i < n; i++) dx[i] *= 0.5;
         }
-        if (r != SK_OK || !better) break; /* no step lowers the misses: as close as it gets */
-        memcpy(x, xs, (size_t)n * sizeof *x);
-        memcpy(res, rs, (size_t)n * sizeof *rs);
+        if (r != SK_OK) break;
+        if (after < before) {
+            memcpy(x, xs, (size_t)n * sizeof *x);
+            memcpy(res, rs, (size_t)n * sizeof *rs);
+            if (after > 0.25 * before) have = false; /* slow: refresh the Jacobian */
+            fresh = false;
+        } else if (fresh) {
+            break; /* no step lowers the misses: as close as it gets */
+        } else {
+            have = false;
+        }
     }
     return r;
 }

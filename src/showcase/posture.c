@@ -13,6 +13,7 @@
 #include "showcase/showcase_internal.h"
 
 #define POSTURE_UNKNOWNS 14
+#define PRESS_MARGIN_MM 2.0 /* a press stops short of the bottom of its arc */
 #define WRIST_FLEX 0.12 /* the wrist slightly flexed: the forearm level, the hand sloping
                            down to the knuckles */
 
@@ -149,15 +150,42 @@ sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err)
         return r;
     for (int f = 0; f < 5; f++) rig->pad_offset[f] = pads[f];
     rig->hover_depth = -tg.bottom;
-    /* each finger pressed down by the hover height and the key dip */
+    /* how deep each pad can go: the lowest point of its press's flexion arc (golden
+       section on the press amplitude) */
     for (int f = 0; f < 5; f++) {
         sk_vec3d pressed[5];
-        press_problem pp2 = {sc, f, tg.bottom - sc->desc.performance.hover_mm - sc->piano.desc.dip_mm, pressed};
+        press_problem pp2 = {sc, f, 0, pressed};
+        double a = 0, b = 4, miss;
+        const double g = 0.5 * (sqrt(5.0) - 1);
+        for (int it = 0; it < 40; it++) {
+            double m1 = b - g * (b - a), m2 = a + g * (b - a), y1, y2;
+            if ((r = press_fn(&pp2, &m1, &y1, err)) != SK_OK || (r = press_fn(&pp2, &m2, &y2, err)) != SK_OK)
+                return r;
+            if (y1 < y2)
+                b = m2;
+            else
+                a = m1;
+        }
+        double at = 0.5 * (a + b);
+        if ((r = press_fn(&pp2, &at, &miss, err)) != SK_OK) return r;
+        rig->max_depth[f] = tg.bottom - miss; /* target 0: miss = the bottom's height */
+        /* and where the pad is when it presses a key to the bottom (or as deep as it goes) */
+        double depth = fmin(sc->desc.performance.hover_mm + sc->piano.desc.dip_mm, rig->max_depth[f] - PRESS_MARGIN_MM);
+        pp2.target = tg.bottom - depth;
         sk__newton_desc nd2 = {1, press_fn, &pp2, 1e-3, 30, 1e-4, 0.5};
-        double a = 0, miss;
-        if ((r = sk__newton_solve(&nd2, &a, &miss, err)) != SK_OK) return r;
-        if ((r = press_fn(&pp2, &a, &miss, err)) != SK_OK) return r;
+        double amp = 0;
+        if ((r = sk__newton_solve(&nd2, &amp, &miss, err)) != SK_OK) return r;
+        if ((r = press_fn(&pp2, &amp, &miss, err)) != SK_OK) return r;
         rig->press_offset[f] = pressed[f];
+    }
+    /* home depth: the mean of the middles of the wrist depths at which each finger can
+       strike a white key */
+    const sk_piano_key *c4 = sk_piano_key_get(&sc->piano, 60);
+    rig->home_z = 0;
+    for (int f = 0; f < 5; f++) {
+        double a, b;
+        sk__performance_contact_range(rig, c4, f, &a, &b);
+        rig->home_z += (0.5 * (a + b) - rig->press_offset[f].z) / 5;
     }
     return SK_OK;
 }

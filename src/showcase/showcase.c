@@ -47,7 +47,6 @@ sk_result sk_showcase_create(const sk_showcase_desc *desc, sk_showcase **out, sk
     if (r == SK_OK) r = sk_piano_init(&sc->piano, &sc->desc.piano, err);
     if (r == SK_OK) r = sk_melody_copy(sc->desc.melody, &sc->melody, err);
     if (r == SK_OK) r = sk_melody_validate(&sc->melody, err);
-    if (r == SK_OK) r = sk_melody_choose_fingers(&sc->melody, &sc->piano, &sc->desc.fingering, NULL, err);
     sc->desc.melody = &sc->melody;
     if (r == SK_OK) {
         sk_hand_skeleton_desc hd = sc->desc.hand ? *sc->desc.hand : (sk_hand_skeleton_desc){0};
@@ -60,6 +59,21 @@ sk_result sk_showcase_create(const sk_showcase_desc *desc, sk_showcase **out, sk
     if (r == SK_OK) {
         sc->contact = (sk__contact){sc->solver, &sc->skeleton, &sc->piano, &sc->rig, &sc->desc.performance};
         r = sk__hand_rig_make(sc, err);
+    }
+    if (r == SK_OK) {
+        /* fingers whose pads cannot be on white keys' front parts at one wrist depth
+           cannot hold keys down together */
+        const sk_piano_key *c4 = sk_piano_key_get(&sc->piano, 60);
+        for (int a = 0; a < 5; a++)
+            for (int b = 0; b < 5; b++) {
+                double alo, ahi, blo, bhi;
+                sk__performance_contact_range(&sc->rig, c4, a, &alo, &ahi);
+                sk__performance_contact_range(&sc->rig, c4, b, &blo, &bhi);
+                alo -= sc->rig.press_offset[a].z, ahi -= sc->rig.press_offset[a].z;
+                blo -= sc->rig.press_offset[b].z, bhi -= sc->rig.press_offset[b].z;
+                if (fmax(alo, blo) > fmin(ahi, bhi)) sc->desc.fingering.apart[a][b] = true;
+            }
+        r = sk_melody_choose_fingers(&sc->melody, &sc->piano, &sc->desc.fingering, NULL, err);
     }
     if (r == SK_OK) {
         sc->perf = (sk__performance){&sc->melody, &sc->piano, &sc->rig, sc->desc.performance, 0};

@@ -48,6 +48,11 @@ typedef struct sk__hand_rig {
     sk_vec3d press_offset[5];    /* the same with the finger pressing a key to the bottom (a
                                     press draws a pad back toward the palm) */
     double hover_depth;          /* pads' lowest points below the wrist in that posture */
+    double max_depth[5];         /* how far below the hover a press can take each pad (the
+                                    lowest point of its flexion arc) */
+    double home_z;               /* the wrist's depth the hand keeps when it can: the mean
+                                    of the depths at which each finger can strike a white
+                                    key */
 } sk__hand_rig;
 
 /* Distal link and fingertip point of finger f (0 thumb .. 4 little). */
@@ -87,6 +92,11 @@ sk_performance_desc sk__performance_desc_resolved(const sk_performance_desc *des
 sk_result sk__performance_desc_validate(const sk_performance_desc *desc, sk_error *err);
 /* Finger intents and the wrist's position at time t: a function of t alone. */
 void sk__performance_at(const sk__performance *perf, double t, sk__intent *out);
+/* The depths (z) at which a finger's pad may be when it has pressed a key down. */
+void sk__performance_contact_range(const sk__hand_rig *rig, const sk_piano_key *key, int finger, double *lo,
+                                   double *hi);
+/* The wrist depths (z) from which note i's finger can strike its key. */
+void sk__performance_note_depths(const sk__performance *perf, int i, double *lo, double *hi);
 /* Where the wrist must be for note i (its finger over its key at its contact depth). */
 sk_vec3d sk__performance_note_wrist(const sk__performance *perf, int i);
 
