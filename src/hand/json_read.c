@@ -1,6 +1,7 @@
 /* Strict JSON reading for the hand's data files (constraint sets, anatomy, keyframes):
  * unknown keys, wrong types and out-of-range numbers are errors naming the key path. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "hand/hand_private.h"
@@ -101,4 +102,23 @@ sk_result sk_hand__write_text_file(const char *path, const char *text, sk_error 
         return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
     }
     return sk_atomic_file_commit(&file, err);
+}
+
+sk_result sk_hand__parse_file(const char *path, sk_hand__parse_fn parse, void *ctx, sk_error *err)
+{
+    char *text = NULL;
+    size_t size = 0;
+    sk_result r = sk_read_file(path, SK_HAND_MAX_FILE_BYTES, &text, &size, err);
+    if (r != SK_OK) return r;
+    r = parse(text, size, path, ctx, err);
+    free(text);
+    return r;
+}
+
+int sk_hand__finger_by_letter(const char *name)
+{
+    static const char letters[SK_HAND_FINGER_COUNT] = {'T', 'I', 'M', 'R', 'L'};
+    for (int i = 0; i < SK_HAND_FINGER_COUNT; i++)
+        if (name[0] == letters[i] && name[1] == '\0') return i;
+    return -1;
 }
