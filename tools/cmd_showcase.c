@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cmd_hand_surface.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/showcase.h"
 
@@ -19,6 +20,7 @@ static const cli_option k_options[] = {
     {"fps", 0, "N", "frames per second (default 24)", false},
     {"duration", 0, "S", "play only the first S seconds of the melody", false},
     {"constraints", 0, "NAME|FILE", "the hand's coupling potential (default natural)", false},
+    {"texture-size", 0, "N", "the hand's skin texture (atlas) in pixels (default 1024)", false},
     {"join", 0, NULL, "render nothing: make the MP4 from the frames already in the folder", false},
     {"no-video", 0, NULL, "do not make the MP4", false},
     {"ffmpeg", 0, "PROGRAM", "the ffmpeg to run (default ffmpeg on the PATH)", false},
@@ -92,6 +94,7 @@ static int parse_frames(const char *text, int *first, int *last)
 }
 
 typedef struct run_state {
+    sk_skin *back_skin, *palm_skin;
     sk_melody melody;
     sk_render_scene_desc *stage;
     sk_hand_constraints *constraints;
@@ -101,6 +104,8 @@ typedef struct run_state {
 static void run_state_free(run_state *s)
 {
     sk_showcase_destroy(s->showcase);
+    sk_skin_destroy(s->back_skin);
+    sk_skin_destroy(s->palm_skin);
     free(s->stage);
     free(s->constraints);
     sk_melody_free(&s->melody);
@@ -133,7 +138,14 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     if (sk_hand_skeleton_init(&skeleton, NULL, &err) != SK_OK) return cli_fail_error(&err);
     if ((status = load_constraints(command, args, &skeleton, s->constraints))) return status;
     cli_apply_threads(args);
+    long long texture;
+    if ((status = cli_get_int(command, args, "texture-size", 1024, 64, 8192, &texture))) return status;
+    if ((status = hand_load_skin("back-of-hand", &s->back_skin)) || (status = hand_load_skin("palm", &s->palm_skin)))
+        return status;
     sk_showcase_desc desc = {0};
+    desc.back_skin = s->back_skin;
+    desc.palm_skin = s->palm_skin;
+    desc.texture_size = (int)texture;
     desc.melody = &s->melody;
     desc.stage = s->stage;
     desc.constraints = s->constraints;

@@ -255,8 +255,9 @@ typedef struct sk_performance_desc {
     double strike_drop_mm;  /* the wrist gives way this much at a strike and recovers;
                                0 = 1.5; [0, 10] (negative = none) */
     double tip_radius_mm[5]; /* fingertip pads (spheres at the ends of the distal links);
-                               all 0 = 8.5, 7, 7.25, 6.75, 6.25 (half the flesh's tip
-                               breadth, presets/hand/flesh.json) */
+                               all 0 = measured on the hand surface: the largest distance
+                               of its flesh from the distal link's axis near the tip, so
+                               the sphere holds the fingertip */
 } sk_performance_desc;
 
 /* ================================================================ the showcase */
@@ -273,6 +274,19 @@ typedef struct sk_showcase_desc {
                                                (presets/hand/natural.json) */
     const sk_hand_skeleton_desc *hand;      /* NULL = the default right hand (a left hand
                                                is refused: the piece is for the right) */
+    const sk_hand_surface *surface;         /* the hand's skin surface, built on a skeleton
+                                               of the same desc; NULL = built here (about
+                                               1 s). Referenced: it must outlive the
+                                               showcase */
+    const sk_image *skin_albedo;            /* the surface's texture (sk_hand_texture_bake):
+                                               linear albedo and normal map of its atlas;
+                                               NULL = baked here from back_skin and palm_skin
+                                               at texture_size. Referenced */
+    const sk_image *skin_normal;
+    const sk_skin *back_skin, *palm_skin;   /* microrelief of the baked texture (the skin
+                                               module's back-of-hand and palm presets); NULL
+                                               = none */
+    int texture_size;                       /* 0 = 1024; [64, 8192] */
     sk_piano_desc piano;
     sk_fingering_desc fingering;            /* finger_x_mm all 0 = measured on the hand's
                                                playing posture */
@@ -295,6 +309,12 @@ double sk_showcase_fps(const sk_showcase *showcase);
 const sk_melody *sk_showcase_melody(const sk_showcase *showcase);
 const sk_piano *sk_showcase_piano(const sk_showcase *showcase);
 const sk_hand_skeleton *sk_showcase_skeleton(const sk_showcase *showcase);
+const sk_hand_surface *sk_showcase_surface(const sk_showcase *showcase);
+/* Radius of the flesh around each link of the hand (the largest distance of the
+ * surface's vertices bound to it from its axis; 0 for the carpus): capsules from the
+ * link's joint to its end point (the fingertip pads for the distal links) that hold the
+ * hand, for contact checks. */
+double sk_showcase_link_radius(const sk_showcase *showcase, int link);
 
 /* The hand and keys at one time: a function of the time alone (no history), so any
  * frame can be computed by itself. */

@@ -18,6 +18,8 @@
 #define DIFF_STEP 1e-4
 #define MAX_STEP 2.0 /* torque units */
 #define EDGE_RAMP_MM 4.0
+#define FRONT_MARGIN_MM 2.0
+#define FRONT_SLOPE 3.0
 #define LIFT_MAX 4.0 /* torque units */
 #define LIFT_ITERATIONS 12
 #define LIFT_ROUNDS 2
@@ -171,6 +173,9 @@ static sk_result misses(problem *p, const double *x, double *res, double dofs[SK
             target = sk_piano_key_top_at(c->piano, key, fi->angle, pads[f].z);
         else
             target = hover + fi->blend * (sk_piano_key_top_at(c->piano, key, 0, pads[f].z) - hover);
+        /* a pad drawn off the key's front is no press: such a solution is refused */
+        double off = pads[f].z - (key->front_mm - FRONT_MARGIN_MM);
+        if (off > 0) target += FRONT_SLOPE * off;
         /* never into the keys beside it */
         double others = keys_surface_except(c->piano, pads[f], rad, fi->key) + c->desc->clearance_mm;
         if (others > target) target = others;

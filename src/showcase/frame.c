@@ -19,10 +19,12 @@ sk_result sk_showcase_render_frame(sk_showcase *sc, int frame, sk_image *image, 
     sk_showcase_pose pose;
     sk_result r = sk__contact_solve(&sc->contact, &in, t, &pose, err);
     double t2 = sk_time_seconds();
-    if (r == SK_OK) r = sk__scene_build(sc, &pose, sc->scene, err);
+    sk_mesh hand = {0};
+    if (r == SK_OK) r = sk__scene_build(sc, &pose, sc->scene, &hand, err);
     double t3 = sk_time_seconds();
     sk_render_scene *scene = NULL;
     if (r == SK_OK) r = sk_render_scene_create(sc->scene, &scene, err);
+    sk_mesh_free(&hand);
     double t4 = sk_time_seconds();
     if (r == SK_OK) r = sk_render_scene_render(scene, NULL, image, NULL, err);
     double t5 = sk_time_seconds();

@@ -38,11 +38,7 @@ sk_performance_desc sk__performance_desc_resolved(const sk_performance_desc *des
     if (d.travel_s == 0) d.travel_s = 0.04;
     if (d.strike_drop_mm == 0) d.strike_drop_mm = 1.5;
     if (d.strike_drop_mm < 0) d.strike_drop_mm = 0;
-    static const double radius[5] = {8.5, 7, 7.25, 6.75, 6.25};
-    bool any = false;
-    for (int f = 0; f < 5; f++) any = any || d.tip_radius_mm[f] != 0;
-    if (!any) memcpy(d.tip_radius_mm, radius, sizeof radius);
-    return d;
+    return d; /* tip_radius_mm all 0: measured on the hand surface (hand_mesh.c) */
 }
 
 sk_result sk__performance_desc_validate(const sk_performance_desc *d, sk_error *err)
@@ -61,7 +57,9 @@ sk_result sk__performance_desc_validate(const sk_performance_desc *d, sk_error *
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "performance.approach_s = %g must exceed half of performance.descent_s = %g", d->approach_s,
                        d->descent_s);
-    for (int f = 0; f < 5; f++)
+    bool any = false;
+    for (int f = 0; f < 5; f++) any = any || d->tip_radius_mm[f] != 0;
+    for (int f = 0; f < 5 && any; f++)
         if ((r = sk_check_range_f(err, "performance.tip_radius_mm", d->tip_radius_mm[f], 2, 20)) != SK_OK) return r;
     return SK_OK;
 }

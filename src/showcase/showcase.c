@@ -23,12 +23,14 @@ static sk_result resolve_desc(const sk_showcase_desc *in, sk_showcase_desc *d, s
     if (d->width == 0) d->width = 1280;
     if (d->height == 0) d->height = 720;
     if (d->samples == 0) d->samples = 16;
+    if (d->texture_size == 0) d->texture_size = 1024;
     d->performance = sk__performance_desc_resolved(&d->performance);
     sk_result r;
     if ((r = sk_check_range_f(err, "fps", d->fps, 1, 240)) != SK_OK ||
         (r = sk_check_range_i(err, "width", d->width, 16, 8192)) != SK_OK ||
         (r = sk_check_range_i(err, "height", d->height, 16, 8192)) != SK_OK ||
         (r = sk_check_range_i(err, "samples", d->samples, 1, 1024)) != SK_OK ||
+        (r = sk_check_range_i(err, "texture_size", d->texture_size, 64, 8192)) != SK_OK ||
         (r = sk__performance_desc_validate(&d->performance, err)) != SK_OK)
         return r;
     /* the synth desc is checked by rendering nothing */
@@ -56,6 +58,7 @@ sk_result sk_showcase_create(const sk_showcase_desc *desc, sk_showcase **out, sk
             r = sk_hand_skeleton_init(&sc->skeleton, &hd, err);
     }
     if (r == SK_OK) r = sk_hand_solver_create(&sc->solver, &sc->skeleton, sc->desc.constraints, NULL, 0, NULL, err);
+    if (r == SK_OK) r = sk__hand_mesh_setup(sc, err);
     if (r == SK_OK) {
         sc->contact = (sk__contact){sc->solver, &sc->skeleton, &sc->piano, &sc->rig, &sc->desc.performance};
         r = sk__hand_rig_make(sc, err);
@@ -123,6 +126,7 @@ void sk_showcase_destroy(sk_showcase *sc)
     if (!sc) return;
     for (int i = 0; i < SK_RENDER_MAX_MATERIALS; i++)
         if (sc->trees[i]) sk_wood_destroy(sc->trees[i]);
+    sk__hand_mesh_free(sc);
     free(sc->stage);
     free(sc->scene);
     sk_hand_solver_destroy(sc->solver);
@@ -135,6 +139,11 @@ double sk_showcase_fps(const sk_showcase *sc) { return sc->desc.fps; }
 const sk_melody *sk_showcase_melody(const sk_showcase *sc) { return &sc->melody; }
 const sk_piano *sk_showcase_piano(const sk_showcase *sc) { return &sc->piano; }
 const sk_hand_skeleton *sk_showcase_skeleton(const sk_showcase *sc) { return &sc->skeleton; }
+const sk_hand_surface *sk_showcase_surface(const sk_showcase *sc) { return sc->surface; }
+double sk_showcase_link_radius(const sk_showcase *sc, int link)
+{
+    return link >= 0 && link < SK_HAND_LINK_COUNT ? sc->link_radius[link] : 0;
+}
 
 sk_vec3d sk_showcase_hand_to_scene(const sk_showcase *sc, sk_vec3d p)
 {

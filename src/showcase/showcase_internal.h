@@ -168,13 +168,27 @@ struct sk_showcase {
     int ivory, ebony;               /* stage material indices */
     int frame_count;
     double duration_s;              /* of the sound and the frames */
+    const sk_hand_surface *surface; /* the desc's or own_surface */
+    sk_hand_surface *own_surface;
+    const sk_image *skin_albedo, *skin_normal;
+    sk_image own_albedo, own_normal;
+    float *positions, *normals;     /* skinning buffers (surface vertices) */
+    double link_radius[SK_HAND_LINK_COUNT];
 };
+
+/* The hand surface, its texture and the flesh radii (hand_mesh.c). */
+sk_result sk__hand_mesh_setup(sk_showcase *sc, sk_error *err);
+void sk__hand_mesh_free(sk_showcase *sc);
+/* The skinned mesh of posed frames with atlas UVs, in scene coordinates (into `out`,
+ * free with sk_mesh_free). */
+sk_result sk__hand_mesh_posed(sk_showcase *sc, const sk_hand_frames *frames, sk_mesh *out, sk_error *err);
 
 /* The playing posture and the rig of the hand (posture.c). */
 sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err);
 /* A frame's render scene: the stage, the keys turned as the pose says, the hand and the
- * forearm (scene.c). */
-sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, sk_render_scene_desc *out,
+ * forearm (scene.c); `hand` receives the hand's mesh, which the scene refers to (free it
+ * with sk_mesh_free after the render scene is created). */
+sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, sk_render_scene_desc *out, sk_mesh *hand,
                           sk_error *err);
 /* The camera framing the keys the melody plays and the hand over them. */
 void sk__scene_frame_camera(const sk_showcase *sc, sk_render_camera_desc *camera);
