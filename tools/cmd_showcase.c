@@ -21,6 +21,7 @@ static const cli_option k_options[] = {
     {"duration", 0, "S", "play only the first S seconds of the melody", false},
     {"constraints", 0, "NAME|FILE", "the hand's coupling potential (default natural)", false},
     {"texture-size", 0, "N", "the hand's skin texture (atlas) in pixels (default 1024)", false},
+    {"hand-triangles", 0, "N", "triangles of the hand's surface (default 8000, the thesis's)", false},
     {"join", 0, NULL, "render nothing: make the MP4 from the frames already in the folder", false},
     {"no-video", 0, NULL, "do not make the MP4", false},
     {"ffmpeg", 0, "PROGRAM", "the ffmpeg to run (default ffmpeg on the PATH)", false},
@@ -138,14 +139,17 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     if (sk_hand_skeleton_init(&skeleton, NULL, &err) != SK_OK) return cli_fail_error(&err);
     if ((status = load_constraints(command, args, &skeleton, s->constraints))) return status;
     cli_apply_threads(args);
-    long long texture;
-    if ((status = cli_get_int(command, args, "texture-size", 1024, 64, 8192, &texture))) return status;
+    long long texture, triangles;
+    if ((status = cli_get_int(command, args, "texture-size", 1024, 64, 8192, &texture)) ||
+        (status = cli_get_int(command, args, "hand-triangles", 8000, 500, 200000, &triangles)))
+        return status;
     if ((status = hand_load_skin("back-of-hand", &s->back_skin)) || (status = hand_load_skin("palm", &s->palm_skin)))
         return status;
     sk_showcase_desc desc = {0};
     desc.back_skin = s->back_skin;
     desc.palm_skin = s->palm_skin;
     desc.texture_size = (int)texture;
+    desc.hand_triangles = (int)triangles;
     desc.melody = &s->melody;
     desc.stage = s->stage;
     desc.constraints = s->constraints;

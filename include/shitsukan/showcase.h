@@ -287,6 +287,8 @@ typedef struct sk_showcase_desc {
                                                module's back-of-hand and palm presets); NULL
                                                = none */
     int texture_size;                       /* 0 = 1024; [64, 8192] */
+    int hand_triangles;                     /* of a surface built here; 0 = 8000 (the
+                                               thesis's count); [500, 200000] */
     sk_piano_desc piano;
     sk_fingering_desc fingering;            /* finger_x_mm all 0 = measured on the hand's
                                                playing posture */

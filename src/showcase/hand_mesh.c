@@ -16,7 +16,9 @@ sk_result sk__hand_mesh_setup(sk_showcase *sc, sk_error *err)
     if (sc->desc.surface) {
         sc->surface = sc->desc.surface;
     } else {
-        r = sk_hand_surface_create(&sc->own_surface, &sc->skeleton, NULL, err);
+        sk_hand_surface_desc sd = {0};
+        sd.triangles = sc->desc.hand_triangles;
+        r = sk_hand_surface_create(&sc->own_surface, &sc->skeleton, &sd, err);
         if (r != SK_OK) return sk_error_prefix(err, r, "hand surface");
         sc->surface = sc->own_surface;
     }
