@@ -20,8 +20,9 @@ sk_result sk_showcase_render_frame(sk_showcase *sc, int frame, sk_image *image, 
     sk_result r = sk__contact_solve(&sc->contact, &in, t, &pose, err);
     double t2 = sk_time_seconds();
     sk_mesh hand = {0};
-    if (r == SK_OK) r = sk__scene_build(sc, &pose, sc->scene, &hand, err);
+    if (r == SK_OK) r = sk__hand_mesh_posed(sc, &pose.frames, &hand, err);
     double t3 = sk_time_seconds();
+    if (r == SK_OK) r = sk__scene_build(sc, &pose, &hand, sc->scene, err);
     sk_render_scene *scene = NULL;
     if (r == SK_OK) r = sk_render_scene_create(sc->scene, &scene, err);
     sk_mesh_free(&hand);

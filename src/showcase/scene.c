@@ -53,8 +53,7 @@ static int add_material(sk_render_scene_desc *d, const sk_render_material_desc *
 
 /* The hand: its skinned surface with the baked texture, shaded as the thesis shades it
  * (a white surface's shading blended with the texture, 0.3 : 0.7, sec. 4.1.6). */
-static sk_result add_hand(sk_showcase *sc, const sk_showcase_pose *pose, sk_render_scene_desc *d, sk_mesh *mesh,
-                          sk_error *err)
+static sk_result add_hand(sk_showcase *sc, sk_render_scene_desc *d, const sk_mesh *mesh, sk_error *err)
 {
     sk_render_material_desc m = {0};
     snprintf(m.name, sizeof m.name, "showcase-skin");
@@ -65,8 +64,6 @@ static sk_result add_hand(sk_showcase *sc, const sk_showcase_pose *pose, sk_rend
     m.albedo_image = sc->skin_albedo;
     m.normal_image = sc->skin_normal;
     if (add_material(d, &m) < 0) return sk_fail(err, SK_ERROR_LIMIT, "stage: no room for the hand's material");
-    sk_result r = sk__hand_mesh_posed(sc, &pose->frames, mesh, err);
-    if (r != SK_OK) return r;
     sk_render_object_desc o = {0};
     snprintf(o.name, sizeof o.name, "hand");
     o.shape = SK_RENDER_SHAPE_MESH;
@@ -75,7 +72,7 @@ static sk_result add_hand(sk_showcase *sc, const sk_showcase_pose *pose, sk_rend
     return add_object(d, &o, err);
 }
 
-sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, sk_render_scene_desc *d, sk_mesh *hand,
+sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, const sk_mesh *hand, sk_render_scene_desc *d,
                           sk_error *err)
 {
     *d = *sc->stage;
@@ -94,6 +91,6 @@ sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, sk_rend
         int n = sk_piano_key_objects(&sc->piano, k, pose->key_angle[i], material, objects);
         for (int j = 0; j < n && r == SK_OK; j++) r = add_object(d, &objects[j], err);
     }
-    if (r == SK_OK) r = add_hand(sc, pose, d, hand, err);
+    if (r == SK_OK) r = add_hand(sc, d, hand, err);
     return r;
 }

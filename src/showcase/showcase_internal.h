@@ -185,10 +185,10 @@ sk_result sk__hand_mesh_posed(sk_showcase *sc, const sk_hand_frames *frames, sk_
 
 /* The playing posture and the rig of the hand (posture.c). */
 sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err);
-/* A frame's render scene: the stage, the keys turned as the pose says, the hand and the
- * forearm (scene.c); `hand` receives the hand's mesh, which the scene refers to (free it
- * with sk_mesh_free after the render scene is created). */
-sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, sk_render_scene_desc *out, sk_mesh *hand,
+/* A frame's render scene: the stage, the keys turned as the pose says, the hand's posed
+ * mesh (referred to: it must live until the render scene is created) and the forearm
+ * (scene.c). */
+sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, const sk_mesh *hand, sk_render_scene_desc *out,
                           sk_error *err);
 /* The camera framing the keys the melody plays and the hand over them. */
 void sk__scene_frame_camera(const sk_showcase *sc, sk_render_camera_desc *camera);
