@@ -1,5 +1,5 @@
 /* Fuzz harness: the hand module's file parsers (constraint sets, anatomy, animation
- * keys, joint-angle CSV, BVH) on the same input; a parsed BVH is also evaluated. */
+ * keys, joint-angle CSV) on the same input. BVH has its own harness (fuzz_bvh.c). */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -13,8 +13,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (sk_hand_skeleton_init(&skel, NULL, NULL) != SK_OK) abort();
     sk_hand_constraints *c = malloc(sizeof *c);
     sk_hand_animation *a = malloc(sizeof *a);
-    sk_bvh *b = malloc(sizeof *b);
-    if (!c || !a || !b) abort();
+    if (!c || !a) abort();
     sk_hand_constraints_parse(text, size, "fuzz", &skel, c, NULL);
     sk_hand_anatomy anatomy;
     if (sk_hand_anatomy_parse(text, size, "fuzz", &anatomy, NULL) == SK_OK) {
@@ -29,14 +28,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     sk_hand_samples s;
     if (sk_hand_samples_parse(text, size, "fuzz", &s, NULL) == SK_OK) sk_hand_samples_free(&s);
-    if (sk_bvh_parse(text, size, "fuzz", b, NULL) == SK_OK) {
-        sk_vec3d *pos = malloc(sizeof(sk_vec3d) * SK_BVH_MAX_JOINTS);
-        if (pos && b->frame_count > 0) sk_bvh_positions(b, 0, pos);
-        free(pos);
-        sk_bvh_free(b);
-    }
     free(c);
     free(a);
-    free(b);
     return 0;
 }

@@ -18,6 +18,10 @@ extern const cli_command cmd_wood_sweep;
 extern const cli_command cmd_render;
 extern const cli_command cmd_showcase;
 extern const cli_command cmd_showcase_midi;
+extern const cli_command cmd_tissue_skin;
+extern const cli_command cmd_tissue_run;
+extern const cli_command cmd_tissue_motion;
+extern const cli_command cmd_studio;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -37,5 +41,9 @@ const cli_command *const cli_commands[] = {
     &cmd_render,
     &cmd_showcase,
     &cmd_showcase_midi,
+    &cmd_tissue_skin,
+    &cmd_tissue_run,
+    &cmd_tissue_motion,
+    &cmd_studio,
     NULL,
 };

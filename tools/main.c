@@ -1,5 +1,6 @@
 /* The `shitsukan` command: dispatches to a subcommand (one or two words) and maps
  * results to exit codes (0 ok, 1 runtime failure, 2 bad usage or input). */
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -16,6 +17,30 @@ static void print_tool_help(FILE *out)
         fprintf(out, "  %-16s %s\n", cli_commands[i]->name, cli_commands[i]->summary);
     fprintf(out, "\n'shitsukan <command> --help' shows a command's options.\n"
                  "Exit status: 0 success, 1 runtime failure, 2 bad usage or input.\n");
+}
+
+/* Whether `word` is the first word of two-word commands (a group such as "hand"). */
+static bool is_group(const char *word)
+{
+    size_t n = strlen(word);
+    for (int i = 0; cli_commands[i]; i++) {
+        const char *space = strchr(cli_commands[i]->name, ' ');
+        if (space && (size_t)(space - cli_commands[i]->name) == n && strncmp(cli_commands[i]->name, word, n) == 0)
+            return true;
+    }
+    return false;
+}
+
+static void print_group_help(FILE *out, const char *group)
+{
+    size_t n = strlen(group);
+    fprintf(out, "usage: shitsukan %s <command> [options]\n\ncommands:\n", group);
+    for (int i = 0; cli_commands[i]; i++) {
+        const char *name = cli_commands[i]->name;
+        if (strncmp(name, group, n) == 0 && (name[n] == ' ' || name[n] == '\0'))
+            fprintf(out, "  %-16s %s\n", name, cli_commands[i]->summary);
+    }
+    fprintf(out, "\n'shitsukan %s <command> --help' shows a command's options.\n", group);
 }
 
 /* The command whose name matches argv[1] (and argv[2] for two-word names). */
@@ -57,6 +82,15 @@ int main(int argc, char **argv)
     }
     int words;
     const cli_command *command = find_command(argc, argv, &words);
+    /* a group's own help: "shitsukan tissue --help" (or the group alone, as usage) */
+    if (!command && is_group(argv[1])) {
+        bool asked = argc > 2 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0);
+        if (asked || argc == 2) {
+            print_group_help(asked ? stdout : stderr, argv[1]);
+            return asked ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+        }
+        return cli_fail(CLI_EXIT_USAGE, "unknown command '%s %s' (see 'shitsukan %s --help')", argv[1], argv[2], argv[1]);
+    }
     if (!command)
         return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (see 'shitsukan --help')", argv[1]);
     cli_args args;
