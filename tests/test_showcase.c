@@ -21,6 +21,7 @@ typedef struct fixture {
     sk_image albedo, normal;
     sk_render_scene_desc *stage;
     sk_melody melody;
+    sk_tissue_character_desc *forearm;
     sk_showcase *showcase;
 } fixture;
 
@@ -46,9 +47,10 @@ static sk_render_scene_desc *test_stage(void)
     return d;
 }
 
-static sk_showcase *make_showcase(const sk_melody *melody, int width, int height)
+static sk_showcase *make_showcase_with(const sk_melody *melody, int width, int height, bool forearm)
 {
     sk_showcase_desc d = {0};
+    d.forearm = forearm ? fx.forearm : NULL;
     d.melody = melody;
     d.stage = fx.stage;
     d.constraints = fx.constraints;
@@ -60,6 +62,11 @@ static sk_showcase *make_showcase(const sk_melody *melody, int width, int height
     sk_error err = {0};
     if (sk_showcase_create(&d, &sc, &err) != SK_OK) fail_msg("%s", err.message);
     return sc;
+}
+
+static sk_showcase *make_showcase(const sk_melody *melody, int width, int height)
+{
+    return make_showcase_with(melody, width, height, false);
 }
 
 static int setup(void **state)
@@ -80,6 +87,9 @@ static int setup(void **state)
         fx.normal.data[3 * i] = 0.5f, fx.normal.data[3 * i + 1] = 0.5f, fx.normal.data[3 * i + 2] = 1.0f;
     }
     fx.stage = test_stage();
+    fx.forearm = calloc(1, sizeof *fx.forearm);
+    snprintf(path, sizeof path, "%s/showcase/forearm.json", SK_TEST_PRESET_DIR);
+    if (sk_tissue_character_load(path, fx.forearm, &err) != SK_OK) return -1;
     snprintf(path, sizeof path, "%s/showcase/melody.txt", SK_TEST_DATA_DIR);
     if (sk_melody_load(path, &fx.melody, &err) != SK_OK) return -1;
     fx.showcase = make_showcase(&fx.melody, 32, 18);
@@ -92,6 +102,7 @@ static int teardown(void **state)
     sk_showcase_destroy(fx.showcase);
     sk_melody_free(&fx.melody);
     free(fx.stage);
+    free(fx.forearm);
     sk_image_free(&fx.albedo), sk_image_free(&fx.normal);
     sk_hand_surface_destroy(fx.surface);
     free(fx.constraints);
@@ -254,7 +265,7 @@ static void test_frames_for_any_split_and_threads(void **state)
     snprintf(whole, sizeof whole, "%s", sk_test_path("frames-whole"));
     snprintf(split, sizeof split, "%s", sk_test_path("frames-split"));
     sk_threads_set(1);
-    sk_showcase *a = make_showcase(&short_melody, 24, 16);
+    sk_showcase *a = make_showcase_with(&short_melody, 24, 16, true);
     int n = sk_showcase_frame_count(a);
     assert_true(n >= 6);
     sk_showcase_run_desc rd = {.output_dir = whole, .last_frame = -1, .no_video = true};
@@ -262,7 +273,7 @@ static void test_frames_for_any_split_and_threads(void **state)
     sk_showcase_destroy(a);
     sk_threads_set(2);
     for (int part = 0; part < 2; part++) { /* the second half first, each by a fresh showcase */
-        sk_showcase *b = make_showcase(&short_melody, 24, 16);
+        sk_showcase *b = make_showcase_with(&short_melody, 24, 16, true);
         sk_showcase_run_desc pd = {.output_dir = split, .no_video = true};
         pd.first_frame = part == 0 ? n / 2 : 0;
         pd.last_frame = part == 0 ? n - 1 : n / 2 - 1;
@@ -280,6 +291,90 @@ static void test_frames_for_any_split_and_threads(void **state)
     snprintf(wa, sizeof wa, "%s/showcase.wav", whole);
     snprintf(wb, sizeof wb, "%s/showcase.wav", split);
     assert_true(sk_test_same_file(wa, wb));
+    sk_melody_free(&short_melody);
+}
+
+/* ------------------------------------------------------------ the forearm */
+
+/* Largest distance of a forearm skin point from where its bones carry it (the flesh's
+   own motion). */
+static double flesh_offset(sk_showcase *sc, int frame, float *skin, float *carried)
+{
+    sk_error err = {0};
+    if (sk_showcase_forearm_at(sc, frame, skin, carried, &err) != SK_OK) fail_msg("%s", err.message);
+    size_t n = sk_showcase_forearm_points(sc);
+    double worst = 0;
+    for (size_t i = 0; i < n; i++) {
+        double dx = skin[3 * i] - carried[3 * i], dy = skin[3 * i + 1] - carried[3 * i + 1],
+               dz = skin[3 * i + 2] - carried[3 * i + 2];
+        worst = fmax(worst, sqrt(dx * dx + dy * dy + dz * dz));
+    }
+    return worst;
+}
+
+/* The thumb strikes C4, then E4: the wrist travels two white keys between the strikes,
+ * then the hand rests. The flesh moves relative to the bones while the wrist is (almost)
+ * still after it stops, and settles back onto them. */
+static void test_forearm_swings_and_settles(void **state)
+{
+    (void)state;
+    const char text[] = "C4 0.1 0.3 1\nE4 0.6 0.3 1\n";
+    sk_melody leap;
+    sk_error err = {0};
+    assert_int_equal(sk_melody_parse_text(text, strlen(text), "leap", &leap, &err), SK_OK);
+    sk_showcase *sc = make_showcase_with(&leap, 16, 16, true);
+    size_t n = sk_showcase_forearm_points(sc);
+    assert_true(n > 1000);
+    float *skin = malloc(3 * n * sizeof *skin), *carried = malloc(3 * n * sizeof *carried);
+    int frames = sk_showcase_frame_count(sc);
+    double fps = sk_showcase_fps(sc);
+    double still_swing = 0, peak = 0, last = 0;
+    sk_vec3d before = {0, 0, 0};
+    for (int f = 0; f < frames; f++) {
+        double offset = flesh_offset(sc, f, skin, carried);
+        sk_showcase_pose p;
+        assert_int_equal(sk_showcase_pose_at(sc, f / fps, &p, &err), SK_OK);
+        sk_vec3d wrist = p.frames.point[0];
+        bool still = f > 0 && fabs(wrist.x - before.x) + fabs(wrist.y - before.y) + fabs(wrist.z - before.z) < 0.05;
+        if (still && f / fps > 0.4) still_swing = fmax(still_swing, offset);
+        peak = fmax(peak, offset);
+        before = wrist, last = offset;
+    }
+    /* the flesh swings by a visible amount while the wrist holds still */
+    if (!(still_swing > 0.3)) fail_msg("the flesh moves %.3f mm while the wrist is still (peak %.3f)", still_swing, peak);
+    /* and is back on its bones a second after the last note */
+    if (!(last < 0.02 * peak)) fail_msg("the flesh is still %.4f mm off its bones at the end (peak %.3f)", last, peak);
+    free(skin), free(carried);
+    sk_showcase_destroy(sc);
+    sk_melody_free(&leap);
+}
+
+/* The flesh at a frame is the same bits whether the simulation ran through every frame
+ * before it, jumped to it, or came back to it, on one thread or two. */
+static void test_forearm_any_start(void **state)
+{
+    (void)state;
+    sk_melody short_melody;
+    sk_error err = {0};
+    assert_int_equal(sk_melody_copy(&fx.melody, &short_melody, &err), SK_OK);
+    assert_int_equal(sk_melody_cut(&short_melody, 0.7, &err), SK_OK);
+    sk_threads_set(1);
+    sk_showcase *a = make_showcase_with(&short_melody, 16, 16, true);
+    sk_threads_set(2);
+    sk_showcase *b = make_showcase_with(&short_melody, 16, 16, true);
+    size_t n = sk_showcase_forearm_points(a);
+    assert_int_equal(n, sk_showcase_forearm_points(b));
+    float *xa = malloc(3 * n * sizeof *xa), *xb = malloc(3 * n * sizeof *xb);
+    int target = sk_showcase_frame_count(a) / 2;
+    sk_threads_set(1);
+    for (int f = 0; f <= target; f++) assert_int_equal(sk_showcase_forearm_at(a, f, xa, NULL, &err), SK_OK);
+    sk_threads_set(2);
+    assert_int_equal(sk_showcase_forearm_at(b, target + 3, xb, NULL, &err), SK_OK);
+    assert_int_equal(sk_showcase_forearm_at(b, target, xb, NULL, &err), SK_OK); /* back: a restart */
+    assert_memory_equal(xa, xb, 3 * n * sizeof *xa);
+    sk_threads_set(0);
+    free(xa), free(xb);
+    sk_showcase_destroy(a), sk_showcase_destroy(b);
     sk_melody_free(&short_melody);
 }
 
@@ -479,6 +574,8 @@ int main(void)
         cmocka_unit_test(test_no_finger_through_its_neighbour),
         cmocka_unit_test(test_poses_depend_on_time_alone),
         cmocka_unit_test(test_frames_for_any_split_and_threads),
+        cmocka_unit_test(test_forearm_swings_and_settles),
+        cmocka_unit_test(test_forearm_any_start),
         cmocka_unit_test(test_sound),
         cmocka_unit_test(test_piano_keys),
         cmocka_unit_test(test_command),

@@ -22,6 +22,8 @@ static const cli_option k_options[] = {
     {"constraints", 0, "NAME|FILE", "the hand's coupling potential (default natural)", false},
     {"texture-size", 0, "N", "the hand's skin texture (atlas) in pixels (default 1024)", false},
     {"hand-triangles", 0, "N", "triangles of the hand's surface (default 8000, the thesis's)", false},
+    {"forearm", 0, "NAME|FILE", "the forearm's tissue character (default presets/showcase/forearm.json)", false},
+    {"no-forearm", 0, NULL, "leave the forearm out (the hand ends at its wrist)", false},
     {"join", 0, NULL, "render nothing: make the MP4 from the frames already in the folder", false},
     {"no-video", 0, NULL, "do not make the MP4", false},
     {"ffmpeg", 0, "PROGRAM", "the ffmpeg to run (default ffmpeg on the PATH)", false},
@@ -65,16 +67,25 @@ static int load_stage(const cli_command *command, const cli_args *args, sk_rende
     return 0;
 }
 
+/* A shipped preset's name or a file's path into `path`. */
+static int preset_path(const char *option, const char *name, const char *module, const char *example, char *path,
+                       size_t size)
+{
+    if (strchr(name, '/') || strstr(name, ".json"))
+        snprintf(path, size, "%s", name);
+    else if (!cli_find_preset(module, name, path, size))
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': no such preset in %s (e.g. %s)", option, name, module, example);
+    return 0;
+}
+
 static int load_constraints(const cli_command *command, const cli_args *args, const sk_hand_skeleton *skeleton,
                             sk_hand_constraints *out)
 {
     const char *name = cli_get(command, args, "constraints");
     if (!name) name = "natural";
     char path[PATH_MAX];
-    if (strchr(name, '/') || strstr(name, ".json"))
-        snprintf(path, sizeof path, "%s", name);
-    else if (!cli_find_preset("hand", name, path, sizeof path))
-        return cli_fail(CLI_EXIT_USAGE, "--constraints '%s': no such constraint set (e.g. natural)", name);
+    int status = preset_path("constraints", name, "hand", "natural", path, sizeof path);
+    if (status) return status;
     sk_error err = {0};
     if (sk_hand_constraints_load_file(path, skeleton, out, &err) != SK_OK) return cli_fail_error(&err);
     return 0;
@@ -94,11 +105,29 @@ static int parse_frames(const char *text, int *first, int *last)
     return 0;
 }
 
+/* The forearm's tissue character (NULL with --no-forearm). */
+static int load_forearm(const cli_command *command, const cli_args *args, sk_tissue_character_desc **out)
+{
+    *out = NULL;
+    if (cli_has(command, args, "no-forearm")) return 0;
+    const char *name = cli_get(command, args, "forearm");
+    if (!name) name = "forearm";
+    char path[PATH_MAX];
+    int status = preset_path("forearm", name, "showcase", "forearm", path, sizeof path);
+    if (status) return status;
+    *out = malloc(sizeof **out);
+    if (!*out) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    sk_error err = {0};
+    if (sk_tissue_character_load(path, *out, &err) != SK_OK) return cli_fail_error(&err);
+    return 0;
+}
+
 typedef struct run_state {
     sk_skin *back_skin, *palm_skin;
     sk_melody melody;
     sk_render_scene_desc *stage;
     sk_hand_constraints *constraints;
+    sk_tissue_character_desc *forearm;
     sk_showcase *showcase;
 } run_state;
 
@@ -109,6 +138,7 @@ static void run_state_free(run_state *s)
     sk_skin_destroy(s->palm_skin);
     free(s->stage);
     free(s->constraints);
+    free(s->forearm);
     sk_melody_free(&s->melody);
 }
 
@@ -138,6 +168,7 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     sk_error err = {0};
     if (sk_hand_skeleton_init(&skeleton, NULL, &err) != SK_OK) return cli_fail_error(&err);
     if ((status = load_constraints(command, args, &skeleton, s->constraints))) return status;
+    if ((status = load_forearm(command, args, &s->forearm))) return status;
     cli_apply_threads(args);
     long long texture, triangles;
     if ((status = cli_get_int(command, args, "texture-size", 1024, 64, 8192, &texture)) ||
@@ -153,6 +184,7 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     desc.melody = &s->melody;
     desc.stage = s->stage;
     desc.constraints = s->constraints;
+    desc.forearm = s->forearm;
     desc.width = width, desc.height = height, desc.samples = (int)spp, desc.fps = (double)fps;
     if (sk_showcase_create(&desc, &s->showcase, &err) != SK_OK) return cli_fail_error(&err);
     int count = sk_showcase_frame_count(s->showcase);
@@ -173,24 +205,15 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     sk_progress_bar_end(&bar);
     if (r != SK_OK) return cli_fail_error(&err);
     if (!args->common.quiet) {
-        if (stats.frames > 0)
+        double posture = stats.seconds_input + stats.seconds_solve;
+        double total = posture + stats.seconds_tissue + stats.seconds_skin + stats.seconds_scene +
+                       stats.seconds_render + stats.seconds_write;
+        if (stats.frames > 0 && total > 0)
             fprintf(stderr, "showcase: %d frames (%d in the piece), %.2f s a frame: render %.0f%%, scene %.0f%%, "
-                            "posture %.0f%%, files %.0f%%\n",
-                    stats.frames, count,
-                    (stats.seconds_render + stats.seconds_scene + stats.seconds_solve + stats.seconds_input +
-                     stats.seconds_skin + stats.seconds_tissue + stats.seconds_write) / stats.frames,
-                    100 * stats.seconds_render / (stats.seconds_render + stats.seconds_scene + stats.seconds_solve +
-                                                  stats.seconds_input + stats.seconds_skin + stats.seconds_tissue +
-                                                  stats.seconds_write),
-                    100 * stats.seconds_scene / (stats.seconds_render + stats.seconds_scene + stats.seconds_solve +
-                                                 stats.seconds_input + stats.seconds_skin + stats.seconds_tissue +
-                                                 stats.seconds_write),
-                    100 * (stats.seconds_solve + stats.seconds_input) /
-                        (stats.seconds_render + stats.seconds_scene + stats.seconds_solve + stats.seconds_input +
-                         stats.seconds_skin + stats.seconds_tissue + stats.seconds_write),
-                    100 * stats.seconds_write / (stats.seconds_render + stats.seconds_scene + stats.seconds_solve +
-                                                 stats.seconds_input + stats.seconds_skin + stats.seconds_tissue +
-                                                 stats.seconds_write));
+                            "posture %.0f%%, forearm %.0f%%, files %.0f%%\n",
+                    stats.frames, count, total / stats.frames, 100 * stats.seconds_render / total,
+                    100 * stats.seconds_scene / total, 100 * posture / total, 100 * stats.seconds_tissue / total,
+                    100 * stats.seconds_write / total);
         if (stats.video_written) fprintf(stderr, "showcase: %s/showcase.mp4\n", args->common.output);
         else if (stats.video_note[0]) fprintf(stderr, "showcase: %s\n", stats.video_note);
     }
@@ -215,7 +238,8 @@ const cli_command cmd_showcase = {
         "coupling plays a piano cut from the wood solid texture; each note drives two DOFs of\n"
         "its finger (MCP and PIP flexion, thesis Fig. 4.21), the fingertips push the keys\n"
         "down, the wrist travels to reach the notes, a fingering is chosen where the melody\n"
-        "gives none. Writes DIR/frames/frame_NNNN.png, DIR/showcase.wav (44.1 kHz 16-bit),\n"
+        "gives none; the forearm is a tissue character (presets/showcase/forearm.json) whose fat\n"
+        "swings as the wrist travels and strikes. Writes DIR/frames/frame_NNNN.png, DIR/showcase.wav (44.1 kHz 16-bit),\n"
         "DIR/fingering.txt and, once every frame is in DIR and ffmpeg runs, DIR/showcase.mp4.\n"
         "--frames A:B renders a part (the same frames as a whole run), so a job can be split;\n"
         "the run that completes the folder joins the frames (or run again with --join).\n"

@@ -34,6 +34,7 @@
 #include "shitsukan/core.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/render.h"
+#include "shitsukan/tissue.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -289,6 +290,11 @@ typedef struct sk_showcase_desc {
     int texture_size;                       /* 0 = 1024; [64, 8192] */
     int hand_triangles;                     /* of a surface built here; 0 = 8000 (the
                                                thesis's count); [500, 200000] */
+    const sk_tissue_character_desc *forearm; /* the forearm's tissue character (presets/
+                                               showcase/forearm.json): its root joint is
+                                               the elbow, its joint named "wrist" rides on
+                                               the hand's wrist, its rest +Y is the back of
+                                               the forearm; NULL = no forearm. Copied */
     sk_piano_desc piano;
     sk_fingering_desc fingering;            /* finger_x_mm all 0 = measured on the hand's
                                                playing posture */
@@ -340,12 +346,21 @@ sk_result sk_showcase_pose_at(sk_showcase *showcase, double time_s, sk_showcase_
 /* Scene position of a point in hand coordinates (the hand's placement over the keys). */
 sk_vec3d sk_showcase_hand_to_scene(const sk_showcase *showcase, sk_vec3d p);
 
+/* The forearm's skin points (0 without a forearm). */
+size_t sk_showcase_forearm_points(const sk_showcase *showcase);
+/* The forearm's skin at a frame (3 floats a point, scene mm, into `skin`) and where its
+ * bones alone carry each point (`carried`, the flesh at rest relative to them); either may
+ * be NULL. The simulation runs from time 0 (an earlier frame than the last one asked
+ * restarts it), so the flesh at a frame is the same whatever was asked before. */
+sk_result sk_showcase_forearm_at(sk_showcase *showcase, int frame, float *skin, float *carried,
+                                 sk_error *err);
+
 /* Where the time of the last frames went (seconds, summed over the frames). */
 typedef struct sk_showcase_stats {
     int frames;
     double seconds_input;    /* melody -> finger intents and wrist travel */
     double seconds_solve;    /* posture solves of the contact */
-    double seconds_skin;     /* hand (and forearm) meshes */
+    double seconds_skin;     /* hand mesh (skinning) and the forearm's normals */
     double seconds_tissue;   /* forearm simulation */
     double seconds_scene;    /* building the render scene */
     double seconds_render;   /* ray tracing */
@@ -357,9 +372,9 @@ typedef struct sk_showcase_stats {
 } sk_showcase_stats;
 
 /* Renders one frame (RGBA float, linear premultiplied, as sk_render_scene_render).
- * Frames must be asked for in increasing order when the scene has a forearm (its
- * simulation runs forward; a smaller frame restarts it from time 0). `stats` (may be
- * NULL) gets the time of this frame added. */
+ * Any frame may be asked for in any order with the same result; with a forearm, frames
+ * in increasing order are cheapest (its simulation runs forward from time 0 and an
+ * earlier frame restarts it). `stats` (may be NULL) gets the time of this frame added. */
 sk_result sk_showcase_render_frame(sk_showcase *showcase, int frame, sk_image *image,
                                    sk_showcase_stats *stats, sk_error *err);
 

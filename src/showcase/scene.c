@@ -51,16 +51,23 @@ static int add_material(sk_render_scene_desc *d, const sk_render_material_desc *
     return d->material_count++;
 }
 
+/* The skin's shading, hand and forearm alike. */
+static void skin_shading(sk_render_material_desc *m, const char *name)
+{
+    memset(m, 0, sizeof *m);
+    snprintf(m->name, sizeof m->name, "%s", name);
+    m->specular = 0.06f;
+    m->shininess = 24;
+    m->texture_weight = 0.7f;
+}
+
 /* The hand: its skinned surface with the baked texture, shaded as the thesis shades it
  * (a white surface's shading blended with the texture, 0.3 : 0.7, sec. 4.1.6). */
 static sk_result add_hand(sk_showcase *sc, sk_render_scene_desc *d, const sk_mesh *mesh, sk_error *err)
 {
-    sk_render_material_desc m = {0};
-    snprintf(m.name, sizeof m.name, "showcase-skin");
+    sk_render_material_desc m;
+    skin_shading(&m, "showcase-skin");
     m.albedo[0] = m.albedo[1] = m.albedo[2] = 1;
-    m.specular = 0.06f;
-    m.shininess = 24;
-    m.texture_weight = 0.7f;
     m.albedo_image = sc->skin_albedo;
     m.normal_image = sc->skin_normal;
     if (add_material(d, &m) < 0) return sk_fail(err, SK_ERROR_LIMIT, "stage: no room for the hand's material");
@@ -69,6 +76,27 @@ static sk_result add_hand(sk_showcase *sc, sk_render_scene_desc *d, const sk_mes
     o.shape = SK_RENDER_SHAPE_MESH;
     o.mesh = mesh;
     snprintf(o.material, sizeof o.material, "showcase-skin");
+    return add_object(d, &o, err);
+}
+
+/* The forearm: its tissue skin in the hand's colour, shaded with the hand's blend, the
+ * back of the hand's microrelief as its bump map. */
+static sk_result add_forearm(sk_showcase *sc, sk_render_scene_desc *d, sk_error *err)
+{
+    if (!sc->forearm.sim) return SK_OK;
+    sk_render_material_desc m;
+    skin_shading(&m, "showcase-forearm");
+    memcpy(m.albedo, sc->forearm_albedo, sizeof m.albedo);
+    if (sc->desc.back_skin) {
+        m.texture = sk__forearm_skin_texture;
+        m.texture_user = (void *)sc->desc.back_skin;
+    }
+    if (add_material(d, &m) < 0) return sk_fail(err, SK_ERROR_LIMIT, "stage: no room for the forearm's material");
+    sk_render_object_desc o = {0};
+    snprintf(o.name, sizeof o.name, "forearm");
+    o.shape = SK_RENDER_SHAPE_MESH;
+    o.mesh = &sc->forearm.mesh;
+    snprintf(o.material, sizeof o.material, "showcase-forearm");
     return add_object(d, &o, err);
 }
 
@@ -92,5 +120,6 @@ sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, const s
         for (int j = 0; j < n && r == SK_OK; j++) r = add_object(d, &objects[j], err);
     }
     if (r == SK_OK) r = add_hand(sc, d, hand, err);
+    if (r == SK_OK) r = add_forearm(sc, d, err);
     return r;
 }

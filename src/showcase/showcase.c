@@ -86,6 +86,7 @@ sk_result sk_showcase_create(const sk_showcase_desc *desc, sk_showcase **out, sk
         sc->duration_s = (double)sk_synth_length(&sc->melody, &sd) / rate;
         sc->frame_count = (int)floor(sc->duration_s * sc->desc.fps) + 1;
     }
+    if (r == SK_OK) r = sk__forearm_setup(sc, err);
     if (r == SK_OK) {
         sc->stage = malloc(sizeof *sc->stage);
         sc->scene = malloc(sizeof *sc->scene);
@@ -127,6 +128,7 @@ void sk_showcase_destroy(sk_showcase *sc)
     for (int i = 0; i < SK_RENDER_MAX_MATERIALS; i++)
         if (sc->trees[i]) sk_wood_destroy(sc->trees[i]);
     sk__hand_mesh_free(sc);
+    sk__forearm_free(sc);
     free(sc->stage);
     free(sc->scene);
     sk_hand_solver_destroy(sc->solver);

@@ -151,6 +151,34 @@ sk_result sk__contact_posture(const sk__contact *c, sk_vec3d wrist, const double
  * top under the sphere, seen from the sphere's centre; -INFINITY over no key. */
 double sk__keys_surface(const sk_piano *piano, sk_vec3d centre, double radius);
 
+/* ------------------------------------------------------------ the forearm */
+
+/* The forearm (forearm.c): a tissue character whose root joint is the elbow and whose
+ * joint "wrist" rides on the hand's wrist. */
+typedef struct sk__forearm {
+    sk_tissue_model *model;     /* NULL: no forearm */
+    sk_tissue_sim *sim;
+    void *start;                /* the simulation's state at time 0 */
+    size_t start_size;
+    int root;                   /* the elbow joint */
+    double length;              /* elbow to wrist, mm */
+    sk_mat3d rest;              /* rest frame (columns: across, back, elbow to wrist) */
+    sk_vec3d across;            /* scene direction across the hand (the hand's breadth) */
+    sk_vec3d home_axis;         /* level direction from the elbow to the wrist */
+    sk_vec3d home_wrist, home_elbow; /* at time 0 */
+    sk_mesh mesh;               /* the skin: rest triangles and UVs, this frame's positions */
+} sk__forearm;
+
+sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err);
+void sk__forearm_free(sk_showcase *sc);
+/* The skin at `seconds` into the forearm's mesh positions (the tissue step). */
+sk_result sk__forearm_advance(sk_showcase *sc, double seconds, sk_error *err);
+/* Its normals (with the skinning). */
+sk_result sk__forearm_normals(sk_showcase *sc, sk_error *err);
+/* Render texture of the forearm's skin: the microrelief of the sk_skin `user` as a bump
+ * map at the skin's UVs (mm). */
+void sk__forearm_skin_texture(void *user, const sk_render_surface *surface, sk_render_texel *texel);
+
 /* ------------------------------------------------------------ the showcase */
 
 struct sk_showcase {
@@ -174,6 +202,8 @@ struct sk_showcase {
     sk_image own_albedo, own_normal;
     float *positions, *normals;     /* skinning buffers (surface vertices) */
     double link_radius[SK_HAND_LINK_COUNT];
+    sk__forearm forearm;
+    float forearm_albedo[3];        /* the mean of the hand's texture */
 };
 
 /* The hand surface, its texture and the flesh radii (hand_mesh.c). */
