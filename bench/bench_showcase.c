@@ -1,0 +1,147 @@
+/* Benchmark of the showcase: frames per second of the whole pipeline and the share of
+ * each stage (melody -> finger intents and wrist, posture solve with the fingertips'
+ * contact, skinning of the hand surface, forearm simulation, building the render scene,
+ * ray tracing, PNG files) at 1280 x 720 and at a preview size; the non-render stages per
+ * frame against their 2 ms budget; then the command as a user runs it, files included. */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_load.h"
+#include "shitsukan/preset.h"
+#include "shitsukan/showcase.h"
+
+static sk_skin *load_skin(const char *name)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/skin/%s.json", SK_BENCH_PRESET_DIR, name);
+    sk_preset *p = NULL;
+    sk_skin_desc d = {0};
+    sk_skin *skin = NULL;
+    sk_error err = {0};
+    if (sk_preset_load_file(&p, path, &err) != SK_OK || sk_preset_bind(p, &sk_skin_schema, &d, &err) != SK_OK ||
+        sk_skin_create(&skin, &d, &err) != SK_OK) {
+        fprintf(stderr, "bench_showcase: %s\n", err.message);
+        exit(1);
+    }
+    sk_preset_free(p);
+    return skin;
+}
+
+static void report(const char *label, const sk_showcase_stats *s, double wall)
+{
+    char load[128];
+    bench_load_average(load, sizeof load);
+    double n = s->frames > 0 ? s->frames : 1;
+    double non_render = s->seconds_input + s->seconds_solve + s->seconds_skin + s->seconds_tissue;
+    double total = non_render + s->seconds_scene + s->seconds_render + s->seconds_write;
+    printf("%s: %d frames in %.2f s = %.2f frames/s (load average %s)\n", label, s->frames, wall, s->frames / wall,
+           load);
+    printf("  per frame: input %.3f ms, posture solve %.3f ms, skinning %.3f ms, tissue %.3f ms | non-render %.3f ms "
+           "(budget 2 ms)\n",
+           1e3 * s->seconds_input / n, 1e3 * s->seconds_solve / n, 1e3 * s->seconds_skin / n,
+           1e3 * s->seconds_tissue / n, 1e3 * non_render / n);
+    printf("  shares: input %.2f%%, solve %.2f%%, skinning %.2f%%, tissue %.2f%%, scene %.1f%%, render %.1f%%, "
+           "files %.1f%%\n",
+           100 * s->seconds_input / total, 100 * s->seconds_solve / total, 100 * s->seconds_skin / total,
+           100 * s->seconds_tissue / total, 100 * s->seconds_scene / total, 100 * s->seconds_render / total,
+           100 * s->seconds_write / total);
+}
+
+int main(void)
+{
+    char path[512];
+    sk_error err = {0};
+    sk_melody melody;
+    snprintf(path, sizeof path, "%s/showcase/twinkle.txt", SK_BENCH_PRESET_DIR);
+    if (sk_melody_load(path, &melody, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    sk_render_scene_desc *stage = calloc(1, sizeof *stage);
+    snprintf(path, sizeof path, "%s/showcase/stage.json", SK_BENCH_PRESET_DIR);
+    if (sk_render_scene_desc_load(path, stage, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    sk_hand_skeleton skeleton;
+    sk_hand_skeleton_init(&skeleton, NULL, &err);
+    sk_hand_constraints *constraints = calloc(1, sizeof *constraints);
+    snprintf(path, sizeof path, "%s/hand/natural.json", SK_BENCH_PRESET_DIR);
+    if (sk_hand_constraints_load_file(path, &skeleton, constraints, &err) != SK_OK)
+        return fprintf(stderr, "%s\n", err.message), 1;
+    sk_skin *back = load_skin("back-of-hand"), *palm = load_skin("palm");
+    sk_tissue_character_desc *forearm = calloc(1, sizeof *forearm);
+    snprintf(path, sizeof path, "%s/showcase/forearm.json", SK_BENCH_PRESET_DIR);
+    if (sk_tissue_character_load(path, forearm, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    double t0 = sk_time_seconds();
+    sk_showcase_desc d = {0};
+    d.melody = &melody, d.stage = stage, d.constraints = constraints;
+    d.back_skin = back, d.palm_skin = palm;
+    d.forearm = forearm;
+    sk_showcase *full = NULL;
+    if (sk_showcase_create(&d, &full, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    double setup = sk_time_seconds() - t0;
+    printf("setup (fingering, playing posture, hand surface 8000 triangles, texture 1024 with microrelief, wood, "
+           "forearm of %zu skin points): %.2f s\n",
+           sk_showcase_forearm_points(full), setup);
+    int frames = sk_showcase_frame_count(full);
+    double fps = sk_showcase_fps(full);
+    /* the stages alone over the whole piece: no rendering */
+    sk_showcase_pose pose;
+    double ta = sk_time_seconds();
+    int solves = 0;
+    for (int f = 0; f < frames; f++) {
+        sk_showcase_pose_at(full, f / fps, &pose, &err);
+        solves += pose.solves;
+    }
+    double pose_s = sk_time_seconds() - ta;
+    printf("performance + posture over all %d frames of twinkle: %.3f ms a frame (%.1f posture solves a frame)\n",
+           frames, 1e3 * pose_s / frames, (double)solves / frames);
+    /* the forearm's simulation over the whole piece, frame after frame */
+    size_t points = sk_showcase_forearm_points(full);
+    float *skin = malloc(3 * points * sizeof *skin);
+    ta = sk_time_seconds();
+    for (int f = 0; f < frames; f++)
+        if (sk_showcase_forearm_at(full, f, skin, NULL, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    double tissue_s = sk_time_seconds() - ta;
+    printf("forearm tissue over all %d frames (%.0f steps a frame): %.3f ms a frame\n", frames, 240 / fps,
+           1e3 * tissue_s / frames);
+    free(skin);
+    /* full size: a few frames through the renderer */
+    sk_showcase_stats st = {0};
+    if (sk_showcase_forearm_at(full, 35, NULL, NULL, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    double tw = sk_time_seconds();
+    for (int f = 36; f < 38; f++) { /* the forearm's simulation runs on from frame 35 */
+        sk_image img;
+        if (sk_showcase_render_frame(full, f, &img, &st, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+        sk_image_free(&img);
+    }
+    report("1280x720, 16 samples", &st, sk_time_seconds() - tw);
+    sk_showcase_destroy(full);
+    /* preview */
+    d.width = 320, d.height = 180, d.samples = 4, d.texture_size = 512;
+    sk_showcase *preview = NULL;
+    if (sk_showcase_create(&d, &preview, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    memset(&st, 0, sizeof st);
+    if (sk_showcase_forearm_at(preview, 29, NULL, NULL, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    tw = sk_time_seconds();
+    for (int f = 30; f < 54; f++) {
+        sk_image img;
+        if (sk_showcase_render_frame(preview, f, &img, &st, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+        sk_image_free(&img);
+    }
+    report("320x180, 4 samples", &st, sk_time_seconds() - tw);
+    sk_showcase_destroy(preview);
+    /* the command as a user runs it: 12 preview frames with their PNG files and the WAV */
+    char dir[] = "/tmp/bench_showcase_XXXXXX", cmd[1024];
+    if (!mkdtemp(dir)) return fprintf(stderr, "bench_showcase: no temporary folder\n"), 1;
+    snprintf(cmd, sizeof cmd,
+             "%s showcase --melody %s/showcase/twinkle.txt --frames 30:41 --size 320x180 --spp 4 --texture-size 512 -q "
+             "-o %s/out",
+             SK_BENCH_CLI, SK_BENCH_PRESET_DIR, dir);
+    tw = sk_time_seconds();
+    int rc = system(cmd);
+    printf("command (setup + 12 frames at 320x180 + WAV + PNGs): %.2f s wall (exit %d)\n", sk_time_seconds() - tw, rc);
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    if (system(cmd) != 0) fprintf(stderr, "bench_showcase: %s left behind\n", dir);
+    sk_skin_destroy(back), sk_skin_destroy(palm);
+    free(stage), free(constraints), free(forearm);
+    sk_melody_free(&melody);
+    return 0;
+}
