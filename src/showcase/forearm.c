@@ -72,20 +72,42 @@ static void forearm_uvs(const sk__forearm *fa, sk_mesh *mesh, sk_vec3d elbow_res
     }
 }
 
-/* The colour of the hand's skin: the mean of its texture's texels that the atlas uses. */
-static void skin_mean_albedo(const sk_image *albedo, float out[3])
+/* The colour of the hand's skin where the forearm meets it: the mean of its texture at
+   the vertices of the wrist stump (behind the wrist crease in the relaxed hand), so the
+   skin's colour runs on across the join. The whole atlas's mean if the stump has none. */
+static sk_result stump_albedo(const sk_showcase *sc, float out[3], sk_error *err)
 {
-    double sum[3] = {0, 0, 0};
-    size_t count = 0;
-    for (int y = 0; albedo && y < albedo->height; y++)
-        for (int x = 0; x < albedo->width; x++) {
-            const float *p = sk_image_pixel(albedo, x, y);
-            double rgb[3] = {p[0], albedo->channels >= 3 ? p[1] : p[0], albedo->channels >= 3 ? p[2] : p[0]};
-            if (rgb[0] + rgb[1] + rgb[2] < 0.03) continue; /* outside the atlas's charts */
-            for (int c = 0; c < 3; c++) sum[c] += rgb[c];
-            count++;
-        }
-    for (int c = 0; c < 3; c++) out[c] = count ? (float)(sum[c] / count) : 0.6f;
+    const sk_image *albedo = sc->skin_albedo;
+    for (int c = 0; c < 3; c++) out[c] = 0.6f;
+    if (!albedo || albedo->width <= 0 || albedo->height <= 0) return SK_OK;
+    sk_mesh mesh = {0};
+    sk_result r = sk_hand_surface_export_mesh(sc->surface, NULL, NULL, false, &mesh, err);
+    if (r != SK_OK) return r;
+    double dofs[SK_HAND_DOF_COUNT];
+    sk_hand_frames frames;
+    sk_hand_relaxed(&sc->skeleton, dofs);
+    sk_hand_forward(&sc->skeleton, dofs, &frames);
+    const sk_mat3d *carpus = &frames.rotation[0];
+    sk_vec3d wrist = frames.point[0], fingers = {carpus->m[0][1], carpus->m[1][1], carpus->m[2][1]};
+    double sum[2][3] = {{0, 0, 0}, {0, 0, 0}};
+    size_t count[2] = {0, 0};
+    for (size_t v = 0; mesh.uvs && v < mesh.vertex_count; v++) {
+        const float *p = mesh.positions + 3 * v;
+        sk_vec3d q = sk_v3d_sub((sk_vec3d){p[0], p[1], p[2]}, wrist);
+        int x = (int)(mesh.uvs[2 * v] * albedo->width), y = (int)((1 - mesh.uvs[2 * v + 1]) * albedo->height);
+        x = x < 0 ? 0 : x >= albedo->width ? albedo->width - 1 : x;
+        y = y < 0 ? 0 : y >= albedo->height ? albedo->height - 1 : y;
+        const float *t = sk_image_pixel(albedo, x, y);
+        bool grey = albedo->channels < 3;
+        double rgb[3] = {t[0], grey ? t[0] : t[1], grey ? t[0] : t[2]};
+        int k = sk_v3d_dot(q, fingers) < 0 ? 0 : 1; /* 0: the stump */
+        for (int c = 0; c < 3; c++) sum[k][c] += rgb[c];
+        count[k]++;
+    }
+    int k = count[0] ? 0 : 1;
+    for (int c = 0; c < 3 && count[k]; c++) out[c] = (float)(sum[k][c] / count[k]);
+    sk_mesh_free(&mesh);
+    return SK_OK;
 }
 
 void sk__forearm_skin_texture(void *user, const sk_render_surface *s, sk_render_texel *texel)
@@ -139,7 +161,8 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "forearm: the wrist is %g mm from the root joint (need > 1)",
                        fa->length);
     fa->rest = forearm_basis(along, (sk_vec3d){1, 0, 0});
-    /* the hand's carpus in the playing posture: the forearm lies level along it */
+    /* the hand's carpus in the playing posture: the forearm lies along it (sloping down
+       to the wrist as the carpus does), so the hand's wrist stump runs inside it */
     double dofs[SK_HAND_DOF_COUNT], torque[SK_HAND_DOF_COUNT] = {0};
     sk_hand_frames frames;
     sk_vec3d pads[5];
@@ -148,7 +171,6 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     const sk_mat3d *carpus = &frames.rotation[0];
     sk_vec3d fingers = sk__hand_to_scene((sk_vec3d){carpus->m[0][1], carpus->m[1][1], carpus->m[2][1]});
     sk_vec3d across = sk__hand_to_scene((sk_vec3d){carpus->m[0][0], carpus->m[1][0], carpus->m[2][0]});
-    fingers.y = 0;
     fa->home_axis = sk_v3d_normalize(fingers);
     /* across must make the back of the forearm face up */
     if (sk_v3d_cross(across, fa->home_axis).y < 0) across = sk_v3d_scale(across, -1);
@@ -170,8 +192,7 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     fa->mesh.uvs = malloc(2 * fa->mesh.vertex_count * sizeof *fa->mesh.uvs);
     if (!fa->mesh.uvs) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the forearm");
     forearm_uvs(fa, &fa->mesh, elbow_rest);
-    skin_mean_albedo(sc->skin_albedo, sc->forearm_albedo);
-    return SK_OK;
+    return stump_albedo(sc, sc->forearm_albedo, err);
 }
 
 void sk__forearm_free(sk_showcase *sc)

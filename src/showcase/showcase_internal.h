@@ -164,7 +164,7 @@ typedef struct sk__forearm {
     double length;              /* elbow to wrist, mm */
     sk_mat3d rest;              /* rest frame (columns: across, back, elbow to wrist) */
     sk_vec3d across;            /* scene direction across the hand (the hand's breadth) */
-    sk_vec3d home_axis;         /* level direction from the elbow to the wrist */
+    sk_vec3d home_axis;         /* direction from the elbow to the wrist (the carpus's) */
     sk_vec3d home_wrist, home_elbow; /* at time 0 */
     sk_mesh mesh;               /* the skin: rest triangles and UVs, this frame's positions */
 } sk__forearm;
@@ -203,7 +203,7 @@ struct sk_showcase {
     float *positions, *normals;     /* skinning buffers (surface vertices) */
     double link_radius[SK_HAND_LINK_COUNT];
     sk__forearm forearm;
-    float forearm_albedo[3];        /* the mean of the hand's texture */
+    float forearm_albedo[3];        /* the hand's texture's mean on its wrist stump */
 };
 
 /* The hand surface, its texture and the flesh radii (hand_mesh.c). */
