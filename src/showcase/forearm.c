@@ -53,7 +53,7 @@ static void forearm_sample(void *user, double seconds, sk_quatd *local, sk_vec3d
     const sk_showcase *sc = user;
     sk__intent in;
     sk__performance_at(&sc->perf, seconds, &in);
-    forearm_place(&sc->forearm, in.wrist, root_mm, &local[sc->forearm.root]);
+    forearm_place(&sc->forearm, sk_v3d_add(in.wrist, sc->forearm.ride), root_mm, &local[sc->forearm.root]);
 }
 
 /* UVs in mm: around the forearm (angle times the point's distance from the axis, the
@@ -72,14 +72,16 @@ static void forearm_uvs(const sk__forearm *fa, sk_mesh *mesh, sk_vec3d elbow_res
     }
 }
 
-/* The colour of the hand's skin where the forearm meets it: the mean of its texture at
-   the vertices of the wrist stump (behind the wrist crease in the relaxed hand), so the
-   skin's colour runs on across the join. The whole atlas's mean if the stump has none. */
-static sk_result stump_albedo(const sk_showcase *sc, float out[3], sk_error *err)
+/* The hand's wrist stump (its vertices behind the wrist crease in the relaxed hand):
+   the mean of the hand's texture there, so the skin's colour runs on across the join
+   (the whole texture's mean at the hand's vertices if the stump has none), and the middle
+   of its extent across and through the carpus (carpus frame, from the wrist), where the
+   forearm's axis must run for the stump to lie inside it. */
+static sk_result measure_stump(const sk_showcase *sc, float albedo_out[3], sk_vec3d *centre, sk_error *err)
 {
     const sk_image *albedo = sc->skin_albedo;
-    for (int c = 0; c < 3; c++) out[c] = 0.6f;
-    if (!albedo || albedo->width <= 0 || albedo->height <= 0) return SK_OK;
+    for (int c = 0; c < 3; c++) albedo_out[c] = 0.6f;
+    *centre = (sk_vec3d){0, 0, 0};
     sk_mesh mesh = {0};
     sk_result r = sk_hand_surface_export_mesh(sc->surface, NULL, NULL, false, &mesh, err);
     if (r != SK_OK) return r;
@@ -87,26 +89,31 @@ static sk_result stump_albedo(const sk_showcase *sc, float out[3], sk_error *err
     sk_hand_frames frames;
     sk_hand_relaxed(&sc->skeleton, dofs);
     sk_hand_forward(&sc->skeleton, dofs, &frames);
-    const sk_mat3d *carpus = &frames.rotation[0];
-    sk_vec3d wrist = frames.point[0], fingers = {carpus->m[0][1], carpus->m[1][1], carpus->m[2][1]};
-    double sum[2][3] = {{0, 0, 0}, {0, 0, 0}};
+    sk_mat3d to_carpus = sk_m3d_transpose(frames.rotation[0]);
+    double sum[2][3] = {{0, 0, 0}, {0, 0, 0}}, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     size_t count[2] = {0, 0};
-    for (size_t v = 0; mesh.uvs && v < mesh.vertex_count; v++) {
+    bool textured = albedo && albedo->width > 0 && albedo->height > 0 && mesh.uvs;
+    for (size_t v = 0; v < mesh.vertex_count; v++) {
         const float *p = mesh.positions + 3 * v;
-        sk_vec3d q = sk_v3d_sub((sk_vec3d){p[0], p[1], p[2]}, wrist);
+        sk_vec3d q = sk_v3d_sub((sk_vec3d){p[0], p[1], p[2]}, frames.point[0]);
+        sk_vec3d l = sk_m3d_apply(to_carpus, q);
+        const double local[3] = {l.x, l.y, l.z}; /* across, along the fingers, palmar */
+        int part = local[1] < 0 ? 0 : 1; /* 0: the stump */
+        for (int k = 0; part == 0 && k < 3; k++) lo[k] = fmin(lo[k], local[k]), hi[k] = fmax(hi[k], local[k]);
+        if (!textured) continue;
         int x = (int)(mesh.uvs[2 * v] * albedo->width), y = (int)((1 - mesh.uvs[2 * v + 1]) * albedo->height);
         x = x < 0 ? 0 : x >= albedo->width ? albedo->width - 1 : x;
         y = y < 0 ? 0 : y >= albedo->height ? albedo->height - 1 : y;
         const float *t = sk_image_pixel(albedo, x, y);
         bool grey = albedo->channels < 3;
         double rgb[3] = {t[0], grey ? t[0] : t[1], grey ? t[0] : t[2]};
-        int k = sk_v3d_dot(q, fingers) < 0 ? 0 : 1; /* 0: the stump */
-        for (int c = 0; c < 3; c++) sum[k][c] += rgb[c];
-        count[k]++;
+        for (int c = 0; c < 3; c++) sum[part][c] += rgb[c];
+        count[part]++;
     }
-    int k = count[0] ? 0 : 1;
-    for (int c = 0; c < 3 && count[k]; c++) out[c] = (float)(sum[k][c] / count[k]);
     sk_mesh_free(&mesh);
+    int part = count[0] ? 0 : 1;
+    for (int c = 0; c < 3 && count[part]; c++) albedo_out[c] = (float)(sum[part][c] / count[part]);
+    if (lo[0] <= hi[0]) *centre = (sk_vec3d){0.5 * (lo[0] + hi[0]), 0, 0.5 * (lo[2] + hi[2])};
     return SK_OK;
 }
 
@@ -169,6 +176,10 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     r = sk__contact_posture(&sc->contact, (sk_vec3d){0, 0, 0}, torque, dofs, &frames, pads, err);
     if (r != SK_OK) return r;
     const sk_mat3d *carpus = &frames.rotation[0];
+    sk_vec3d stump;
+    r = measure_stump(sc, sc->forearm_albedo, &stump, err);
+    if (r != SK_OK) return r;
+    fa->ride = sk__hand_to_scene(sk_m3d_apply(*carpus, stump));
     sk_vec3d fingers = sk__hand_to_scene((sk_vec3d){carpus->m[0][1], carpus->m[1][1], carpus->m[2][1]});
     sk_vec3d across = sk__hand_to_scene((sk_vec3d){carpus->m[0][0], carpus->m[1][0], carpus->m[2][0]});
     fa->home_axis = sk_v3d_normalize(fingers);
@@ -177,7 +188,7 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     fa->across = across;
     sk__intent in;
     sk__performance_at(&sc->perf, 0, &in);
-    fa->home_wrist = in.wrist;
+    fa->home_wrist = sk_v3d_add(in.wrist, fa->ride);
     fa->home_elbow = sk_v3d_sub(in.wrist, sk_v3d_scale(fa->home_axis, fa->length));
     /* the simulation and its state at time 0 (a restart) */
     sk_tissue_motion motion = {forearm_sample, sc, sc->duration_s};
@@ -192,7 +203,7 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     fa->mesh.uvs = malloc(2 * fa->mesh.vertex_count * sizeof *fa->mesh.uvs);
     if (!fa->mesh.uvs) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the forearm");
     forearm_uvs(fa, &fa->mesh, elbow_rest);
-    return stump_albedo(sc, sc->forearm_albedo, err);
+    return SK_OK;
 }
 
 void sk__forearm_free(sk_showcase *sc)

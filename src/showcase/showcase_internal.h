@@ -164,6 +164,8 @@ typedef struct sk__forearm {
     double length;              /* elbow to wrist, mm */
     sk_mat3d rest;              /* rest frame (columns: across, back, elbow to wrist) */
     sk_vec3d across;            /* scene direction across the hand (the hand's breadth) */
+    sk_vec3d ride;              /* from the hand's wrist centre to the middle of its
+                                   wrist stump (scene), where the forearm's wrist rides */
     sk_vec3d home_axis;         /* direction from the elbow to the wrist (the carpus's) */
     sk_vec3d home_wrist, home_elbow; /* at time 0 */
     sk_mesh mesh;               /* the skin: rest triangles and UVs, this frame's positions */
