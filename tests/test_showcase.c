@@ -21,6 +21,7 @@ typedef struct fixture {
     sk_image albedo, normal;
     sk_render_scene_desc *stage;
     sk_melody melody;
+    sk_melody short_melody; /* its first 0.7 s */
     sk_tissue_character_desc *forearm;
     sk_showcase *showcase;
     sk_showcase_pose *sampled; /* the poses every 1/SAMPLE_RATE s over the piece, shared */
@@ -117,6 +118,8 @@ static int setup(void **state)
     if (sk_tissue_character_load(path, fx.forearm, &err) != SK_OK) return -1;
     snprintf(path, sizeof path, "%s/showcase/melody.txt", SK_TEST_DATA_DIR);
     if (sk_melody_load(path, &fx.melody, &err) != SK_OK) return -1;
+    if (sk_melody_copy(&fx.melody, &fx.short_melody, &err) != SK_OK || sk_melody_cut(&fx.short_melody, 0.7, &err) != SK_OK)
+        return -1;
     fx.showcase = make_showcase(&fx.melody, 32, 18);
     return 0;
 }
@@ -127,6 +130,7 @@ static int teardown(void **state)
     sk_showcase_destroy(fx.showcase);
     free(fx.sampled);
     sk_melody_free(&fx.melody);
+    sk_melody_free(&fx.short_melody);
     free(fx.stage);
     free(fx.forearm);
     sk_image_free(&fx.albedo), sk_image_free(&fx.normal);
@@ -300,15 +304,12 @@ static void test_poses_depend_on_time_alone(void **state)
 static void test_frames_for_any_split_and_threads(void **state)
 {
     (void)state;
-    sk_melody short_melody;
     sk_error err = {0};
-    assert_int_equal(sk_melody_copy(&fx.melody, &short_melody, &err), SK_OK);
-    assert_int_equal(sk_melody_cut(&short_melody, 0.7, &err), SK_OK);
     char whole[512], split[512];
     snprintf(whole, sizeof whole, "%s", sk_test_path("frames-whole"));
     snprintf(split, sizeof split, "%s", sk_test_path("frames-split"));
     sk_threads_set(1);
-    sk_showcase *a = make_short_forearm_showcase(&short_melody);
+    sk_showcase *a = make_short_forearm_showcase(&fx.short_melody);
     int n = sk_showcase_frame_count(a);
     assert_true(n >= 6);
     sk_showcase_run_desc rd = {.output_dir = whole, .last_frame = -1, .no_video = true};
@@ -316,7 +317,7 @@ static void test_frames_for_any_split_and_threads(void **state)
     sk_showcase_destroy(a);
     sk_threads_set(2);
     for (int part = 0; part < 2; part++) { /* the second half first, each by a fresh showcase */
-        sk_showcase *b = make_short_forearm_showcase(&short_melody);
+        sk_showcase *b = make_short_forearm_showcase(&fx.short_melody);
         sk_showcase_run_desc pd = {.output_dir = split, .no_video = true};
         pd.first_frame = part == 0 ? n / 2 : 0;
         pd.last_frame = part == 0 ? n - 1 : n / 2 - 1;
@@ -334,7 +335,6 @@ static void test_frames_for_any_split_and_threads(void **state)
     snprintf(wa, sizeof wa, "%s/showcase.wav", whole);
     snprintf(wb, sizeof wb, "%s/showcase.wav", split);
     assert_true(sk_test_same_file(wa, wb));
-    sk_melody_free(&short_melody);
 }
 
 /* ------------------------------------------------------------ the forearm */
@@ -397,14 +397,11 @@ static void test_forearm_swings_and_settles(void **state)
 static void test_forearm_any_start(void **state)
 {
     (void)state;
-    sk_melody short_melody;
     sk_error err = {0};
-    assert_int_equal(sk_melody_copy(&fx.melody, &short_melody, &err), SK_OK);
-    assert_int_equal(sk_melody_cut(&short_melody, 0.7, &err), SK_OK);
     sk_threads_set(1);
-    sk_showcase *a = make_short_forearm_showcase(&short_melody);
+    sk_showcase *a = make_short_forearm_showcase(&fx.short_melody);
     sk_threads_set(2);
-    sk_showcase *b = make_short_forearm_showcase(&short_melody);
+    sk_showcase *b = make_short_forearm_showcase(&fx.short_melody);
     size_t n = sk_showcase_forearm_points(a);
     assert_int_equal(n, sk_showcase_forearm_points(b));
     float *xa = malloc(3 * n * sizeof *xa), *xb = malloc(3 * n * sizeof *xb);
@@ -418,7 +415,6 @@ static void test_forearm_any_start(void **state)
     sk_threads_set(0);
     free(xa), free(xb);
     sk_showcase_destroy(a), sk_showcase_destroy(b);
-    sk_melody_free(&short_melody);
 }
 
 static uint32_t le32(const unsigned char *p) { return p[0] | p[1] << 8 | p[2] << 16 | (uint32_t)p[3] << 24; }
