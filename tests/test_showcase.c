@@ -563,7 +563,7 @@ static void test_command(void **state)
     assert_non_null(strstr(run.out, "--frames"));
     /* a whole tiny run of an odd size: frames, sound, fingering, and the MP4 */
     int status = sk_test_cli(&run,
-                             "showcase --melody %s --duration 0.6 --size 33x19 --spp 1 --fps 12 --texture-size 64 "
+                             "showcase --melody %s --duration 0.6 --size 33x19 --spp 1 --fps 6 --texture-size 64 "
                              "--hand-triangles 500 -q -o %s",
                              melody, dir);
     if (status != 0) fail_msg("%s", run.err);
@@ -592,7 +592,7 @@ static void test_command(void **state)
     out[got] = '\0';
     assert_non_null(strstr(out, "h264,video,34,20"));
     assert_non_null(strstr(out, "aac,audio"));
-    /* duration: 0.6 s of melody plus the 1 s tail, at 12 frames a second */
+    /* duration: 0.6 s of melody plus the 1 s tail, at 6 frames a second */
     const char *last = strrchr(out, '\n');
     while (last && last > out && last[1] == '\0') {
         const char *prev = last - 1;
@@ -601,7 +601,7 @@ static void test_command(void **state)
         last = prev;
     }
     double duration = atof(last ? last + 1 : out);
-    double frames_s = (floor(1.6 * 12) + 1) / 12.0;
+    double frames_s = (floor(1.6 * 6) + 1) / 6.0;
     if (!(fabs(duration - frames_s) < 0.15)) fail_msg("MP4 lasts %.3f s, the frames %.3f s (%s)", duration, frames_s, out);
 }
 
