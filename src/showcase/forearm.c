@@ -1,10 +1,10 @@
 /* The forearm: a character of the fat and skin model of Shigemori & Kawai built and
  * simulated by the tissue module (include/shitsukan/tissue.h), its bones driven by the
  * hand's wrist. The forearm's root joint is the elbow and its joint named "wrist" rides
- * on the hand's wrist centre; the elbow follows the wrist's travel only part way (the
- * upper arm swings), so the forearm turns as the hand moves along the keys and drops a
- * little with the wrist at every strike (performance.c), and the fat lags and swings
- * (sec. 5). The motion is a function of time alone, sampled by the simulation at every
+ * on the middle of the hand's wrist stump (measured on the hand's surface); the elbow
+ * follows the wrist's travel only part way (the upper arm swings), so the forearm turns
+ * as the hand moves along the keys and drops a little with the wrist at every strike
+ * (performance.c), and the fat lags and swings (sec. 5). The motion is a function of time alone, sampled by the simulation at every
  * internal step; the simulation runs forward from time 0, so a frame's flesh is the same
  * whichever frames were asked for before it (an earlier frame restarts it from its
  * state at time 0). The skin carries UVs in mm (around and along the forearm in its rest
@@ -189,7 +189,7 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     sk__intent in;
     sk__performance_at(&sc->perf, 0, &in);
     fa->home_wrist = sk_v3d_add(in.wrist, fa->ride);
-    fa->home_elbow = sk_v3d_sub(in.wrist, sk_v3d_scale(fa->home_axis, fa->length));
+    fa->home_elbow = sk_v3d_sub(fa->home_wrist, sk_v3d_scale(fa->home_axis, fa->length));
     /* the simulation and its state at time 0 (a restart) */
     sk_tissue_motion motion = {forearm_sample, sc, sc->duration_s};
     r = sk_tissue_sim_create(fa->model, &motion, &fa->sim, err);

@@ -154,7 +154,7 @@ double sk__keys_surface(const sk_piano *piano, sk_vec3d centre, double radius);
 /* ------------------------------------------------------------ the forearm */
 
 /* The forearm (forearm.c): a tissue character whose root joint is the elbow and whose
- * joint "wrist" rides on the hand's wrist. */
+ * joint "wrist" rides on the middle of the hand's wrist stump. */
 typedef struct sk__forearm {
     sk_tissue_model *model;     /* NULL: no forearm */
     sk_tissue_sim *sim;
