@@ -225,6 +225,91 @@ static void test_preset_references(void **state)
     assert_true(strncmp(msg, "materials[0].skin.levels", 24) == 0);
 }
 
+static sk_image render_image(const sk_render_scene_desc *d)
+{
+    sk_render_scene *s = NULL;
+    sk_error err = {0};
+    if (sk_render_scene_create(d, &s, &err) != SK_OK) fail_msg("scene: %s", err.message);
+    sk_image img;
+    if (sk_render_scene_render(s, NULL, &img, NULL, &err) != SK_OK) fail_msg("%s", err.message);
+    sk_render_scene_destroy(s);
+    return img;
+}
+
+static bool same_pixels(const sk_image *a, const sk_image *b)
+{
+    size_t n = (size_t)a->width * (size_t)a->height * (size_t)a->channels;
+    return a->width == b->width && a->height == b->height && a->channels == b->channels &&
+           memcmp(a->data, b->data, n * sizeof(float)) == 0;
+}
+
+/* A tree and images shared from C (wood_tree, albedo_image, normal_image) give the same
+ * pixels as the scene building its own from the desc and the files; the scene leaves
+ * them to the caller (the sanitizer run checks nothing is freed twice). */
+static void test_shared_tree_and_images(void **state)
+{
+    (void)state;
+    sk_render_scene_desc *d = tiny_view(sk_v3f(20, 0, -30), sk_v3f(0.3f, 1, 0.2f));
+    d->image.width = d->image.height = 8;
+    d->camera.ortho_height = 60;
+    d->material_count = 2;
+    sk_render_material_desc *wood = &d->materials[0], *tex = &d->materials[1];
+    wood->type = SK_RENDER_MATERIAL_WOOD;
+    wood->wood.rings.width_mm = 2;
+    wood->wood.shading.specular = 0.3f;
+    snprintf(tex->name, sizeof tex->name, "t");
+    d->object_count = 2;
+    d->objects[0].size[0] = 100;
+    d->objects[1] = d->objects[0];
+    d->objects[1].transform.translate[0] = 100;
+    snprintf(d->objects[1].material, sizeof d->objects[1].material, "t");
+    /* a small albedo and normal map written as files, read back as the renderer reads them */
+    sk_error err = {0};
+    sk_image albedo, normal;
+    assert_int_equal(sk_image_create(&albedo, 4, 4, 3, &err), SK_OK);
+    assert_int_equal(sk_image_create(&normal, 4, 4, 3, &err), SK_OK);
+    for (int i = 0; i < 16; i++) {
+        float *a = albedo.data + 3 * i, *n = normal.data + 3 * i;
+        a[0] = (float)(i % 4) / 3.0f, a[1] = 0.5f, a[2] = (float)(i / 4) / 3.0f;
+        float tilt = 0.2f * (float)(i % 3) - 0.2f;
+        n[0] = 0.5f + 0.5f * tilt, n[1] = 0.5f, n[2] = 0.5f + 0.5f * sqrtf(1 - tilt * tilt);
+    }
+    const char *albedo_path = sk_test_path("albedo.png"), *normal_path = sk_test_path("normal.png");
+    sk_png_write_desc linear = {.encoding = SK_PNG_ENCODING_LINEAR, .bit_depth = 16};
+    assert_int_equal(sk_image_write_png(&albedo, albedo_path, NULL, &err), SK_OK);
+    assert_int_equal(sk_image_write_png(&normal, normal_path, &linear, &err), SK_OK);
+    snprintf(tex->albedo_texture, sizeof tex->albedo_texture, "%s", albedo_path);
+    snprintf(tex->normal_map, sizeof tex->normal_map, "%s", normal_path);
+    tex->uv_scale[0] = tex->uv_scale[1] = 0.05f;
+    sk_image built = render_image(d);
+
+    sk_image albedo_read, normal_read;
+    sk_png_read_desc srgb = {.encoding = SK_PNG_ENCODING_SRGB}, lin = {.encoding = SK_PNG_ENCODING_LINEAR};
+    assert_int_equal(sk_image_read_png(&albedo_read, albedo_path, &srgb, NULL, NULL, &err), SK_OK);
+    assert_int_equal(sk_image_read_png(&normal_read, normal_path, &lin, NULL, NULL, &err), SK_OK);
+    sk_wood *tree = NULL;
+    assert_int_equal(sk_wood_create(&wood->wood, &tree, &err), SK_OK);
+    wood->wood_tree = tree;
+    memset(&wood->wood, 0xff, sizeof wood->wood); /* not read when a tree is given */
+    tex->albedo_texture[0] = tex->normal_map[0] = '\0';
+    tex->albedo_image = &albedo_read;
+    tex->normal_image = &normal_read;
+    sk_image shared = render_image(d);
+    assert_true(same_pixels(&built, &shared));
+    sk_image again = render_image(d); /* the tree and images survive a scene */
+    assert_true(same_pixels(&built, &again));
+
+    sk_image empty = {0};
+    tex->normal_image = &empty;
+    sk_render_scene *s = NULL;
+    assert_int_equal(sk_render_scene_create(d, &s, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "materials[1].normal_image"));
+    sk_image_free(&built), sk_image_free(&shared), sk_image_free(&again);
+    sk_image_free(&albedo), sk_image_free(&normal), sk_image_free(&albedo_read), sk_image_free(&normal_read);
+    sk_wood_destroy(tree);
+    free(d);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -232,6 +317,7 @@ int main(void)
         cmocka_unit_test(test_plain_wood_is_lambertian),
         cmocka_unit_test(test_wood_sheen_matches_the_module),
         cmocka_unit_test(test_preset_references),
+        cmocka_unit_test(test_shared_tree_and_images),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

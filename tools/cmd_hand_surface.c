@@ -18,8 +18,7 @@ static bool has_suffix(const char *s, const char *suffix)
     return a >= b && strcmp(s + a - b, suffix) == 0;
 }
 
-/* A shipped skin preset bound into a skin (NULL and 0 when the preset is missing). */
-static int load_skin(const char *name, sk_skin **out)
+int hand_load_skin(const char *name, sk_skin **out)
 {
     *out = NULL;
     char path[PATH_MAX];
@@ -42,7 +41,7 @@ static int bake_texture(const cli_command *cmd, const cli_args *args, const sk_h
     int rc = cli_get_int(cmd, args, "texture-size", 1024, 64, 8192, &n);
     if (rc) return rc;
     sk_skin *back = NULL, *palm = NULL;
-    if ((rc = load_skin("back-of-hand", &back)) || (rc = load_skin("palm", &palm))) {
+    if ((rc = hand_load_skin("back-of-hand", &back)) || (rc = hand_load_skin("palm", &palm))) {
         sk_skin_destroy(back);
         return rc;
     }

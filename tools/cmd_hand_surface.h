@@ -11,6 +11,9 @@ int hand_parse_skinning(const char *text, sk_hand_skinning *out);
 /* The surface of the skeleton from --triangles and --flesh, at level of detail `lod`. */
 int hand_build_surface(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel, int lod,
                        sk_hand_surface **out);
+/* A shipped skin preset (presets/skin/NAME.json) built into a skin; prints the error and
+ * returns its status when it is missing or bad. */
+int hand_load_skin(const char *name, sk_skin **out);
 /* One pose as OBJ or PLY (by extension), with --texture's maps. */
 int hand_write_posed_mesh(const cli_command *cmd, const cli_args *args, const sk_hand_surface *surface,
                           const double *dofs, sk_hand_skinning method, const char *path);

@@ -16,6 +16,8 @@ extern const cli_command cmd_skin_maps;
 extern const cli_command cmd_wood_cut;
 extern const cli_command cmd_wood_sweep;
 extern const cli_command cmd_render;
+extern const cli_command cmd_showcase;
+extern const cli_command cmd_showcase_midi;
 extern const cli_command cmd_tissue_skin;
 extern const cli_command cmd_tissue_run;
 extern const cli_command cmd_tissue_motion;
@@ -37,6 +39,8 @@ const cli_command *const cli_commands[] = {
     &cmd_wood_cut,
     &cmd_wood_sweep,
     &cmd_render,
+    &cmd_showcase,
+    &cmd_showcase_midi,
     &cmd_tissue_skin,
     &cmd_tissue_run,
     &cmd_tissue_motion,

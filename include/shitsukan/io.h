@@ -5,6 +5,7 @@
 #ifndef SHITSUKAN_IO_H
 #define SHITSUKAN_IO_H
 
+#include <stdint.h>
 #include <stdio.h>
 
 #include "shitsukan/core.h"
@@ -34,6 +35,14 @@ void sk_atomic_file_abort(sk_atomic_file *file);
  * max_bytes (0 = 256 MiB) fail with SK_ERROR_LIMIT before anything is allocated. */
 sk_result sk_read_file(const char *path, size_t max_bytes, char **out_data, size_t *out_size,
                        sk_error *err);
+
+/* Writes a WAV file (RIFF WAVE, 16-bit linear PCM, little-endian) of `frames` sample
+ * frames of `channels` interleaved channels (1..8) at `sample_rate` Hz (1000..384000).
+ * Samples are in [-1, 1], clipped outside, NaN written as 0, rounded to nearest. */
+sk_result sk_wav_write(const char *path, const float *samples, size_t frames, int channels,
+                       int sample_rate, sk_error *err);
+/* The 16-bit value sk_wav_write stores for a sample. */
+int16_t sk_wav_sample_16(float v);
 
 /* Creates a folder and its missing parents (like mkdir -p). */
 sk_result sk_make_dirs(const char *path, sk_error *err);

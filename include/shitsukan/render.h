@@ -263,6 +263,16 @@ typedef struct sk_render_material_desc {
     /* C API only: a procedural texture applied after the image textures. */
     sk_render_texture_fn texture;
     void *texture_user;
+    /* C API only: things built once and shared by scenes made again and again (e.g. one
+       scene per animation frame). They are referenced, not copied: they must outlive
+       every scene made from the desc.
+       - wood_tree: a tree from sk_wood_create used instead of building one from `wood`
+         (type wood; `wood` is then not used);
+       - albedo_image / normal_image: linear images (1-4 channels) used instead of the
+         albedo_texture / normal_map files (a normal map holds 0.5 n + 0.5). */
+    const sk_wood *wood_tree;
+    const sk_image *albedo_image;
+    const sk_image *normal_image;
 } sk_render_material_desc;
 
 /* ------------------------------------------------------------------ image and film */

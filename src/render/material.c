@@ -35,6 +35,16 @@ static sk_result texture_index(sk_render_scene *scene, const char *name, bool sr
     return SK_OK;
 }
 
+/* Sets *index to a new texture entry that borrows the caller's image. */
+static void borrowed_texture(sk_render_scene *scene, const sk_image *image, int *index)
+{
+    sk__texture *tex = &scene->textures[scene->texture_count];
+    memset(tex, 0, sizeof *tex);
+    tex->image = *image;
+    tex->borrowed = true;
+    *index = scene->texture_count++;
+}
+
 sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
 {
     const sk_render_scene_desc *d = &scene->desc;
@@ -48,11 +58,15 @@ sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
         m->desc = d->materials[i];
         m->brdf = SK__BRDF_BLINN_PHONG;
         m->albedo_texture = m->normal_map = -1;
-        if (m->desc.albedo_texture[0] &&
-            (r = texture_index(scene, m->desc.albedo_texture, true, &m->albedo_texture, err)) != SK_OK)
+        if (m->desc.albedo_image)
+            borrowed_texture(scene, m->desc.albedo_image, &m->albedo_texture);
+        else if (m->desc.albedo_texture[0] &&
+                 (r = texture_index(scene, m->desc.albedo_texture, true, &m->albedo_texture, err)) != SK_OK)
             sk_error_prefix(err, r, "materials[%d].albedo_texture = \"%s\"", i, m->desc.albedo_texture);
-        if (r == SK_OK && m->desc.normal_map[0] &&
-            (r = texture_index(scene, m->desc.normal_map, false, &m->normal_map, err)) != SK_OK)
+        if (r == SK_OK && m->desc.normal_image)
+            borrowed_texture(scene, m->desc.normal_image, &m->normal_map);
+        else if (r == SK_OK && m->desc.normal_map[0] &&
+                 (r = texture_index(scene, m->desc.normal_map, false, &m->normal_map, err)) != SK_OK)
             sk_error_prefix(err, r, "materials[%d].normal_map = \"%s\"", i, m->desc.normal_map);
         if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_SKIN) r = sk__skin_material_build(m, i, err);
         if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_WOOD) r = sk__wood_material_build(m, i, err);
@@ -73,7 +87,8 @@ void sk__materials_destroy(sk_render_scene *scene)
         sk__skin_material_destroy(&scene->materials[i]);
         sk__wood_material_destroy(&scene->materials[i]);
     }
-    for (int i = 0; i < scene->texture_count; i++) sk_image_free(&scene->textures[i].image);
+    for (int i = 0; i < scene->texture_count; i++)
+        if (!scene->textures[i].borrowed) sk_image_free(&scene->textures[i].image);
     free(scene->textures);
 }
 

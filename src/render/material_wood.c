@@ -10,8 +10,13 @@
 
 sk_result sk__wood_material_build(sk__material *m, int index, sk_error *err)
 {
-    sk_result r = sk_wood_create(&m->desc.wood, &m->wood, err);
-    if (r != SK_OK) return sk_error_prefix(err, r, "materials[%d].wood", index);
+    if (m->desc.wood_tree) {
+        m->wood = m->desc.wood_tree;
+    } else {
+        sk_result r = sk_wood_create(&m->desc.wood, &m->owned_wood, err);
+        if (r != SK_OK) return sk_error_prefix(err, r, "materials[%d].wood", index);
+        m->wood = m->owned_wood;
+    }
     m->brdf = SK__BRDF_WOOD;
     m->wood_kd = sk_wood_get_desc(m->wood)->shading.diffuse;
     return SK_OK;
@@ -19,7 +24,8 @@ sk_result sk__wood_material_build(sk__material *m, int index, sk_error *err)
 
 void sk__wood_material_destroy(sk__material *m)
 {
-    if (m->wood) sk_wood_destroy(m->wood);
+    if (m->owned_wood) sk_wood_destroy(m->owned_wood);
+    m->owned_wood = NULL;
     m->wood = NULL;
 }
 

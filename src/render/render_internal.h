@@ -30,6 +30,7 @@ typedef struct sk__texture {
     sk_image image; /* linear floats, 1-4 channels */
     char name[SK_RENDER_PATH_SIZE]; /* as the scene names it */
     bool srgb;                      /* decoded from sRGB (colour) or read linearly */
+    bool borrowed;                  /* image is the caller's (C API images): not freed */
 } sk__texture;
 
 typedef enum sk__brdf_kind {
@@ -43,7 +44,8 @@ typedef struct sk__material {
     int albedo_texture; /* index into scene->textures, or -1 */
     int normal_map;     /* index into scene->textures, or -1 */
     sk_skin *skin;      /* type skin: the microrelief */
-    sk_wood *wood;      /* type wood: the solid texture */
+    const sk_wood *wood; /* type wood: the solid texture */
+    sk_wood *owned_wood; /* the same when the scene built it (not the desc's wood_tree) */
     float wood_kd;      /* type wood: diffuse weight (lights the environment term) */
 } sk__material;
 

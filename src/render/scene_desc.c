@@ -157,8 +157,17 @@ static sk_result validate_material(const sk_render_material_desc *given, int i, 
     sk_result r;
     if (m->type == SK_RENDER_MATERIAL_SKIN && (r = sk_skin_desc_validate(&m->skin, err)) != SK_OK)
         return sk_error_prefix(err, r, "materials[%d].skin", i);
-    if (m->type == SK_RENDER_MATERIAL_WOOD && (r = sk_wood_desc_validate(&m->wood, err)) != SK_OK)
+    if (m->type == SK_RENDER_MATERIAL_WOOD && !m->wood_tree && (r = sk_wood_desc_validate(&m->wood, err)) != SK_OK)
         return sk_error_prefix(err, r, "materials[%d].wood", i);
+    const sk_image *images[2] = {m->albedo_image, m->normal_image};
+    const char *image_names[2] = {"albedo_image", "normal_image"};
+    for (int k = 0; k < 2; k++)
+        if (images[k] && (!images[k]->data || images[k]->width < 1 || images[k]->height < 1 ||
+                          images[k]->channels < 1 || images[k]->channels > 4))
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "materials[%d].%s is not an image (%d x %d, %d channels; needs 1-4 "
+                           "channels and pixels)", i, image_names[k], images[k]->width,
+                           images[k]->height, images[k]->channels);
     return SK_OK;
 }
 
