@@ -29,6 +29,7 @@
  * one-spring code (no fused multiply-add, correctly rounded square root and division),
  * so the result is the same bit for bit whichever path a spring takes. */
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 #if defined(__SSE2__)
@@ -55,6 +56,8 @@ struct sk__solver {
     spring *springs;
     size_t *run;    /* first spring of every run of one colour in one slab, then count */
     size_t slab_run[MAX_SLABS + 1]; /* runs of slab s: slab_run[s] .. slab_run[s + 1] */
+    size_t parity_before[MAX_SLABS]; /* springs in the slabs of the same parity before s */
+    size_t parity_total[2];
     double *w; /* inverse mass of every point */
     size_t free_count;
     double *tether_coef, *tether_gamma, *tether_ca; /* per free point: w / ((1 + gamma) w + alpha / h^2),
@@ -153,7 +156,11 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
         colour_count[(size_t)slab[k] * (size_t)colours + (size_t)colour]++;
     }
     s->start[0] = 0;
-    for (int i = 0; i < s->slabs; i++) s->start[i + 1] = s->start[i] + count[i];
+    for (int i = 0; i < s->slabs; i++) {
+        s->start[i + 1] = s->start[i] + count[i];
+        s->parity_before[i] = s->parity_total[i & 1];
+        s->parity_total[i & 1] += count[i];
+    }
     size_t fill[MAX_SLABS];
     memcpy(fill, s->start, sizeof fill);
     /* the model's springs are sorted by colour: a stable split into slabs keeps that order */
@@ -306,9 +313,24 @@ static void solve_slab(const sk__solver *s, int slab, double *x, const double *b
     }
 }
 
+/* The thread that solves a slab: each thread takes a run of consecutive slabs of one
+ * parity holding about its share of their springs, so the slabs solved side by side lie
+ * far apart (no cache line written by two threads at once but at the runs' ends) and a
+ * thread's odd slabs lie beside its even ones (their points are already in its cache).
+ * Which thread solves a slab does not change the result. */
+static int slab_owner(const sk__solver *s, int slab, int threads)
+{
+    size_t total = s->parity_total[slab & 1];
+    if (threads <= 1 || total == 0) return 0;
+    double middle = (double)s->parity_before[slab] + 0.5 * (double)(s->start[slab + 1] - s->start[slab]);
+    int owner = (int)(middle / (double)total * threads);
+    return owner < threads ? owner : threads - 1;
+}
+
 static void step(sk__solver *s, double *x, const double *base, const double *target, const double *target_base)
 {
     bool iterate = s->iterations > 1;
+    int thread = omp_get_thread_num(), threads = omp_get_num_threads();
     if (iterate) {
 #pragma omp for schedule(static)
         for (size_t k = 0; k < s->count; k++) s->mu[k] = 0.0f;
@@ -317,8 +339,9 @@ static void step(sk__solver *s, double *x, const double *base, const double *tar
     }
     for (int it = 0; it < s->iterations; it++) {
         for (int parity = 0; parity < 2; parity++) {
-#pragma omp for schedule(dynamic, 1)
-            for (int slab = parity; slab < s->slabs; slab += 2) solve_slab(s, slab, x, base, iterate ? s->mu : NULL);
+            for (int slab = parity; slab < s->slabs; slab += 2)
+                if (slab_owner(s, slab, threads) == thread) solve_slab(s, slab, x, base, iterate ? s->mu : NULL);
+#pragma omp barrier
         }
 #pragma omp for schedule(static)
         for (size_t p = 0; p < s->free_count; p++) {
