@@ -252,19 +252,37 @@ static inline void solve_one(const spring *sp, double *x, const double *base, fl
 }
 
 #if defined(__SSE2__)
+/* Points p0 and p1 (3 doubles each) as the two lanes of their x, y and z. */
+static inline void load_pair(const double *p0, const double *p1, __m128d *x, __m128d *y, __m128d *z)
+{
+    *x = _mm_setr_pd(p0[0], p1[0]);
+    *y = _mm_setr_pd(p0[1], p1[1]);
+    *z = _mm_setr_pd(p0[2], p1[2]);
+}
+
+static inline void store_pair(double *p0, double *p1, __m128d x, __m128d y, __m128d z)
+{
+    _mm_storel_pd(p0, x);
+    _mm_storel_pd(p0 + 1, y);
+    _mm_storel_pd(p0 + 2, z);
+    _mm_storeh_pd(p1, x);
+    _mm_storeh_pd(p1 + 1, y);
+    _mm_storeh_pd(p1 + 2, z);
+}
+
 /* Two springs of one run (they share no point) in the two lanes: solve_one's operations. */
 static inline void solve_two(const spring *s0, const spring *s1, double *x, const double *base)
 {
     double *xa0 = x + 3 * (size_t)s0->i, *xb0 = x + 3 * (size_t)s0->j;
     double *xa1 = x + 3 * (size_t)s1->i, *xb1 = x + 3 * (size_t)s1->j;
-    const double *ba0 = base + 3 * (size_t)s0->i, *bb0 = base + 3 * (size_t)s0->j;
-    const double *ba1 = base + 3 * (size_t)s1->i, *bb1 = base + 3 * (size_t)s1->j;
-    __m128d ax = _mm_setr_pd(xa0[0], xa1[0]), ay = _mm_setr_pd(xa0[1], xa1[1]), az = _mm_setr_pd(xa0[2], xa1[2]);
-    __m128d bx = _mm_setr_pd(xb0[0], xb1[0]), by = _mm_setr_pd(xb0[1], xb1[1]), bz = _mm_setr_pd(xb0[2], xb1[2]);
+    __m128d ax, ay, az, bx, by, bz, bax, bay, baz, bbx, bby, bbz;
+    load_pair(xa0, xa1, &ax, &ay, &az);
+    load_pair(xb0, xb1, &bx, &by, &bz);
+    load_pair(base + 3 * (size_t)s0->i, base + 3 * (size_t)s1->i, &bax, &bay, &baz);
+    load_pair(base + 3 * (size_t)s0->j, base + 3 * (size_t)s1->j, &bbx, &bby, &bbz);
     __m128d dx = _mm_sub_pd(ax, bx), dy = _mm_sub_pd(ay, by), dz = _mm_sub_pd(az, bz);
-    __m128d mx = _mm_sub_pd(dx, _mm_sub_pd(_mm_setr_pd(ba0[0], ba1[0]), _mm_setr_pd(bb0[0], bb1[0])));
-    __m128d my = _mm_sub_pd(dy, _mm_sub_pd(_mm_setr_pd(ba0[1], ba1[1]), _mm_setr_pd(bb0[1], bb1[1])));
-    __m128d mz = _mm_sub_pd(dz, _mm_sub_pd(_mm_setr_pd(ba0[2], ba1[2]), _mm_setr_pd(bb0[2], bb1[2])));
+    __m128d mx = _mm_sub_pd(dx, _mm_sub_pd(bax, bbx)), my = _mm_sub_pd(dy, _mm_sub_pd(bay, bby)),
+            mz = _mm_sub_pd(dz, _mm_sub_pd(baz, bbz));
     __m128d len = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)));
     __m128d has_direction = _mm_cmpgt_pd(len, _mm_set1_pd(SHORTEST));
     __m128d one = _mm_set1_pd(1.0);
@@ -275,24 +293,10 @@ static inline void solve_two(const spring *s0, const spring *s1, double *x, cons
                                _mm_mul_pd(_mm_setr_pd(s0->gamma, s1->gamma), rel));
     __m128d f = _mm_and_pd(has_direction, _mm_mul_pd(force, inv));
     __m128d ga = _mm_mul_pd(_mm_setr_pd(-s0->ci, -s1->ci), f), gb = _mm_mul_pd(_mm_setr_pd(-s0->cj, -s1->cj), f);
-    ax = _mm_add_pd(ax, _mm_mul_pd(ga, dx));
-    ay = _mm_add_pd(ay, _mm_mul_pd(ga, dy));
-    az = _mm_add_pd(az, _mm_mul_pd(ga, dz));
-    bx = _mm_sub_pd(bx, _mm_mul_pd(gb, dx));
-    by = _mm_sub_pd(by, _mm_mul_pd(gb, dy));
-    bz = _mm_sub_pd(bz, _mm_mul_pd(gb, dz));
-    _mm_storel_pd(xa0, ax);
-    _mm_storel_pd(xa0 + 1, ay);
-    _mm_storel_pd(xa0 + 2, az);
-    _mm_storeh_pd(xa1, ax);
-    _mm_storeh_pd(xa1 + 1, ay);
-    _mm_storeh_pd(xa1 + 2, az);
-    _mm_storel_pd(xb0, bx);
-    _mm_storel_pd(xb0 + 1, by);
-    _mm_storel_pd(xb0 + 2, bz);
-    _mm_storeh_pd(xb1, bx);
-    _mm_storeh_pd(xb1 + 1, by);
-    _mm_storeh_pd(xb1 + 2, bz);
+    store_pair(xa0, xa1, _mm_add_pd(ax, _mm_mul_pd(ga, dx)), _mm_add_pd(ay, _mm_mul_pd(ga, dy)),
+               _mm_add_pd(az, _mm_mul_pd(ga, dz)));
+    store_pair(xb0, xb1, _mm_sub_pd(bx, _mm_mul_pd(gb, dx)), _mm_sub_pd(by, _mm_mul_pd(gb, dy)),
+               _mm_sub_pd(bz, _mm_mul_pd(gb, dz)));
 }
 #endif
 
