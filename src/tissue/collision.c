@@ -142,7 +142,7 @@ static void collide_block(const sk__obstacle *obstacles, int obstacle_count, int
     /* bones overlap at the joints: out of one may be into the next, so repeat (with
        the bones near where the points now are) */
     for (int pass = 0; pass < 8; pass++) {
-        if (moved || pass == 0) block_bounds(x, p0, p1, lo, hi);
+        if (moved) block_bounds(x, p0, p1, lo, hi); /* else still those of the points */
         n = near_block(obstacles, obstacle_count, 3, lo, hi, near);
         moved = false;
         for (size_t p = p0; p < p1; p++)

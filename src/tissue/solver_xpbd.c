@@ -22,10 +22,19 @@
  * slab between them share no point: all even slabs are solved side by side, then all odd
  * ones (two synchronisations per step), each slab's springs in a fixed order (by lattice
  * direction, so consecutive springs share no point and overlap in the processor). The
- * order depends only on the model, so the result is the same for any thread count. */
+ * order depends only on the model, so the result is the same for any thread count.
+ *
+ * Within a run of springs of one colour no two share a point, so two of them are solved
+ * at once in the two lanes of an SSE2 vector: each lane does the very operations of the
+ * one-spring code (no fused multiply-add, correctly rounded square root and division),
+ * so the result is the same bit for bit whichever path a spring takes. */
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "tissue/solver.h"
 
@@ -45,6 +54,10 @@ struct sk__solver {
     int slabs;
     size_t start[MAX_SLABS + 1]; /* springs of slab s: start[s] .. start[s + 1] */
     spring *springs;
+    size_t *run;    /* first spring of every run of one colour in one slab, then count */
+    size_t slab_run[MAX_SLABS + 1]; /* runs of slab s: slab_run[s] .. slab_run[s + 1] */
+    size_t parity_before[MAX_SLABS]; /* springs in the slabs of the same parity before s */
+    size_t parity_total[2];
     double *w; /* inverse mass of every point */
     size_t free_count;
     double *tether_coef, *tether_gamma, *tether_ca; /* per free point: w / ((1 + gamma) w + alpha / h^2),
@@ -80,6 +93,7 @@ static void destroy(sk__solver *s)
 {
     if (!s) return;
     free(s->springs);
+    free(s->run);
     free(s->w);
     free(s->tether_coef);
     free(s->tether_gamma);
@@ -123,16 +137,30 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
     s->slabs = cells / 2 < MAX_SLABS ? cells / 2 : MAX_SLABS;
     if (s->slabs < 1) s->slabs = 1;
     size_t count[MAX_SLABS] = {0};
+    int colours = m->colour_count > 0 ? m->colour_count : 1;
+    size_t *colour_count = calloc((size_t)s->slabs * (size_t)colours, sizeof *colour_count);
+    if (!colour_count) {
+        free(slab);
+        destroy(s);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu springs", n);
+    }
+    int colour = 0;
     for (size_t k = 0; k < n; k++) {
+        while (colour + 1 < m->colour_count && k >= m->colour_start[colour + 1]) colour++;
         int a[3], b[3];
         sk__grid_coords(g, m->grid_of[m->spring_i[k]], a);
         sk__grid_coords(g, m->grid_of[m->spring_j[k]], b);
         int low = a[axis] < b[axis] ? a[axis] : b[axis];
         slab[k] = (int)((long)low * s->slabs / cells);
         count[slab[k]]++;
+        colour_count[(size_t)slab[k] * (size_t)colours + (size_t)colour]++;
     }
     s->start[0] = 0;
-    for (int i = 0; i < s->slabs; i++) s->start[i + 1] = s->start[i] + count[i];
+    for (int i = 0; i < s->slabs; i++) {
+        s->start[i + 1] = s->start[i] + count[i];
+        s->parity_before[i] = s->parity_total[i & 1];
+        s->parity_total[i & 1] += count[i];
+    }
     size_t fill[MAX_SLABS];
     memcpy(fill, s->start, sizeof fill);
     /* the model's springs are sorted by colour: a stable split into slabs keeps that order */
@@ -153,6 +181,31 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
         sp->cj = (float)(s->w[m->spring_j[k]] * inv_denom);
         sp->ca = (float)(alpha / (h * h) * inv_denom);
     }
+    /* the runs: a slab's springs keep the model's colour order (in a model without colours
+       every spring is a run of its own) */
+    s->run = malloc(((m->colour_count > 0 ? (size_t)s->slabs * (size_t)colours : n) + 1) * sizeof *s->run);
+    if (!s->run) {
+        free(colour_count);
+        free(slab);
+        destroy(s);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu springs", n);
+    }
+    size_t runs = 0;
+    for (int sl = 0; sl < s->slabs; sl++) {
+        s->slab_run[sl] = runs;
+        size_t k0 = s->start[sl];
+        for (int c = 0; c < colours; c++) {
+            size_t in_colour = colour_count[(size_t)sl * (size_t)colours + (size_t)c];
+            if (m->colour_count == 0)
+                for (size_t k = k0; k < k0 + in_colour; k++) s->run[runs++] = k;
+            else if (in_colour)
+                s->run[runs++] = k0;
+            k0 += in_colour;
+        }
+    }
+    s->slab_run[s->slabs] = runs;
+    s->run[runs] = n;
+    free(colour_count);
     free(slab);
     const sk_tissue_material_desc *mat = &m->desc.material;
     for (size_t p = 0; p < s->free_count; p++) {
@@ -166,42 +219,122 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
     return SK_OK;
 }
 
-/* One Gauss-Seidel sweep of a slab's springs; `mu` (alpha lambda per spring) when the step
- * iterates, NULL for a single iteration (lambda starts at 0 each step). */
+/* Below this length a spring has no direction and is left as it is. */
+#define SHORTEST 1e-12
+
+/* One spring (see the top of the file). The relative motion of the ends over the step
+ * along the spring, n . ((x_a - b_a) - (x_b - b_b)), is taken as d . (d - (b_a - b_b)) / |d|
+ * with d = x_a - x_b (exactly 0 when nothing moved). `mu`: alpha lambda of the spring
+ * when the step iterates, NULL for one iteration. */
+static inline void solve_one(const spring *sp, double *x, const double *base, float *mu)
+{
+    double *xa = x + 3 * (size_t)sp->i, *xb = x + 3 * (size_t)sp->j;
+    const double *ba = base + 3 * (size_t)sp->i, *bb = base + 3 * (size_t)sp->j;
+    double dx = xa[0] - xb[0], dy = xa[1] - xb[1], dz = xa[2] - xb[2];
+    double mx = dx - (ba[0] - bb[0]), my = dy - (ba[1] - bb[1]), mz = dz - (ba[2] - bb[2]);
+    double len = sqrt(dx * dx + dy * dy + dz * dz);
+    bool has_direction = len > SHORTEST;
+    double inv = 1.0 / (has_direction ? len : 1.0);
+    double rel = (dx * mx + dy * my + dz * mz) * inv;
+    double force = (len - sp->rest) + sp->gamma * rel; /* -dlambda times the denominator */
+    if (mu) {
+        force += *mu;
+        if (has_direction) *mu -= (float)(sp->ca * force);
+    }
+    double f = has_direction ? force * inv : 0.0;
+    double ga = -sp->ci * f, gb = -sp->cj * f;
+    xa[0] += ga * dx;
+    xa[1] += ga * dy;
+    xa[2] += ga * dz;
+    xb[0] -= gb * dx;
+    xb[1] -= gb * dy;
+    xb[2] -= gb * dz;
+}
+
+#if defined(__SSE2__)
+/* Points p0 and p1 (3 doubles each) as the two lanes of their x, y and z. */
+static inline void load_pair(const double *p0, const double *p1, __m128d *x, __m128d *y, __m128d *z)
+{
+    *x = _mm_setr_pd(p0[0], p1[0]);
+    *y = _mm_setr_pd(p0[1], p1[1]);
+    *z = _mm_setr_pd(p0[2], p1[2]);
+}
+
+static inline void store_pair(double *p0, double *p1, __m128d x, __m128d y, __m128d z)
+{
+    _mm_storel_pd(p0, x);
+    _mm_storel_pd(p0 + 1, y);
+    _mm_storel_pd(p0 + 2, z);
+    _mm_storeh_pd(p1, x);
+    _mm_storeh_pd(p1 + 1, y);
+    _mm_storeh_pd(p1 + 2, z);
+}
+
+/* Two springs of one run (they share no point) in the two lanes: solve_one's operations. */
+static inline void solve_two(const spring *s0, const spring *s1, double *x, const double *base)
+{
+    double *xa0 = x + 3 * (size_t)s0->i, *xb0 = x + 3 * (size_t)s0->j;
+    double *xa1 = x + 3 * (size_t)s1->i, *xb1 = x + 3 * (size_t)s1->j;
+    __m128d ax, ay, az, bx, by, bz, bax, bay, baz, bbx, bby, bbz;
+    load_pair(xa0, xa1, &ax, &ay, &az);
+    load_pair(xb0, xb1, &bx, &by, &bz);
+    load_pair(base + 3 * (size_t)s0->i, base + 3 * (size_t)s1->i, &bax, &bay, &baz);
+    load_pair(base + 3 * (size_t)s0->j, base + 3 * (size_t)s1->j, &bbx, &bby, &bbz);
+    __m128d dx = _mm_sub_pd(ax, bx), dy = _mm_sub_pd(ay, by), dz = _mm_sub_pd(az, bz);
+    __m128d mx = _mm_sub_pd(dx, _mm_sub_pd(bax, bbx)), my = _mm_sub_pd(dy, _mm_sub_pd(bay, bby)),
+            mz = _mm_sub_pd(dz, _mm_sub_pd(baz, bbz));
+    __m128d len = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)));
+    __m128d has_direction = _mm_cmpgt_pd(len, _mm_set1_pd(SHORTEST));
+    __m128d one = _mm_set1_pd(1.0);
+    __m128d safe = _mm_or_pd(_mm_and_pd(has_direction, len), _mm_andnot_pd(has_direction, one));
+    __m128d inv = _mm_div_pd(one, safe);
+    __m128d rel = _mm_mul_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, mx), _mm_mul_pd(dy, my)), _mm_mul_pd(dz, mz)), inv);
+    __m128d force = _mm_add_pd(_mm_sub_pd(len, _mm_setr_pd(s0->rest, s1->rest)),
+                               _mm_mul_pd(_mm_setr_pd(s0->gamma, s1->gamma), rel));
+    __m128d f = _mm_and_pd(has_direction, _mm_mul_pd(force, inv));
+    __m128d ga = _mm_mul_pd(_mm_setr_pd(-s0->ci, -s1->ci), f), gb = _mm_mul_pd(_mm_setr_pd(-s0->cj, -s1->cj), f);
+    store_pair(xa0, xa1, _mm_add_pd(ax, _mm_mul_pd(ga, dx)), _mm_add_pd(ay, _mm_mul_pd(ga, dy)),
+               _mm_add_pd(az, _mm_mul_pd(ga, dz)));
+    store_pair(xb0, xb1, _mm_sub_pd(bx, _mm_mul_pd(gb, dx)), _mm_sub_pd(by, _mm_mul_pd(gb, dy)),
+               _mm_sub_pd(bz, _mm_mul_pd(gb, dz)));
+}
+#endif
+
+/* One Gauss-Seidel sweep of a slab's springs, run by run; `mu` (alpha lambda per spring)
+ * when the step iterates, NULL for a single iteration (lambda starts at 0 each step). */
 static void solve_slab(const sk__solver *s, int slab, double *x, const double *base, float *mu)
 {
-    for (size_t k = s->start[slab]; k < s->start[slab + 1]; k++) {
-        const spring *sp = &s->springs[k];
-        size_t a = sp->i, b = sp->j;
-        double *xa = x + 3 * a, *xb = x + 3 * b;
-        double dx = xa[0] - xb[0], dy = xa[1] - xb[1], dz = xa[2] - xb[2];
-        double len = sqrt(dx * dx + dy * dy + dz * dz);
-        if (!(len > 1e-12)) continue;
-        double inv = 1.0 / len;
-        dx *= inv;
-        dy *= inv;
-        dz *= inv;
-        const double *ba = base + 3 * a, *bb = base + 3 * b;
-        double rel = dx * ((xa[0] - ba[0]) - (xb[0] - bb[0])) + dy * ((xa[1] - ba[1]) - (xb[1] - bb[1])) +
-                     dz * ((xa[2] - ba[2]) - (xb[2] - bb[2]));
-        double force = (len - sp->rest) + sp->gamma * rel; /* -dlambda times the denominator */
+    for (size_t r = s->slab_run[slab]; r < s->slab_run[slab + 1]; r++) {
+        size_t k = s->run[r], end = s->run[r + 1];
         if (mu) {
-            force += mu[k];
-            mu[k] -= (float)(sp->ca * force);
+            for (; k < end; k++) solve_one(&s->springs[k], x, base, mu + k);
+            continue;
         }
-        double ga = -sp->ci * force, gb = -sp->cj * force;
-        xa[0] += ga * dx;
-        xa[1] += ga * dy;
-        xa[2] += ga * dz;
-        xb[0] -= gb * dx;
-        xb[1] -= gb * dy;
-        xb[2] -= gb * dz;
+#if defined(__SSE2__)
+        for (; k + 1 < end; k += 2) solve_two(&s->springs[k], &s->springs[k + 1], x, base);
+#endif
+        for (; k < end; k++) solve_one(&s->springs[k], x, base, NULL);
     }
+}
+
+/* The thread that solves a slab: each thread takes a run of consecutive slabs of one
+ * parity holding about its share of their springs, so the slabs solved side by side lie
+ * far apart (no cache line written by two threads at once but at the runs' ends) and a
+ * thread's odd slabs lie beside its even ones (their points are already in its cache).
+ * Which thread solves a slab does not change the result. */
+static int slab_owner(const sk__solver *s, int slab, int threads)
+{
+    size_t total = s->parity_total[slab & 1];
+    if (threads <= 1 || total == 0) return 0;
+    double middle = (double)s->parity_before[slab] + 0.5 * (double)(s->start[slab + 1] - s->start[slab]);
+    int owner = (int)(middle / (double)total * threads);
+    return owner < threads ? owner : threads - 1;
 }
 
 static void step(sk__solver *s, double *x, const double *base, const double *target, const double *target_base)
 {
     bool iterate = s->iterations > 1;
+    int thread = omp_get_thread_num(), threads = omp_get_num_threads();
     if (iterate) {
 #pragma omp for schedule(static)
         for (size_t k = 0; k < s->count; k++) s->mu[k] = 0.0f;
@@ -210,8 +343,9 @@ static void step(sk__solver *s, double *x, const double *base, const double *tar
     }
     for (int it = 0; it < s->iterations; it++) {
         for (int parity = 0; parity < 2; parity++) {
-#pragma omp for schedule(dynamic, 1)
-            for (int slab = parity; slab < s->slabs; slab += 2) solve_slab(s, slab, x, base, iterate ? s->mu : NULL);
+            for (int slab = parity; slab < s->slabs; slab += 2)
+                if (slab_owner(s, slab, threads) == thread) solve_slab(s, slab, x, base, iterate ? s->mu : NULL);
+#pragma omp barrier
         }
 #pragma omp for schedule(static)
         for (size_t p = 0; p < s->free_count; p++) {
