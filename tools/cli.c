@@ -47,6 +47,47 @@ int cli_fail_error(const sk_error *err)
                     err->message[0] ? err->message : sk_result_string(err->result));
 }
 
+/* ------------------------------------------------------------------ groups */
+
+bool cli_is_group(const char *group)
+{
+    size_t n = strlen(group);
+    for (int i = 0; cli_commands[i]; i++) {
+        const char *name = cli_commands[i]->name;
+        if (strncmp(name, group, n) == 0 && name[n] == ' ') return true;
+    }
+    return false;
+}
+
+/* The subcommands of `group` from the command table, one line each. */
+static void print_subcommands(const char *group, FILE *out)
+{
+    size_t n = strlen(group);
+    for (int i = 0; cli_commands[i]; i++) {
+        const char *name = cli_commands[i]->name;
+        if (strncmp(name, group, n) == 0 && name[n] == ' ')
+            fprintf(out, "  %-16s %s\n", name + n + 1, cli_commands[i]->summary);
+    }
+}
+
+void cli_group_subcommands(const char *group, char *out, size_t size)
+{
+    size_t n = strlen(group), used = 0;
+    out[0] = '\0';
+    for (int i = 0; cli_commands[i] && used < size; i++) {
+        const char *name = cli_commands[i]->name;
+        if (strncmp(name, group, n) == 0 && name[n] == ' ')
+            used += (size_t)snprintf(out + used, size - used, "%s%s", used ? ", " : "", name + n + 1);
+    }
+}
+
+void cli_print_group_help(const char *group, FILE *out)
+{
+    fprintf(out, "usage: shitsukan %s <subcommand> [options]\n\nsubcommands:\n", group);
+    print_subcommands(group, out);
+    fprintf(out, "\n'shitsukan %s <subcommand> --help' shows a subcommand's options.\n", group);
+}
+
 /* ---------------------------------------------------------- common options */
 
 typedef struct common_option {
@@ -102,6 +143,11 @@ void cli_print_help(const cli_command *command, FILE *out)
     if (command->schema)
         print_option_line(out, 0, "help-keys", NULL, "list every preset key with its range");
     if (command->examples) fprintf(out, "\nexamples:\n%s\n", command->examples);
+    /* a command that also names a group (e.g. "skin" and "skin maps") lists the group */
+    if (!strchr(command->name, ' ') && cli_is_group(command->name)) {
+        fprintf(out, "\nsubcommands (see 'shitsukan %s <subcommand> --help'):\n", command->name);
+        print_subcommands(command->name, out);
+    }
 }
 
 /* ------------------------------------------------------------------ parsing */
@@ -312,6 +358,31 @@ int cli_get_int(const cli_command *command, const cli_args *args, const char *na
     return 0;
 }
 
+bool cli_parse_decimal(const char *text, double *out)
+{
+    /* [+-]digits[.digits][(e|E)[+-]digits], at least one digit before the exponent */
+    const char *p = text;
+    if (*p == '+' || *p == '-') p++;
+    int digits = 0;
+    while (*p >= '0' && *p <= '9') p++, digits++;
+    if (*p == '.') {
+        p++;
+        while (*p >= '0' && *p <= '9') p++, digits++;
+    }
+    if (digits == 0) return false;
+    if (*p == 'e' || *p == 'E') {
+        p++;
+        if (*p == '+' || *p == '-') p++;
+        if (!(*p >= '0' && *p <= '9')) return false;
+        while (*p >= '0' && *p <= '9') p++;
+    }
+    if (*p != '\0') return false;
+    double x = strtod(text, NULL);
+    if (!isfinite(x)) return false;
+    *out = x;
+    return true;
+}
+
 int cli_get_double(const cli_command *command, const cli_args *args, const char *name,
                    double fallback, double lo, double hi, double *out)
 {
@@ -320,9 +391,8 @@ int cli_get_double(const cli_command *command, const cli_args *args, const char 
         *out = fallback;
         return 0;
     }
-    char *end;
-    double x = strtod(v, &end);
-    if (!v[0] || *end || !isfinite(x) || x < lo || x > hi)
+    double x;
+    if (!cli_parse_decimal(v, &x) || x < lo || x > hi)
         return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be a number in [%g, %g]", name, v, lo, hi);
     *out = x;
     return 0;
@@ -356,23 +426,46 @@ int cli_get_size(const cli_command *command, const cli_args *args, const char *n
 
 int cli_parse_region(const char *text, int width, int height, int region[4])
 {
-    long v[4];
+    long long v[4];
     const char *p = text;
     for (int i = 0; i < 4; i++) {
-        char *end;
+        char *end = NULL;
         errno = 0;
-        v[i] = strtol(p, &end, 10);
-        if (end == p || errno || (i < 3 ? *end != ',' : *end != '\0'))
+        bool digit = (*p >= '0' && *p <= '9') || (*p == '-' && p[1] >= '0' && p[1] <= '9');
+        if (digit) v[i] = strtoll(p, &end, 10);
+        if (!digit || errno || (i < 3 ? *end != ',' : *end != '\0'))
             return cli_fail(CLI_EXIT_USAGE, "--region '%s' must be x,y,w,h (integers)", text);
         p = end + 1;
     }
-    if (v[0] < 0 || v[1] < 0 || v[2] < 1 || v[3] < 1 || v[0] + v[2] > width ||
-        v[1] + v[3] > height)
+    /* each term is bounded before the sums, so no sum can overflow */
+    if (v[0] < 0 || v[1] < 0 || v[2] < 1 || v[3] < 1 || v[0] > width || v[1] > height ||
+        v[2] > width - v[0] || v[3] > height - v[1])
         return cli_fail(CLI_EXIT_USAGE,
                         "--region '%s' must lie inside the %dx%d image (x, y >= 0, w, h >= 1, "
                         "x + w <= %d, y + h <= %d)",
                         text, width, height, width, height);
     for (int i = 0; i < 4; i++) region[i] = (int)v[i];
+    return 0;
+}
+
+int cli_parse_numbers(const char *option, const char *text, int count, double *out)
+{
+    const char *p = text;
+    for (int i = 0; i < count; i++) {
+        size_t n = strcspn(p, ",");
+        char item[64];
+        bool last = i == count - 1;
+        bool ok = n < sizeof item && (last ? p[n] == '\0' : p[n] == ',');
+        if (ok) {
+            memcpy(item, p, n);
+            item[n] = '\0';
+            ok = cli_parse_decimal(item, &out[i]);
+        }
+        if (!ok)
+            return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be %d comma-separated numbers", option,
+                            text, count);
+        p += n + 1;
+    }
     return 0;
 }
 

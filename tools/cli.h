@@ -100,6 +100,13 @@ int cli_fail_error(const sk_error *err);
  * (exit 0); on bad usage prints one line and returns 2; otherwise 0. */
 int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args);
 void cli_print_help(const cli_command *command, FILE *out);
+/* Groups: the first word of two-word commands ("hand" of "hand pose"). cli_is_group says
+ * whether `word` is one; cli_print_group_help lists its subcommands from the table, so a
+ * new group has its help without code of its own. */
+bool cli_is_group(const char *word);
+void cli_print_group_help(const char *group, FILE *out);
+/* The group's subcommand names, comma-separated ("pose, animate, calibrate"). */
+void cli_group_subcommands(const char *group, char *out, size_t size);
 
 /* Option access by long name (the name must be one of the command's options). */
 const char *cli_get(const cli_command *command, const cli_args *args, const char *name);
@@ -114,9 +121,14 @@ int cli_get_int(const cli_command *command, const cli_args *args, const char *na
                 long long fallback, long long lo, long long hi, long long *out);
 int cli_get_double(const cli_command *command, const cli_args *args, const char *name,
                    double fallback, double lo, double hi, double *out);
+/* A whole decimal number ("12", "-0.5", "1e-3"; no hexadecimal, "inf" or "nan", no
+ * leading or trailing text) that is finite: true and *out, else false. */
+bool cli_parse_decimal(const char *text, double *out);
 /* "N" (square) or "WxH", each in [1, max]. */
 int cli_get_size(const cli_command *command, const cli_args *args, const char *name,
                  int fallback_w, int fallback_h, int max, int *w, int *h);
+/* Parses `count` comma-separated decimal numbers ("X,Y,Z") of option --`option`. */
+int cli_parse_numbers(const char *option, const char *text, int count, double *out);
 /* Parses "x,y,w,h" (a sub-rectangle of a width x height image). */
 int cli_parse_region(const char *text, int width, int height, int region[4]);
 

@@ -2,7 +2,7 @@
  * coupling (Yasumuro 2000, ch. 3), keyframe animation to BVH and joint positions, and
  * calibration of constraint rows from measured samples. Argument parsing only; the model
  * is in the library (include/shitsukan/hand.h). */
-#include <errno.h>
+#define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -11,8 +11,6 @@
 
 #include "cli.h"
 #include "shitsukan/hand.h"
-
-#define MAX_PINS 64
 
 /* ------------------------------------------------------------ helpers */
 
@@ -66,6 +64,10 @@ static int load_constraints(const char *name, const sk_hand_skeleton *skel, sk_h
     return 0;
 }
 
+/* Largest magnitude of a --pin or --torque value (degrees, mm or stiffness x radians):
+   pins beyond a joint's limits are clamped to them, so any larger value means nothing. */
+#define INPUT_VALUE_MAX 1e6
+
 /* "DOF=value" -> dof index and the number (in file units). */
 static int parse_assignment(const char *option, const char *text, int *dof, double *value)
 {
@@ -80,11 +82,38 @@ static int parse_assignment(const char *option, const char *text, int *dof, doub
     if (*dof < 0)
         return cli_fail(CLI_EXIT_USAGE, "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)",
                         option, text, name);
-    char *end;
-    errno = 0;
-    *value = strtod(eq + 1, &end);
-    if (!eq[1] || *end || errno == ERANGE || !isfinite(*value) || fabs(*value) > 1e6)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': \"%s\" is not a finite number", option, text, eq + 1);
+    if (!cli_parse_decimal(eq + 1, value) || fabs(*value) > INPUT_VALUE_MAX)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': the value must be a decimal number in [%.0f, %.0f]", option,
+                        text, -INPUT_VALUE_MAX, INPUT_VALUE_MAX);
+    return 0;
+}
+
+/* --pin and --torque into an input: each DOF takes at most one of them, once. */
+static int parse_inputs(const cli_command *cmd, const cli_args *args, sk_hand_input *in)
+{
+    static const char *const options[] = {"pin", "torque"};
+    const char *given[SK_HAND_DOF_COUNT] = {0};
+    memset(in, 0, sizeof *in);
+    for (int k = 0; k < 2; k++) {
+        const char *values[CLI_MAX_VALUES];
+        int n = cli_get_all(cmd, args, options[k], values, CLI_MAX_VALUES);
+        for (int i = 0; i < n; i++) {
+            int dof = 0;
+            double v = 0.0;
+            int rc = parse_assignment(options[k], values[i], &dof, &v);
+            if (rc) return rc;
+            if (given[dof])
+                return cli_fail(CLI_EXIT_USAGE, "--%s '%s': %s already has --%s (one input per DOF)",
+                                options[k], values[i], sk_hand_dof(dof)->name, given[dof]);
+            given[dof] = options[k];
+            if (k == 0) {
+                in->pinned[dof] = true;
+                in->pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
+            } else {
+                in->torque[dof] = v;
+            }
+        }
+    }
     return 0;
 }
 
@@ -231,8 +260,8 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
 /* ------------------------------------------------------------ hand pose */
 
 static const cli_option pose_options[] = {
-    {"pin", 0, "DOF=DEG", "hold a DOF at an absolute angle in degrees (mm for wrist.tx/ty/tz); repeatable", true},
-    {"torque", 0, "DOF=T", "directed input torque on a DOF (stiffness x radians); repeatable", true},
+    {"pin", 0, "DOF=DEG", "hold a DOF at an angle in degrees (mm for wrist.tx/ty/tz), |value| <= 1e6; once per DOF", true},
+    {"torque", 0, "DOF=T", "directed input torque on a DOF (stiffness x radians), |T| <= 1e6; once per DOF", true},
     {"constraints", 0, "SET", "natural (default), yasumuro-table-3.2, none, or a constraint JSON file", false},
     {"samples", 0, "CSV", "joint-angle samples (header of DOF names, degrees) for lookup-table potentials", false},
     {"pairs", 0, "A:B,...", "DOF pairs that get a lookup-table potential from --samples", false},
@@ -266,24 +295,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     rc = load_constraints(set ? set : "natural", &skel, c);
     sk_hand_input in = {0};
-    const char *values[MAX_PINS];
-    int n = rc ? 0 : cli_get_all(cmd, args, "pin", values, MAX_PINS);
-    for (int i = 0; i < n && !rc; i++) {
-        int dof;
-        double v;
-        rc = parse_assignment("pin", values[i], &dof, &v);
-        if (!rc) {
-            in.pinned[dof] = true;
-            in.pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
-        }
-    }
-    n = rc ? 0 : cli_get_all(cmd, args, "torque", values, MAX_PINS);
-    for (int i = 0; i < n && !rc; i++) {
-        int dof;
-        double v;
-        rc = parse_assignment("torque", values[i], &dof, &v);
-        if (!rc) in.torque[dof] = v;
-    }
+    if (!rc) rc = parse_inputs(cmd, args, &in);
     sk_hand_lut luts[16];
     int lut_count = 0;
     if (!rc) rc = build_luts(cmd, args, luts, &lut_count);

@@ -54,14 +54,8 @@ static const cli_option k_sweep_options[] = {
 static int parse_vec3(const char *option, const char *text, sk_vec3f *out)
 {
     double v[3];
-    const char *p = text;
-    for (int i = 0; i < 3; i++) {
-        char *end;
-        v[i] = strtod(p, &end);
-        if (end == p || !isfinite(v[i]) || (i < 2 ? *end != ',' : *end != '\0'))
-            return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be X,Y,Z (three numbers)", option, text);
-        p = end + 1;
-    }
+    int status = cli_parse_numbers(option, text, 3, v);
+    if (status) return status;
     *out = sk_v3f((float)v[0], (float)v[1], (float)v[2]);
     return 0;
 }

@@ -57,6 +57,20 @@ int main(int argc, char **argv)
     }
     int words;
     const cli_command *command = find_command(argc, argv, &words);
+    if (!command && cli_is_group(argv[1])) {
+        /* a group word alone, with --help, or with an unknown subcommand */
+        if (argc > 2 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0)) {
+            cli_print_group_help(argv[1], stdout);
+            return CLI_EXIT_OK;
+        }
+        if (argc > 2 && argv[2][0] != '-')
+            return cli_fail(CLI_EXIT_USAGE, "unknown subcommand '%s %s' (see 'shitsukan %s --help')",
+                            argv[1], argv[2], argv[1]);
+        char names[256];
+        cli_group_subcommands(argv[1], names, sizeof names);
+        return cli_fail(CLI_EXIT_USAGE, "'%s' needs a subcommand: %s (see 'shitsukan %s --help')",
+                        argv[1], names, argv[1]);
+    }
     if (!command)
         return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (see 'shitsukan --help')", argv[1]);
     cli_args args;
