@@ -1,5 +1,7 @@
 /* Tests of the `shitsukan` command's framework: help, version, exit codes and one-line
  * errors for bad usage. Module commands have their own tests in their modules' files. */
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "test_support.h"
@@ -7,6 +9,16 @@
 #include "shitsukan/hand.h"
 
 static sk_test_run g_run;
+
+/* A path under the test folder with nothing there yet. */
+static const char *fresh_path(const char *name)
+{
+    const char *path = sk_test_path(name);
+    char command[2048];
+    snprintf(command, sizeof command, "rm -rf '%s'", path);
+    assert_int_equal(system(command), 0);
+    return path;
+}
 
 static void assert_one_line_error(const sk_test_run *run, int status)
 {
@@ -76,7 +88,7 @@ static void test_groups_have_help(void **state)
 static void test_region_cannot_overflow(void **state)
 {
     (void)state;
-    const char *out = sk_test_path("region.png");
+    const char *out = fresh_path("region.png");
     static const char *const regions[] = {
         "4611686018427387904,0,6917529027641081860,4",
         "9223372036854775807,0,1,1",
