@@ -100,8 +100,7 @@ sk_result sk_hand_bvh_write(const sk_hand_skeleton *s, const double *dofs, int f
     sk_result r = sk_atomic_file_open(&file, path, err);
     if (r != SK_OK) return r;
     if (sk_hand_bvh_write_stream(s, dofs, frame_count, frame_time, file.fp) != SK_OK) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+        return sk_atomic_file_write_failed(&file, err);
     }
     return sk_atomic_file_commit(&file, err);
 }

@@ -92,8 +92,7 @@ sk_result sk_hand__write_text_file(const char *path, const char *text, sk_error 
     if (r != SK_OK) return r;
     size_t n = strlen(text);
     if (fwrite(text, 1, n, file.fp) != n) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+        return sk_atomic_file_write_failed(&file, err);
     }
     return sk_atomic_file_commit(&file, err);
 }

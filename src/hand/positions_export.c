@@ -48,8 +48,7 @@ sk_result sk_hand_positions_write(const sk_hand_skeleton *s, const double *dofs,
     r = format == SK_HAND_POSITIONS_JSON ? write_json(file.fp, s, dofs, frames)
                                          : write_csv(file.fp, s, dofs, frames);
     if (r != SK_OK) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+        return sk_atomic_file_write_failed(&file, err);
     }
     return sk_atomic_file_commit(&file, err);
 }
@@ -71,8 +70,7 @@ sk_result sk_hand_angles_write_csv(const double *dofs, int frames, double frame_
         fputc('\n', file.fp);
     }
     if (ferror(file.fp)) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+        return sk_atomic_file_write_failed(&file, err);
     }
     return sk_atomic_file_commit(&file, err);
 }
@@ -115,8 +113,7 @@ sk_result sk_hand_pose_write_json(const sk_hand_skeleton *s, const double dofs[S
     sk_result r = sk_atomic_file_open(&file, path, err);
     if (r == SK_OK) {
         if (fputs(text, file.fp) < 0 || fputc('\n', file.fp) == EOF) {
-            sk_atomic_file_abort(&file);
-            r = sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+            r = sk_atomic_file_write_failed(&file, err);
         } else {
             r = sk_atomic_file_commit(&file, err);
         }
