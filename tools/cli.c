@@ -9,6 +9,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -107,8 +108,16 @@ static const common_option k_common[] = {
     {CLI_COMMON_SEED, "seed", 0, "N", "random seed, an integer in [0, 2^53]"},
     {CLI_COMMON_THREADS, "threads", 0, "N", "threads to use; 0 = all cores (default)"},
     {CLI_COMMON_QUIET, "quiet", 'q', NULL, "no progress output"},
+    {CLI_COMMON_MEMORY, "max-memory", 0, "SIZE",
+     "refuse work planned to need more memory, e.g. 16G; default 8G"},
 };
 #define COMMON_COUNT ((int)(sizeof k_common / sizeof k_common[0]))
+
+/* The common options a command takes: its mask, and --max-memory always. */
+static unsigned common_mask(const cli_command *command)
+{
+    return command->common | CLI_COMMON_MEMORY;
+}
 
 static void print_option_line(FILE *out, char short_name, const char *name, const char *arg,
                               const char *help)
@@ -136,7 +145,7 @@ void cli_print_help(const cli_command *command, FILE *out)
     }
     fprintf(out, "common options:\n");
     for (int i = 0; i < COMMON_COUNT; i++)
-        if (command->common & k_common[i].bit)
+        if (common_mask(command) & k_common[i].bit)
             print_option_line(out, k_common[i].short_name, k_common[i].name, k_common[i].arg_name,
                               k_common[i].help);
     print_option_line(out, 'h', "help", NULL, "show this help and exit");
@@ -166,7 +175,7 @@ static int find_option(const cli_command *command, const char *name, size_t len,
 static int find_common(const cli_command *command, const char *name, size_t len, char short_name)
 {
     for (int i = 0; i < COMMON_COUNT; i++) {
-        if (!(command->common & k_common[i].bit)) continue;
+        if (!(common_mask(command) & k_common[i].bit)) continue;
         if (short_name ? k_common[i].short_name == short_name
                        : (strlen(k_common[i].name) == len &&
                           strncmp(k_common[i].name, name, len) == 0))
@@ -212,6 +221,12 @@ static int apply_common(const cli_command *command, int which, const char *value
         break;
     }
     case CLI_COMMON_QUIET: c->quiet = true; break;
+    case CLI_COMMON_MEMORY:
+        if (!cli_parse_memory_size(value, &c->max_memory))
+            return cli_fail(CLI_EXIT_USAGE,
+                            "--max-memory '%s' must be a size in [1M, 1P], e.g. 512M or 16G",
+                            value);
+        break;
     }
     return 0;
 }
@@ -236,6 +251,7 @@ static int store_option(const cli_command *command, int i, const char *value, cl
 int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args)
 {
     memset(args, 0, sizeof *args);
+    args->common.max_memory = CLI_DEFAULT_MAX_MEMORY;
     bool only_positional = false;
     for (int k = 0; k < argc; k++) {
         const char *a = argv[k];
@@ -467,6 +483,71 @@ int cli_parse_numbers(const char *option, const char *text, int count, double *o
         p += n + 1;
     }
     return 0;
+}
+
+/* ------------------------------------------------------------ memory, formats */
+
+bool cli_parse_memory_size(const char *text, uint64_t *bytes)
+{
+    char number[64];
+    size_t n = strspn(text, "0123456789.eE+");
+    if (n == 0 || n >= sizeof number) return false;
+    memcpy(number, text, n);
+    number[n] = '\0';
+    double v;
+    if (!cli_parse_decimal(number, &v)) return false;
+    static const struct {
+        const char *suffix;
+        double scale;
+    } units[] = {{"", 1},           {"B", 1},           {"K", 1024.0},      {"KB", 1024.0},
+                 {"KiB", 1024.0},   {"M", 1048576.0},   {"MB", 1048576.0},  {"MiB", 1048576.0},
+                 {"G", 1073741824.0}, {"GB", 1073741824.0}, {"GiB", 1073741824.0},
+                 {"T", 1099511627776.0}, {"TB", 1099511627776.0}, {"TiB", 1099511627776.0}};
+    for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
+        if (strcasecmp(text + n, units[i].suffix) != 0) continue;
+        double b = v * units[i].scale;
+        if (!(b >= 1048576.0 && b <= 1125899906842624.0)) return false;
+        *bytes = (uint64_t)b;
+        return true;
+    }
+    return false;
+}
+
+double cli_image_bytes(double width, double height, double bytes_per_pixel)
+{
+    return width * height * bytes_per_pixel;
+}
+
+int cli_check_memory(const cli_args *args, double bytes, const char *driver)
+{
+    double cap = (double)args->common.max_memory;
+    if (bytes <= cap) return 0;
+    const double gib = 1073741824.0;
+    return cli_fail(CLI_EXIT_USAGE,
+                    "%s needs about %.1f GiB of memory, more than the cap of %.1f GiB (make it "
+                    "smaller, or raise the cap with --max-memory)",
+                    driver, bytes / gib, cap / gib);
+}
+
+int cli_output_format(const char *option, const char *path, const char *const *accepted,
+                      int *format)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    char list[128] = "";
+    size_t used = 0;
+    for (int i = 0; accepted[i]; i++) {
+        if (dot && dot != base && strcasecmp(dot, accepted[i]) == 0) {
+            *format = i;
+            return 0;
+        }
+        int k = snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", accepted[i]);
+        if (k > 0 && (size_t)k < sizeof list - used) used += (size_t)k;
+    }
+    bool image = strcmp(accepted[0], ".png") == 0 || strcmp(accepted[0], ".exr") == 0;
+    return cli_fail(CLI_EXIT_USAGE, "%s '%s': unknown %s type (the name must end in %s)", option,
+                    path, image ? "image" : "file", list);
 }
 
 /* ------------------------------------------------------------------ presets */

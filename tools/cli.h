@@ -36,8 +36,12 @@ enum {
     CLI_COMMON_SEED = 1 << 3,    /* --seed N */
     CLI_COMMON_THREADS = 1 << 4, /* --threads N */
     CLI_COMMON_QUIET = 1 << 5,   /* -q, --quiet */
-    CLI_COMMON_ALL = 0x3f
+    CLI_COMMON_MEMORY = 1 << 6,  /* --max-memory SIZE: taken by every command */
+    CLI_COMMON_ALL = 0x7f
 };
+
+/* The memory a command may plan to use unless --max-memory says otherwise. */
+#define CLI_DEFAULT_MAX_MEMORY ((uint64_t)8 << 30)
 
 typedef struct cli_common {
     const char *output;
@@ -48,6 +52,7 @@ typedef struct cli_common {
     bool has_seed;
     int threads; /* 0 = all cores */
     bool quiet;
+    uint64_t max_memory; /* bytes; CLI_DEFAULT_MAX_MEMORY unless --max-memory is given */
 } cli_common;
 
 #define CLI_MAX_VALUES 256
@@ -141,6 +146,23 @@ int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset 
 bool cli_find_preset(const char *module, const char *name, char *path, size_t size);
 /* The preset folders searched, in order; returns how many were written (<= max). */
 int cli_preset_dirs(const char **out, int max);
+
+/* Parses a memory size: bytes, or a number with K, M, G or T (binary multiples; "KiB",
+ * "GB" and the like read the same), in [1 MiB, 1 PiB]. */
+bool cli_parse_memory_size(const char *text, uint64_t *bytes);
+/* The memory cap: refuses (exit 2, one line) a plan of `bytes` above --max-memory,
+ * naming what drives it (`driver`, e.g. "--size 20000x20000" or "--tile-size 16384 for
+ * 2 images"). Every command calls it with its estimate before allocating. */
+int cli_check_memory(const cli_args *args, double bytes, const char *driver);
+/* Pixel buffers of `bytes_per_pixel` bytes for a w x h image (as a double: no overflow). */
+double cli_image_bytes(double width, double height, double bytes_per_pixel);
+
+/* The output's format by its extension (case-insensitive), one of `accepted` (e.g.
+ * {".png", ".exr", NULL}): its index in *format, or the one-line error (exit 2) naming the
+ * option and the accepted extensions. Called before any work, so a wrong name costs
+ * nothing. */
+int cli_output_format(const char *option, const char *path, const char *const *accepted,
+                      int *format);
 
 /* Applies --threads (0 = all cores) to the library's parallel loops. */
 void cli_apply_threads(const cli_args *args);

@@ -11,6 +11,7 @@
 
 #include "cli.h"
 #include "shitsukan/hand.h"
+#include "shitsukan/io.h"
 
 /* ------------------------------------------------------------ helpers */
 
@@ -136,6 +137,56 @@ static int require_option(const cli_command *cmd, const cli_args *args, const ch
     for (int i = 0; options[i]; i++)
         if (cli_has(cmd, args, options[i])) return cli_fail(CLI_EXIT_USAGE, "--%s needs --%s", options[i], needed);
     return 0;
+}
+
+/* One output of a hand command: its option, path (NULL when not given), accepted
+   extensions (NULL = any) and whether it is a folder. */
+typedef struct hand_output {
+    const char *option;
+    const char **path; /* replaced by the staged path once reserved */
+    const char *const *formats;
+    bool folder;
+} hand_output;
+
+static const char *const k_png_format[] = {".png", NULL};
+static const char *const k_positions_formats[] = {".csv", ".json", NULL};
+
+/* Checks and reserves every given output before any work, so that they appear together
+   at the end or not at all (see sk_output_set). */
+static int reserve_outputs(const hand_output *list, int count, sk_output_set **set)
+{
+    *set = NULL;
+    int format;
+    for (int i = 0; i < count; i++)
+        if (*list[i].path && list[i].formats) {
+            int rc = cli_output_format(list[i].option, *list[i].path, list[i].formats, &format);
+            if (rc) return rc;
+        }
+    sk_error err = {0};
+    sk_result r = sk_output_set_create(set, &err);
+    for (int i = 0; i < count && r == SK_OK; i++) {
+        if (!*list[i].path) continue;
+        r = list[i].folder ? sk_output_set_folder(*set, *list[i].path, list[i].path, &err)
+                           : sk_output_set_file(*set, *list[i].path, list[i].path, &err);
+        if (r != SK_OK) sk_error_prefix(&err, r, "%s", list[i].option);
+    }
+    if (r != SK_OK) {
+        sk_output_set_abort(*set);
+        *set = NULL;
+        return cli_fail_error(&err);
+    }
+    return 0;
+}
+
+/* Commits the outputs after a successful run (rc 0), else removes them. */
+static int finish_outputs(sk_output_set *set, int rc)
+{
+    if (rc) {
+        sk_output_set_abort(set);
+        return rc;
+    }
+    sk_error err = {0};
+    return sk_output_set_commit(set, &err) == SK_OK ? 0 : cli_fail_error(&err);
 }
 
 /* --views, --png-size and --labels into a picture desc. */
@@ -287,12 +338,23 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     static const char *const picture_options[] = {"views", "png-size", "labels", "bare", "caption", NULL};
     int rc = require_option(cmd, args, "png", picture_options);
     if (rc) return rc;
+    const char *png = cli_get(cmd, args, "png"), *out = args->common.output;
+    const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
+    const hand_output outputs[] = {{"--png", &png, k_png_format, false},
+                                   {"-o", &out, NULL, false},
+                                   {"--bvh", &bvh, NULL, false},
+                                   {"--positions", &positions, k_positions_formats, false}};
     sk_hand_skeleton skel;
     rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
+    sk_output_set *written = NULL;
+    if ((rc = reserve_outputs(outputs, 4, &written))) return rc;
     const char *set = cli_get(cmd, args, "constraints");
     sk_hand_constraints *c = malloc(sizeof *c);
-    if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    if (!c) {
+        sk_output_set_abort(written);
+        return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    }
     rc = load_constraints(set ? set : "natural", &skel, c);
     sk_hand_input in = {0};
     if (!rc) rc = parse_inputs(cmd, args, &in);
@@ -313,7 +375,6 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
                 info.residual, info.newton_iterations);
     sk_hand_draw_desc draw;
     char caption[512];
-    const char *png = cli_get(cmd, args, "png");
     if (!rc && png && !(rc = parse_draw_options(cmd, args, &draw))) {
         const char *given = cli_get(cmd, args, "caption");
         if (given || draw.hide_cues) snprintf(caption, sizeof caption, "%s", given ? given : "");
@@ -321,12 +382,10 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
         draw.caption = caption;
         rc = write_pose_png(&skel, q, &draw, png);
     }
-    const char *out = args->common.output;
     if (!rc && out && sk_hand_pose_write_json(&skel, q, &info, out, &err) != SK_OK) rc = cli_fail_error(&err);
-    const char *bvh = cli_get(cmd, args, "bvh");
     if (!rc && bvh && sk_hand_bvh_write(&skel, q, 1, 1.0 / 30.0, bvh, &err) != SK_OK) rc = cli_fail_error(&err);
-    const char *positions = cli_get(cmd, args, "positions");
     if (!rc && positions) rc = write_positions(&skel, q, 1, positions);
+    rc = finish_outputs(written, rc);
     if (!rc && !out) {
         for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
             printf("%-11s %10.4f%s\n", sk_hand_dof(i)->name, sk_hand_dof(i)->translation ? q[i] : q[i] * SK_RAD_TO_DEG,
@@ -472,6 +531,12 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!draw_rc) draw_rc = require_option(cmd, args, "plot", plot_options);
     if (!draw_rc) draw_rc = parse_draw_options(cmd, args, &draw);
     if (draw_rc) return draw_rc;
+    const hand_output outputs[] = {{"--bvh", &bvh, NULL, false},
+                                   {"--positions", &positions, k_positions_formats, false},
+                                   {"--angles", &angles, NULL, false},
+                                   {"--plot", &plot, k_png_format, false},
+                                   {"--frames-dir", &frames_dir, NULL, true}};
+    sk_output_set *written = NULL;
     sk_error err = {0};
     sk_hand_animation *anim = malloc(sizeof *anim);
     sk_hand_constraints *c = malloc(sizeof *c);
@@ -487,6 +552,18 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!rc) rc = load_constraints(set ? set : anim->constraints, &skel, c);
     if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
     int frames = rc ? 0 : sk_hand_animation_frame_count(anim);
+    if (!rc) {
+        /* the solved angles, and the frame pictures being drawn (one per thread) */
+        char driver[128];
+        snprintf(driver, sizeof driver, "%d frames ((keys - 1) x steps of %s)", frames, path);
+        double picture = frames_dir ? cli_image_bytes(draw.width > 0 ? draw.width : 1600,
+                                                      draw.height > 0 ? draw.height : 480, 8) *
+                                          sk_threads_max()
+                                    : 0;
+        rc = cli_check_memory(args, (double)frames * SK_HAND_DOF_COUNT * sizeof *dofs * 2 + picture,
+                              driver);
+    }
+    if (!rc) rc = reserve_outputs(outputs, 5, &written);
     if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))
         rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     sk_progress_bar bar;
@@ -506,6 +583,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_fail_error(&err);
     if (!rc && plot) rc = write_angle_plot(cmd, args, anim, dofs, frames, plot);
     if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
+    if (written) rc = finish_outputs(written, rc);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
     sk_hand_solver_destroy(solver);
     free(dofs);

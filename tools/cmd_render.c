@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "shitsukan/io.h"
 #include "shitsukan/render.h"
 
 static const cli_option k_options[] = {
@@ -115,10 +116,48 @@ static int run_render(const cli_command *command, const cli_args *args)
     sk_render_load_desc load = {.scene_path = scene_path, .find_preset = find_preset};
     sk_result r = sk_render_scene_desc_bind(tree, &load, desc, &err);
     sk_preset_free(tree);
+    /* every output is checked and reserved before the scene is built */
+    char output[PATH_MAX];
+    if (args->common.output)
+        snprintf(output, sizeof output, "%s", args->common.output);
+    else
+        default_output(scene_path, output, sizeof output);
+    const char *exr = cli_get(command, args, "exr");
+    static const char *const k_formats[] = {".png", ".exr", NULL}, *const k_exr[] = {".exr", NULL};
+    int format;
+    if (r == SK_OK && ((status = cli_output_format("-o", output, k_formats, &format)) ||
+                       (exr && (status = cli_output_format("--exr", exr, k_exr, &format))))) {
+        free(desc);
+        return status;
+    }
+    if (r == SK_OK) {
+        int largest;
+        double bytes = sk_render_scene_desc_memory(desc, &largest);
+        char driver[160];
+        if (largest >= 0)
+            snprintf(driver, sizeof driver,
+                     "the scene (%d objects, the largest objects[%d]: its segments, rings or "
+                     "mesh file; and image.width x height)",
+                     desc->object_count, largest);
+        else
+            snprintf(driver, sizeof driver, "the image (image.width x height, --size)");
+        if ((status = cli_check_memory(args, bytes, driver))) {
+            free(desc);
+            return status;
+        }
+    }
+    sk_output_set *outputs = NULL;
+    const char *staged_output = NULL, *staged_exr = NULL;
+    if (r == SK_OK) r = sk_output_set_create(&outputs, &err);
+    if (r == SK_OK) r = sk_output_set_file(outputs, output, &staged_output, &err);
+    if (r == SK_OK && exr) r = sk_output_set_file(outputs, exr, &staged_exr, &err);
     sk_render_scene *scene = NULL;
     if (r == SK_OK) r = sk_render_scene_create(desc, &scene, &err);
     free(desc);
-    if (r != SK_OK) return cli_fail_error(&err);
+    if (r != SK_OK) {
+        sk_output_set_abort(outputs);
+        return cli_fail_error(&err);
+    }
 
     const sk_render_scene_desc *d = sk_render_scene_get_desc(scene);
     sk_progress_bar bar;
@@ -131,16 +170,14 @@ static int run_render(const cli_command *command, const cli_args *args)
     sk_progress_bar_end(&bar);
     if (r != SK_OK) {
         sk_render_scene_destroy(scene);
+        sk_output_set_abort(outputs);
         return cli_fail_error(&err);
     }
-    char output[PATH_MAX];
-    if (args->common.output)
-        snprintf(output, sizeof output, "%s", args->common.output);
-    else
-        default_output(scene_path, output, sizeof output);
-    status = write_image(&image, &d->film, output, scene_path, d->image.samples);
-    const char *exr = cli_get(command, args, "exr");
-    if (!status && exr) status = write_image(&image, &d->film, exr, scene_path, d->image.samples);
+    status = write_image(&image, &d->film, staged_output, scene_path, d->image.samples);
+    if (!status && exr)
+        status = write_image(&image, &d->film, staged_exr, scene_path, d->image.samples);
+    if (!status && sk_output_set_commit(outputs, &err) != SK_OK) status = cli_fail_error(&err);
+    else if (status) sk_output_set_abort(outputs);
     if (!status && options.timing) {
         double busy = stats.intersect_seconds + stats.shade_seconds;
         fprintf(stderr,

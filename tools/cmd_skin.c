@@ -60,6 +60,23 @@ static int load_desc(const cli_command *command, const cli_args *args, int defau
         desc->size_mm[0] = (float)(mm * *width);
         desc->size_mm[1] = (float)(mm * *height);
     }
+    /* the cells get what the cap leaves (the images are checked by the caller) */
+    desc->max_memory = (double)args->common.max_memory;
+    return 0;
+}
+
+/* The images of a w x h region of `bytes_per_pixel`, against the cap; the rest of the cap
+   is left to the skin's cells. */
+static int check_image_memory(const cli_args *args, int w, int h, double bytes_per_pixel,
+                              sk_skin_desc *desc)
+{
+    double bytes = cli_image_bytes(w, h, bytes_per_pixel);
+    char driver[96];
+    snprintf(driver, sizeof driver, "a %d x %d image (--size, --region)", w, h);
+    int status = cli_check_memory(args, bytes, driver);
+    if (status) return status;
+    desc->max_memory -= bytes;
+    if (desc->max_memory < 1.0) desc->max_memory = 1.0;
     return 0;
 }
 
@@ -110,6 +127,11 @@ static int run_preview(const cli_command *command, const cli_args *args)
     if ((status = load_desc(command, args, SKIN_DEFAULT_SIZE, &desc, &w, &h))) return status;
     if ((status = get_region(command, args, w, h, region))) return status;
     if ((status = cli_get_int(command, args, "samples", 1, 1, 8, &samples))) return status;
+    int format;
+    static const char *const k_png[] = {".png", NULL};
+    if ((status = cli_output_format("-o", output, k_png, &format))) return status;
+    /* float RGB and its 8-bit encoding */
+    if ((status = check_image_memory(args, region[2], region[3], 16, &desc))) return status;
     sk_skin *skin;
     if ((status = make_skin(&desc, args, &skin))) return status;
     sk_error err = {0};
@@ -301,28 +323,35 @@ static int run_maps(const cli_command *command, const cli_args *args)
     if ((status = cli_get_int(command, args, "id-level", 1, 1, SK_SKIN_MAX_LEVELS, &id_level)))
         return status;
     bool edges = cli_has(command, args, "edges"), directx = cli_has(command, args, "directx");
-    sk_skin *skin;
-    if ((status = make_skin(&desc, args, &skin))) return status;
-    const sk_skin_desc *rd_desc = sk_skin_get_desc(skin);
+    /* All maps are held in memory until written (float maps, the scaled height and the
+       encodings being written): split a huge map with --region. */
+    if ((status = check_image_memory(args, region[2], region[3], 4.0 * (edges ? 15 : 12) + 16,
+                                     &desc)))
+        return status;
+    /* the folder is reserved first: its files appear together at the end, or none */
     sk_error err = {0};
+    sk_output_set *outputs = NULL;
+    const char *staged = NULL;
+    if (sk_output_set_create(&outputs, &err) != SK_OK ||
+        sk_output_set_folder(outputs, dir, &staged, &err) != SK_OK) {
+        sk_output_set_abort(outputs);
+        return cli_fail_error(&err);
+    }
+    sk_skin *skin;
+    if ((status = make_skin(&desc, args, &skin))) {
+        sk_output_set_abort(outputs);
+        return status;
+    }
+    const sk_skin_desc *rd_desc = sk_skin_get_desc(skin);
     sk_result r = SK_OK;
     int level_count = rd_desc->level_count;
     if (furrow_level > level_count || id_level > level_count) {
         sk_skin_destroy(skin);
+        sk_output_set_abort(outputs);
         return cli_fail(CLI_EXIT_USAGE,
                         "--furrow-level and --id-level must be at most %d (the "
                         "skin's levels)",
                         level_count);
-    }
-    /* All maps are held in memory until written: refuse sizes beyond 8 GiB (split the map
-       with --region instead). */
-    double bytes = (double)region[2] * region[3] * sizeof(float) * (edges ? 14 : 11);
-    if (bytes > 8.0 * (1 << 30)) {
-        sk_skin_destroy(skin);
-        return cli_fail(CLI_EXIT_USAGE,
-                        "a %d x %d region needs %.1f GiB for its maps; at most 8 GiB (render "
-                        "parts with --region)",
-                        region[2], region[3], bytes / (1 << 30));
     }
     map_images m;
     memset(&m, 0, sizeof m);
@@ -335,7 +364,6 @@ static int run_maps(const cli_command *command, const cli_args *args)
     if (r == SK_OK) r = sk_image_create(&m.cells, rw, rh, 3, &err);
     if (r == SK_OK) r = sk_image_create(&m.preview, rw, rh, 3, &err);
     if (r == SK_OK && edges) r = sk_image_create(&m.edges, rw, rh, 3, &err);
-    if (r == SK_OK) r = sk_make_dirs(dir, &err);
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "skin maps", !args->common.quiet);
     for (int y0 = 0; r == SK_OK && y0 < rh; y0 += SKIN_BAND_ROWS) {
@@ -367,7 +395,10 @@ static int run_maps(const cli_command *command, const cli_args *args)
     /* furrow.png spans half the furrow level's spacing: the whole ridge, centre to edge */
     float furrow_max = 0.5f * rd_desc->levels[furrow_level - 1].spacing_mm;
     if (r == SK_OK)
-        r = write_maps(skin, &m, dir, w, h, directx, edges, (int)furrow_level, furrow_max, &err);
+        r = write_maps(skin, &m, staged, w, h, directx, edges, (int)furrow_level, furrow_max,
+                       &err);
+    if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
+    else sk_output_set_abort(outputs);
     if (r == SK_OK && !args->common.quiet) {
         float lo, hi;
         double tw, th;

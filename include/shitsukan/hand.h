@@ -331,6 +331,8 @@ sk_result sk_hand_fits_write_json(const sk_hand_fit *fits, int count, sk_hand_we
 
 /* Joint-angle samples from CSV: a header of DOF names, one sample per line, degrees
  * (translations mm). Errors name the line and the column. */
+/* Largest magnitude of a sample value in the file (degrees or mm). */
+#define SK_HAND_SAMPLE_MAX 1e6
 typedef struct sk_hand_samples {
     int count;
     bool present[SK_HAND_DOF_COUNT];

@@ -359,6 +359,12 @@ sk_result sk_render_scene_desc_load(const char *path, sk_render_scene_desc *desc
 
 typedef struct sk_render_scene sk_render_scene;
 
+/* About how many bytes sk_render_scene_create and the render will need (an upper bound
+ * from the objects' tessellation, mesh file sizes and the image size), for refusing a
+ * scene before building it. *largest_object (if not NULL) is the object that needs the
+ * most, to name in a message. Skin and wood materials are not counted. */
+double sk_render_scene_desc_memory(const sk_render_scene_desc *desc, int *largest_object);
+
 /* Builds the scene: meshes (files read, primitives tessellated, tangents computed),
  * textures, materials' solid textures and the Embree acceleration structure. Errors name
  * the key path (e.g. "objects[1].file = \"arm.obj\": ..."). */

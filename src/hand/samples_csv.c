@@ -112,6 +112,13 @@ sk_result sk_hand_samples_parse(const char *text, size_t length, const char *nam
                             field);
                 break;
             }
+            /* angles in degrees, translations in mm: anything larger is not a measurement */
+            if (col_dof[c] >= 0 && fabs(v) > SK_HAND_SAMPLE_MAX) {
+                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                            "line %d, column %d (%s): %g is out of range [%g, %g]", line_no, c + 1,
+                            sk_hand_dof(col_dof[c])->name, v, -SK_HAND_SAMPLE_MAX, SK_HAND_SAMPLE_MAX);
+                break;
+            }
             if (col_dof[c] >= 0)
                 out->column[col_dof[c]][out->count] = sk_hand__from_file_units(col_dof[c], v);
             c++;

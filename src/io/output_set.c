@@ -68,11 +68,15 @@ static bool already_reserved(const sk_output_set *set, const char *final)
     return false;
 }
 
-/* A fresh hidden name beside `final` that nothing uses yet. */
+/* A fresh hidden name beside `final` that nothing uses yet; it keeps the final
+   extension (".x.png.1a2b3c4d.part.png"), since writers pick the format by it. */
 static char *staged_name(sk_output_set *set, const char *final)
 {
+    char suffix[32];
+    const char *ext = sk__path_extension(final);
+    snprintf(suffix, sizeof suffix, ".part%.16s", ext);
     for (int attempt = 0; attempt < 16; attempt++) {
-        char *name = sk__sibling_name(final, ".part", sk_mix64(set->salt++));
+        char *name = sk__sibling_name(final, suffix, sk_mix64(set->salt++));
         struct stat st;
         if (!name || lstat(name, &st) != 0) return name;
         free(name);
