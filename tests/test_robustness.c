@@ -3,15 +3,23 @@
  * never replace a device, FIFO or symlink, output sets that are all-or-nothing, and the
  * readers' refusal of values beyond their types. Each test names the defect it guards. */
 #define _POSIX_C_SOURCE 200809L
+#include <fcntl.h>
 #include <float.h>
 #include <math.h>
+#include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "test_support.h"
 
 #include "shitsukan/hand.h"
+#include "shitsukan/image.h"
 #include "shitsukan/io.h"
+#include "shitsukan/mesh.h"
 #include "shitsukan/noise_map.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/wood.h"
@@ -170,6 +178,348 @@ static void test_documented_endpoints_are_accepted(void **state)
     }
 }
 
+/* ------------------------------------------------------------ atomic files */
+
+/* A fresh empty folder for one test. */
+static const char *fresh_folder(const char *name)
+{
+    const char *path = sk_test_path(name);
+    char command[2048];
+    snprintf(command, sizeof command, "rm -rf '%s' && mkdir -p '%s'", path, path);
+    assert_int_equal(system(command), 0);
+    return path;
+}
+
+static sk_result write_text(const char *path, const char *text, sk_error *err)
+{
+    sk_atomic_file f;
+    sk_result r = sk_atomic_file_open(&f, path, err);
+    if (r != SK_OK) return r;
+    fputs(text, f.fp);
+    return sk_atomic_file_commit(&f, err);
+}
+
+static void read_text(const char *path, char *out, size_t size)
+{
+    FILE *fp = fopen(path, "rb");
+    assert_non_null(fp);
+    size_t n = fread(out, 1, size - 1, fp);
+    out[n] = '\0';
+    fclose(fp);
+}
+
+/* -o onto a symlink replaced the link with a regular file. */
+static void test_atomic_file_writes_through_symlinks(void **state)
+{
+    (void)state;
+    const char *dir = fresh_folder("robust/link");
+    char target_dir[1024], target[1024], link[1024], chain[1024], buf[64];
+    snprintf(target_dir, sizeof target_dir, "%s/real", dir);
+    assert_int_equal(mkdir(target_dir, 0777), 0);
+    snprintf(target, sizeof target, "%s/real/file.txt", dir);
+    snprintf(link, sizeof link, "%s/link.txt", dir);
+    snprintf(chain, sizeof chain, "%s/chain.txt", dir);
+    assert_int_equal(symlink("real/file.txt", link), 0); /* relative, dangling at first */
+    assert_int_equal(symlink("link.txt", chain), 0);
+    sk_error err = {0};
+    assert_int_equal(write_text(link, "one", &err), SK_OK);
+    struct stat st;
+    assert_int_equal(lstat(link, &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+    read_text(target, buf, sizeof buf);
+    assert_string_equal(buf, "one");
+    assert_int_equal(write_text(chain, "two", &err), SK_OK);
+    assert_int_equal(lstat(chain, &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+    read_text(target, buf, sizeof buf);
+    assert_string_equal(buf, "two");
+    /* the temporary file went beside the target, and is gone */
+    assert_int_equal(sk_test_count_files_containing(target_dir, ".tmp"), 0);
+    assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
+    /* a loop is refused */
+    char loop_a[1024], loop_b[1024];
+    snprintf(loop_a, sizeof loop_a, "%s/loop_a", dir);
+    snprintf(loop_b, sizeof loop_b, "%s/loop_b", dir);
+    assert_int_equal(symlink("loop_b", loop_a), 0);
+    assert_int_equal(symlink("loop_a", loop_b), 0);
+    assert_int_equal(write_text(loop_a, "x", &err), SK_ERROR_INVALID_ARGUMENT);
+}
+
+/* -o /dev/null turned /dev/null into a PNG (as root); a FIFO was replaced likewise. */
+static void test_atomic_file_writes_devices_and_fifos_in_place(void **state)
+{
+    (void)state;
+    sk_error err = {0};
+    struct stat st;
+    assert_int_equal(write_text("/dev/null", "into the void", &err), SK_OK);
+    assert_int_equal(stat("/dev/null", &st), 0);
+    assert_true(S_ISCHR(st.st_mode));
+    /* a full device reports its reason */
+    if (stat("/dev/full", &st) == 0 && S_ISCHR(st.st_mode)) {
+        sk_atomic_file f;
+        assert_int_equal(sk_atomic_file_open(&f, "/dev/full", &err), SK_OK);
+        for (int i = 0; i < 1000; i++) fputs("0123456789abcdef0123456789abcdef", f.fp);
+        assert_int_equal(sk_atomic_file_commit(&f, &err), SK_ERROR_IO);
+        assert_non_null(strstr(err.message, "No space left on device"));
+    }
+    const char *dir = fresh_folder("robust/fifo");
+    char fifo[1024];
+    snprintf(fifo, sizeof fifo, "%s/pipe", dir);
+    assert_int_equal(mkfifo(fifo, 0666), 0);
+    /* a reader drains the FIFO (open blocks until both ends are there) */
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        char buf[256];
+        int fd = open(fifo, O_RDONLY);
+        ssize_t n = fd >= 0 ? read(fd, buf, sizeof buf) : -1;
+        _exit(n == 5 && memcmp(buf, "piped", 5) == 0 ? 0 : 1);
+    }
+    assert_int_equal(write_text(fifo, "piped", &err), SK_OK);
+    int status;
+    assert_int_equal(waitpid(child, &status, 0), child);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    assert_int_equal(lstat(fifo, &st), 0);
+    assert_true(S_ISFIFO(st.st_mode));
+    assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
+    /* a folder is refused, not replaced */
+    assert_int_equal(write_text(dir, "x", &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "names a folder"));
+    assert_int_equal(stat(dir, &st), 0);
+    assert_true(S_ISDIR(st.st_mode));
+}
+
+/* An output name of about 241 characters failed: the temporary name was longer than
+ * NAME_MAX. */
+static void test_atomic_file_takes_the_longest_names(void **state)
+{
+    (void)state;
+    const char *dir = fresh_folder("robust/long");
+    char name[256], path[2048];
+    for (int len = 240; len <= 255; len += 5) {
+        memset(name, 'n', (size_t)len);
+        memcpy(name + len - 4, ".txt", 4);
+        name[len] = '\0';
+        snprintf(path, sizeof path, "%s/%s", dir, name);
+        sk_error err = {0};
+        if (write_text(path, "long", &err) != SK_OK) fail_msg("%d characters: %s", len, err.message);
+        assert_true(sk_test_file_exists(path));
+        /* the same name in an output set */
+        sk_output_set *set = NULL;
+        const char *staged;
+        assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+        assert_int_equal(sk_output_set_file(set, path, &staged, &err), SK_OK);
+        assert_int_equal(write_text(staged, "again", &err), SK_OK);
+        assert_int_equal(sk_output_set_commit(set, &err), SK_OK);
+    }
+    assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
+    assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+}
+
+/* SIGTERM or SIGINT while writing left ".NAME.XXXXXXXX.tmp" behind. */
+static void test_signal_removes_unfinished_outputs(void **state)
+{
+    (void)state;
+    static const int signals[] = {SIGTERM, SIGINT};
+    for (int k = 0; k < 2; k++) {
+        const char *dir = fresh_folder(k == 0 ? "robust/signal-term" : "robust/signal-int");
+        int ready[2];
+        assert_int_equal(pipe(ready), 0);
+        pid_t child = fork();
+        assert_true(child >= 0);
+        if (child == 0) {
+            char path[1024], folder[1024];
+            snprintf(path, sizeof path, "%s/file.txt", dir);
+            snprintf(folder, sizeof folder, "%s/frames", dir);
+            sk_atomic_file f;
+            sk_output_set *set = NULL;
+            const char *staged_file, *staged_folder;
+            if (sk_atomic_file_open(&f, path, NULL) != SK_OK) _exit(3);
+            if (sk_output_set_create(&set, NULL) != SK_OK ||
+                sk_output_set_file(set, path, &staged_file, NULL) != SK_OK ||
+                sk_output_set_folder(set, folder, &staged_folder, NULL) != SK_OK)
+                _exit(4);
+            char inside[1024];
+            snprintf(inside, sizeof inside, "%s/frame_0001.txt", staged_folder);
+            if (write_text(staged_file, "staged", NULL) != SK_OK ||
+                write_text(inside, "frame", NULL) != SK_OK)
+                _exit(5);
+            fputs("partial", f.fp);
+            fflush(f.fp);
+            if (write(ready[1], "r", 1) != 1) _exit(6);
+            for (;;) pause();
+        }
+        close(ready[1]);
+        char c;
+        assert_int_equal(read(ready[0], &c, 1), 1);
+        close(ready[0]);
+        /* the unfinished outputs are there ... */
+        assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 1);
+        assert_int_equal(sk_test_count_files_containing(dir, ".part"), 2);
+        assert_int_equal(kill(child, signals[k]), 0);
+        int status;
+        assert_int_equal(waitpid(child, &status, 0), child);
+        /* ... the process ends by the signal, and they are gone */
+        assert_true(WIFSIGNALED(status) && WTERMSIG(status) == signals[k]);
+        assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
+        assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+        assert_int_equal(sk_test_count_files_containing(dir, "file.txt"), 0);
+        assert_int_equal(sk_test_count_files_containing(dir, "frames"), 0);
+    }
+}
+
+/* ------------------------------------------------------------ output sets */
+
+/* Multi-file outputs were not all-or-nothing: when a later file failed, the earlier ones
+ * stayed. */
+static void test_output_set_is_all_or_nothing(void **state)
+{
+    (void)state;
+    const char *dir = fresh_folder("robust/set");
+    char a[1024], b[1024], frames[1024], nested[1024], buf[64];
+    snprintf(a, sizeof a, "%s/a.png", dir);
+    snprintf(b, sizeof b, "%s/b.txt", dir);
+    snprintf(frames, sizeof frames, "%s/frames", dir);
+    snprintf(nested, sizeof nested, "%s/new/deeper/frames", dir);
+    sk_error err = {0};
+
+    /* commit: everything appears, under the final names, with the staged extension kept */
+    sk_output_set *set = NULL;
+    const char *sa, *sb, *sf, *sn;
+    assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, a, &sa, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, b, &sb, &err), SK_OK);
+    assert_int_equal(sk_output_set_folder(set, frames, &sf, &err), SK_OK);
+    assert_int_equal(sk_output_set_folder(set, nested, &sn, &err), SK_OK);
+    assert_non_null(strstr(sa, ".png"));
+    assert_string_equal(sa + strlen(sa) - 4, ".png");
+    /* the same output twice is refused */
+    const char *again;
+    assert_int_equal(sk_output_set_file(set, a, &again, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(write_text(sa, "A", &err), SK_OK);
+    assert_int_equal(write_text(sb, "B", &err), SK_OK);
+    char frame[1024];
+    snprintf(frame, sizeof frame, "%s/frame_1.txt", sf);
+    assert_int_equal(write_text(frame, "F", &err), SK_OK);
+    snprintf(frame, sizeof frame, "%s/frame_1.txt", sn);
+    assert_int_equal(write_text(frame, "N", &err), SK_OK);
+    assert_false(sk_test_file_exists(a));
+    assert_int_equal(sk_output_set_commit(set, &err), SK_OK);
+    read_text(a, buf, sizeof buf);
+    assert_string_equal(buf, "A");
+    snprintf(frame, sizeof frame, "%s/frame_1.txt", frames);
+    read_text(frame, buf, sizeof buf);
+    assert_string_equal(buf, "F");
+    snprintf(frame, sizeof frame, "%s/frame_1.txt", nested);
+    read_text(frame, buf, sizeof buf);
+    assert_string_equal(buf, "N");
+    assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+
+    /* abort after a partial run: nothing new stays, earlier outputs are untouched, the
+       folders the set created are gone */
+    char c[1024], more[1024];
+    snprintf(c, sizeof c, "%s/c.txt", dir);
+    snprintf(more, sizeof more, "%s/made/by/set", dir);
+    assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, a, &sa, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, c, &sb, &err), SK_OK);
+    assert_int_equal(sk_output_set_folder(set, frames, &sf, &err), SK_OK);
+    assert_int_equal(sk_output_set_folder(set, more, &sn, &err), SK_OK);
+    assert_int_equal(write_text(sa, "A2", &err), SK_OK);
+    snprintf(frame, sizeof frame, "%s/frame_2.txt", sf);
+    assert_int_equal(write_text(frame, "F2", &err), SK_OK);
+    sk_output_set_abort(set);
+    read_text(a, buf, sizeof buf);
+    assert_string_equal(buf, "A");
+    assert_false(sk_test_file_exists(c));
+    snprintf(frame, sizeof frame, "%s/frame_2.txt", frames);
+    assert_false(sk_test_file_exists(frame));
+    snprintf(more, sizeof more, "%s/made", dir);
+    assert_false(sk_test_file_exists(more));
+    assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+
+    /* a reserved file that was never written fails the commit, which removes the rest */
+    assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, c, &sb, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, b, &sa, &err), SK_OK);
+    assert_int_equal(write_text(sb, "C", &err), SK_OK);
+    assert_int_equal(sk_output_set_commit(set, &err), SK_ERROR_IO);
+    assert_non_null(strstr(err.message, "was not written"));
+    assert_false(sk_test_file_exists(c));
+    read_text(b, buf, sizeof buf);
+    assert_string_equal(buf, "B");
+
+    /* bad outputs are refused when reserved, before any work */
+    char missing[1024];
+    snprintf(missing, sizeof missing, "%s/no-such-folder/x.png", dir);
+    assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, missing, &sa, &err), SK_ERROR_IO);
+    assert_int_equal(sk_output_set_file(set, frames, &sa, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_output_set_folder(set, a, &sa, &err), SK_ERROR_INVALID_ARGUMENT);
+    sk_output_set_abort(set);
+}
+
+/* ------------------------------------------------------------ readers */
+
+/* PLY "property double" values above FLT_MAX loaded as inf (ASCII and binary). */
+static void test_ply_refuses_doubles_beyond_float(void **state)
+{
+    (void)state;
+    const char *dir = fresh_folder("robust/ply");
+    char path[1024];
+    snprintf(path, sizeof path, "%s/big.ply", dir);
+    const char *ascii = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                        "property double y\nproperty double z\nelement face 1\n"
+                        "property list uchar int vertex_indices\nend_header\n"
+                        "0 0 0\n1 0 1e39\n0 1 0\n3 0 1 2\n";
+    sk_test_write_file(path, ascii, strlen(ascii));
+    sk_mesh mesh;
+    sk_error err = {0};
+    assert_int_equal(sk_mesh_read(&mesh, path, NULL, &err), SK_ERROR_PARSE);
+    assert_non_null(strstr(err.message, "out of float range"));
+    /* the same in binary */
+    const char *header = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                         "property double x\nproperty double y\nproperty double z\n"
+                         "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    unsigned char data[1024];
+    size_t n = strlen(header);
+    memcpy(data, header, n);
+    double v[9] = {0, 0, 0, 1, 0, -1e300, 0, 1, 0};
+    memcpy(data + n, v, sizeof v); /* the test machines are little-endian */
+    n += sizeof v;
+    data[n++] = 3;
+    int idx[3] = {0, 1, 2};
+    memcpy(data + n, idx, sizeof idx);
+    n += sizeof idx;
+    sk_test_write_file(path, data, n);
+    assert_int_equal(sk_mesh_read(&mesh, path, NULL, &err), SK_ERROR_PARSE);
+    assert_non_null(strstr(err.message, "out of float range"));
+    /* FLT_MAX itself is a float */
+    v[5] = (double)FLT_MAX;
+    memcpy(data + strlen(header), v, sizeof v);
+    sk_test_write_file(path, data, n);
+    assert_int_equal(sk_mesh_read(&mesh, path, NULL, &err), SK_OK);
+    sk_mesh_free(&mesh);
+}
+
+/* A folder given as an input file exited 1 (runtime) instead of 2 (bad input). */
+static void test_folder_as_input_is_bad_input(void **state)
+{
+    (void)state;
+    const char *dir = fresh_folder("robust/input.png");
+    sk_error err = {0};
+    char *data;
+    size_t size;
+    assert_int_equal(sk_read_file(dir, 0, &data, &size, &err), SK_ERROR_INVALID_ARGUMENT);
+    sk_image image = {0};
+    assert_int_equal(sk_image_read_png(&image, dir, NULL, NULL, NULL, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_image_read_exr(&image, dir, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    sk_mesh mesh;
+    assert_int_equal(sk_mesh_read_ply(&mesh, dir, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_mesh_read_obj(&mesh, dir, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -177,6 +527,13 @@ int main(void)
         cmocka_unit_test(test_json_refuses_inexact_integers),
         cmocka_unit_test(test_set_parses_the_whole_value),
         cmocka_unit_test(test_documented_endpoints_are_accepted),
+        cmocka_unit_test(test_atomic_file_writes_through_symlinks),
+        cmocka_unit_test(test_atomic_file_writes_devices_and_fifos_in_place),
+        cmocka_unit_test(test_atomic_file_takes_the_longest_names),
+        cmocka_unit_test(test_signal_removes_unfinished_outputs),
+        cmocka_unit_test(test_output_set_is_all_or_nothing),
+        cmocka_unit_test(test_ply_refuses_doubles_beyond_float),
+        cmocka_unit_test(test_folder_as_input_is_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -22,6 +22,8 @@ typedef struct entry {
     char *staged; /* where it is written until commit (== final for a stream) */
     int slot;     /* signal cleanup slot of `staged`, or -1 */
     bool placed;  /* commit has moved it into place */
+    char **moved; /* folder: the files commit moved into an existing final folder */
+    int moved_count;
 } entry;
 
 struct sk_output_set {
@@ -217,7 +219,7 @@ static void remove_folder(const char *path)
 }
 
 /* Moves the files of staged folder e into its final folder (or renames the folder when
-   the final one does not exist yet). Moved names are listed in `moved` for undoing. */
+   the final one does not exist yet). Moved names are listed in e->moved for undoing. */
 static sk_result place_folder(sk_output_set *set, entry *e, sk_error *err)
 {
     struct stat st;
@@ -244,8 +246,21 @@ static sk_result place_folder(sk_output_set *set, entry *e, sk_error *err)
         char from[4096], to[4096];
         snprintf(from, sizeof from, "%s/%s", e->staged, d->d_name);
         snprintf(to, sizeof to, "%s/%s", e->final, d->d_name);
-        if (rename(from, to) != 0)
+        char **grown = realloc(e->moved, sizeof *grown * (size_t)(e->moved_count + 1));
+        char *copy = strdup(to);
+        if (!grown || !copy) {
+            if (grown) e->moved = grown;
+            free(copy);
+            r = out_of_memory(err);
+            break;
+        }
+        e->moved = grown;
+        if (rename(from, to) != 0) {
+            free(copy);
             r = sk_fail(err, SK_ERROR_IO, "%s: cannot move into place (%s)", to, strerror(errno));
+        } else {
+            e->moved[e->moved_count++] = copy;
+        }
     }
     closedir(dir);
     if (r == SK_OK) rmdir(e->staged);
@@ -258,6 +273,8 @@ static void destroy(sk_output_set *set)
         sk__cleanup_unregister(set->entries[i].slot);
         free(set->entries[i].final);
         free(set->entries[i].staged);
+        for (int k = 0; k < set->entries[i].moved_count; k++) free(set->entries[i].moved[k]);
+        free(set->entries[i].moved);
     }
     for (int i = 0; i < set->created_count; i++) free(set->created[i]);
     free(set->entries);
@@ -275,6 +292,7 @@ void sk_output_set_abort(sk_output_set *set)
             if (e->placed) unlink(e->final);
         } else if (e->kind == ENTRY_FOLDER) {
             remove_folder(e->staged);
+            for (int k = 0; k < e->moved_count; k++) unlink(e->moved[k]);
         }
     }
     /* folders the set created, deepest first (only if empty: never another's files) */
