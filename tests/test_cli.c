@@ -1,8 +1,11 @@
 /* Tests of the `shitsukan` command's framework: help, version, exit codes and one-line
  * errors for bad usage. Module commands have their own tests in their modules' files. */
+#define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "test_support.h"
 
@@ -143,6 +146,305 @@ static void test_hand_inputs_are_checked(void **state)
     assert_non_null(strstr(g_run.err, "already has --pin"));
 }
 
+/* ------------------------------------------------------------ bad input sweep */
+
+/* One bad invocation: the arguments (OUT is replaced by a fresh output path, DIR by a
+ * fresh folder holding a file "file", a folder "folder.png" and small inputs), and two
+ * texts the one-line message must hold (the option or key, and its accepted range). */
+typedef struct bad_case {
+    const char *args;
+    const char *names, *range;
+} bad_case;
+
+static const bad_case k_bad_cases[] = {
+    /* presets */
+    {"presets no-such-module", "no-such-module", "skin"},
+    /* noise */
+    {"noise --size 0 -o OUT.png", "--size", "[1, 65536]"},
+    {"noise --size 70000 -o OUT.png", "--size", "[1, 65536]"},
+    {"noise --size 8x -o OUT.png", "--size", "WxH"},
+    {"noise --bits 12 -o OUT.png", "--bits", "8 or 16"},
+    {"noise --bits x -o OUT.png", "--bits", "[8, 16]"},
+    {"noise --region 0,0,9,9 --size 8 -o OUT.png", "--region", "x + w <= 8"},
+    {"noise --seed -1 -o OUT.png", "--seed", "[0, 2^53]"},
+    {"noise --seed 9007199254740993 -o OUT.png", "--seed", "[0, 2^53]"},
+    {"noise --threads 5000 -o OUT.png", "--threads", "[0, 1024]"},
+    {"noise --set cells=0 -o OUT.png", "cells", "out of range"},
+    {"noise --set cells=5junk -o OUT.png", "cells", "expected a number"},
+    {"noise --set seamless=truex -o OUT.png", "seamless", "true or false"},
+    {"noise --set nosuchkey=1 -o OUT.png", "nosuchkey", "unknown key"},
+    {"noise --preset no-such-preset -o OUT.png", "--preset", "shitsukan presets noise"},
+    {"noise --size 8 -o OUT.jpg", "OUT.jpg", ".png, .exr"},
+    {"noise --max-memory 1K -o OUT.png", "--max-memory", "[1M, 1P]"},
+    {"noise --size 20000 --max-memory 512M -o OUT.png", "--size", "--max-memory"},
+    {"noise --size 8 -o DIR/folder.png", "folder.png", "folder"},
+    /* sheet */
+    {"sheet --columns -1 DIR/a.png -o OUT.png", "--columns", "[0, 4096]"},
+    {"sheet --tile-size 20000 DIR/a.png -o OUT.png", "--tile-size", "[0, 16384]"},
+    {"sheet --tile-size 16384 DIR/a.png DIR/a.png -o OUT.png", "--tile-size", "--max-memory"},
+    {"sheet --text-scale 0 DIR/a.png -o OUT.png", "--text-scale", "[1, 64]"},
+    {"sheet --border 65 DIR/a.png -o OUT.png", "--border", "[0, 64]"},
+    {"sheet --repeat 0x2 DIR/a.png -o OUT.png", "--repeat", "[1, 64]"},
+    {"sheet --repeat 2x2 DIR/a.png DIR/a.png -o OUT.png", "--repeat", "exactly one image"},
+    {"sheet --label a --label b DIR/a.png -o OUT.png", "labels", "1 images"},
+    {"sheet DIR/no-such.png -o OUT.png", "no-such.png", "cannot open"},
+    {"sheet DIR/folder.png -o OUT.png", "folder.png", "not a regular file"},
+    {"sheet DIR/file -o OUT.png", "file", "not a PNG"},
+    {"sheet DIR/a.png -o OUT.gif", "OUT.gif", ".png, .exr"},
+    /* hand pose */
+    {"hand pose --pin L.MCP.flex -o OUT.json", "--pin", "DOF=value"},
+    {"hand pose --pin X.MCP.flex=1 -o OUT.json", "--pin", "unknown DOF"},
+    {"hand pose --torque L.MCP.flex=nan -o OUT.json", "--torque", "[-1000000, 1000000]"},
+    {"hand pose --constraints no-such -o OUT.json", "--constraints", "natural, yasumuro-table-3.2"},
+    {"hand pose --samples DIR/s.csv -o OUT.json", "--samples", "--pairs"},
+    {"hand pose --samples DIR/s.csv --pairs L.MCP.flex:R.MCP.flex --lut-resolution 2 -o OUT.json",
+     "--lut-resolution", "[8, 1024]"},
+    {"hand pose --samples DIR/s.csv --pairs L.MCP.flex:R.MCP.flex --lut-weight 0 -o OUT.json",
+     "--lut-weight", "[1e-06, 1e+06]"},
+    {"hand pose --samples DIR/s.csv --pairs L.MCP.flex:R.MCP.flex --lut-interp cubic -o OUT.json",
+     "--lut-interp", "hermite or bilinear"},
+    {"hand pose --side up -o OUT.json", "--side", "right or left"},
+    {"hand pose --hand-length 10 -o OUT.json", "--hand-length", "[60, 400]"},
+    {"hand pose --hand-breadth 1000 -o OUT.json", "--hand-breadth", "[30, 200]"},
+    {"hand pose --anatomy DIR/no-such.json -o OUT.json", "no-such.json", "cannot open"},
+    {"hand pose --anatomy DIR/folder.png -o OUT.json", "folder.png", "not a regular file"},
+    {"hand pose --png OUT.png --views top", "--views", "dorsal, palmar, radial, ulnar"},
+    {"hand pose --png OUT.png --png-size 10", "--png-size", "at least 64"},
+    {"hand pose --png OUT.jpg", "--png", ".png"},
+    {"hand pose --positions OUT.txt", "--positions", ".csv, .json"},
+    {"hand pose --views dorsal -o OUT.json", "--views", "--png"},
+    {"hand pose --bvh OUT.json --positions OUT.json", "OUT.json", "given twice"},
+    /* hand animate */
+    {"hand animate DIR/no-such.json --bvh OUT.bvh", "no-such.json", "cannot open"},
+    {"hand animate DIR/anim.json", "nothing to write", "--bvh"},
+    {"hand animate DIR/anim.json --bvh OUT.bvh --side up", "--side", "right or left"},
+    {"hand animate DIR/anim.json --bvh OUT.bvh --hand-length 1", "--hand-length", "[60, 400]"},
+    {"hand animate DIR/anim.json --bvh OUT.bvh --constraints nope", "--constraints", "natural"},
+    {"hand animate DIR/anim.json --frames-dir OUT --png-size 8", "--png-size", "at least 64"},
+    {"hand animate DIR/anim.json --frames-dir DIR/file", "file", "not a folder"},
+    {"hand animate DIR/anim.json --plot OUT.jpg", "--plot", ".png"},
+    {"hand animate DIR/anim.json --plot OUT.png --plot-size 10", "--plot-size", "at least 64"},
+    {"hand animate DIR/anim.json --plot OUT.png --plot-dofs X.Y", "--plot-dofs", "unknown DOF"},
+    {"hand animate DIR/long-anim.json --bvh OUT.bvh --max-memory 1M", "10001 frames", "--max-memory"},
+    {"hand animate DIR/garbage.json --bvh OUT.bvh", "garbage.json", "unexpected text"},
+    /* hand calibrate */
+    {"hand calibrate DIR/s.csv -o OUT.json", "--pairs", "required"},
+    {"hand calibrate DIR/s.csv --pairs L.MCP.flex -o OUT.json", "--pairs", "DOF:DOF"},
+    {"hand calibrate DIR/s.csv --pairs L.MCP.flex:R.MCP.flex --weights x -o OUT.json", "--weights",
+     "thesis or inverse-variance"},
+    {"hand calibrate DIR/huge.csv --pairs L.MCP.flex:R.MCP.flex -o OUT.json", "L.MCP.flex",
+     "[-1e+06, 1e+06]"},
+    {"hand calibrate DIR/folder.png --pairs L.MCP.flex:R.MCP.flex -o OUT.json", "folder.png",
+     "not a regular file"},
+    /* skin */
+    {"skin --size 0 -o OUT.png", "--size", "[1, 65536]"},
+    {"skin --mm-per-px 0 -o OUT.png", "--mm-per-px", "[1e-06, 100]"},
+    {"skin --size 8 --region 0,0,8,9 -o OUT.png", "--region", "y + h <= 8"},
+    {"skin --samples 9 -o OUT.png", "--samples", "[1, 8]"},
+    {"skin --set levels[0].spacing_mm=-1 -o OUT.png", "levels[0].spacing_mm", "out of range"},
+    {"skin --set size_mm=[300,300] --size 16 -o OUT.png", "size_mm", "memory cap"},
+    {"skin -o OUT.jpg", "OUT.jpg", ".png"},
+    /* skin maps */
+    {"skin maps --size 70000 -o OUT", "--size", "[1, 65536]"},
+    {"skin maps --size 8 --furrow-level 9 -o OUT", "--furrow-level", "[1, 6]"},
+    {"skin maps --size 8 --id-level 0 -o OUT", "--id-level", "[1, 6]"},
+    {"skin maps --size 8 --furrow-level 3 --preset fig13a -o OUT", "--furrow-level", "at most 1"},
+    {"skin maps --size 8 --samples 0 -o OUT", "--samples", "[1, 8]"},
+    {"skin maps --size 8 -o DIR/file", "file", "not a folder"},
+    {"skin maps --size 30000 -o OUT", "--size", "--max-memory"},
+    /* wood cut */
+    {"wood cut --plane diagonal -o OUT.png", "--plane", "end, flat or quarter"},
+    {"wood cut --distance -1 -o OUT.png", "--distance", "[0, 10000]"},
+    {"wood cut --height 1e9 -o OUT.png", "--height", "[-100000, 100000]"},
+    {"wood cut --width-mm 0 -o OUT.png", "--width-mm", "[0.01, 100000]"},
+    {"wood cut --tilt 100 -o OUT.png", "--tilt", "[-90, 90]"},
+    {"wood cut --view-deg 90 -o OUT.png", "--view-deg", "[-89, 89]"},
+    {"wood cut --light-deg 0x10 -o OUT.png", "--light-deg", "[-89, 89]"},
+    {"wood cut --light-azimuth 200 -o OUT.png", "--light-azimuth", "[-180, 180]"},
+    {"wood cut --samples 9 -o OUT.png", "--samples", "[1, 8]"},
+    {"wood cut --point 1,2 --normal 0,0,1 --axis 1,0,0 -o OUT.png", "--point", "3 comma-separated"},
+    {"wood cut --point 1,2,3 -o OUT.png", "--point", "--normal and --axis"},
+    {"wood cut --size 8 --region 8,0,1,1 -o OUT.png", "--region", "x + w <= 8"},
+    {"wood cut --size 20000 --maps OUT -o DIR/cut.png", "--size", "--max-memory"},
+    {"wood cut --size 8 --maps DIR/file -o OUT.png", "file", "not a folder"},
+    {"wood cut --set rings.width_mm=99 -o OUT.png", "rings.width_mm", "out of range"},
+    {"wood cut -o OUT.bmp", "OUT.bmp", ".png, .exr"},
+    /* wood sweep */
+    {"wood sweep --frames 1 -o OUT", "--frames", "[2, 10000]"},
+    {"wood sweep --from-deg 100 -o OUT", "--from-deg", "[-89, 89]"},
+    {"wood sweep --to-deg -100 -o OUT", "--to-deg", "[-89, 89]"},
+    {"wood sweep --size 8 -o DIR/file", "file", "not a folder"},
+    {"wood sweep --size 40000 -o OUT", "--size", "--max-memory"},
+    /* render */
+    {"render DIR/scene.json --size 0x0 -o OUT.png", "--size", "[1, 16384]"},
+    {"render DIR/scene.json --spp 0 -o OUT.png", "--spp", "[1, 4096]"},
+    {"render DIR/scene.json --exposure 99 -o OUT.png", "--exposure", "[-30, 30]"},
+    {"render DIR/scene.json --exr OUT.png -o DIR/render.png", "--exr", ".exr"},
+    {"render DIR/scene.json -o OUT.jpg", "OUT.jpg", ".png, .exr"},
+    {"render DIR/no-such.json -o OUT.png", "no-such.json", "cannot open"},
+    {"render DIR/scene.json --set image.width=0 -o OUT.png", "image.width", "out of range"},
+    {"render DIR/scene.json --set objects[0].segments=4096 --set objects[0].rings=4096 "
+     "--max-memory 64M -o OUT.png",
+     "objects[0]", "--max-memory"},
+    {"render DIR/scene.json --set unit_mm=1e-7 -o OUT.png", "unit_mm", "[1e-06, 1e+09]"},
+};
+
+/* Small inputs of every kind the commands read. */
+static void make_inputs(const char *dir)
+{
+    char path[2048];
+    snprintf(path, sizeof path, "%s/file", dir);
+    sk_test_write_file(path, "not an image\n", 13);
+    snprintf(path, sizeof path, "mkdir -p '%s/folder.png'", dir);
+    assert_int_equal(system(path), 0);
+    snprintf(path, sizeof path, "%s/a.png", dir);
+    assert_int_equal(sk_test_cli(&g_run, "noise --size 8 -q -o '%s'", path), 0);
+    snprintf(path, sizeof path, "%s/s.csv", dir);
+    const char *csv = "L.MCP.flex,R.MCP.flex\n10,12\n20,25\n30,33\n40,41\n";
+    sk_test_write_file(path, csv, strlen(csv));
+    snprintf(path, sizeof path, "%s/huge.csv", dir);
+    const char *huge = "L.MCP.flex,R.MCP.flex\n1e308,12\n20,25\n30,1e308\n";
+    sk_test_write_file(path, huge, strlen(huge));
+    snprintf(path, sizeof path, "%s/anim.json", dir);
+    const char *anim = "{\"steps\": 2, \"keys\": [{\"pin\": {\"L.MCP.flex\": 0}}, "
+                       "{\"pin\": {\"L.MCP.flex\": 60}}]}";
+    sk_test_write_file(path, anim, strlen(anim));
+    snprintf(path, sizeof path, "%s/long-anim.json", dir);
+    const char *long_anim = "{\"steps\": 10000, \"keys\": [{\"pin\": {\"L.MCP.flex\": 0}}, "
+                            "{\"pin\": {\"L.MCP.flex\": 60}}]}";
+    sk_test_write_file(path, long_anim, strlen(long_anim));
+    snprintf(path, sizeof path, "%s/garbage.json", dir);
+    const char *garbage = "{\"keys\": [{\"pin\": {\"L.MCP.flex\": 0}}]} trailing";
+    sk_test_write_file(path, garbage, strlen(garbage));
+    snprintf(path, sizeof path, "%s/scene.json", dir);
+    const char *scene = "{\"image\": {\"width\": 8, \"height\": 8, \"samples\": 1}, "
+                        "\"objects\": [{\"shape\": \"sphere\"}]}";
+    sk_test_write_file(path, scene, strlen(scene));
+}
+
+/* Replaces OUT and DIR in `text`. */
+static void expand(const char *text, const char *out, const char *dir, char *buf, size_t size)
+{
+    size_t used = 0;
+    for (const char *p = text; *p && used + 1 < size;) {
+        const char *with = NULL;
+        size_t skip = 0;
+        if (strncmp(p, "OUT", 3) == 0) with = out, skip = 3;
+        else if (strncmp(p, "DIR", 3) == 0) with = dir, skip = 3;
+        if (with) {
+            used += (size_t)snprintf(buf + used, size - used, "%s", with);
+            p += skip;
+        } else {
+            buf[used++] = *p++;
+        }
+    }
+    buf[used < size ? used : size - 1] = '\0';
+}
+
+/* Every command: a bad value of each kind of option exits 2 with one line naming the
+ * option or key and what it accepts, and writes nothing. */
+static void test_every_command_refuses_bad_input(void **state)
+{
+    (void)state;
+    const char *dir = fresh_path("bad-input");
+    char command[2048];
+    snprintf(command, sizeof command, "mkdir -p '%s'", dir);
+    assert_int_equal(system(command), 0);
+    make_inputs(dir);
+    char out[1024];
+    snprintf(out, sizeof out, "%s/out", dir);
+    int failures = 0;
+    for (size_t i = 0; i < sizeof k_bad_cases / sizeof k_bad_cases[0]; i++) {
+        const bad_case *c = &k_bad_cases[i];
+        char args[2048], names[1024], range[1024];
+        expand(c->args, out, dir, args, sizeof args);
+        expand(c->names, out, dir, names, sizeof names);
+        expand(c->range, out, dir, range, sizeof range);
+        sk_test_cli(&g_run, "%s", args);
+        bool ok = g_run.status == 2 && sk_test_count_lines(g_run.err) == 1 &&
+                  strncmp(g_run.err, "shitsukan: error: ", 18) == 0 && strstr(g_run.err, names) &&
+                  strstr(g_run.err, range);
+        /* nothing written: no output of any name, no temporary or staged file */
+        int leftovers = sk_test_count_files_containing(dir, "out") +
+                        sk_test_count_files_containing(dir, ".tmp") +
+                        sk_test_count_files_containing(dir, ".part") +
+                        sk_test_count_files_containing(dir, "cut.png") +
+                        sk_test_count_files_containing(dir, "render.png");
+        if (!ok || leftovers) {
+            print_error("case %zu '%s': status %d, %d leftover file(s), stderr: %s", i, args,
+                        g_run.status, leftovers, g_run.err);
+            failures++;
+            snprintf(command, sizeof command, "rm -rf '%s'/out* '%s'/.out* '%s'/cut.png '%s'/render.png",
+                     dir, dir, dir, dir);
+            assert_int_equal(system(command), 0);
+        }
+    }
+    assert_int_equal(failures, 0);
+}
+
+/* Multi-file outputs were not all-or-nothing: when a later file failed the earlier ones
+ * stayed; a full disk during "hand animate --positions" said only "write failed". */
+static void test_outputs_are_all_or_nothing(void **state)
+{
+    (void)state;
+    const char *dir = fresh_path("all-or-nothing");
+    char command[2048], path[1024], scene[1024];
+    snprintf(command, sizeof command, "mkdir -p '%s'", dir);
+    assert_int_equal(system(command), 0);
+    struct stat st;
+    bool have_full = stat("/dev/full", &st) == 0 && S_ISCHR(st.st_mode);
+    if (have_full) {
+        snprintf(scene, sizeof scene, "%s/scene.json", dir);
+        const char *text = "{\"image\": {\"width\": 8, \"height\": 8, \"samples\": 1}}";
+        sk_test_write_file(scene, text, strlen(text));
+        /* a link with the right extension onto the full device fails the second file */
+        char full[1024];
+        snprintf(full, sizeof full, "%s/full.exr", dir);
+        assert_int_equal(symlink("/dev/full", full), 0);
+        snprintf(path, sizeof path, "%s/first.png", dir);
+        sk_test_cli(&g_run, "render '%s' -q -o '%s' --exr '%s'", scene, path, full);
+        assert_one_line_error(&g_run, 1);
+        assert_non_null(strstr(g_run.err, "No space left on device"));
+        assert_false(sk_test_file_exists(path));
+
+        snprintf(scene, sizeof scene, "%s/anim.json", dir);
+        text = "{\"steps\": 3, \"keys\": [{\"pin\": {\"L.MCP.flex\": 0}}, "
+               "{\"pin\": {\"L.MCP.flex\": 60}}]}";
+        sk_test_write_file(scene, text, strlen(text));
+        snprintf(path, sizeof path, "%s/first.bvh", dir);
+        char frames[1024];
+        snprintf(frames, sizeof frames, "%s/frames", dir);
+        sk_test_cli(&g_run, "hand animate '%s' -q --bvh '%s' --frames-dir '%s' --angles /dev/full",
+                    scene, path, frames);
+        assert_one_line_error(&g_run, 1);
+        assert_non_null(strstr(g_run.err, "No space left on device"));
+        assert_false(sk_test_file_exists(path));
+        assert_false(sk_test_file_exists(frames));
+    }
+    assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+    assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
+
+    /* wood cut --maps: the picture and the maps appear together */
+    char maps[1024];
+    snprintf(path, sizeof path, "%s/cut.png", dir);
+    snprintf(maps, sizeof maps, "%s/new/maps", dir);
+    assert_int_equal(sk_test_cli(&g_run, "wood cut --size 16 -q --maps '%s' -o '%s'", maps, path), 0);
+    assert_true(sk_test_file_exists(path));
+    snprintf(path, sizeof path, "%s/new/maps/pores.png", dir);
+    assert_true(sk_test_file_exists(path));
+
+    /* -o /dev/null stays a device; -o through a link keeps the link */
+    assert_int_equal(sk_test_cli(&g_run, "noise --size 8 -q -o /dev/null"), 0);
+    assert_int_equal(stat("/dev/null", &st), 0);
+    assert_true(S_ISCHR(st.st_mode));
+    char link[1024];
+    snprintf(link, sizeof link, "%s/link.png", dir);
+    assert_int_equal(symlink("cut.png", link), 0);
+    assert_int_equal(sk_test_cli(&g_run, "noise --size 8 -q -o '%s'", link), 0);
+    assert_int_equal(lstat(link, &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -151,6 +453,8 @@ int main(void)
         cmocka_unit_test(test_groups_have_help),
         cmocka_unit_test(test_region_cannot_overflow),
         cmocka_unit_test(test_hand_inputs_are_checked),
+        cmocka_unit_test(test_every_command_refuses_bad_input),
+        cmocka_unit_test(test_outputs_are_all_or_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -141,6 +141,30 @@ static void test_set_parses_the_whole_value(void **state)
     sk_preset_free(p);
 }
 
+/* "hand calibrate" on samples of 1e308 wrote rows of null and exited 0. */
+static void test_calibration_refuses_overflow(void **state)
+{
+    (void)state;
+    double x[4] = {1e200, 2e200, 3e200, 5e200}, y[4] = {1, 2, 3, 1e200};
+    const double *columns[SK_HAND_DOF_COUNT] = {0};
+    int dx = sk_hand_dof_find("L.MCP.flex"), dy = sk_hand_dof_find("R.MCP.flex");
+    columns[dx] = x;
+    columns[dy] = y;
+    int pairs[1][2] = {{dx, dy}};
+    sk_hand_fit fit;
+    sk_error err = {0};
+    assert_int_equal(sk_hand_calibrate(columns, 4, (const int(*)[2])pairs, 1, SK_HAND_WEIGHT_THESIS,
+                                       &fit, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "L.MCP.flex:R.MCP.flex"));
+    /* and the samples file refuses such values, naming the range */
+    const char *csv = "L.MCP.flex,R.MCP.flex\n1e308,1\n2,3\n4,5\n";
+    sk_hand_samples samples;
+    assert_int_equal(sk_hand_samples_parse(csv, strlen(csv), "s.csv", &samples, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "out of range [-1e+06, 1e+06]"));
+}
+
 /* ------------------------------------------------------------ range endpoints */
 
 /* Documented endpoints were refused once stored as float: "view.width_mm = 0.01 is out of
@@ -261,6 +285,16 @@ static void test_atomic_file_writes_devices_and_fifos_in_place(void **state)
         for (int i = 0; i < 1000; i++) fputs("0123456789abcdef0123456789abcdef", f.fp);
         assert_int_equal(sk_atomic_file_commit(&f, &err), SK_ERROR_IO);
         assert_non_null(strstr(err.message, "No space left on device"));
+        /* the EXR writer hung (a lock taken twice) on a write error; now it reports it */
+        const char *links = fresh_folder("robust/full");
+        char full[1024];
+        snprintf(full, sizeof full, "%s/full.exr", links);
+        assert_int_equal(symlink("/dev/full", full), 0);
+        sk_image image = {0};
+        assert_int_equal(sk_image_create(&image, 4, 4, 3, &err), SK_OK);
+        assert_int_equal(sk_image_write_exr(&image, full, NULL, &err), SK_ERROR_IO);
+        assert_non_null(strstr(err.message, "No space left on device"));
+        sk_image_free(&image);
     }
     const char *dir = fresh_folder("robust/fifo");
     char fifo[1024];
@@ -526,6 +560,7 @@ int main(void)
         cmocka_unit_test(test_hand_json_is_as_strict_as_presets),
         cmocka_unit_test(test_json_refuses_inexact_integers),
         cmocka_unit_test(test_set_parses_the_whole_value),
+        cmocka_unit_test(test_calibration_refuses_overflow),
         cmocka_unit_test(test_documented_endpoints_are_accepted),
         cmocka_unit_test(test_atomic_file_writes_through_symlinks),
         cmocka_unit_test(test_atomic_file_writes_devices_and_fifos_in_place),

@@ -535,6 +535,10 @@ int cli_output_format(const char *option, const char *path, const char *const *a
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
     const char *dot = strrchr(base, '.');
+    /* a device or FIFO (-o /dev/stdout, a named pipe) without a known extension gets the
+       first format */
+    struct stat st;
+    bool stream = stat(path, &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
     char list[128] = "";
     size_t used = 0;
     for (int i = 0; accepted[i]; i++) {
@@ -544,6 +548,10 @@ int cli_output_format(const char *option, const char *path, const char *const *a
         }
         int k = snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", accepted[i]);
         if (k > 0 && (size_t)k < sizeof list - used) used += (size_t)k;
+    }
+    if (stream) {
+        *format = 0;
+        return 0;
     }
     bool image = strcmp(accepted[0], ".png") == 0 || strcmp(accepted[0], ".exr") == 0;
     return cli_fail(CLI_EXIT_USAGE, "%s '%s': unknown %s type (the name must end in %s)", option,

@@ -159,7 +159,8 @@ double cli_image_bytes(double width, double height, double bytes_per_pixel);
 
 /* The output's format by its extension (case-insensitive), one of `accepted` (e.g.
  * {".png", ".exr", NULL}): its index in *format, or the one-line error (exit 2) naming the
- * option and the accepted extensions. Called before any work, so a wrong name costs
+ * option and the accepted extensions. A character device or FIFO (-o /dev/stdout) takes
+ * the first format whatever its name. Called before any work, so a wrong name costs
  * nothing. */
 int cli_output_format(const char *option, const char *path, const char *const *accepted,
                       int *format);

@@ -83,10 +83,17 @@ sk_result sk__output_resolve(const char *path, char **resolved, sk__output_kind 
     size_t len = strlen(path);
     if (path[len - 1] == '/')
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: output path names a folder", path);
+    /* what the path names, links followed by the system: a stream is written as named
+       (/dev/stdout is a link to a pipe that has no path) */
+    struct stat st;
+    if (stat(path, &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))) {
+        *kind = SK__OUTPUT_STREAM;
+        *resolved = strdup(path);
+        return *resolved ? SK_OK : sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    }
     char *target = strdup(path);
     if (!target) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     /* follow links (a chain of at most 16) to the file they name */
-    struct stat st;
     for (int hops = 0; lstat(target, &st) == 0 && S_ISLNK(st.st_mode); hops++) {
         char *next = hops < 16 ? link_target(target) : NULL;
         free(target);
@@ -105,7 +112,6 @@ sk_result sk__output_resolve(const char *path, char **resolved, sk__output_kind 
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "%s: output path names %s (give a file name)", path, refused);
         }
-        if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) *kind = SK__OUTPUT_STREAM;
     }
     *resolved = target;
     return SK_OK;

@@ -19,7 +19,7 @@ typedef enum entry_kind { ENTRY_FILE, ENTRY_STREAM, ENTRY_FOLDER } entry_kind;
 typedef struct entry {
     entry_kind kind;
     char *final;  /* where the output belongs (a link's target for files) */
-    char *staged; /* where it is written until commit (== final for a stream) */
+    char *staged; /* where it is written until commit (the path given, for a stream) */
     int slot;     /* signal cleanup slot of `staged`, or -1 */
     bool placed;  /* commit has moved it into place */
     char **moved; /* folder: the files commit moved into an existing final folder */
@@ -104,7 +104,8 @@ sk_result sk_output_set_file(sk_output_set *set, const char *path, const char **
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: the same output is given twice",
                        path);
     }
-    char *name = kind == SK__OUTPUT_STREAM ? strdup(final) : staged_name(set, final);
+    /* a stream is written under the name given (a link keeps the extension writers read) */
+    char *name = kind == SK__OUTPUT_STREAM ? strdup(path) : staged_name(set, final);
     entry *e = name ? add_entry(set) : NULL;
     if (!e) {
         free(name);
