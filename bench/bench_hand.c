@@ -1,7 +1,8 @@
 /* Benchmarks of the hand posture model (thesis 3.2): the equilibrium solve (3.17) with a
  * cached Cholesky factorisation, a full pose update (solve + forward kinematics of every
  * joint), and the iterative solve with lookup-table potentials (3.2.3). Medians over
- * many poses. Targets: 5 us, 20 us, 200 us. Also the stick-figure picture's drawing time. */
+ * many poses. Targets: 5 us, 20 us, 200 us. Also the stick-figure picture's drawing time,
+ * and the calibrated potential of the shipped synthetic recordings (fit and blended solve). */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -131,6 +132,36 @@ int main(void)
         sk_image_free(&img);
     }
     printf("hand: stick figure, 2 views, 800 x 480 (sk_hand_draw): median %.2f ms\n", median_us(t_draw, DRAWS) / 1e3);
+    /* the calibrated potential of the shipped synthetic recordings: fit, and slider
+       solves blended over its mixture components */
+    sk_hand_samples samples;
+    sk_hand_samples_desc read_desc = {.group_column = "person", .ignore_columns = "trial"};
+    if (sk_hand_samples_read(SK_BENCH_PRESET_DIR "/hand/samples/synthetic-grasps.csv", &read_desc, &samples, &err) != SK_OK)
+        fail(&err);
+    sk_hand_potential pot;
+    sk_hand_potential_desc pd = {.base = &c, .seed = 1};
+    double tf0 = sk_time_seconds();
+    if (sk_hand_potential_fit(&pot, &skel, &samples, NULL, 0, &pd, &err) != SK_OK) fail(&err);
+    double fit_s = sk_time_seconds() - tf0;
+    sk_hand_potential_solver *ps;
+    if (sk_hand_potential_solver_create(&ps, &skel, &pot, NULL, &err) != SK_OK) fail(&err);
+    static double t_pot[POSES];
+    for (int p = 0; p < POSES; p++) {
+        sk_hand_input pin = {0};
+        int d = sk_hand_dof_find("I.MCP.flex");
+        pin.pinned[d] = true;
+        pin.pin_value[d] = samples.column[d][(p * 7) % samples.count];
+        double t0 = sk_time_seconds();
+        if (sk_hand_potential_solve(ps, &pin, q, NULL, NULL, &err) != SK_OK) fail(&err);
+        t_pot[p] = sk_time_seconds() - t0;
+        checksum += q[16];
+    }
+    printf("hand: calibrated potential from %d samples (%d DOFs, %d components chosen): fit %.2f s; "
+           "solve with one pin, blended over the components: median %.2f us\n",
+           samples.count, pot.dof_count, pot.component_count, fit_s, median_us(t_pot, POSES));
+    sk_hand_potential_solver_destroy(ps);
+    sk_hand_potential_free(&pot);
+    sk_hand_samples_free(&samples);
     printf("hand: (checksum %.6f)\n", checksum);
     sk_hand_solver_destroy(lsolver);
     sk_hand_solver_destroy(solver);

@@ -1,6 +1,6 @@
 /* Fuzz harness: the BVH reader of the hand module; a parsed BVH is also evaluated. (The
  * hand's other readers have their own harnesses: fuzz_constraints, fuzz_anatomy,
- * fuzz_animation, fuzz_samples.) */
+ * fuzz_animation, fuzz_hand_samples.) */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>

@@ -26,7 +26,7 @@ for name in "${harnesses[@]}"; do
     cp -n "$fuzz/corpus/$reader"/* "$work"/ 2>/dev/null || true
     [ -d "$fuzz/regressions/$reader" ] && cp -n "$fuzz/regressions/$reader"/* "$work"/ 2>/dev/null || true
     dict="$fuzz/dict/$reader.dict"
-    case $reader in constraints|anatomy|animation|preset|render_scene) dict="$fuzz/dict/json.dict" ;; esac
+    case $reader in constraints|anatomy|animation|preset|render_scene|hand_potential) dict="$fuzz/dict/json.dict" ;; esac
     dict_arg=()
     [ -f "$dict" ] && dict_arg=("-dict=$dict")
     log="$build/fuzz-findings/$reader.log"

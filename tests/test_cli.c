@@ -228,12 +228,19 @@ static const bad_case k_bad_cases[] = {
     {"hand animate DIR/long-anim.json --bvh OUT.bvh --max-memory 1M", "10001 frames", "--max-memory"},
     {"hand animate DIR/garbage.json --bvh OUT.bvh", "garbage.json", "unexpected text"},
     /* hand calibrate */
-    {"hand calibrate DIR/s.csv -o OUT.json", "--pairs", "required"},
+    {"hand calibrate DIR/s.csv --method x -o OUT.json", "--method", "mixture or gaussian"},
+    /* hand evaluate, hand synthesize */
+    {"hand evaluate DIR/s.csv --pins L.MCP.flex --folds 0", "--folds", "[2, 1000]"},
+    {"hand evaluate DIR/s.csv --pins L.MCP.flex --units furlongs", "--units", "rad or deg"},
+    {"hand evaluate DIR/s.csv --pins L.MCP.flex --plot OUT.jpg", "--plot", ".png"},
+    {"hand evaluate DIR/s.csv --pins L.MCP.flex --report OUT.txt", "--report", ".json"},
+    {"hand synthesize -o OUT.csv --people 0", "--people", "[1, 100]"},
+    {"hand synthesize -o OUT.csv --noise -1", "--noise", "[0, 20]"},
     {"hand calibrate DIR/s.csv --pairs L.MCP.flex -o OUT.json", "--pairs", "DOF:DOF"},
     {"hand calibrate DIR/s.csv --pairs L.MCP.flex:R.MCP.flex --weights x -o OUT.json", "--weights",
      "thesis or inverse-variance"},
     {"hand calibrate DIR/huge.csv --pairs L.MCP.flex:R.MCP.flex -o OUT.json", "L.MCP.flex",
-     "[-1e+06, 1e+06]"},
+     "[-1e6, 1e6]"},
     {"hand calibrate DIR/folder.png --pairs L.MCP.flex:R.MCP.flex -o OUT.json", "folder.png",
      "not a regular file"},
     /* skin */

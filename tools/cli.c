@@ -3,6 +3,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
+#include "shitsukan/io.h"
+
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -556,6 +558,41 @@ int cli_output_format(const char *option, const char *path, const char *const *a
     bool image = strcmp(accepted[0], ".png") == 0 || strcmp(accepted[0], ".exr") == 0;
     return cli_fail(CLI_EXIT_USAGE, "%s '%s': unknown %s type (the name must end in %s)", option,
                     path, image ? "image" : "file", list);
+}
+
+int cli_reserve_outputs(const cli_output *list, int count, sk_output_set **set)
+{
+    *set = NULL;
+    int format;
+    for (int i = 0; i < count; i++)
+        if (*list[i].path && list[i].formats) {
+            int status = cli_output_format(list[i].option, *list[i].path, list[i].formats, &format);
+            if (status) return status;
+        }
+    sk_error err = {0};
+    sk_result r = sk_output_set_create(set, &err);
+    for (int i = 0; i < count && r == SK_OK; i++) {
+        if (!*list[i].path) continue;
+        r = list[i].folder ? sk_output_set_folder(*set, *list[i].path, list[i].path, &err)
+                           : sk_output_set_file(*set, *list[i].path, list[i].path, &err);
+        if (r != SK_OK) sk_error_prefix(&err, r, "%s", list[i].option);
+    }
+    if (r != SK_OK) {
+        sk_output_set_abort(*set);
+        *set = NULL;
+        return cli_fail_error(&err);
+    }
+    return 0;
+}
+
+int cli_finish_outputs(sk_output_set *set, int status)
+{
+    if (status) {
+        sk_output_set_abort(set);
+        return status;
+    }
+    sk_error err = {0};
+    return sk_output_set_commit(set, &err) == SK_OK ? 0 : cli_fail_error(&err);
 }
 
 /* ------------------------------------------------------------------ presets */

@@ -10,6 +10,7 @@
 
 #include "shitsukan/core.h"
 #include "shitsukan/image.h"
+#include "shitsukan/io.h"
 #include "shitsukan/preset.h"
 
 /* Exit status: 0 success, 1 runtime failure (e.g. a write failed), 2 bad usage or input. */
@@ -164,6 +165,22 @@ double cli_image_bytes(double width, double height, double bytes_per_pixel);
  * nothing. */
 int cli_output_format(const char *option, const char *path, const char *const *accepted,
                       int *format);
+
+/* All-or-nothing outputs (sk_output_set in shitsukan/io.h) for a command's table of
+ * outputs: each entry names its option (for messages), points at its path (NULL when the
+ * option was not given; replaced by the staged path to write once reserved), lists the
+ * accepted extensions (NULL = any) and says whether it is a folder. cli_reserve_outputs
+ * checks every name and reserves every output before any work (one-line error and its exit
+ * status on failure, with nothing left behind); cli_finish_outputs commits them after a
+ * successful run (`status` 0) or removes them, and returns the final status. */
+typedef struct cli_output {
+    const char *option;
+    const char **path;
+    const char *const *formats;
+    bool folder;
+} cli_output;
+int cli_reserve_outputs(const cli_output *list, int count, sk_output_set **set);
+int cli_finish_outputs(sk_output_set *set, int status);
 
 /* Applies --threads (0 = all cores) to the library's parallel loops. */
 void cli_apply_threads(const cli_args *args);

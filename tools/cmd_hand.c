@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cmd_hand_prior.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/io.h"
 
@@ -45,23 +46,6 @@ static int build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_
     desc.hand_length_mm = hl;
     desc.hand_breadth_mm = hb;
     if (sk_hand_skeleton_init(skel, &desc, &err) != SK_OK) return cli_fail_error(&err);
-    return 0;
-}
-
-/* "natural", "yasumuro-table-3.2", "none" or a file. `out` is zeroed for "none". */
-static int load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out)
-{
-    memset(out, 0, sizeof *out);
-    if (strcmp(name, "none") == 0) return 0;
-    char path[PATH_MAX];
-    bool looks_like_file = strchr(name, '/') || strstr(name, ".json");
-    if (looks_like_file) snprintf(path, sizeof path, "%s", name);
-    else if (!cli_find_preset("hand", name, path, sizeof path))
-        return cli_fail(CLI_EXIT_USAGE,
-                        "--constraints '%s': no such set (natural, yasumuro-table-3.2, none, or a "
-                        "JSON file)", name);
-    sk_error err = {0};
-    if (sk_hand_constraints_load_file(path, skel, out, &err) != SK_OK) return cli_fail_error(&err);
     return 0;
 }
 
@@ -139,55 +123,8 @@ static int require_option(const cli_command *cmd, const cli_args *args, const ch
     return 0;
 }
 
-/* One output of a hand command: its option, path (NULL when not given), accepted
-   extensions (NULL = any) and whether it is a folder. */
-typedef struct hand_output {
-    const char *option;
-    const char **path; /* replaced by the staged path once reserved */
-    const char *const *formats;
-    bool folder;
-} hand_output;
-
 static const char *const k_png_format[] = {".png", NULL};
 static const char *const k_positions_formats[] = {".csv", ".json", NULL};
-
-/* Checks and reserves every given output before any work, so that they appear together
-   at the end or not at all (see sk_output_set). */
-static int reserve_outputs(const hand_output *list, int count, sk_output_set **set)
-{
-    *set = NULL;
-    int format;
-    for (int i = 0; i < count; i++)
-        if (*list[i].path && list[i].formats) {
-            int rc = cli_output_format(list[i].option, *list[i].path, list[i].formats, &format);
-            if (rc) return rc;
-        }
-    sk_error err = {0};
-    sk_result r = sk_output_set_create(set, &err);
-    for (int i = 0; i < count && r == SK_OK; i++) {
-        if (!*list[i].path) continue;
-        r = list[i].folder ? sk_output_set_folder(*set, *list[i].path, list[i].path, &err)
-                           : sk_output_set_file(*set, *list[i].path, list[i].path, &err);
-        if (r != SK_OK) sk_error_prefix(&err, r, "%s", list[i].option);
-    }
-    if (r != SK_OK) {
-        sk_output_set_abort(*set);
-        *set = NULL;
-        return cli_fail_error(&err);
-    }
-    return 0;
-}
-
-/* Commits the outputs after a successful run (rc 0), else removes them. */
-static int finish_outputs(sk_output_set *set, int rc)
-{
-    if (rc) {
-        sk_output_set_abort(set);
-        return rc;
-    }
-    sk_error err = {0};
-    return sk_output_set_commit(set, &err) == SK_OK ? 0 : cli_fail_error(&err);
-}
 
 /* --views, --png-size and --labels into a picture desc. */
 static int parse_draw_options(const cli_command *cmd, const cli_args *args, sk_hand_draw_desc *d)
@@ -310,10 +247,28 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
 
 /* ------------------------------------------------------------ hand pose */
 
+/* The equilibrium of a calibrated potential (hand calibrate) for the inputs. */
+static int pose_with_potential(const sk_hand_skeleton *skel, const char *path, const sk_hand_input *in, double *q,
+                               sk_hand_solve_info *info)
+{
+    sk_error err = {0};
+    sk_hand_potential pot;
+    if (sk_hand_potential_load_file(path, skel, &pot, &err) != SK_OK) return cli_fail_error(&err);
+    sk_hand_potential_solver *ps = NULL;
+    int rc = 0;
+    if (sk_hand_potential_solver_create(&ps, skel, &pot, NULL, &err) != SK_OK ||
+        sk_hand_potential_solve(ps, in, q, info, NULL, &err) != SK_OK)
+        rc = cli_fail_error(&err);
+    sk_hand_potential_solver_destroy(ps);
+    sk_hand_potential_free(&pot);
+    return rc;
+}
+
 static const cli_option pose_options[] = {
     {"pin", 0, "DOF=DEG", "hold a DOF at an angle in degrees (mm for wrist.tx/ty/tz), |value| <= 1e6; once per DOF", true},
     {"torque", 0, "DOF=T", "directed input torque on a DOF (stiffness x radians), |T| <= 1e6; once per DOF", true},
     {"constraints", 0, "SET", "natural (default), yasumuro-table-3.2, none, or a constraint JSON file", false},
+    {"potential", 0, "FILE", "a calibrated potential (hand calibrate) instead of --constraints", false},
     {"samples", 0, "CSV", "joint-angle samples (header of DOF names, degrees) for lookup-table potentials", false},
     {"pairs", 0, "A:B,...", "DOF pairs that get a lookup-table potential from --samples", false},
     {"lut-resolution", 0, "N", "lookup-table grid nodes per axis (default 100)", false},
@@ -340,7 +295,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     if (rc) return rc;
     const char *png = cli_get(cmd, args, "png"), *out = args->common.output;
     const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
-    const hand_output outputs[] = {{"--png", &png, k_png_format, false},
+    const cli_output outputs[] = {{"--png", &png, k_png_format, false},
                                    {"-o", &out, NULL, false},
                                    {"--bvh", &bvh, NULL, false},
                                    {"--positions", &positions, k_positions_formats, false}};
@@ -348,14 +303,14 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
     sk_output_set *written = NULL;
-    if ((rc = reserve_outputs(outputs, 4, &written))) return rc;
+    if ((rc = cli_reserve_outputs(outputs, 4, &written))) return rc;
     const char *set = cli_get(cmd, args, "constraints");
     sk_hand_constraints *c = malloc(sizeof *c);
     if (!c) {
         sk_output_set_abort(written);
         return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     }
-    rc = load_constraints(set ? set : "natural", &skel, c);
+    rc = hand_load_constraints(set ? set : "natural", &skel, c);
     sk_hand_input in = {0};
     if (!rc) rc = parse_inputs(cmd, args, &in);
     sk_hand_lut luts[16];
@@ -365,8 +320,16 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     sk_error err = {0};
     double q[SK_HAND_DOF_COUNT];
     sk_hand_solve_info info;
-    if (!rc && sk_hand_solver_create(&solver, &skel, c, luts, lut_count, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
-    if (!rc && sk_hand_solve(solver, &in, q, &info, &err) != SK_OK) rc = cli_fail_error(&err);
+    const char *potential = cli_get(cmd, args, "potential");
+    if (!rc && potential && (set || lut_count > 0))
+        rc = cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints or --samples");
+    if (!rc && potential) {
+        rc = pose_with_potential(&skel, potential, &in, q, &info);
+    } else {
+        if (!rc && sk_hand_solver_create(&solver, &skel, c, luts, lut_count, NULL, &err) != SK_OK)
+            rc = cli_fail_error(&err);
+        if (!rc && sk_hand_solve(solver, &in, q, &info, &err) != SK_OK) rc = cli_fail_error(&err);
+    }
     if (!rc && info.pins_clamped > 0)
         fprintf(stderr, "shitsukan: note: %d pinned value(s) were outside the joint limits and were clamped\n",
                 info.pins_clamped);
@@ -385,7 +348,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     if (!rc && out && sk_hand_pose_write_json(&skel, q, &info, out, &err) != SK_OK) rc = cli_fail_error(&err);
     if (!rc && bvh && sk_hand_bvh_write(&skel, q, 1, 1.0 / 30.0, bvh, &err) != SK_OK) rc = cli_fail_error(&err);
     if (!rc && positions) rc = write_positions(&skel, q, 1, positions);
-    rc = finish_outputs(written, rc);
+    rc = cli_finish_outputs(written, rc);
     if (!rc && !out) {
         for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
             printf("%-11s %10.4f%s\n", sk_hand_dof(i)->name, sk_hand_dof(i)->translation ? q[i] : q[i] * SK_RAD_TO_DEG,
@@ -531,7 +494,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!draw_rc) draw_rc = require_option(cmd, args, "plot", plot_options);
     if (!draw_rc) draw_rc = parse_draw_options(cmd, args, &draw);
     if (draw_rc) return draw_rc;
-    const hand_output outputs[] = {{"--bvh", &bvh, NULL, false},
+    const cli_output outputs[] = {{"--bvh", &bvh, NULL, false},
                                    {"--positions", &positions, k_positions_formats, false},
                                    {"--angles", &angles, NULL, false},
                                    {"--plot", &plot, k_png_format, false},
@@ -549,7 +512,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     sk_hand_skeleton skel;
     if (!rc) rc = build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
     const char *set = cli_get(cmd, args, "constraints");
-    if (!rc) rc = load_constraints(set ? set : anim->constraints, &skel, c);
+    if (!rc) rc = hand_load_constraints(set ? set : anim->constraints, &skel, c);
     if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
     int frames = rc ? 0 : sk_hand_animation_frame_count(anim);
     if (!rc) {
@@ -563,7 +526,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_check_memory(args, (double)frames * SK_HAND_DOF_COUNT * sizeof *dofs * 2 + picture,
                               driver);
     }
-    if (!rc) rc = reserve_outputs(outputs, 5, &written);
+    if (!rc) rc = cli_reserve_outputs(outputs, 5, &written);
     if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))
         rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     sk_progress_bar bar;
@@ -583,7 +546,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_fail_error(&err);
     if (!rc && plot) rc = write_angle_plot(cmd, args, anim, dofs, frames, plot);
     if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
-    if (written) rc = finish_outputs(written, rc);
+    if (written) rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
     sk_hand_solver_destroy(solver);
     free(dofs);
@@ -619,14 +582,29 @@ const cli_command cmd_hand_animate = {
 /* ------------------------------------------------------------ hand calibrate */
 
 static const cli_option calibrate_options[] = {
-    {"pairs", 0, "A:B,...", "joint pairs to fit, each 'x:y' for the line y = A x + b (required)", false},
-    {"weights", 0, "RULE", "thesis (eq. 3.18, default) or inverse-variance", false},
+    {"pairs", 0, "A:B,...", "fit the thesis's pair lines y = A x + b instead (constraint rows file)", false},
+    {"weights", 0, "RULE", "pair lines: thesis (eq. 3.18, default) or inverse-variance", false},
+    {"method", 0, "METHOD", "potential: mixture (default; components chosen on held-out samples) or gaussian", false},
+    {"components", 0, "N", "potential: fixed mixture component count (default: chosen)", false},
+    {"prior-strength", 0, "S", "potential: pseudo-samples of the base set's Gaussian (default: chosen; 0 = none)", false},
+    {"base", 0, "SET", "potential: set kept outside the samples' DOFs and shrunk toward (default natural)", false},
+    {"units", 0, "UNIT", "angles of the CSV: deg (default) or rad", false},
+    {"group", 0, "COLUMN", "CSV column naming the trial or person (held out together when choosing)", false},
+    {"ignore-columns", 0, "A,B", "CSV columns to skip (besides frame and time)", false},
 };
 
 static int run_calibrate(const cli_command *cmd, const cli_args *args)
 {
     const char *pairs_text = cli_get(cmd, args, "pairs");
-    if (!pairs_text) return cli_fail(CLI_EXIT_USAGE, "--pairs is required (e.g. --pairs R.MCP.flex:L.MCP.flex)");
+    if (!pairs_text) {
+        static const char *const pair_only[] = {"weights", NULL};
+        int rc = require_option(cmd, args, "pairs", pair_only);
+        return rc ? rc : hand_calibrate_potential(cmd, args);
+    }
+    static const char *const potential_only[] = {"method", "components", "prior-strength", "base", NULL};
+    for (int i = 0; potential_only[i]; i++)
+        if (cli_has(cmd, args, potential_only[i]))
+            return cli_fail(CLI_EXIT_USAGE, "--%s is for the potential; it does not go with --pairs", potential_only[i]);
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o rows.json is required");
     sk_hand_weight_rule rule = SK_HAND_WEIGHT_THESIS;
     const char *w = cli_get(cmd, args, "weights");
@@ -641,7 +619,8 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
     }
     sk_hand_samples samples;
     const char *path = args->positional[0];
-    if (sk_hand_samples_load_file(path, &samples, &err) != SK_OK) return cli_fail_error(&err);
+    int read_rc = hand_read_samples(cmd, args, path, &samples);
+    if (read_rc) return read_rc;
     sk_hand_fit fits[64];
     int rc = 0;
     if (sk_hand_calibrate((const double *const *)samples.column, samples.count, (const int(*)[2])pairs, n, rule,
@@ -662,18 +641,24 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
 
 const cli_command cmd_hand_calibrate = {
     .name = "hand calibrate",
-    .summary = "fit constraint rows (A, b, W) to measured joint-angle samples (thesis 3.2.2)",
-    .usage = "shitsukan hand calibrate SAMPLES.csv --pairs A:B[,C:D...] -o rows.json",
+    .summary = "fit the natural-posture potential (or the thesis's pair rows) to joint-angle samples (3.2.2)",
+    .usage = "shitsukan hand calibrate SAMPLES.csv -o potential.json [--method mixture|gaussian]\n"
+             "       shitsukan hand calibrate SAMPLES.csv --pairs A:B[,C:D...] -o rows.json",
     .description =
-        "Fits one least-squares line y = A x + b per pair of DOFs to the samples (a CSV with\n"
-        "a header of DOF names and one sample per line, in degrees; columns 'frame' and\n"
-        "'time' are ignored) and sets each row's weight from the spread of the samples about\n"
-        "the line, w = mean l^2 / max over the pairs (eq. 3.18), or by inverse variance.\n"
-        "Writes a constraint file for --constraints.",
-    .examples = "  shitsukan hand calibrate glove.csv --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex -o rows.json",
+        "Reads measured joint angles (a CSV with a header of DOF names and one sample per\n"
+        "line, degrees or --units rad; columns 'frame', 'time', --group and --ignore-columns\n"
+        "are not DOFs). Without --pairs it fits the whole potential of eq. 3.17: the relaxed\n"
+        "posture is the samples' mean and K + A'WA their precision (springs and coupling rows),\n"
+        "shrunk toward the base set, as a mixture of such Gaussians where held-out samples\n"
+        "say it helps; use it with hand pose --potential. With --pairs it fits one\n"
+        "least-squares line y = A x + b per pair and weights it by the spread about the line,\n"
+        "w = mean l^2 / max over the pairs (eq. 3.18: the loosest pair weighs most), or by\n"
+        "inverse variance; the result is a constraint file for --constraints.",
+    .examples = "  shitsukan hand calibrate glove.csv --group person -o potential.json\n"
+                "  shitsukan hand calibrate glove.csv --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex -o rows.json",
     .options = calibrate_options,
     .option_count = (int)(sizeof calibrate_options / sizeof calibrate_options[0]),
-    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET,
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET | CLI_COMMON_SEED,
     .min_positional = 1,
     .max_positional = 1,
     .run = run_calibrate,

@@ -170,7 +170,8 @@ void sk_hand_forward(const sk_hand_skeleton *skeleton, const double dofs[SK_HAND
 /* ------------------------------------------------------ constraint sets */
 /* One row of A theta + b = 0 (eq. 3.13) with its weight (diagonal of W, eq. 3.14), on
  * displacements theta from the relaxed posture, in radians. */
-#define SK_HAND_ROW_MAX_TERMS 8
+/* enough for a row over every joint DOF (calibrated potentials, sk_hand_potential) */
+#define SK_HAND_ROW_MAX_TERMS 32
 typedef struct sk_hand_row {
     int term_count;
     int dof[SK_HAND_ROW_MAX_TERMS];
@@ -331,20 +332,256 @@ sk_result sk_hand_fits_write_json(const sk_hand_fit *fits, int count, sk_hand_we
 
 /* Joint-angle samples from CSV: a header of DOF names, one sample per line, degrees
  * (translations mm). Errors name the line and the column. */
-/* Largest magnitude of a sample value in the file (degrees or mm). */
-#define SK_HAND_SAMPLE_MAX 1e6
+#define SK_HAND_SAMPLES_MAX_GROUPS 4096
 typedef struct sk_hand_samples {
     int count;
     bool present[SK_HAND_DOF_COUNT];
     double *column[SK_HAND_DOF_COUNT]; /* radians / mm; NULL if absent */
+    /* With a group column (the trial or person of each sample): */
+    int group_count;                   /* distinct values, numbered in order of appearance;
+                                          0 without a group column */
+    int *group;                        /* count entries; NULL without a group column */
+    char (*group_name)[64];            /* group_count names */
+    /* Unit check: the largest |angle| in the rotational columns (radians after
+       conversion) and whether it suggests the wrong --units: degrees that all lie
+       within +-pi (radians read as degrees), or radians beyond 2 pi. */
+    double max_abs_angle;
+    bool units_suspect;
 } sk_hand_samples;
+
+typedef enum sk_hand_angle_unit {
+    SK_HAND_UNIT_DEFAULT = 0, /* = degrees */
+    SK_HAND_UNIT_DEG,
+    SK_HAND_UNIT_RAD
+} sk_hand_angle_unit;
+
+/* How a samples CSV is read. All zero: degrees, no group column, only "frame" and
+ * "time" ignored besides the DOF columns. */
+typedef struct sk_hand_samples_desc {
+    sk_hand_angle_unit units;   /* of the rotational columns (translations are mm) */
+    const char *group_column;   /* NULL = none; else a header name whose values (any text
+                                   up to 63 characters) name the trial or person */
+    const char *ignore_columns; /* NULL or comma-separated header names to skip (their
+                                   values are not read) */
+} sk_hand_samples_desc;
+
 sk_result sk_hand_samples_parse(const char *text, size_t length, const char *source_name,
                                 sk_hand_samples *out, sk_error *err);
 sk_result sk_hand_samples_load_file(const char *path, sk_hand_samples *out, sk_error *err);
+/* The same with a desc (NULL = defaults). An unknown header name that is neither a DOF
+ * nor listed is an error naming it; a named group or ignored column must exist. */
+sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char *source_name,
+                                     const sk_hand_samples_desc *desc, sk_hand_samples *out,
+                                     sk_error *err);
+sk_result sk_hand_samples_read(const char *path, const sk_hand_samples_desc *desc,
+                               sk_hand_samples *out, sk_error *err);
 void sk_hand_samples_free(sk_hand_samples *samples);
 /* "A:B,C:D" -> pairs of DOF indices (at most max_pairs). */
 sk_result sk_hand_parse_pairs(const char *text, int (*pairs)[2], int max_pairs, int *count,
                               sk_error *err);
+
+/* ----------------------------------------------- calibrated potential */
+/* The whole quadratic potential of eq. 3.17 calibrated from samples (thesis 3.2.2 in
+ * full): the relaxed posture theta_bar (eq. 3.7, step 2 of 3.2.2) is the samples' mean,
+ * and K + A'WA is their precision matrix (times `scale`), split into springs K (eq. 3.8)
+ * and coupling rows A, W (eq. 3.14) with b = 0, so the energy is the samples' Gaussian
+ * and pinning joints gives the conditional mean of the others (kept within the joint
+ * limits). A mixture of such Gaussians (one per grasp type) goes beyond linear: each
+ * component is a full thesis-form set, and a solve blends the components' equilibria by
+ * the probability of the pinned values under each. DOFs outside the samples keep the
+ * base set's springs and the base rows among themselves. */
+#define SK_HAND_POTENTIAL_MAX_COMPONENTS 16
+#define SK_HAND_EVAL_MAX_PIN_SETS 16
+#define SK_HAND_EVAL_MAX_PINS 8
+
+/* A set of DOFs pinned together (the inputs of a prediction). */
+typedef struct sk_hand_pin_set {
+    int count;
+    int dof[SK_HAND_EVAL_MAX_PINS];
+} sk_hand_pin_set;
+
+typedef enum sk_hand_potential_method {
+    SK_HAND_POTENTIAL_DEFAULT = 0, /* = MIXTURE */
+    SK_HAND_POTENTIAL_GAUSSIAN,    /* one Gaussian */
+    SK_HAND_POTENTIAL_MIXTURE      /* 1..max_components Gaussians, the count chosen by
+                                      held-out likelihood (1 where more do not help) */
+} sk_hand_potential_method;
+
+typedef struct sk_hand_potential_desc {
+    sk_hand_potential_method method; /* 0 = mixture */
+    int max_components;    /* mixture: 0 = 6; range [1, 16] */
+    int components;        /* mixture: 0 = chosen on held-out samples; else fixed [1, 16] */
+    double prior_strength; /* pseudo-samples of the base set's Gaussian that the mean and
+                              covariance shrink toward; 0 = chosen by held-out
+                              likelihood from 1, 4, 16, 64, 256; range [0, 1e7] (a
+                              negative value means none) */
+    uint64_t seed;         /* mixture initialisation */
+    const sk_hand_constraints *base; /* shrinkage target and the set kept on DOFs outside
+                                        the samples; NULL = springs only */
+    /* The pin patterns the held-out choices (prior strength, component count) are made
+       for: pin these DOFs, predict the others. NULL = every calibrated DOF alone. */
+    const sk_hand_pin_set *pin_sets;
+    int pin_set_count;      /* range [0, 16] */
+} sk_hand_potential_desc;
+
+typedef struct sk_hand_potential_component {
+    double weight;                     /* mixing weight, sums to 1 over the components */
+    double relaxed[SK_HAND_DOF_COUNT]; /* theta_bar (absolute radians; the skeleton's on
+                                          DOFs outside the samples) */
+    sk_hand_constraints constraints;   /* stiffness of every DOF (has_stiffness all true)
+                                          and rows on displacements from `relaxed`, b = 0 */
+} sk_hand_potential_component;
+
+typedef struct sk_hand_potential {
+    int dof_count;                 /* calibrated DOFs (joint angles present in the samples) */
+    int dof[SK_HAND_DOF_COUNT];
+    double scale;                  /* K + A'WA = scale x precision (1/rad^2) on them, so
+                                      that torques keep the base set's units */
+    int sample_count;              /* samples fitted */
+    double prior_strength;         /* resolved (pseudo-samples) */
+    int component_count;
+    sk_hand_potential_component *component; /* allocated */
+} sk_hand_potential;
+
+/* Fits the potential to samples idx[0..n) (all when idx is NULL) of `samples`: the
+ * calibrated DOFs are the joint angles present (wrist DOFs excluded). Deterministic for
+ * a seed and any thread count. Free with sk_hand_potential_free. */
+sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *skeleton,
+                                const sk_hand_samples *samples, const int *idx, int n,
+                                const sk_hand_potential_desc *desc, sk_error *err);
+void sk_hand_potential_free(sk_hand_potential *potential);
+/* Mean and covariance (radians, over the calibrated DOFs in their order; d x d column-
+ * major) of component m, from its springs and rows. */
+sk_result sk_hand_potential_gaussian(const sk_hand_potential *potential, int m, double *mean,
+                                     double *covariance, sk_error *err);
+/* The potential as JSON (format in docs/hand.md) and back. The reader is strict: the
+ * whole text must be one JSON value, no duplicate or unknown keys, every number finite
+ * and in range, and every component's K + A'WA positive definite. */
+sk_result sk_hand_potential_write_json(const sk_hand_potential *potential, const char *source_note,
+                                       const char *path, sk_error *err);
+sk_result sk_hand_potential_parse(const char *text, size_t length, const char *source_name,
+                                  const sk_hand_skeleton *skeleton, sk_hand_potential *out,
+                                  sk_error *err);
+sk_result sk_hand_potential_load_file(const char *path, const sk_hand_skeleton *skeleton,
+                                      sk_hand_potential *out, sk_error *err);
+
+/* A solver for a potential: one equilibrium solver per component (same inputs), their
+ * results blended by each component's probability of the pinned values (with a single
+ * component, exactly sk_hand_solve on its set). Belongs to one thread at a time. */
+typedef struct sk_hand_potential_solver sk_hand_potential_solver;
+sk_result sk_hand_potential_solver_create(sk_hand_potential_solver **out,
+                                          const sk_hand_skeleton *skeleton,
+                                          const sk_hand_potential *potential,
+                                          const sk_hand_solver_desc *desc, sk_error *err);
+void sk_hand_potential_solver_destroy(sk_hand_potential_solver *solver);
+/* `responsibility` (may be NULL) receives component_count probabilities. `info` is the
+ * most probable component's, with `converged` false if any component's solve was not. */
+sk_result sk_hand_potential_solve(sk_hand_potential_solver *solver, const sk_hand_input *input,
+                                  double dofs[SK_HAND_DOF_COUNT], sk_hand_solve_info *info,
+                                  double *responsibility, sk_error *err);
+
+/* ------------------------------------------------------------- evaluation */
+/* Held-out prediction of joint angles from pinned ones: per fold, the model is calibrated
+ * on the other samples; every held-out sample's pins are set to its measured values and
+ * the unpinned calibrated DOFs are compared with the measurement. Baselines fitted on the
+ * same folds: the training mean, linear regression of the unpinned on the pinned DOFs
+ * (least squares with intercept), and a PCA prior with k components (probabilistic PCA:
+ * the top k principal directions plus isotropic noise of the mean discarded variance;
+ * its conditional mean given the pins). */
+typedef enum sk_hand_eval_model {
+    SK_HAND_EVAL_MODEL_DEFAULT = 0, /* = CALIBRATED */
+    SK_HAND_EVAL_MODEL_CALIBRATED,  /* sk_hand_potential_fit on each training fold */
+    SK_HAND_EVAL_MODEL_FIXED,       /* a given constraint set, not refitted (the
+                                       built-in relaxed posture) */
+    SK_HAND_EVAL_MODEL_PAIRS        /* the thesis's pair lines (3.2.2) fitted on each
+                                       training fold, weights by `weight_rule` times
+                                       `weight_scale`, added to the base set's springs */
+} sk_hand_eval_model;
+
+
+typedef struct sk_hand_evaluation_desc {
+    int folds;              /* contiguous blocks of samples; 0 = 5; range [2, 1000]; with
+                               groups, at most this many folds of whole groups (groups
+                               dealt round-robin in order of appearance), 0 = one fold per
+                               group */
+    bool by_group;          /* hold out whole groups (samples->group) */
+    int pca_components;     /* k; 0 = 6; range [1, calibrated DOFs] (clamped) */
+    sk_hand_eval_model model;
+    sk_hand_potential_desc potential;     /* CALIBRATED */
+    const sk_hand_constraints *fixed;     /* FIXED (NULL = springs only) */
+    const int (*pairs)[2];                /* PAIRS */
+    int pair_count;
+    sk_hand_weight_rule weight_rule;      /* PAIRS */
+    double weight_scale;                  /* PAIRS: 0 = 1; range (0, 1e6] */
+    const sk_hand_solver_desc *solver;    /* NULL = defaults */
+    sk_progress progress;
+} sk_hand_evaluation_desc;
+
+typedef struct sk_hand_pin_result {
+    sk_hand_pin_set pins;
+    int joint_count;                 /* unpinned calibrated DOFs */
+    int joint[SK_HAND_DOF_COUNT];
+    /* RMS errors in radians, per joint and over all joints and samples */
+    double model[SK_HAND_DOF_COUNT], mean[SK_HAND_DOF_COUNT], linear[SK_HAND_DOF_COUNT],
+        pca[SK_HAND_DOF_COUNT];
+    double model_all, mean_all, linear_all, pca_all;
+    int solves, unconverged;         /* model solves and those that did not converge */
+    double max_residual;
+} sk_hand_pin_result;
+
+typedef struct sk_hand_evaluation {
+    int sample_count, fold_count, dof_count, pca_k;
+    double mean_components;          /* CALIBRATED: mean over the folds */
+    int pin_set_count;
+    sk_hand_pin_result result[SK_HAND_EVAL_MAX_PIN_SETS];
+} sk_hand_evaluation;
+
+/* Runs the cross-validation; results are deterministic and the same for any thread
+ * count. Errors: a pin that is not a calibrated DOF, fewer samples than folds, folds or
+ * groups out of range. */
+sk_result sk_hand_evaluate(const sk_hand_skeleton *skeleton, const sk_hand_samples *samples,
+                           const sk_hand_pin_set *pin_sets, int pin_set_count,
+                           const sk_hand_evaluation_desc *desc, sk_hand_evaluation *out,
+                           sk_error *err);
+/* "A,B" -> a pin set. */
+sk_result sk_hand_parse_pin_set(const char *text, sk_hand_pin_set *out, sk_error *err);
+/* The report: a list, one entry per pin set: {"pins": [...], "model_rms_deg": x,
+ * "per_joint": {name: x, ...}, "baselines": {"mean": x, "linear": x,
+ * "pca": {"k": k, "rms_deg": x}}} (degrees). */
+sk_result sk_hand_evaluation_write_json(const sk_hand_evaluation *eval, const char *path,
+                                        sk_error *err);
+/* The table: per pin set, every joint's RMS for the model and the baselines (degrees). */
+void sk_hand_evaluation_print(const sk_hand_evaluation *eval, const char *model_name, FILE *out);
+/* Bar chart of the same: one panel per pin set, bars per joint and overall. `plot` may
+ * be NULL (width 0 = 900, panel height 0 = 300; title used if set). */
+sk_result sk_hand_plot_evaluation(const sk_hand_evaluation *eval, const char *model_name,
+                                  const sk_plot_desc *plot, sk_image *out, sk_error *err);
+
+/* -------------------------------------------------- synthetic recordings */
+/* A synthetic data set of glove-like recordings of the 12 finger flexion DOFs (index to
+ * little: MCP, PIP, DIP), made to stand in for real recordings where none can be shipped:
+ * several people each grasp ten object types (power, precision, hook, pointing, flat,
+ * fist, ...) in a few trials of reach, hold and release. Per grasp type an aperture varies
+ * the PIPs of all fingers together and each MCP on its own (neighbouring PIPs strongly
+ * coupled, MCP and PIP of one finger weakly); the DIP follows its PIP along a curve (no
+ * DIP flexion below about 20 degrees of PIP), with a person's own gain; people differ in
+ * their relaxed posture and range; glove noise of about 2 degrees per sample and a
+ * calibration offset per trial; angles stay within the joint limits. CSV columns:
+ * person, trial, frame, then the 12 DOFs in degrees; comment lines (#) say how it was
+ * made. Deterministic for a seed. */
+typedef struct sk_hand_synthetic_desc {
+    int people;            /* 0 = 6; range [1, 100] */
+    int trials;            /* trials per person and grasp type; 0 = 2; range [1, 100] */
+    int frames;            /* frames per trial; 0 = 50; range [5, 1000] */
+    double noise_deg;      /* glove noise per sample; 0 = 2; range [0, 20] (negative = 0) */
+    uint64_t seed;
+} sk_hand_synthetic_desc;
+
+/* The CSV text (NUL-terminated, free with free()). */
+sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char **text, size_t *length,
+                                       sk_error *err);
+/* The same written to a file (atomically). */
+sk_result sk_hand_synthetic_grasps_write(const sk_hand_synthetic_desc *desc, const char *path, sk_error *err);
 
 /* -------------------------------------------------------------- animation */
 typedef enum sk_hand_interp {

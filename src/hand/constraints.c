@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "hand/hand_private.h"
+#include "hand/potential_private.h"
 #include "hand/solver_private.h"
 #include "shitsukan/io.h"
 
@@ -140,12 +141,13 @@ static sk_result parse_row(const cJSON *item, const char *path, const sk_hand_sk
     return add_row(c, s, dof, coeff, n, b * b_scale, w, absolute, rowlabel, wpath, err);
 }
 
-static sk_result parse_root(const cJSON *root, const sk_hand_skeleton *s, sk_hand_constraints *out,
-                            sk_error *err)
+sk_result sk_hand__constraints_from_json(const cJSON *root, const char *at, const sk_hand_skeleton *s,
+                                         const char *const *extra, sk_hand_constraints *out, sk_error *err)
 {
-    static const char *const keys[] = {"reading", "angles", "b_unit", "stiffness", "rows", NULL};
-    sk_result r = sk_hand__json_expect_object(root, "", err);
-    if (r == SK_OK) r = sk_hand__json_check_keys(root, "", keys, err);
+    const char *keys[24] = {"reading", "angles", "b_unit", "stiffness", "rows"};
+    for (int i = 0, n = 5; extra && extra[i] && n < 23; i++) keys[n++] = extra[i];
+    sk_result r = sk_hand__json_expect_object(root, at, err);
+    if (r == SK_OK) r = sk_hand__json_check_keys(root, at, keys, err);
     const char *angles = NULL, *b_unit = NULL, *reading = NULL;
     if (r == SK_OK) r = sk_hand__json_string(root, "", "angles", &angles, err);
     if (r == SK_OK) r = sk_hand__json_string(root, "", "b_unit", &b_unit, err);
@@ -202,7 +204,7 @@ sk_result sk_hand_constraints_parse(const char *text, size_t length, const char 
     cJSON *root = NULL;
     sk_result r = sk_hand__json_parse(text, length, source_name, &root, err);
     if (r == SK_OK) {
-        r = parse_root(root, s, out, err);
+        r = sk_hand__constraints_from_json(root, "", s, NULL, out, err);
         cJSON_Delete(root);
     }
     /* K + A'WA must be positive definite (negative weights may break it) */

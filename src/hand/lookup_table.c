@@ -107,8 +107,25 @@ static void hermite(double s, double h[4], double dh[4])
     dh[3] = 3 * s2 - 2 * s;
 }
 
-/* Value, gradient and cross derivative at a point inside the grid (u, v in nodes). */
+/* Second derivatives of the cubic Hermite basis. */
+static void hermite_dd(double s, double ddh[4])
+{
+    ddh[0] = 12 * s - 6;
+    ddh[1] = -12 * s + 6;
+    ddh[2] = 6 * s - 4;
+    ddh[3] = 6 * s - 2;
+}
+
+/* Value, gradient and cross derivative at a point inside the grid (u, v in nodes); with
+ * `second` also the second derivatives f_xx, f_yy (bilinear: 0). */
+static void eval_inside2(const sk_hand_lut *lut, double u, double v, double out[4], double second[2]);
+
 static void eval_inside(const sk_hand_lut *lut, double u, double v, double out[4])
+{
+    eval_inside2(lut, u, v, out, NULL);
+}
+
+static void eval_inside2(const sk_hand_lut *lut, double u, double v, double out[4], double second[2])
 {
     int n = lut->n;
     int i = (int)u, j = (int)v;
@@ -126,6 +143,7 @@ static void eval_inside(const sk_hand_lut *lut, double u, double v, double out[4
             out[2] += w[k] * lut->grad_y[c[k]];
         }
         out[3] = 0.0;
+        if (second) second[0] = second[1] = 0.0;
         return;
     }
     /* bicubic Hermite with zero twist: exact for separable functions such as the
@@ -149,6 +167,37 @@ static void eval_inside(const sk_hand_lut *lut, double u, double v, double out[4
     out[1] = fs / hx;
     out[2] = ft / hy;
     out[3] = fst / (hx * hy);
+    if (!second) return;
+    double dds[4], ddt[4], fss = 0, ftt = 0;
+    hermite_dd(s, dds);
+    hermite_dd(t, ddt);
+    for (int b = 0; b < 2; b++)
+        for (int a = 0; a < 2; a++) {
+            size_t k = c[b * 2 + a];
+            double val = lut->value[k], gx = lut->grad_x[k] * hx, gy = lut->grad_y[k] * hy;
+            fss += val * dds[a] * ht[b] + gx * dds[2 + a] * ht[b] + gy * dds[a] * ht[2 + b];
+            ftt += val * hs[a] * ddt[b] + gx * hs[2 + a] * ddt[b] + gy * hs[a] * ddt[2 + b];
+        }
+    second[0] = fss / (hx * hx);
+    second[1] = ftt / (hy * hy);
+}
+
+double sk_hand__lut_eval_hessian(const sk_hand_lut *lut, double x, double y, double g[2], double h[3])
+{
+    int n = lut->n;
+    double u = (x - lut->x0) / lut->h_x, v = (y - lut->y0) / lut->h_y;
+    double cu = sk_clampd(u, 0.0, n - 1), cv = sk_clampd(v, 0.0, n - 1);
+    double f[4], dd[2];
+    eval_inside2(lut, cu, cv, f, dd);
+    double dx = (u - cu) * lut->h_x, dy = (v - cv) * lut->h_y;
+    double value = f[0] + f[1] * dx + f[2] * dy + f[3] * dx * dy + dx * dx + dy * dy;
+    g[0] = lut->weight * (f[1] + f[3] * dy + 2.0 * dx);
+    g[1] = lut->weight * (f[2] + f[3] * dx + 2.0 * dy);
+    /* beyond the border the continuation is quadratic along the outside axes */
+    h[0] = lut->weight * (u != cu ? 2.0 : dd[0]);
+    h[1] = lut->weight * (v != cv ? 2.0 : dd[1]);
+    h[2] = lut->weight * f[3];
+    return lut->weight * value;
 }
 
 double sk_hand_lut_eval(const sk_hand_lut *lut, double x, double y, double *gx, double *gy)

@@ -1,5 +1,6 @@
 /* Joint-angle samples from CSV (the measured angle pairs of thesis 3.2.2 and 3.2.3): a
- * header of DOF names, then one sample per line in degrees (mm for translations). */
+ * header of DOF names, then one sample per line in degrees or radians (mm for
+ * translations), with an optional column naming the trial or person of each sample. */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -12,11 +13,15 @@ void sk_hand_samples_free(sk_hand_samples *s)
 {
     if (!s) return;
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) free(s->column[i]);
+    free(s->group);
+    free(s->group_name);
     memset(s, 0, sizeof *s);
 }
 
-/* Next field of a line: trims blanks, stops at ',' or the end. */
-static const char *next_field(const char *p, const char *end, char *buf, size_t cap, bool *more)
+/* Next field of a line: trims blanks, stops at ',' or the end. Sets *too_long when the
+ * field does not fit `cap`. */
+static const char *next_field(const char *p, const char *end, char *buf, size_t cap, bool *more,
+                              bool *too_long)
 {
     while (p < end && (*p == ' ' || *p == '\t')) p++;
     const char *start = p;
@@ -24,6 +29,7 @@ static const char *next_field(const char *p, const char *end, char *buf, size_t 
     const char *stop = p;
     while (stop > start && (stop[-1] == ' ' || stop[-1] == '\t' || stop[-1] == '\r')) stop--;
     size_t n = (size_t)(stop - start);
+    *too_long = n >= cap;
     if (n >= cap) n = cap - 1;
     memcpy(buf, start, n);
     buf[n] = '\0';
@@ -31,15 +37,116 @@ static const char *next_field(const char *p, const char *end, char *buf, size_t 
     return p < end ? p + 1 : p;
 }
 
-#define MAX_COLUMNS 64
+/* Next name of a comma-separated list (blanks around names ignored): sets *name and
+ * *len and returns the rest, or NULL at the end. */
+static const char *next_list_name(const char *p, const char **name, size_t *len)
+{
+    if (!p || !*p) return NULL;
+    while (*p == ' ') p++;
+    size_t n = strcspn(p, ",");
+    size_t m = n;
+    while (m > 0 && p[m - 1] == ' ') m--;
+    *name = p;
+    *len = m;
+    p += n;
+    return *p == ',' ? p + 1 : p;
+}
 
-sk_result sk_hand_samples_parse(const char *text, size_t length, const char *name,
-                                sk_hand_samples *out, sk_error *err)
+/* Whether `name` is one of the comma-separated names in `list`. */
+static bool in_list(const char *list, const char *name)
+{
+    size_t want = strlen(name), len;
+    const char *item;
+    for (const char *p = list; (p = next_list_name(p, &item, &len)) != NULL;)
+        if (len == want && strncmp(item, name, len) == 0) return true;
+    return false;
+}
+
+#define MAX_COLUMNS 64
+#define COL_IGNORED (-1)
+#define COL_GROUP (-2)
+
+/* The group number of a value, adding it if new. */
+static sk_result group_of(sk_hand_samples *out, const char *value, int *cap, int line_no, int *g,
+                          sk_error *err)
+{
+    for (int i = out->group_count - 1; i >= 0; i--)
+        if (strcmp(out->group_name[i], value) == 0) {
+            *g = i;
+            return SK_OK;
+        }
+    if (out->group_count >= SK_HAND_SAMPLES_MAX_GROUPS)
+        return sk_fail(err, SK_ERROR_LIMIT, "line %d: more than %d distinct groups", line_no,
+                       SK_HAND_SAMPLES_MAX_GROUPS);
+    if (out->group_count == *cap) {
+        int ncap = *cap ? *cap * 2 : 16;
+        char(*grown)[64] = realloc(out->group_name, (size_t)ncap * sizeof *grown);
+        if (!grown) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+        out->group_name = grown;
+        *cap = ncap;
+    }
+    snprintf(out->group_name[out->group_count], sizeof out->group_name[0], "%s", value);
+    *g = out->group_count++;
+    return SK_OK;
+}
+
+/* Checks that every name in a comma-separated list appeared in the header. */
+static sk_result check_listed_columns(const char *list, char (*header)[128], int ncol,
+                                      const char *what, sk_error *err)
+{
+    const char *item;
+    size_t m;
+    for (const char *p = list; (p = next_list_name(p, &item, &m)) != NULL;) {
+        bool found = m == 0;
+        for (int c = 0; c < ncol && !found; c++)
+            found = strlen(header[c]) == m && strncmp(header[c], item, m) == 0;
+        if (!found)
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s \"%.*s\" is not a column of the header",
+                           what, (int)(m < 64 ? m : 64), item);
+    }
+    return SK_OK;
+}
+
+/* Unit check over the rotational columns: degrees that never leave +-pi look like
+ * radians; radians beyond 2 pi look like degrees. */
+static void check_units(sk_hand_samples *out, sk_hand_angle_unit units)
+{
+    double max_abs = 0.0, max_range = 0.0;
+    for (int d = 0; d < SK_HAND_DOF_COUNT; d++) {
+        if (!out->present[d] || sk_hand_dof(d)->translation) continue;
+        double lo = INFINITY, hi = -INFINITY;
+        for (int i = 0; i < out->count; i++) {
+            double v = out->column[d][i];
+            lo = fmin(lo, v);
+            hi = fmax(hi, v);
+            max_abs = fmax(max_abs, fabs(v));
+        }
+        max_range = fmax(max_range, hi - lo);
+    }
+    out->max_abs_angle = max_abs;
+    if (units == SK_HAND_UNIT_RAD) out->units_suspect = max_abs > 2.0 * SK_PI;
+    /* read as degrees: every value within +-3.2 deg while something moves by more than a
+       hundredth of that is a recording in radians */
+    else out->units_suspect = max_abs <= 3.2 * SK_DEG_TO_RAD && max_range > 0.03 * SK_DEG_TO_RAD;
+}
+
+sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char *name,
+                                     const sk_hand_samples_desc *desc, sk_hand_samples *out,
+                                     sk_error *err)
 {
     memset(out, 0, sizeof *out);
+    sk_hand_samples_desc d = {0};
+    if (desc) d = *desc;
+    if (d.units == SK_HAND_UNIT_DEFAULT) d.units = SK_HAND_UNIT_DEG;
+    if (d.units != SK_HAND_UNIT_DEG && d.units != SK_HAND_UNIT_RAD)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "units = %d is not deg or rad", (int)d.units);
+    if (d.group_column && (!d.group_column[0] || strlen(d.group_column) > 127))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "group column name must have 1 to 127 characters");
     int col_dof[MAX_COLUMNS];
-    int ncol = 0, line_no = 0, cap = 0;
-    bool header = false;
+    char(*header)[128] = calloc(MAX_COLUMNS, sizeof *header);
+    if (!header) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    int ncol = 0, line_no = 0, cap = 0, group_cap = 0;
+    bool have_header = false, want_group = d.group_column != NULL;
     sk_result r = SK_OK;
     const char *p = text, *end = text + length;
     while (p < end && r == SK_OK) {
@@ -51,34 +158,55 @@ sk_result sk_hand_samples_parse(const char *text, size_t length, const char *nam
         while (q < eol && (*q == ' ' || *q == '\t' || *q == '\r')) q++;
         if (q == eol || *q == '#') continue; /* blank or comment */
         char field[128];
-        bool more = true;
-        if (!header) {
-            header = true;
+        bool more = true, too_long = false;
+        if (!have_header) {
+            have_header = true;
+            bool group_found = false;
             while (more && r == SK_OK) {
-                q = next_field(q, eol, field, sizeof field, &more);
+                q = next_field(q, eol, field, sizeof field, &more, &too_long);
                 if (ncol >= MAX_COLUMNS) {
                     r = sk_fail(err, SK_ERROR_LIMIT, "line %d: more than %d columns", line_no, MAX_COLUMNS);
                     break;
                 }
-                int d = -1;
-                if (strcmp(field, "frame") != 0 && strcmp(field, "time") != 0) {
-                    d = sk_hand_dof_find(field);
-                    if (d < 0) {
-                        r = sk_fail(err, SK_ERROR_PARSE,
-                                    "line %d, column %d: unknown DOF \"%s\" (names like "
-                                    "\"L.MCP.flex\"; \"frame\" and \"time\" are ignored)",
-                                    line_no, ncol + 1, field);
-                        break;
-                    }
-                    if (out->present[d]) {
-                        r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d: \"%s\" appears twice",
-                                    line_no, ncol + 1, field);
-                        break;
-                    }
-                    out->present[d] = true;
+                if (too_long) {
+                    r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d: header name longer than %d characters",
+                                line_no, ncol + 1, (int)sizeof field - 1);
+                    break;
                 }
-                col_dof[ncol++] = d;
+                for (int c = 0; c < ncol && r == SK_OK; c++)
+                    if (strcmp(header[c], field) == 0)
+                        r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d: \"%s\" appears twice", line_no,
+                                    ncol + 1, field);
+                if (r != SK_OK) break;
+                snprintf(header[ncol], sizeof header[0], "%s", field);
+                int dof = COL_IGNORED;
+                if (want_group && strcmp(field, d.group_column) == 0) {
+                    dof = COL_GROUP;
+                    group_found = true;
+                } else if (strcmp(field, "frame") != 0 && strcmp(field, "time") != 0 &&
+                           !in_list(d.ignore_columns, field)) {
+                    dof = sk_hand_dof_find(field);
+                    if (dof < 0) {
+                        r = sk_fail(err, SK_ERROR_PARSE,
+                                    "line %d, column %d: unknown DOF \"%s\" (names like \"L.MCP.flex\"; "
+                                    "\"frame\" and \"time\" are ignored, others with --ignore-columns)",
+                                    line_no, ncol + 1, field);
+                        break;
+                    }
+                    out->present[dof] = true;
+                }
+                col_dof[ncol++] = dof;
             }
+            if (r == SK_OK && want_group && !group_found)
+                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "group column \"%s\" is not in the header",
+                            d.group_column);
+            if (r == SK_OK) r = check_listed_columns(d.ignore_columns, header, ncol, "ignored column", err);
+            if (r == SK_OK) {
+                bool any = false;
+                for (int dof = 0; dof < SK_HAND_DOF_COUNT; dof++) any |= out->present[dof];
+                if (!any) r = sk_fail(err, SK_ERROR_PARSE, "line %d: no DOF columns in the header", line_no);
+            }
+            if (r != SK_OK) break;
             continue;
         }
         if (out->count >= cap) {
@@ -87,48 +215,66 @@ sk_result sk_hand_samples_parse(const char *text, size_t length, const char *nam
                 r = sk_fail(err, SK_ERROR_LIMIT, "line %d: more than 10000000 samples", line_no);
                 break;
             }
-            for (int d = 0; d < SK_HAND_DOF_COUNT && r == SK_OK; d++) {
-                if (!out->present[d]) continue;
-                double *grown = realloc(out->column[d], (size_t)ncap * sizeof(double));
+            for (int dof = 0; dof < SK_HAND_DOF_COUNT && r == SK_OK; dof++) {
+                if (!out->present[dof]) continue;
+                double *grown = realloc(out->column[dof], (size_t)ncap * sizeof(double));
                 if (!grown) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
-                else out->column[d] = grown;
+                else out->column[dof] = grown;
+            }
+            if (r == SK_OK && want_group) {
+                int *grown = realloc(out->group, (size_t)ncap * sizeof(int));
+                if (!grown) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+                else out->group = grown;
             }
             cap = ncap;
             if (r != SK_OK) break;
         }
         int c = 0;
         while (more && r == SK_OK) {
-            q = next_field(q, eol, field, sizeof field, &more);
+            q = next_field(q, eol, field, sizeof field, &more, &too_long);
             if (c >= ncol) {
                 r = sk_fail(err, SK_ERROR_PARSE, "line %d: more than the header's %d fields", line_no, ncol);
                 break;
             }
+            if (col_dof[c] == COL_GROUP) {
+                if (field[0] == '\0' || too_long || strlen(field) > 63) {
+                    r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d (%s): a group value needs 1 to 63 characters",
+                                line_no, c + 1, header[c]);
+                    break;
+                }
+                r = group_of(out, field, &group_cap, line_no, &out->group[out->count], err);
+                c++;
+                continue;
+            }
+            if (col_dof[c] == COL_IGNORED && in_list(d.ignore_columns, header[c])) {
+                c++;
+                continue;
+            }
             char *stop = NULL;
             errno = 0;
-            double v = strtod(field, &stop);
-            if (field[0] == '\0' || *stop != '\0' || errno == ERANGE || !isfinite(v)) {
-                r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d (%s): \"%s\" is not a finite number",
-                            line_no, c + 1, col_dof[c] >= 0 ? sk_hand_dof(col_dof[c])->name : "ignored",
-                            field);
+            double v = too_long ? NAN : strtod(field, &stop);
+            if (too_long || field[0] == '\0' || *stop != '\0' || errno == ERANGE || !isfinite(v) ||
+                fabs(v) > 1e6) {
+                r = sk_fail(err, SK_ERROR_PARSE,
+                            "line %d, column %d (%s): \"%.40s\" is not a number in [-1e6, 1e6]", line_no, c + 1,
+                            header[c], field);
                 break;
             }
-            /* angles in degrees, translations in mm: anything larger is not a measurement */
-            if (col_dof[c] >= 0 && fabs(v) > SK_HAND_SAMPLE_MAX) {
-                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                            "line %d, column %d (%s): %g is out of range [%g, %g]", line_no, c + 1,
-                            sk_hand_dof(col_dof[c])->name, v, -SK_HAND_SAMPLE_MAX, SK_HAND_SAMPLE_MAX);
-                break;
-            }
-            if (col_dof[c] >= 0)
-                out->column[col_dof[c]][out->count] = sk_hand__from_file_units(col_dof[c], v);
+            int dof = col_dof[c];
+            if (dof >= 0)
+                out->column[dof][out->count] = sk_hand_dof(dof)->translation ? v
+                                               : d.units == SK_HAND_UNIT_RAD ? v
+                                                                             : v * SK_DEG_TO_RAD;
             c++;
         }
         if (r == SK_OK && c != ncol)
             r = sk_fail(err, SK_ERROR_PARSE, "line %d: %d fields, the header has %d", line_no, c, ncol);
         if (r == SK_OK) out->count++;
     }
-    if (r == SK_OK && !header) r = sk_fail(err, SK_ERROR_PARSE, "no header line of DOF names");
+    free(header);
+    if (r == SK_OK && !have_header) r = sk_fail(err, SK_ERROR_PARSE, "no header line of DOF names");
     if (r == SK_OK && out->count == 0) r = sk_fail(err, SK_ERROR_PARSE, "no samples after the header");
+    if (r == SK_OK) check_units(out, d.units);
     if (r != SK_OK) {
         sk_hand_samples_free(out);
         sk_error_prefix(err, r, "%s", name);
@@ -136,16 +282,28 @@ sk_result sk_hand_samples_parse(const char *text, size_t length, const char *nam
     return r;
 }
 
-sk_result sk_hand_samples_load_file(const char *path, sk_hand_samples *out, sk_error *err)
+sk_result sk_hand_samples_parse(const char *text, size_t length, const char *name,
+                                sk_hand_samples *out, sk_error *err)
+{
+    return sk_hand_samples_parse_desc(text, length, name, NULL, out, err);
+}
+
+sk_result sk_hand_samples_read(const char *path, const sk_hand_samples_desc *desc,
+                               sk_hand_samples *out, sk_error *err)
 {
     char *text = NULL;
     size_t size = 0;
     memset(out, 0, sizeof *out);
     sk_result r = sk_read_file(path, SK_HAND_MAX_FILE_BYTES, &text, &size, err);
     if (r != SK_OK) return r;
-    r = sk_hand_samples_parse(text, size, path, out, err);
+    r = sk_hand_samples_parse_desc(text, size, path, desc, out, err);
     free(text);
     return r;
+}
+
+sk_result sk_hand_samples_load_file(const char *path, sk_hand_samples *out, sk_error *err)
+{
+    return sk_hand_samples_read(path, NULL, out, err);
 }
 
 sk_result sk_hand_parse_pairs(const char *text, int (*pairs)[2], int max_pairs, int *count,

@@ -52,12 +52,21 @@ void sk_hand__matvec(const double *h, const double *x, double *y);
 double sk_hand__energy(const sk_hand_solver *solver, const double *theta, const double *rhs,
                        double *grad);
 
+/* A lookup potential with its gradient g and Hessian (h[0] = xx, h[1] = yy, h[2] = xy) at
+ * absolute angles: exact for the Hermite interpolant inside a cell (its second
+ * derivatives jump between cells), zero curvature for bilinear tables. */
+double sk_hand__lut_eval_hessian(const sk_hand_lut *lut, double x, double y, double g[2], double h[3]);
+
 /* Linear solve by active set (limits), and the iterative solve with lookup tables. */
 sk_result sk_hand__solve_linear(sk_hand_solver *solver, const bool *pinned, double *theta,
                                 const double *rhs, sk_hand_solve_info *info, sk_error *err);
 sk_result sk_hand__solve_lut(sk_hand_solver *solver, const bool *pinned, double *theta,
                              const double *rhs, sk_hand_solve_info *info, sk_error *err);
 
+/* K (skeleton stiffness with the set's overrides; the set may be NULL) + A'WA, column-
+ * major N_DOF x N_DOF. */
+void sk_hand__equilibrium_matrix(const sk_hand_skeleton *skeleton,
+                                 const sk_hand_constraints *constraints, double *h);
 /* K (skeleton stiffness with the set's overrides) + A'WA positive definite, or an error
  * naming the DOF where the factorisation fails. */
 sk_result sk_hand__check_positive_definite(const sk_hand_skeleton *skeleton,

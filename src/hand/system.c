@@ -63,19 +63,25 @@ double sk_hand__energy(const sk_hand_solver *s, const double *theta, const doubl
     return e;
 }
 
-sk_result sk_hand__check_positive_definite(const sk_hand_skeleton *skel,
-                                           const sk_hand_constraints *c, sk_error *err)
+void sk_hand__equilibrium_matrix(const sk_hand_skeleton *skel, const sk_hand_constraints *c,
+                                 double *h)
 {
-    double h[N_DOF * N_DOF];
-    memset(h, 0, sizeof h);
+    memset(h, 0, sizeof(double) * N_DOF * N_DOF);
     for (int i = 0; i < N_DOF; i++)
-        h[i * N_DOF + i] = c->has_stiffness[i] ? c->stiffness[i] : skel->dof[i].stiffness;
-    for (int r = 0; r < c->row_count; r++) {
+        h[i * N_DOF + i] = c && c->has_stiffness[i] ? c->stiffness[i] : skel->dof[i].stiffness;
+    for (int r = 0; c && r < c->row_count; r++) {
         const sk_hand_row *row = &c->rows[r];
         for (int a = 0; a < row->term_count; a++)
             for (int b = 0; b < row->term_count; b++)
                 h[row->dof[b] * N_DOF + row->dof[a]] += row->weight * row->coeff[a] * row->coeff[b];
     }
+}
+
+sk_result sk_hand__check_positive_definite(const sk_hand_skeleton *skel,
+                                           const sk_hand_constraints *c, sk_error *err)
+{
+    double h[N_DOF * N_DOF];
+    sk_hand__equilibrium_matrix(skel, c, h);
     lapack_int info = LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', N_DOF, h, N_DOF);
     if (info > 0)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,

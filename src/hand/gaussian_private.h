@@ -1,0 +1,40 @@
+/* Dense linear algebra and Gaussian statistics for the calibrated potential of natural
+ * posture (thesis 3.2.2 read as a Gaussian, eq. 3.17): small symmetric matrices
+ * (n <= SK_HAND_DOF_COUNT), column-major, through LAPACK. */
+#ifndef SK_HAND_GAUSSIAN_PRIVATE_H
+#define SK_HAND_GAUSSIAN_PRIVATE_H
+
+#include <stdbool.h>
+
+#include "hand/hand_private.h"
+
+/* Lower Cholesky factor in place (upper triangle left as is); false if not positive
+ * definite. */
+bool sk_hand__cholesky(double *a, int n);
+/* Solves L L' x = b in place for `nrhs` columns of b (leading dimension n). */
+void sk_hand__cholesky_solve(const double *l, int n, double *b, int nrhs);
+/* log det of L L'. */
+double sk_hand__cholesky_logdet(const double *l, int n);
+/* Inverse of a symmetric positive definite matrix in place (full matrix); false if not
+ * positive definite. */
+bool sk_hand__spd_inverse(double *a, int n);
+/* Eigenvalues (ascending) and, if `vectors` is true, eigenvectors in place of `a`
+ * (columns); false on failure. */
+bool sk_hand__sym_eigen(double *a, int n, double *values, bool vectors);
+
+/* Mean and scatter sum_i (x_i - mean)(x_i - mean)' of the columns `dofs[0..d)` over the
+ * samples idx[0..n) (all samples when idx is NULL). */
+void sk_hand__moments(const sk_hand_samples *s, const int *dofs, int d, const int *idx, int n,
+                      double *mean, double *scatter);
+
+/* Gaussian conditional mean in precision form: with precision P (d x d) and the
+ * coordinates split by `pinned`, x_u = mu_u + B (x_p - mu_p) with B = -P_uu^-1 P_up.
+ * Writes B as nu x np (column-major, nu rows) into `b`; returns false if P_uu is not
+ * positive definite. */
+bool sk_hand__conditional(const double *p, int d, const bool *pinned, double *b);
+
+/* log N(x; mu, Sigma) given the Cholesky factor of Sigma and its log det. */
+double sk_hand__gauss_logpdf(const double *x, const double *mu, const double *chol, double logdet,
+                             int d);
+
+#endif

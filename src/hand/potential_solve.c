@@ -1,0 +1,142 @@
+/* Posing with a calibrated potential: each component is a thesis-form set with its own
+ * relaxed posture (eqs. 3.7, 3.17), solved within the joint limits by the equilibrium
+ * solver; with a mixture the components' equilibria are blended by the probability of
+ * the pinned values under each component (the grasp type the pins suggest). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hand/gaussian_private.h"
+#include "hand/potential_private.h"
+
+#define M_MAX SK_HAND_POTENTIAL_MAX_COMPONENTS
+#define D_MAX SK_HAND_DOF_COUNT
+
+struct sk_hand_potential_solver {
+    int m, d;
+    int dof[D_MAX];
+    int at[SK_HAND_DOF_COUNT]; /* index among the calibrated DOFs, or -1 */
+    double min[SK_HAND_DOF_COUNT], max[SK_HAND_DOF_COUNT];
+    double log_weight[M_MAX];
+    double mean[M_MAX][D_MAX];
+    double cov[M_MAX][D_MAX * D_MAX];
+    sk_hand_solver *solver[M_MAX];
+};
+
+void sk_hand_potential_solver_destroy(sk_hand_potential_solver *ps)
+{
+    if (!ps) return;
+    for (int c = 0; c < ps->m; c++) sk_hand_solver_destroy(ps->solver[c]);
+    free(ps);
+}
+
+sk_result sk_hand_potential_solver_create(sk_hand_potential_solver **out, const sk_hand_skeleton *skel,
+                                          const sk_hand_potential *p, const sk_hand_solver_desc *desc,
+                                          sk_error *err)
+{
+    *out = NULL;
+    if (p->component_count < 1 || p->component_count > M_MAX || !p->component)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the potential has no components");
+    sk_hand_potential_solver *ps = calloc(1, sizeof *ps);
+    if (!ps) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    ps->m = p->component_count;
+    ps->d = p->dof_count;
+    memcpy(ps->dof, p->dof, sizeof(int) * (size_t)p->dof_count);
+    for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
+        ps->at[i] = -1;
+        ps->min[i] = skel->dof[i].min;
+        ps->max[i] = skel->dof[i].max;
+    }
+    for (int a = 0; a < ps->d; a++) ps->at[ps->dof[a]] = a;
+    sk_result r = SK_OK;
+    for (int c = 0; c < ps->m && r == SK_OK; c++) {
+        const sk_hand_potential_component *comp = &p->component[c];
+        ps->log_weight[c] = log(comp->weight);
+        r = sk_hand_potential_gaussian(p, c, ps->mean[c], ps->cov[c], err);
+        /* the component's relaxed posture replaces the skeleton's (eq. 3.7) */
+        sk_hand_skeleton own = *skel;
+        for (int i = 0; i < SK_HAND_DOF_COUNT; i++) own.dof[i].relaxed = comp->relaxed[i];
+        if (r == SK_OK) r = sk_hand_solver_create(&ps->solver[c], &own, &comp->constraints, NULL, 0, desc, err);
+    }
+    if (r != SK_OK) {
+        sk_hand_potential_solver_destroy(ps);
+        return r;
+    }
+    *out = ps;
+    return SK_OK;
+}
+
+/* Probability of each component given the pinned calibrated DOFs (their marginal
+ * Gaussian under the component times its weight); the prior weights without pins. */
+static void responsibilities(const sk_hand_potential_solver *ps, const sk_hand_input *in, double *resp)
+{
+    int pin[D_MAX], np = 0;
+    double v[D_MAX];
+    for (int a = 0; a < ps->d; a++) {
+        int dof = ps->dof[a];
+        if (!in->pinned[dof]) continue;
+        pin[np] = a;
+        v[np++] = sk_clampd(in->pin_value[dof], ps->min[dof], ps->max[dof]);
+    }
+    double l[M_MAX], top = -INFINITY;
+    for (int c = 0; c < ps->m; c++) {
+        l[c] = ps->log_weight[c];
+        if (np > 0) {
+            double s[D_MAX * D_MAX], mu[D_MAX];
+            for (int j = 0; j < np; j++) {
+                mu[j] = ps->mean[c][pin[j]];
+                for (int i = 0; i < np; i++) s[j * np + i] = ps->cov[c][pin[j] * ps->d + pin[i]];
+            }
+            if (sk_hand__cholesky(s, np)) l[c] += sk_hand__gauss_logpdf(v, mu, s, sk_hand__cholesky_logdet(s, np), np);
+            else l[c] = -INFINITY;
+        }
+        top = fmax(top, l[c]);
+    }
+    double sum = 0.0;
+    for (int c = 0; c < ps->m; c++) {
+        resp[c] = isfinite(top) ? exp(l[c] - top) : 1.0;
+        sum += resp[c];
+    }
+    for (int c = 0; c < ps->m; c++) resp[c] /= sum;
+}
+
+sk_result sk_hand_potential_solve(sk_hand_potential_solver *ps, const sk_hand_input *in,
+                                  double dofs[SK_HAND_DOF_COUNT], sk_hand_solve_info *info, double *resp_out,
+                                  sk_error *err)
+{
+    double resp[M_MAX];
+    if (ps->m == 1) resp[0] = 1.0;
+    else responsibilities(ps, in, resp);
+    int best = 0;
+    for (int c = 1; c < ps->m; c++)
+        if (resp[c] > resp[best]) best = c;
+    double acc[SK_HAND_DOF_COUNT] = {0}, used = 0.0;
+    bool converged = true;
+    sk_hand_solve_info best_info = {0};
+    for (int c = 0; c < ps->m; c++) {
+        /* components far less probable than the best change nothing visible */
+        if (c != best && resp[c] < 1e-9) continue;
+        double q[SK_HAND_DOF_COUNT];
+        sk_hand_solve_info ci;
+        sk_result r = sk_hand_solve(ps->solver[c], in, q, &ci, err);
+        if (r != SK_OK) return r;
+        converged &= ci.converged;
+        if (c == best) best_info = ci;
+        for (int i = 0; i < SK_HAND_DOF_COUNT; i++) acc[i] += resp[c] * q[i];
+        used += resp[c];
+    }
+    for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
+        double v = acc[i] / used;
+        /* the blend of values within the limits stays within them (up to rounding) */
+        dofs[i] = sk_clampd(v, ps->min[i], ps->max[i]);
+    }
+    for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
+        if (in->pinned[i]) dofs[i] = sk_clampd(in->pin_value[i], ps->min[i], ps->max[i]);
+    if (info) {
+        *info = best_info;
+        info->converged = converged;
+    }
+    if (resp_out)
+        for (int c = 0; c < ps->m; c++) resp_out[c] = resp[c];
+    return SK_OK;
+}
