@@ -177,6 +177,7 @@ static const bad_case k_bad_cases[] = {
     {"noise --size 8 -o OUT.jpg", "OUT.jpg", ".png, .exr"},
     {"noise --max-memory 1K -o OUT.png", "--max-memory", "[1M, 1P]"},
     {"noise --size 20000 --max-memory 512M -o OUT.png", "--size", "--max-memory"},
+    {"noise --size 65536 --max-memory 1P -o OUT.png", "--size", "an image may hold"},
     {"noise --size 8 -o DIR/folder.png", "folder.png", "folder"},
     /* sheet */
     {"sheet --columns -1 DIR/a.png -o OUT.png", "--columns", "[0, 4096]"},
@@ -258,7 +259,8 @@ static const bad_case k_bad_cases[] = {
     {"skin maps --size 8 --furrow-level 3 --preset fig13a -o OUT", "--furrow-level", "at most 1"},
     {"skin maps --size 8 --samples 0 -o OUT", "--samples", "[1, 8]"},
     {"skin maps --size 8 -o DIR/file", "file", "not a folder"},
-    {"skin maps --size 30000 -o OUT", "--size", "--max-memory"},
+    {"skin maps --size 20000 -o OUT", "--size", "--max-memory"},
+    {"skin --size 65536 --max-memory 1P -o OUT.png", "--size", "an image may hold"},
     /* wood cut */
     {"wood cut --plane diagonal -o OUT.png", "--plane", "end, flat or quarter"},
     {"wood cut --distance -1 -o OUT.png", "--distance", "[0, 10000]"},
@@ -281,7 +283,7 @@ static const bad_case k_bad_cases[] = {
     {"wood sweep --from-deg 100 -o OUT", "--from-deg", "[-89, 89]"},
     {"wood sweep --to-deg -100 -o OUT", "--to-deg", "[-89, 89]"},
     {"wood sweep --size 8 -o DIR/file", "file", "not a folder"},
-    {"wood sweep --size 40000 -o OUT", "--size", "--max-memory"},
+    {"wood sweep --size 25000 -o OUT", "--size", "--max-memory"},
     /* render */
     {"render DIR/scene.json --size 0x0 -o OUT.png", "--size", "[1, 16384]"},
     {"render DIR/scene.json --spp 0 -o OUT.png", "--spp", "[1, 4096]"},

@@ -504,7 +504,8 @@ bool cli_parse_memory_size(const char *text, uint64_t *bytes)
     } units[] = {{"", 1},           {"B", 1},           {"K", 1024.0},      {"KB", 1024.0},
                  {"KiB", 1024.0},   {"M", 1048576.0},   {"MB", 1048576.0},  {"MiB", 1048576.0},
                  {"G", 1073741824.0}, {"GB", 1073741824.0}, {"GiB", 1073741824.0},
-                 {"T", 1099511627776.0}, {"TB", 1099511627776.0}, {"TiB", 1099511627776.0}};
+                 {"T", 1099511627776.0}, {"TB", 1099511627776.0}, {"TiB", 1099511627776.0},
+                 {"P", 1125899906842624.0}, {"PB", 1125899906842624.0}, {"PiB", 1125899906842624.0}};
     for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
         if (strcasecmp(text + n, units[i].suffix) != 0) continue;
         double b = v * units[i].scale;
@@ -529,6 +530,16 @@ int cli_check_memory(const cli_args *args, double bytes, const char *driver)
                     "%s needs about %.1f GiB of memory, more than the cap of %.1f GiB (make it "
                     "smaller, or raise the cap with --max-memory)",
                     driver, bytes / gib, cap / gib);
+}
+
+int cli_check_image(int width, int height, int channels, const char *driver)
+{
+    double bytes = cli_image_bytes(width, height, 4.0 * channels);
+    if (bytes <= (double)SK_IMAGE_MAX_BYTES) return 0;
+    return cli_fail(CLI_EXIT_USAGE,
+                    "%s of %d float channel(s) needs %.1f GiB, more than the %.0f GiB an image may "
+                    "hold (make it smaller, or render parts with --region)",
+                    driver, channels, bytes / 1073741824.0, (double)SK_IMAGE_MAX_BYTES / 1073741824.0);
 }
 
 int cli_output_format(const char *option, const char *path, const char *const *accepted,

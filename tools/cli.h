@@ -155,6 +155,9 @@ bool cli_parse_memory_size(const char *text, uint64_t *bytes);
  * naming what drives it (`driver`, e.g. "--size 20000x20000" or "--tile-size 16384 for
  * 2 images"). Every command calls it with its estimate before allocating. */
 int cli_check_memory(const cli_args *args, double bytes, const char *driver);
+/* The library's cap on one image (SK_IMAGE_MAX_BYTES of float samples), checked up front
+ * so the message names what drives it (`driver`, e.g. "a 65536 x 65536 map (--size)"). */
+int cli_check_image(int width, int height, int channels, const char *driver);
 /* Pixel buffers of `bytes_per_pixel` bytes for a w x h image (as a double: no overflow). */
 double cli_image_bytes(double width, double height, double bytes_per_pixel);
 

@@ -42,7 +42,8 @@ static int run_noise(const cli_command *command, const cli_args *args)
     char driver[96];
     snprintf(driver, sizeof driver, "a %d x %d map (--size, --region)", region[2], region[3]);
     /* the float map and its encoding */
-    if ((status = cli_check_memory(args, cli_image_bytes(region[2], region[3], 12), driver)))
+    if ((status = cli_check_image(region[2], region[3], 1, driver)) ||
+        (status = cli_check_memory(args, cli_image_bytes(region[2], region[3], 12), driver)))
         return status;
 
     sk_image image = {0};

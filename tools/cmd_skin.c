@@ -73,7 +73,8 @@ static int check_image_memory(const cli_args *args, int w, int h, double bytes_p
     double bytes = cli_image_bytes(w, h, bytes_per_pixel);
     char driver[96];
     snprintf(driver, sizeof driver, "a %d x %d image (--size, --region)", w, h);
-    int status = cli_check_memory(args, bytes, driver);
+    int status = cli_check_image(w, h, 3, driver);
+    if (!status) status = cli_check_memory(args, bytes, driver);
     if (status) return status;
     desc->max_memory -= bytes;
     if (desc->max_memory < 1.0) desc->max_memory = 1.0;

@@ -172,6 +172,8 @@ static int check_memory(const cli_args *args, const wood_job *job, double bytes_
     char driver[96];
     snprintf(driver, sizeof driver, "a %d x %d image (--size, --region)", job->region[2],
              job->region[3]);
+    int status = cli_check_image(job->region[2], job->region[3], 3, driver);
+    if (status) return status;
     return cli_check_memory(args, cli_image_bytes(job->region[2], job->region[3], bytes_per_pixel),
                             driver);
 }
