@@ -4,7 +4,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "test_support.h"
@@ -454,6 +457,48 @@ static void test_outputs_are_all_or_nothing(void **state)
     assert_true(S_ISLNK(st.st_mode));
 }
 
+static void sleep_ms(long ms)
+{
+    struct timespec t = {ms / 1000, (ms % 1000) * 1000000L};
+    nanosleep(&t, NULL);
+}
+
+/* SIGTERM or SIGINT while "wood sweep" or "sheet" wrote left .NAME.XXXXXXXX.tmp behind. */
+static void test_stopped_command_leaves_nothing(void **state)
+{
+    (void)state;
+    static const int signals[] = {SIGTERM, SIGINT};
+    for (int k = 0; k < 2; k++) {
+        const char *dir = fresh_path(k ? "stopped-int" : "stopped-term");
+        char command[2048], out[1024];
+        snprintf(command, sizeof command, "mkdir -p '%s'", dir);
+        assert_int_equal(system(command), 0);
+        snprintf(out, sizeof out, "%s/sweep", dir);
+        pid_t child = fork();
+        assert_true(child >= 0);
+        if (child == 0) {
+            execl(SK_TEST_CLI, "shitsukan", "wood", "sweep", "--size", "48", "--frames", "10000",
+                  "--threads", "1", "-q", "-o", out, (char *)NULL);
+            _exit(127);
+        }
+        /* wait until frames are being written into the staged folder */
+        bool writing = false;
+        for (int i = 0; i < 2000 && !writing; i++) {
+            sleep_ms(10);
+            writing = sk_test_count_files_containing(dir, ".part") > 0;
+        }
+        assert_true(writing);
+        sleep_ms(300);
+        assert_int_equal(kill(child, signals[k]), 0);
+        int status;
+        assert_int_equal(waitpid(child, &status, 0), child);
+        assert_true(WIFSIGNALED(status) && WTERMSIG(status) == signals[k]);
+        assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+        assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
+        assert_false(sk_test_file_exists(out));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -464,6 +509,7 @@ int main(void)
         cmocka_unit_test(test_hand_inputs_are_checked),
         cmocka_unit_test(test_every_command_refuses_bad_input),
         cmocka_unit_test(test_outputs_are_all_or_nothing),
+        cmocka_unit_test(test_stopped_command_leaves_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -22,6 +22,7 @@
 #include "shitsukan/mesh.h"
 #include "shitsukan/noise_map.h"
 #include "shitsukan/preset.h"
+#include "shitsukan/render.h"
 #include "shitsukan/wood.h"
 
 /* ------------------------------------------------------------ strict JSON */
@@ -200,6 +201,15 @@ static void test_documented_endpoints_are_accepted(void **state)
         if (sk_wood_create(&d, &wood, &err) != SK_OK) fail_msg("%s: %s", sets[i], err.message);
         sk_wood_destroy(wood);
     }
+    /* render unit_mm = 1e-6, the documented minimum */
+    sk_render_scene_desc *scene = calloc(1, sizeof *scene);
+    assert_non_null(scene);
+    scene->unit_mm = 1e-6f;
+    sk_error err = {0};
+    if (sk_render_scene_desc_validate(scene, &err) != SK_OK) fail_msg("unit_mm: %s", err.message);
+    scene->unit_mm = 0.9e-6f;
+    assert_int_equal(sk_render_scene_desc_validate(scene, &err), SK_ERROR_INVALID_ARGUMENT);
+    free(scene);
 }
 
 /* ------------------------------------------------------------ atomic files */
