@@ -2,6 +2,7 @@
  * calibrate`: the whole potential of eq. 3.17 fitted to joint-angle samples (thesis 3.2.2),
  * its held-out evaluation against the mean, linear regression and a PCA prior, and the
  * synthetic recordings the demonstration uses. Argument parsing only. */
+#define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
