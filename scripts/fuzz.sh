@@ -12,6 +12,7 @@ build=${1:?usage: fuzz.sh BUILD_DIR SECONDS [HARNESS...]}
 seconds=${2:?usage: fuzz.sh BUILD_DIR SECONDS [HARNESS...]}
 shift 2
 here=$(cd "$(dirname "$0")/.." && pwd)
+build=$(cd "$build" && pwd)
 fuzz="$here/fuzz"
 mapfile -t harnesses < <(if [ $# -gt 0 ]; then printf '%s\n' "$@"; else
     for f in "$fuzz"/fuzz_*.c; do basename "$f" .c; done; fi)
