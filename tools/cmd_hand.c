@@ -530,7 +530,8 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))
         rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     sk_progress_bar bar;
-    if (!rc) sk_progress_bar_begin(&bar, "hand animate", !args->common.quiet);
+    bool bar_begun = !rc;
+    if (bar_begun) sk_progress_bar_begin(&bar, "hand animate", !args->common.quiet);
     for (int f = 0; f < frames && !rc; f++) {
         sk_hand_input in;
         sk_hand_animation_input(anim, f, &in);
@@ -538,7 +539,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
             rc = cli_fail_error(&err);
         sk_progress_bar_update(&bar, (f + 1.0) / frames);
     }
-    if (frames > 0) sk_progress_bar_end(&bar);
+    if (bar_begun) sk_progress_bar_end(&bar);
     double frame_time = rc ? 0 : 1.0 / anim->fps;
     if (!rc && bvh && sk_hand_bvh_write(&skel, dofs, frames, frame_time, bvh, &err) != SK_OK) rc = cli_fail_error(&err);
     if (!rc && positions) rc = write_positions(&skel, dofs, frames, positions);
