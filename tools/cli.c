@@ -525,11 +525,14 @@ int cli_check_memory(const cli_args *args, double bytes, const char *driver)
 {
     double cap = (double)args->common.max_memory;
     if (bytes <= cap) return 0;
-    const double gib = 1073741824.0;
+    /* GiB with a decimal, or MiB below 1 GiB */
+    const double gib = 1073741824.0, mib = 1048576.0;
+    bool small = cap < gib;
     return cli_fail(CLI_EXIT_USAGE,
-                    "%s needs about %.1f GiB of memory, more than the cap of %.1f GiB (make it "
+                    "%s needs about %.*f %s of memory, more than the cap of %.*f %s (make it "
                     "smaller, or raise the cap with --max-memory)",
-                    driver, bytes / gib, cap / gib);
+                    driver, small ? 0 : 1, bytes / (small ? mib : gib), small ? "MiB" : "GiB",
+                    small ? 0 : 1, cap / (small ? mib : gib), small ? "MiB" : "GiB");
 }
 
 int cli_check_image(int width, int height, int channels, const char *driver)
