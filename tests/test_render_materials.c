@@ -193,7 +193,7 @@ static void test_preset_references(void **state)
     assert_int_equal(d->materials[0].type, SK_RENDER_MATERIAL_SKIN);
     assert_int_equal(d->materials[0].skin.level_count, 3);
     assert_near(d->materials[0].skin.levels[0].stretch[0], 5, 0); /* Fig. 19(f) */
-    assert_near(d->materials[0].skin.size_mm[0], 11.780972, 1e-5); /* the skin_set edit */
+    assert_near(d->materials[0].skin.size_mm[0], 23.561945, 1e-5); /* the skin_set edit */
     free(d);
 
     /* a wood preset file next to the scene (relative path) */

@@ -10,6 +10,7 @@
 #include "shitsukan/image.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/skin.h"
+#include "skin/skin_internal.h"
 #include "test_support.h"
 
 static bool sanitized(void) { return getenv("SK_TEST_SANITIZED") != NULL; }
@@ -365,6 +366,93 @@ static void test_normal_is_gradient(void **state)
     sk_skin_destroy(skin);
 }
 
+/* normal_model profile (the paper's Fig. 7): each level's slope is its profile's along the
+ * ray from the cell centre, so the normal leans along that ray, by the derivative of the
+ * height along it. */
+static void test_profile_normal(void **state)
+{
+    (void)state;
+    sk_skin_desc d = desc_19a(3.2f);
+    d.level_count = 1;
+    d.levels[0].perturb_rate = 0;
+    d.normal_model = SK_SKIN_NORMAL_PROFILE;
+    sk_skin *skin = make(&d);
+    double w, h;
+    sk_skin_tile_size(skin, &w, &h);
+    sk_rng rng = sk_rng_make(5, 0, 0, 0);
+    int n = 1000, good = 0, leaning = 0;
+    double step = 2e-5;
+    for (int s = 0; s < n; s++) {
+        double x = sk_rng_uniform(&rng) * w, y = sk_rng_uniform(&rng) * h;
+        sk_skin_sample smp;
+        sk_skin_query(skin, x, y, 0, &smp);
+        sk_skin_cell_info ci;
+        assert_int_equal(sk_skin_cell_info_get(skin, 1, smp.cell[0], &ci, NULL), SK_OK);
+        double rx = x - ci.centre.x, ry = y - ci.centre.y;
+        rx -= w * round(rx / w), ry -= h * round(ry / h);
+        double r = sqrt(rx * rx + ry * ry);
+        if (r < 1e-3) continue;
+        double ux = rx / r, uy = ry / r;
+        float h1, h0;
+        sk_skin_eval(skin, x + step * ux, y + step * uy, &h1, NULL);
+        sk_skin_eval(skin, x - step * ux, y - step * uy, &h0, NULL);
+        double slope = (h1 - h0) / (2 * step);
+        /* the horizontal part of N = (-g, 1) / |.| with g = slope * u */
+        double gx = -smp.normal.x / smp.normal.z, gy = -smp.normal.y / smp.normal.z;
+        double across = fabs(gx * uy - gy * ux), along = gx * ux + gy * uy;
+        if (across < 1e-4 && fabs(along - slope) < 1e-3 * (1 + fabs(slope))) good++;
+        leaning += along < -0.01; /* downhill away from the centre on the slopes */
+    }
+    if (good < n * 97 / 100) fail_msg("profile normal along the ray at %d of %d points", good, n);
+    assert_true(leaning > n / 10);
+    /* a stretched level takes the ray before the stretch: the slope along the stretched
+       ray is still the height's, the normal leans across it towards the long sides */
+    sk_skin_desc ds = d;
+    ds.levels[0].stretch[0] = 3, ds.levels[0].stretch[1] = 1;
+    ds.size_mm[0] = 9.6f;
+    sk_skin *st = make(&ds);
+    int along_ok = 0, across = 0, tried = 0;
+    for (int s = 0; s < 400; s++) {
+        double x = sk_rng_uniform(&rng) * 9.6, y = sk_rng_uniform(&rng) * h;
+        sk_skin_sample smp;
+        sk_skin_query(st, x, y, 0, &smp);
+        sk_skin_cell_info ci;
+        sk_skin_cell_info_get(st, 1, smp.cell[0], &ci, NULL);
+        double rx = x - ci.centre.x, ry = y - ci.centre.y;
+        rx -= 9.6 * round(rx / 9.6), ry -= h * round(ry / h);
+        double r = sqrt(rx * rx + ry * ry);
+        if (r < 1e-3) continue;
+        double ux = rx / r, uy = ry / r;
+        float h1, h0;
+        sk_skin_eval(st, x + step * ux, y + step * uy, &h1, NULL);
+        sk_skin_eval(st, x - step * ux, y - step * uy, &h0, NULL);
+        double slope = (h1 - h0) / (2 * step);
+        double gx = -smp.normal.x / smp.normal.z, gy = -smp.normal.y / smp.normal.z;
+        tried++;
+        /* float heights leave the finite difference a few 1e-3 of noise */
+        along_ok += fabs(gx * ux + gy * uy - slope) < 5e-3 * (1 + fabs(slope));
+        across += fabs(gx * uy - gy * ux) > 1e-3;
+    }
+    if (along_ok < tried * 97 / 100)
+        fail_msg("stretched: slope along the ray right at %d of %d points", along_ok, tried);
+    assert_true(across > tried / 10);
+    sk_skin_destroy(st);
+    /* the gradient model differs from it where D(phi) changes with the angle */
+    d.normal_model = SK_SKIN_NORMAL_GRADIENT;
+    sk_skin *grad = make(&d);
+    int differ = 0;
+    for (int s = 0; s < 200; s++) {
+        double x = sk_rng_uniform(&rng) * w, y = sk_rng_uniform(&rng) * h;
+        sk_vec3f a, b;
+        sk_skin_eval(skin, x, y, NULL, &a);
+        sk_skin_eval(grad, x, y, NULL, &b);
+        differ += fabsf(a.x - b.x) + fabsf(a.y - b.y) > 1e-3f;
+    }
+    assert_true(differ > 20);
+    sk_skin_destroy(grad);
+    sk_skin_destroy(skin);
+}
+
 /* Spread of the radius of the contour through the middle of the slope, around a centre. */
 static double contour_spread(const sk_skin *skin, uint32_t cell)
 {
@@ -672,6 +760,94 @@ static void test_cli_help_and_errors(void **state)
 }
 
 /* Every shipped preset loads, validates and builds (Table 1 and the real regions). */
+/* Sign of the turn a -> b -> c. */
+static int turn(sk_vec2d a, sk_vec2d b, sk_vec2d c)
+{
+    double v = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    return (v > 0) - (v < 0);
+}
+
+typedef struct segment {
+    double x0, x1;
+    size_t i;
+} segment;
+
+static int by_x0(const void *a, const void *b)
+{
+    double u = ((const segment *)a)->x0, v = ((const segment *)b)->x0;
+    return (u > v) - (u < v);
+}
+
+/* True if two segments of the closed polyline p that are not neighbours cross or touch
+ * (a sweep over x). */
+static bool self_intersects(const sk_vec2d *p, size_t n)
+{
+    segment *s = malloc(sizeof(segment) * n);
+    for (size_t i = 0; i < n; i++) {
+        sk_vec2d a = p[i], b = p[(i + 1) % n];
+        s[i] = (segment){fmin(a.x, b.x), fmax(a.x, b.x), i};
+    }
+    qsort(s, n, sizeof s[0], by_x0);
+    bool found = false;
+    for (size_t u = 0; u < n && !found; u++)
+        for (size_t v = u + 1; v < n && s[v].x0 <= s[u].x1 && !found; v++) {
+            size_t i = s[u].i, j = s[v].i;
+            if ((i + 1) % n == j || (j + 1) % n == i) continue;
+            sk_vec2d a = p[i], b = p[(i + 1) % n], c = p[j], d = p[(j + 1) % n];
+            if (fmax(fmin(a.y, b.y), fmin(c.y, d.y)) > fmin(fmax(a.y, b.y), fmax(c.y, d.y)))
+                continue;
+            int t1 = turn(a, b, c), t2 = turn(a, b, d), t3 = turn(c, d, a), t4 = turn(c, d, b);
+            if (t1 * t2 <= 0 && t3 * t4 <= 0) found = true;
+        }
+    free(s);
+    return found;
+}
+
+/* The geometry of a shipped preset's cells: no cell is wider than half the tile along
+ * either axis (so the tile holds whole cells along any stretch and no cell meets itself
+ * across the wrap), and no cell's perturbed polygon crosses itself (in the frame where
+ * its level is built; the levels above carry it by homeomorphisms, whose tiling
+ * test_cells_tile checks). Every level-1 cell and up to about 400 cells of each deeper
+ * level are checked. */
+static void check_cell_geometry(const char *name, const sk_skin *skin)
+{
+    double tw, th;
+    sk_skin_tile_size(skin, &tw, &th);
+    int levels = sk_skin_get_desc(skin)->level_count;
+    size_t cap = 4096;
+    sk_vec2d *pts = malloc(sizeof(sk_vec2d) * cap);
+    for (int level = 1; level <= levels; level++) {
+        uint32_t count = sk_skin_cell_count(skin, level);
+        uint32_t step = level == 1 || count < 400 ? 1 : count / 400;
+        for (uint32_t c = 0; c < count; c += step) {
+            size_t n = sk_skin_cell_outline(skin, level, c, 2, pts, cap);
+            if (n > cap) {
+                cap = n;
+                pts = realloc(pts, sizeof(sk_vec2d) * cap);
+                n = sk_skin_cell_outline(skin, level, c, 2, pts, cap);
+            }
+            double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+            for (size_t i = 0; i < n; i++) {
+                x0 = fmin(x0, pts[i].x), x1 = fmax(x1, pts[i].x);
+                y0 = fmin(y0, pts[i].y), y1 = fmax(y1, pts[i].y);
+            }
+            if (x1 - x0 > 0.5 * tw || y1 - y0 > 0.5 * th)
+                fail_msg("%s: level-%d cell %u is %.3g x %.3g mm, more than half the %g x %g mm "
+                         "tile",
+                         name, level, c, x1 - x0, y1 - y0, tw, th);
+            n = sk__cell_polygon(skin, level, c, pts, cap);
+            if (n > cap) {
+                cap = n;
+                pts = realloc(pts, sizeof(sk_vec2d) * cap);
+                n = sk__cell_polygon(skin, level, c, pts, cap);
+            }
+            if (self_intersects(pts, n))
+                fail_msg("%s: the outline of level-%d cell %u crosses itself", name, level, c);
+        }
+    }
+    free(pts);
+}
+
 static void test_presets_build(void **state)
 {
     (void)state;
@@ -693,6 +869,7 @@ static void test_presets_build(void **state)
         sk_preset_free(p);
         sk_skin *skin = make(&d);
         assert_true(sk_skin_cell_count(skin, 1) > 0);
+        check_cell_geometry(names[i], skin);
         sk_skin_destroy(skin);
     }
 }
@@ -705,6 +882,65 @@ static sk_image read_png(const char *path, sk_image_metadata *meta, int *bits)
     if (sk_image_read_png(&im, path, &rd, meta, bits, &err) != SK_OK)
         fail_msg("%s: %s", path, err.message);
     return im;
+}
+
+/* The height range bounds every height, pores included where they overlap: in the library
+ * (crowded pores) and in the files skin maps writes (the metadata against height.exr). */
+static void test_height_range(void **state)
+{
+    (void)state;
+    sk_skin_desc d = desc_19a(2.0f);
+    d.pores.hair = (sk_skin_pore_kind){.depth_mm = 0.05f, .radius_mm = 0.3f, .density = 1};
+    d.pores.sweat = (sk_skin_pore_kind){.depth_mm = 0.02f, .radius_mm = 0.1f, .density = 1};
+    d.pores.sweat_level = 2;
+    sk_skin *skin = make(&d);
+    float lo, hi, seen_lo = INFINITY, seen_hi = -INFINITY;
+    sk_skin_height_range(skin, &lo, &hi);
+    int n = 256;
+    float *height = malloc(sizeof(float) * n * n);
+    sk_skin_render_desc rd = {.width = n, .height = n, .height_mm = height};
+    assert_int_equal(sk_skin_render(skin, &rd, NULL), SK_OK);
+    for (int i = 0; i < n * n; i++) seen_lo = fminf(seen_lo, height[i]), seen_hi = fmaxf(seen_hi, height[i]);
+    free(height);
+    if (!(lo <= seen_lo && seen_hi <= hi))
+        fail_msg("heights %g .. %g outside the range %g .. %g", seen_lo, seen_hi, lo, hi);
+    /* overlapping pits reach below the deepest single pore (its depth varies by +-20 %),
+       and the bound is not far below them */
+    assert_true(seen_lo < -1.2f * 0.05f);
+    assert_true(lo > 5.0f * seen_lo);
+    sk_skin_destroy(skin);
+
+    sk_test_run run;
+    const char *dir = sk_test_path("maps-range");
+    assert_int_equal(
+        sk_test_cli(&run, "skin maps --preset back-of-hand --size 512 -q -o '%s'", dir), 0);
+    char path[1024];
+    snprintf(path, sizeof path, "%s/height.exr", dir);
+    sk_image ex = {0};
+    sk_image_metadata meta = {0};
+    assert_int_equal(sk_image_read_exr(&ex, path, &meta, NULL), SK_OK);
+    seen_lo = INFINITY, seen_hi = -INFINITY;
+    for (int i = 0; i < ex.width * ex.height; i++)
+        seen_lo = fminf(seen_lo, ex.data[i]), seen_hi = fmaxf(seen_hi, ex.data[i]);
+    sk_image_free(&ex);
+    snprintf(path, sizeof path, "%s/height.png", dir);
+    sk_image_metadata pmeta = {0};
+    sk_image png = read_png(path, &pmeta, NULL);
+    for (int k = 0; k < 2; k++) {
+        const sk_image_metadata *m = k ? &pmeta : &meta;
+        lo = strtof(sk_image_metadata_get(m, "shitsukan:height_min_mm"), NULL);
+        hi = strtof(sk_image_metadata_get(m, "shitsukan:height_max_mm"), NULL);
+        if (!(lo <= seen_lo && seen_hi <= hi))
+            fail_msg("height.exr spans %g .. %g mm, its metadata says %g .. %g", seen_lo,
+                     seen_hi, lo, hi);
+    }
+    /* no code of height.png is clipped: each decodes to its height.exr value */
+    snprintf(path, sizeof path, "%s/height.exr", dir);
+    assert_int_equal(sk_image_read_exr(&ex, path, NULL, NULL), SK_OK);
+    for (int i = 0; i < ex.width * ex.height; i++)
+        assert_true(fabsf(lo + png.data[i] * (hi - lo) - ex.data[i]) <= (hi - lo) / 65535.0f);
+    sk_image_free(&ex);
+    sk_image_free(&png);
 }
 
 /* skin maps writes every map; --region gives the same pixels; threads do not matter. */
@@ -737,7 +973,7 @@ static void test_cli_maps(void **state)
         if (m == 0) {
             assert_int_equal(bits, 16);
             assert_non_null(sk_image_metadata_get(&meta, "shitsukan:height_max_mm"));
-            assert_non_null(sk_image_metadata_get(&meta, "shitsukan:mm_per_px"));
+            assert_non_null(sk_image_metadata_get(&meta, SK_IMAGE_KEY_MM_PER_PIXEL));
         }
         for (int y = 0; y < 40; y++)
             assert_memory_equal(sk_image_pixel(&fa, 20, 10 + y), sk_image_pixel(&fb, 0, y),
@@ -781,6 +1017,7 @@ int main(void)
         cmocka_unit_test(test_children_in_parent),
         cmocka_unit_test(test_profile_ends),
         cmocka_unit_test(test_normal_is_gradient),
+        cmocka_unit_test(test_profile_normal),
         cmocka_unit_test(test_roundness),
         cmocka_unit_test(test_seamless),
         cmocka_unit_test(test_aperiodic),
@@ -790,6 +1027,7 @@ int main(void)
         cmocka_unit_test(test_presets_build),
         cmocka_unit_test(test_cli_help_and_errors),
         cmocka_unit_test(test_cli_maps),
+        cmocka_unit_test(test_height_range),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

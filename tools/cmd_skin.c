@@ -17,7 +17,8 @@
 #define SKIN_FAST_PNG_PIXELS (2048 * 2048)
 
 static const cli_option k_preview_options[] = {
-    {"size", 0, "N|WxH", "image size in pixels; default 400 (the paper's)", false},
+    {"size", 0, "N|WxH", "image size in pixels; default 400 (the paper's) on the tile's shorter side",
+     false},
     {"mm-per-px", 0, "MM", "pixel size in mm (the tile becomes size x MM); default from size_mm",
      false},
     {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full image)",
@@ -27,7 +28,7 @@ static const cli_option k_preview_options[] = {
 };
 
 static const cli_option k_maps_options[] = {
-    {"size", 0, "N|WxH", "map size in pixels; default 1024", false},
+    {"size", 0, "N|WxH", "map size in pixels; default 1024 on the tile's shorter side", false},
     {"mm-per-px", 0, "MM", "pixel size in mm (the tile becomes size x MM); default from size_mm",
      false},
     {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full map)", false},
@@ -51,7 +52,14 @@ static int load_desc(const cli_command *command, const cli_args *args, int defau
     sk_result r = sk_preset_bind(preset, &sk_skin_schema, desc, &err);
     sk_preset_free(preset);
     if (r != SK_OK) return cli_fail_error(&err);
-    if ((status = cli_get_size(command, args, "size", default_size, default_size,
+    /* the default keeps the tile's shape: default_size pixels on its shorter side */
+    sk_skin_desc resolved = sk_skin_desc_resolved(desc);
+    double aspect = (double)resolved.size_mm[0] / resolved.size_mm[1];
+    double dw = aspect > 1 ? default_size * aspect : default_size;
+    double dh = aspect < 1 ? default_size / aspect : default_size;
+    if (!(dw <= SK_IMAGE_MAX_DIMENSION)) dw = SK_IMAGE_MAX_DIMENSION;
+    if (!(dh <= SK_IMAGE_MAX_DIMENSION)) dh = SK_IMAGE_MAX_DIMENSION;
+    if ((status = cli_get_size(command, args, "size", (int)lround(dw), (int)lround(dh),
                                SK_IMAGE_MAX_DIMENSION, width, height)))
         return status;
     if (cli_has(command, args, "mm-per-px")) {
@@ -111,10 +119,24 @@ static void describe(const sk_skin *skin, int w, int h, sk_image_metadata *meta)
     snprintf(v, sizeof v, "%.9g x %.9g", tw, th);
     sk_image_metadata_set(meta, "shitsukan:tile_mm", v, NULL);
     snprintf(v, sizeof v, "%.9g", tw / w);
-    sk_image_metadata_set(meta, "shitsukan:mm_per_px", v, NULL);
+    sk_image_metadata_set(meta, SK_IMAGE_KEY_MM_PER_PIXEL, v, NULL);
     sk_image_metadata_set(meta, "shitsukan:seamless", d->aperiodic ? "false" : "true", NULL);
     sk_image_metadata_set(meta, "Software", "shitsukan " SK_VERSION_STRING, NULL);
     (void)h;
+}
+
+/* Where the time of a command goes, printed on stderr when SHITSUKAN_TIMINGS is set (the
+ * benchmarks read it): building the cells (model), rendering (shading) and the files. */
+typedef struct phase_times {
+    double start, model, shading, files;
+} phase_times;
+
+static void phase_report(const char *name, const phase_times *t)
+{
+    if (!getenv("SHITSUKAN_TIMINGS")) return;
+    fprintf(stderr, "%s timings: model %.1f ms, shading %.1f ms, files %.1f ms\n", name,
+            (t->model - t->start) * 1e3, (t->shading - t->model) * 1e3,
+            (t->files - t->shading) * 1e3);
 }
 
 /* ------------------------------------------------------------------ preview */
@@ -133,8 +155,10 @@ static int run_preview(const cli_command *command, const cli_args *args)
     if ((status = cli_output_format("-o", output, k_png, &format))) return status;
     /* float RGB and its 8-bit encoding */
     if ((status = check_image_memory(args, region[2], region[3], 16, &desc))) return status;
+    phase_times times = {.start = sk_time_seconds()};
     sk_skin *skin;
     if ((status = make_skin(&desc, args, &skin))) return status;
+    times.model = sk_time_seconds();
     sk_error err = {0};
     sk_image image = {0};
     sk_result r = sk_image_create(&image, region[2], region[3], 3, &err);
@@ -151,15 +175,21 @@ static int run_preview(const cli_command *command, const cli_args *args)
         r = sk_skin_render(skin, &rd, &err);
         sk_progress_bar_end(&bar);
     }
+    times.shading = sk_time_seconds();
+    sk_threads_rest(); /* one thread writes the file */
     if (r == SK_OK) {
         sk_image_metadata meta = {0};
         describe(skin, w, h, &meta);
-        sk_png_write_desc png = {
-            .bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB, .metadata = &meta};
+        /* zlib level 2: a shaded preview comes out about as small as at the default 6,
+           in half the time */
+        sk_png_write_desc png = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB,
+                                 .metadata = &meta, .compression_level = 2};
         r = sk_image_write_png(&image, output, &png, &err);
     }
+    times.files = sk_time_seconds();
     sk_image_free(&image);
     sk_skin_destroy(skin);
+    if (r == SK_OK) phase_report("skin", &times);
     return r == SK_OK ? CLI_EXIT_OK : cli_fail_error(&err);
 }
 
@@ -182,23 +212,83 @@ static void id_colour(uint32_t id, float rgb[3])
     for (int i = 0; i < 3; i++) rgb[i] = (float)((h >> (16 * i)) & 0xffff) / 65535.0f;
 }
 
-typedef struct map_images {
-    sk_image height, normal, furrow, cells, preview, edges;
-} map_images;
+/* What a map set keeps of every pixel between rendering and writing: height in mm (float,
+ * height.exr), the normal's x and y in 1/32767 (z follows; normal.png and the preview
+ * come from it, within one code of the float normal's in about 0.1 % of the samples),
+ * the furrow distance as furrow.png's 16-bit code and the cell id: 14 bytes a pixel
+ * instead of the 44 of float maps. With --samples > 1 the preview, and with --edges the
+ * overlay, are rendered and kept as float images. */
+typedef struct map_store {
+    int w, h;
+    size_t n;
+    sk_image height;
+    int16_t *normal;
+    uint16_t *furrow;
+    uint32_t *ids;
+    sk_image preview, edges; /* only when rendered */
+} map_store;
 
-/* One file to write: PNG (with its desc) or EXR. */
+static void map_store_free(map_store *m)
+{
+    sk_image_free(&m->height);
+    free(m->normal), m->normal = NULL;
+    free(m->furrow), m->furrow = NULL;
+    free(m->ids), m->ids = NULL;
+    sk_image_free(&m->preview);
+    sk_image_free(&m->edges);
+}
+
+static void stored_normal(const map_store *m, size_t i, float n[3])
+{
+    n[0] = m->normal[2 * i] / 32767.0f, n[1] = m->normal[2 * i + 1] / 32767.0f;
+    float zz = 1.0f - n[0] * n[0] - n[1] * n[1];
+    n[2] = zz > 0.0f ? sqrtf(zz) : 0.0f;
+}
+
+/* One file: where it goes, how it is encoded and its metadata. */
 typedef struct map_file {
-    const sk_image *image;
     char path[4096];
-    bool exr;
-    sk_exr_compression exr_compression;
     sk_png_write_desc png;
     sk_image_metadata meta;
 } map_file;
 
-/* Converts the rendered maps to their file encodings and writes the files, several at a
- * time (each compression runs on its own thread). Converts m in place. */
-static sk_result write_maps(const sk_skin *skin, map_images *m, const char *dir, int w, int h,
+static sk_result write_png_file(const sk_image *image, map_file *f, sk_error *err)
+{
+    f->png.metadata = &f->meta;
+    return sk_image_write_png(image, f->path, &f->png, err);
+}
+
+/* The 3-channel files, each expanded in turn into the same float image (the writer takes
+ * floats: 12 bytes a pixel, so only one of them is held at a time). */
+enum { RGB_CELLS, RGB_NORMAL, RGB_PREVIEW, RGB_EDGES };
+
+static void expand_rgb(const sk_skin *skin, const map_store *m, int which, bool directx,
+                       sk_image *out)
+{
+#pragma omp parallel for schedule(static)
+    for (long j = 0; j < (long)m->n; j++) {
+        size_t i = (size_t)j;
+        float *p = out->data + 3 * i;
+        if (which == RGB_CELLS) {
+            id_colour(m->ids[i], p);
+            continue;
+        }
+        float nv[3];
+        stored_normal(m, i, nv);
+        if (which == RGB_NORMAL) {
+            /* tangent-space normals, 8-bit: OpenGL (green up) or DirectX (green down) */
+            if (directx) nv[1] = -nv[1];
+            for (int c = 0; c < 3; c++) p[c] = 0.5f * nv[c] + 0.5f;
+        } else {
+            sk_vec3f c = sk_skin_shade(skin, sk_v3f(nv[0], nv[1], nv[2]));
+            p[0] = c.x, p[1] = c.y, p[2] = c.z;
+        }
+    }
+}
+
+/* Writes the files: height.exr and then height.png (scaled in place) beside furrow.png,
+ * then the 3-channel files one after another, freeing what each leaves unused. */
+static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, int w, int h,
                             bool directx, bool edges, int furrow_level, float furrow_max,
                             sk_error *err)
 {
@@ -207,30 +297,10 @@ static sk_result write_maps(const sk_skin *skin, map_images *m, const char *dir,
     sk_image_metadata meta = {0};
     describe(skin, w, h, &meta);
     char v[160];
-    sk_image scaled = {0};
-    sk_result r = sk_image_create(&scaled, m->height.width, m->height.height, 1, err);
-    if (r != SK_OK) return r;
-    size_t n = (size_t)m->height.width * (size_t)m->height.height;
-#pragma omp parallel for schedule(static)
-    for (long j = 0; j < (long)n; j++) {
-        size_t i = (size_t)j;
-        /* height: 16-bit PNG over the skin's height range (the EXR keeps mm) */
-        scaled.data[i] = (m->height.data[i] - lo) / (hi - lo);
-        /* furrow distance, 16-bit over [0, furrow_max] */
-        float d = m->furrow.data[i] / furrow_max;
-        m->furrow.data[i] = d > 1.0f ? 1.0f : d;
-        /* tangent-space normals, 8-bit: OpenGL (green up) or DirectX (green down) */
-        float *p = m->normal.data + 3 * i;
-        if (directx) p[1] = -p[1];
-        for (int c = 0; c < 3; c++) p[c] = 0.5f * p[c] + 0.5f;
-    }
-
-    map_file files[7];
-    int count = 0;
     /* Big maps spend most of their time in zlib: level 2 writes a 4096 x 4096 set about
        three times faster than the default 6, for files 2-20 % larger; the float height
        (noise to zlib) is stored uncompressed, 6 % larger and 40 times faster. */
-    bool fast = n >= SKIN_FAST_PNG_PIXELS;
+    bool fast = m->n >= SKIN_FAST_PNG_PIXELS;
     int level = fast ? 2 : 0;
     sk_png_write_desc png16 = {.bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR,
                                .compression_level = level};
@@ -238,74 +308,134 @@ static sk_result write_maps(const sk_skin *skin, map_images *m, const char *dir,
                               .compression_level = level};
     sk_png_write_desc srgb = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB,
                               .compression_level = level};
-    map_file *f;
 
-    f = &files[count++];
-    *f = (map_file){.image = &m->height, .exr = true, .meta = meta,
-                    .exr_compression = fast ? SK_EXR_COMPRESSION_NONE : SK_EXR_COMPRESSION_DEFAULT};
-    snprintf(f->path, sizeof f->path, "%s/height.exr", dir);
-    sk_image_metadata_set(&f->meta, "shitsukan:units", "mm", NULL);
+    sk_image_metadata height_meta = meta;
+    sk_image_metadata_set(&height_meta, "shitsukan:units", "mm", NULL);
     snprintf(v, sizeof v, "%.9g", lo);
-    sk_image_metadata_set(&f->meta, "shitsukan:height_min_mm", v, NULL);
+    sk_image_metadata_set(&height_meta, "shitsukan:height_min_mm", v, NULL);
     snprintf(v, sizeof v, "%.9g", hi);
-    sk_image_metadata_set(&f->meta, "shitsukan:height_max_mm", v, NULL);
-
-    /* then the slowest encodings first, so the threads finish together */
-    f = &files[count++];
-    *f = (map_file){.image = &m->preview, .png = srgb, .meta = meta};
-    snprintf(f->path, sizeof f->path, "%s/preview.png", dir);
-
-    if (edges) {
-        f = &files[count++];
-        *f = (map_file){.image = &m->edges, .png = srgb, .meta = meta};
-        snprintf(f->path, sizeof f->path, "%s/edges.png", dir);
-    }
-
-    f = &files[count++];
-    *f = (map_file){.image = &m->normal, .png = png8, .meta = meta};
-    snprintf(f->path, sizeof f->path, "%s/normal.png", dir);
-    sk_image_metadata_set(&f->meta, "shitsukan:normal_convention", directx ? "directx" : "opengl",
-                          NULL);
-
-    f = &files[count++];
-    *f = (map_file){.image = &scaled, .png = png16, .meta = files[0].meta};
-    snprintf(f->path, sizeof f->path, "%s/height.png", dir);
+    sk_image_metadata_set(&height_meta, "shitsukan:height_max_mm", v, NULL);
+    map_file height_png = {.png = png16, .meta = height_meta};
+    snprintf(height_png.path, sizeof height_png.path, "%s/height.png", dir);
     snprintf(v, sizeof v, "height_mm = %.9g + value * %.9g (value = code / 65535)", lo, hi - lo);
-    sk_image_metadata_set(&f->meta, "shitsukan:decode", v, NULL);
-
-    f = &files[count++];
-    *f = (map_file){.image = &m->furrow, .png = png16, .meta = meta};
-    snprintf(f->path, sizeof f->path, "%s/furrow.png", dir);
+    sk_image_metadata_set(&height_png.meta, "shitsukan:decode", v, NULL);
+    map_file furrow_png = {.png = png16, .meta = meta};
+    snprintf(furrow_png.path, sizeof furrow_png.path, "%s/furrow.png", dir);
     snprintf(v, sizeof v, "%d", furrow_level);
-    sk_image_metadata_set(&f->meta, "shitsukan:furrow_level", v, NULL);
+    sk_image_metadata_set(&furrow_png.meta, "shitsukan:furrow_level", v, NULL);
     snprintf(v, sizeof v, "distance_mm = value * %.9g (clamped there)", furrow_max);
-    sk_image_metadata_set(&f->meta, "shitsukan:decode", v, NULL);
+    sk_image_metadata_set(&furrow_png.meta, "shitsukan:decode", v, NULL);
 
-    f = &files[count++];
-    *f = (map_file){.image = &m->cells, .png = png8, .meta = meta};
-    snprintf(f->path, sizeof f->path, "%s/cells.png", dir);
-
-    sk_result results[7];
-    sk_error errors[7];
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int i = 0; i < count; i++) {
-        map_file *mf = &files[i];
-        sk_error_clear(&errors[i]);
-        if (mf->exr) {
-            sk_exr_write_desc exr = {.metadata = &mf->meta, .compression = mf->exr_compression};
-            results[i] = sk_image_write_exr(mf->image, mf->path, &exr, &errors[i]);
+    /* Stage 1, two files side by side: the heights, and the furrow distances. */
+    sk_result results[2] = {SK_OK, SK_OK};
+    sk_error errors[2];
+    sk_error_clear(&errors[0]), sk_error_clear(&errors[1]);
+#pragma omp parallel for schedule(static, 1) num_threads(2)
+    for (int task = 0; task < 2; task++) {
+        if (task == 0) {
+            char path[4096];
+            snprintf(path, sizeof path, "%s/height.exr", dir);
+            sk_exr_write_desc exr = {.metadata = &height_meta,
+                                     .compression = fast ? SK_EXR_COMPRESSION_NONE
+                                                         : SK_EXR_COMPRESSION_DEFAULT};
+            results[0] = sk_image_write_exr(&m->height, path, &exr, &errors[0]);
+            if (results[0] != SK_OK) continue;
+            /* height.png: 16-bit over the skin's height range (the EXR keeps mm) */
+            for (size_t i = 0; i < m->n; i++)
+                m->height.data[i] = (m->height.data[i] - lo) / (hi - lo);
+            results[0] = write_png_file(&m->height, &height_png, &errors[0]);
         } else {
-            mf->png.metadata = &mf->meta;
-            results[i] = sk_image_write_png(mf->image, mf->path, &mf->png, &errors[i]);
+            sk_image furrow = {0};
+            results[1] = sk_image_create(&furrow, m->w, m->h, 1, &errors[1]);
+            if (results[1] != SK_OK) continue;
+            for (size_t i = 0; i < m->n; i++) furrow.data[i] = m->furrow[i] / 65535.0f;
+            results[1] = write_png_file(&furrow, &furrow_png, &errors[1]);
+            sk_image_free(&furrow);
         }
     }
-    sk_image_free(&scaled);
-    for (int i = 0; i < count; i++)
-        if (results[i] != SK_OK) {
-            if (err) *err = errors[i];
-            return results[i];
+    for (int t = 0; t < 2; t++)
+        if (results[t] != SK_OK) {
+            if (err) *err = errors[t];
+            return results[t];
         }
-    return SK_OK;
+    sk_image_free(&m->height);
+    free(m->furrow), m->furrow = NULL;
+
+    /* Stage 2: the 3-channel files through one float image. */
+    const char *names[4] = {"cells.png", "normal.png", "preview.png", "edges.png"};
+    sk_image rgb = {0};
+    sk_result r = SK_OK;
+    for (int which = RGB_CELLS; r == SK_OK && which <= RGB_EDGES; which++) {
+        if (which == RGB_EDGES && !edges) break;
+        map_file f = {.png = which == RGB_NORMAL || which == RGB_CELLS ? png8 : srgb,
+                      .meta = meta};
+        snprintf(f.path, sizeof f.path, "%s/%s", dir, names[which]);
+        if (which == RGB_NORMAL)
+            sk_image_metadata_set(&f.meta, "shitsukan:normal_convention",
+                                  directx ? "directx" : "opengl", NULL);
+        const sk_image *image = &rgb;
+        if (which == RGB_PREVIEW && m->preview.data) {
+            image = &m->preview;
+        } else if (which == RGB_EDGES) {
+            image = &m->edges;
+        } else {
+            if (!rgb.data && (r = sk_image_create(&rgb, m->w, m->h, 3, err)) != SK_OK) break;
+            expand_rgb(skin, m, which, directx, &rgb);
+        }
+        r = write_png_file(image, &f, err);
+        if (which == RGB_CELLS) free(m->ids), m->ids = NULL;
+    }
+    sk_image_free(&rgb);
+    return r;
+}
+
+/* Renders the region in bands of rows into the store. */
+static sk_result render_maps(const sk_skin *skin, map_store *m, int w, int h, const int region[4],
+                             int furrow_level, int id_level, int samples, bool edges,
+                             float furrow_max, sk_progress_bar *bar, sk_error *err)
+{
+    int rw = region[2], rh = region[3];
+    size_t band_px = (size_t)rw * SKIN_BAND_ROWS;
+    float *height = malloc(sizeof(float) * band_px), *normal = malloc(sizeof(float) * 3 * band_px);
+    float *furrow = malloc(sizeof(float) * band_px);
+    sk_result r = SK_OK;
+    if (!height || !normal || !furrow)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a band of the maps");
+    for (int y0 = 0; r == SK_OK && y0 < rh; y0 += SKIN_BAND_ROWS) {
+        int rows = rh - y0 < SKIN_BAND_ROWS ? rh - y0 : SKIN_BAND_ROWS;
+        size_t off = (size_t)y0 * (size_t)rw;
+        band_progress bp = {bar, (double)y0 / rh, (double)rows / rh};
+        sk_skin_render_desc rd = {
+            .width = w,
+            .height = h,
+            .region = {region[0], region[1] + y0, rw, rows},
+            .height_mm = height,
+            .normal = normal,
+            .furrow = furrow,
+            .cell_id = m->ids + off,
+            .preview = m->preview.data ? m->preview.data + 3 * off : NULL,
+            .edges = edges ? m->edges.data + 3 * off : NULL,
+            .furrow_level = furrow_level,
+            .id_level = id_level,
+            .samples = samples,
+            .progress = {band_progress_fn, &bp},
+        };
+        r = sk_skin_render(skin, &rd, err);
+        if (r != SK_OK) break;
+        long band = (long)rows * rw;
+#pragma omp parallel for schedule(static)
+        for (long i = 0; i < band; i++) {
+            size_t o = off + (size_t)i;
+            m->height.data[o] = height[i];
+            for (int c = 0; c < 2; c++)
+                m->normal[2 * o + c] = (int16_t)lrintf(normal[3 * i + c] * 32767.0f);
+            /* furrow.png's code: the distance over [0, furrow_max] */
+            float d = furrow[i] / furrow_max;
+            m->furrow[o] = (uint16_t)lrint((d > 1.0f ? 1.0f : d) * 65535.0);
+        }
+    }
+    free(height), free(normal), free(furrow);
+    return r;
 }
 
 static int run_maps(const cli_command *command, const cli_args *args)
@@ -324,11 +454,13 @@ static int run_maps(const cli_command *command, const cli_args *args)
     if ((status = cli_get_int(command, args, "id-level", 1, 1, SK_SKIN_MAX_LEVELS, &id_level)))
         return status;
     bool edges = cli_has(command, args, "edges"), directx = cli_has(command, args, "directx");
-    /* All maps are held in memory until written (float maps, the scaled height and the
-       encodings being written): split a huge map with --region. */
-    if ((status = check_image_memory(args, region[2], region[3], 4.0 * (edges ? 15 : 12) + 16,
-                                     &desc)))
+    /* All maps are held in memory until written (the maps as stored, one RGB float image,
+       and the encodings being written): split a huge map with --region. */
+    bool own_preview = samples > 1; /* else shaded from the kept normals */
+    double per_px = 14 + 12.0 * own_preview + 12.0 * edges + 12; /* + one RGB float image */
+    if ((status = check_image_memory(args, region[2], region[3], per_px + 16, &desc)))
         return status;
+    phase_times times = {.start = sk_time_seconds()};
     /* the folder is reserved first: its files appear together at the end, or none */
     sk_error err = {0};
     sk_output_set *outputs = NULL;
@@ -343,6 +475,7 @@ static int run_maps(const cli_command *command, const cli_args *args)
         sk_output_set_abort(outputs);
         return status;
     }
+    times.model = sk_time_seconds();
     const sk_skin_desc *rd_desc = sk_skin_get_desc(skin);
     sk_result r = SK_OK;
     int level_count = rd_desc->level_count;
@@ -354,52 +487,33 @@ static int run_maps(const cli_command *command, const cli_args *args)
                         "skin's levels)",
                         level_count);
     }
-    map_images m;
-    memset(&m, 0, sizeof m);
-    uint32_t *ids = malloc(sizeof(uint32_t) * (size_t)region[2] * SKIN_BAND_ROWS);
-    if (!ids) r = sk_fail(&err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     int rw = region[2], rh = region[3];
-    if (r == SK_OK) r = sk_image_create(&m.height, rw, rh, 1, &err);
-    if (r == SK_OK) r = sk_image_create(&m.normal, rw, rh, 3, &err);
-    if (r == SK_OK) r = sk_image_create(&m.furrow, rw, rh, 1, &err);
-    if (r == SK_OK) r = sk_image_create(&m.cells, rw, rh, 3, &err);
-    if (r == SK_OK) r = sk_image_create(&m.preview, rw, rh, 3, &err);
-    if (r == SK_OK && edges) r = sk_image_create(&m.edges, rw, rh, 3, &err);
-    sk_progress_bar bar;
-    sk_progress_bar_begin(&bar, "skin maps", !args->common.quiet);
-    for (int y0 = 0; r == SK_OK && y0 < rh; y0 += SKIN_BAND_ROWS) {
-        int rows = rh - y0 < SKIN_BAND_ROWS ? rh - y0 : SKIN_BAND_ROWS;
-        size_t off = (size_t)y0 * (size_t)rw;
-        band_progress bp = {&bar, (double)y0 / rh, (double)rows / rh};
-        sk_skin_render_desc rd = {
-            .width = w,
-            .height = h,
-            .region = {region[0], region[1] + y0, rw, rows},
-            .height_mm = m.height.data + off,
-            .normal = m.normal.data + 3 * off,
-            .furrow = m.furrow.data + off,
-            .cell_id = ids,
-            .preview = m.preview.data + 3 * off,
-            .edges = edges ? m.edges.data + 3 * off : NULL,
-            .furrow_level = (int)furrow_level,
-            .id_level = (int)id_level,
-            .samples = (int)samples,
-            .progress = {band_progress_fn, &bp},
-        };
-        r = sk_skin_render(skin, &rd, &err);
-        if (r != SK_OK) break;
-        long band = (long)rows * rw;
-#pragma omp parallel for schedule(static)
-        for (long i = 0; i < band; i++) id_colour(ids[i], m.cells.data + 3 * (off + (size_t)i));
+    map_store m = {.w = rw, .h = rh, .n = (size_t)rw * (size_t)rh};
+    r = sk_image_create(&m.height, rw, rh, 1, &err);
+    if (r == SK_OK) {
+        m.normal = malloc(sizeof(int16_t) * 2 * m.n);
+        m.furrow = malloc(sizeof(uint16_t) * m.n);
+        m.ids = malloc(sizeof(uint32_t) * m.n);
+        if (!m.normal || !m.furrow || !m.ids)
+            r = sk_fail(&err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the maps");
     }
-    sk_progress_bar_end(&bar);
+    if (r == SK_OK && own_preview) r = sk_image_create(&m.preview, rw, rh, 3, &err);
+    if (r == SK_OK && edges) r = sk_image_create(&m.edges, rw, rh, 3, &err);
     /* furrow.png spans half the furrow level's spacing: the whole ridge, centre to edge */
     float furrow_max = 0.5f * rd_desc->levels[furrow_level - 1].spacing_mm;
+    sk_progress_bar bar;
+    sk_progress_bar_begin(&bar, "skin maps", !args->common.quiet);
+    if (r == SK_OK)
+        r = render_maps(skin, &m, w, h, region, (int)furrow_level, (int)id_level, (int)samples,
+                        edges, furrow_max, &bar, &err);
+    sk_progress_bar_end(&bar);
+    times.shading = sk_time_seconds();
     if (r == SK_OK)
         r = write_maps(skin, &m, staged, w, h, directx, edges, (int)furrow_level, furrow_max,
                        &err);
     if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
     else sk_output_set_abort(outputs);
+    times.files = sk_time_seconds();
     if (r == SK_OK && !args->common.quiet) {
         float lo, hi;
         double tw, th;
@@ -413,14 +527,9 @@ static int run_maps(const cli_command *command, const cli_args *args)
         printf("furrow.png: 0 = on a level-%lld furrow, 65535 = %.6g mm or more from one\n",
                furrow_level, furrow_max);
     }
-    free(ids);
-    sk_image_free(&m.height);
-    sk_image_free(&m.normal);
-    sk_image_free(&m.furrow);
-    sk_image_free(&m.cells);
-    sk_image_free(&m.preview);
-    sk_image_free(&m.edges);
+    map_store_free(&m);
     sk_skin_destroy(skin);
+    if (r == SK_OK) phase_report("skin maps", &times);
     return r == SK_OK ? CLI_EXIT_OK : cli_fail_error(&err);
 }
 

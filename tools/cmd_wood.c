@@ -185,7 +185,7 @@ static void describe(const wood_job *job, const char *command, sk_image_metadata
     snprintf(value, sizeof value, "%llu", (unsigned long long)sk_wood_get_desc(job->wood)->seed);
     sk_image_metadata_set(meta, "shitsukan:seed", value, NULL);
     snprintf(value, sizeof value, "%.6g", job->cut.width_mm / job->cut.width);
-    sk_image_metadata_set(meta, "shitsukan:mm_per_pixel", value, NULL);
+    sk_image_metadata_set(meta, SK_IMAGE_KEY_MM_PER_PIXEL, value, NULL);
     snprintf(value, sizeof value, "%.6g,%.6g,%.6g", job->cut.point.x, job->cut.point.y,
              job->cut.point.z);
     sk_image_metadata_set(meta, "shitsukan:plane_point_mm", value, NULL);

@@ -209,6 +209,10 @@ float sk_fbm2_periodic(uint64_t seed, float x, float y, int period_x, int period
  * sets OpenMP's own setting; 0 restores the OpenMP default). */
 void sk_threads_set(int count);
 int sk_threads_max(void);
+/* Lets the idle threads of the last parallel loops go now, so they do not spin beside
+ * serial work that follows (e.g. one thread writing a file): on a loaded machine they
+ * would take its core. Call between parallel phases, not inside a parallel loop. */
+void sk_threads_rest(void);
 
 /* ------------------------------------------------------------------ progress */
 /* A progress sink the library calls during long work with the fraction done in

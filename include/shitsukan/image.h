@@ -34,6 +34,9 @@ static inline float *sk_image_pixel(const sk_image *image, int x, int y)
 }
 
 /* Key/value text stored with an image (e.g. "shitsukan:height_scale_mm" = "0.120"). */
+
+/* Metadata keys that mean the same thing in every module's maps. */
+#define SK_IMAGE_KEY_MM_PER_PIXEL "shitsukan:mm_per_pixel" /* size of one pixel in mm */
 #define SK_IMAGE_MAX_METADATA 32
 typedef struct sk_image_metadata_entry {
     char key[80];

@@ -107,6 +107,21 @@ typedef struct sk_skin_shading {
     bool no_specular;      /* true: Lambert only */
 } sk_skin_shading;
 
+/* How a level's normal follows from its section profile. */
+typedef enum sk_skin_normal_model {
+    SK_SKIN_NORMAL_DEFAULT = 0, /* = GRADIENT */
+    SK_SKIN_NORMAL_GRADIENT,    /* the exact gradient of the height field: normal maps agree
+                                   with the height map (what other renderers need); cells
+                                   show creases where the ray meets a polygon corner */
+    SK_SKIN_NORMAL_PROFILE      /* the paper's (Fig. 7, sec. 3.2.1 (2)): N = (S_x d, S_z)
+                                   with S the normal of the profile drawn along the ray d
+                                   from the cell centre (its slope dz/dr): cells read as
+                                   round mounds whatever their outline. Not the gradient of
+                                   the height where the boundary's distance changes with
+                                   the angle. A stretched level takes the ray before the
+                                   stretch and stretches the slope with the ridge */
+} sk_skin_normal_model;
+
 typedef struct sk_skin_desc {
     uint64_t seed;          /* every random choice derives from it; default 0 */
     float size_mm[2];       /* tile width and height in mm, (0, 1000]; 0 = default 10 */
@@ -115,6 +130,7 @@ typedef struct sk_skin_desc {
     int level_count;        /* [1, SK_SKIN_MAX_LEVELS]; 0 = the default skin (3 levels,
                                jittered and perturbed; levels[] is then ignored) */
     sk_skin_level levels[SK_SKIN_MAX_LEVELS];
+    sk_skin_normal_model normal_model; /* default gradient */
     sk_skin_pores pores;
     sk_skin_shading shading;
     sk_progress progress;   /* progress of sk_skin_create (not part of presets) */
@@ -150,8 +166,11 @@ const sk_skin_desc *sk_skin_get_desc(const sk_skin *skin);
 
 /* Height (mm above the furrow floor of the paper's profiles; the sum over levels, minus
  * pores) and unit surface normal at (x_mm, y_mm). Any coordinates are accepted: the tile
- * repeats (aperiodic tiles repeat with a larger period). The normal is the exact normal of
- * the height field (normalize(-dh/dx, -dh/dy, 1)). Either output may be NULL. Non-finite
+ * repeats (aperiodic tiles repeat with a larger period). The normal combines the levels'
+ * slopes as the paper's Fig. 10 does (normalize(-gx, -gy, 1) with g the sum of the levels'
+ * slope vectors); with SK_SKIN_NORMAL_GRADIENT it is the exact normal of the height field
+ * (g = the gradient of h), with SK_SKIN_NORMAL_PROFILE each level's slope is its profile's
+ * along the ray from its cell centre. Either output may be NULL. Non-finite
  * coordinates give height 0 and normal (0, 0, 1). Allocation-free (about 24 KB of stack) and
  * thread-safe. */
 void sk_skin_eval(const sk_skin *skin, double x_mm, double y_mm, float *height_mm,
@@ -176,8 +195,8 @@ void sk_skin_query(const sk_skin *skin, double x_mm, double y_mm, unsigned flags
 
 /* Size of the tile in mm; the repeat period may be larger for aperiodic tiles. */
 void sk_skin_tile_size(const sk_skin *skin, double *width_mm, double *height_mm);
-/* Bounds of every height the skin can take (from the profiles' control points and pore
- * depths): the range used to scale 16-bit height maps. */
+/* Bounds of every height the skin can take (from the profiles' control points and the
+ * pores, overlapping pits added up): the range used to scale 16-bit height maps. */
 void sk_skin_height_range(const sk_skin *skin, float *min_mm, float *max_mm);
 
 /* ------------------------------------------------------------- introspection */

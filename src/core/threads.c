@@ -11,3 +11,10 @@ void sk_threads_set(int count)
 }
 
 int sk_threads_max(void) { return omp_get_max_threads(); }
+
+void sk_threads_rest(void)
+{
+    /* libgomp's idle threads spin for some milliseconds before they sleep; pausing the
+       host's thread pool ends them now (the next parallel loop starts new ones). */
+    if (!omp_in_parallel()) omp_pause_resource_all(omp_pause_soft);
+}

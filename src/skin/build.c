@@ -62,7 +62,9 @@ static void height_range(sk_skin *skin)
         lo += lv->profile.z_min * lv->z_scale;
         hi += lv->profile.z_max * lv->z_scale;
     }
-    lo -= skin->desc.pores.hair.depth_mm * 1.2f + skin->desc.pores.sweat.depth_mm * 1.2f;
+    /* the profiles stay within their control points' z (a Bezier curve lies in their
+       hull); pores dig below, deeper where they overlap */
+    lo -= sk__pores_deepest(skin);
     skin->height_min = lo;
     skin->height_max = hi > lo ? hi : lo + 1e-6f;
 }

@@ -54,6 +54,20 @@ static void build_edge(sk_skin *skin, int level, const sk__edge_key *key, const 
     if (lv->perturbed) {
         uint64_t hash = sk_hash(key->k0, key->k1, (uint64_t)level, 0x45444745ULL);
         sk__perturb_edge(skin, level, hash, len, t_apex, h_apex, f);
+        /* The stretch may not make the polyline steeper against its edge than it was
+           before the stretch. Across an edge that the stretch leaves short (the ends of
+           a cell drawn out 20 x) the stretched offsets grow 20 x while the edge does not:
+           a sawtooth far steeper than any unstretched furrow, whose warp shears the
+           children it carries into chevrons and slivers. Such an edge keeps the shape of
+           its polyline at the steepness it had before the stretch. */
+        double slope_z = 0, slope_y = 0;
+        for (int k = 0; k + 1 < lv->f_count; k++) {
+            double df = fabs((double)f[k + 1] - f[k]);
+            slope_z = slope_z > df ? slope_z : df;
+        }
+        slope_y = slope_z * fabs(across) / leny;
+        slope_z /= len;
+        if (slope_y > slope_z * (1.0 + 1e-9)) across *= slope_z / slope_y;
         double raw = 0;
         for (int k = 0; k < lv->f_count; k++)
             raw = raw > fabs(f[k] * across) ? raw : fabs(f[k] * across);
@@ -124,7 +138,7 @@ sk_result sk__build_edges(sk_skin *skin, int level, const sk__edge_key *keys,
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %u edges", e);
     }
     /* Each edge draws its own random numbers from its key: any order, same result. */
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (e >= SK__PARALLEL_ITEMS)
     for (long q = 0; q < (long)e; q++)
         build_edge(skin, level, &keys[pairs[q].use_left], &pairs[q], (uint32_t)q, site_left_y);
     free(pairs);

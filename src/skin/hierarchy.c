@@ -139,7 +139,7 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
         free(pts), free(slot), free(parent_of), free(local);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for level %d", level + 1);
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (count >= SK__PARALLEL_ITEMS)
     for (long i = 0; i < (long)count; i++)
         parent_of[i] = sk__locate_straight(skin, level - 1, xy[2 * i], xy[2 * i + 1], &local[2 * i],
                                            &local[2 * i + 1]);
@@ -215,7 +215,7 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
         goto done;
     }
     int failed = 0;
-#pragma omp parallel
+#pragma omp parallel if (n_cells >= SK__PARALLEL_ITEMS)
     {
         dist_item *ord = malloc(sizeof(dist_item) * (max_family ? max_family : 1));
         sk__poly *pl = malloc(sizeof(sk__poly));
@@ -261,7 +261,7 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
         use_count += (size_t)polys[ci].n;
     }
     /* Lay the polygons out (in y space), each child on its own. */
-#pragma omp parallel
+#pragma omp parallel if (n_cells >= SK__PARALLEL_ITEMS)
     {
         double px[SK__POLY_MAX], py[SK__POLY_MAX];
 #pragma omp for schedule(static)

@@ -31,12 +31,14 @@ static bool boundary_edge(const sk_skin *skin, int k, uint32_t c, const sk__use 
     return false;
 }
 
-static void emit(const sk_skin *skin, int k, uint32_t c, double x, double y, sk_vec2d *pts,
-                 size_t max, size_t *n)
+static void emit(const sk_skin *skin, int k, uint32_t c, double x, double y, bool carry,
+                 sk_vec2d *pts, size_t max, size_t *n)
 {
     if (*n < max) {
         double wx, wy;
-        if (k == 0) {
+        if (!carry) {
+            wx = x, wy = y;
+        } else if (k == 0) {
             wx = x + skin->origin[2 * c], wy = y + skin->origin[2 * c + 1];
         } else {
             sk__to_world(skin, k - 1, skin->levels[k].cells[c].parent, x, y, &wx, &wy);
@@ -48,7 +50,7 @@ static void emit(const sk_skin *skin, int k, uint32_t c, double x, double y, sk_
 
 /* Points of use q of a cell (from its start, not including the next use's start). */
 static size_t edge_points(const sk_skin *skin, int k, uint32_t cell, uint32_t q, int subdivide,
-                          sk_vec2d *points, size_t max_points, size_t n)
+                          bool carry, sk_vec2d *points, size_t max_points, size_t n)
 {
     const sk__level *lv = &skin->levels[k];
     const sk__cell *c = &lv->cells[cell];
@@ -71,7 +73,7 @@ static size_t edge_points(const sk_skin *skin, int k, uint32_t cell, uint32_t q,
                 double ff = f[j0] + tt * (f[j1] - f[j0]);
                 double px = e->ax + t * (e->bx - e->ax) + ff * e->dx - u->shx;
                 double py = e->ay + t * (e->by - e->ay) + ff * e->dy - u->shy;
-                emit(skin, k, cell, px, py, points, max_points, &n);
+                emit(skin, k, cell, px, py, carry, points, max_points, &n);
             }
         }
         return n;
@@ -98,7 +100,7 @@ static size_t edge_points(const sk_skin *skin, int k, uint32_t cell, uint32_t q,
             }
             for (int s = 0; s < subdivide; s++) {
                 double frac = prev + (next - prev) * s / subdivide;
-                emit(skin, k, cell, ax + frac * (bx - ax), ay + frac * (by - ay), points,
+                emit(skin, k, cell, ax + frac * (bx - ax), ay + frac * (by - ay), carry, points,
                      max_points, &n);
             }
             prev = next;
@@ -107,7 +109,8 @@ static size_t edge_points(const sk_skin *skin, int k, uint32_t cell, uint32_t q,
     }
     for (int s = 0; s < subdivide; s++) {
         double t = (double)s / subdivide;
-        emit(skin, k, cell, ax + t * (bx - ax), ay + t * (by - ay), points, max_points, &n);
+        emit(skin, k, cell, ax + t * (bx - ax), ay + t * (by - ay), carry, points, max_points,
+             &n);
     }
     return n;
 }
@@ -121,7 +124,19 @@ size_t sk_skin_cell_outline(const sk_skin *skin, int level, uint32_t cell, int s
     if (subdivide < 1) subdivide = 1;
     size_t n = 0;
     for (uint32_t q = 0; q < lv->cells[cell].use_count; q++)
-        n = edge_points(skin, level - 1, cell, q, subdivide, points, max_points, n);
+        n = edge_points(skin, level - 1, cell, q, subdivide, true, points, max_points, n);
+    return n;
+}
+
+size_t sk__cell_polygon(const sk_skin *skin, int level, uint32_t cell, sk_vec2d *points,
+                        size_t max_points)
+{
+    if (!skin || level < 1 || level > skin->level_count) return 0;
+    const sk__level *lv = &skin->levels[level - 1];
+    if (cell >= lv->cell_count) return 0;
+    size_t n = 0;
+    for (uint32_t q = 0; q < lv->cells[cell].use_count; q++)
+        n = edge_points(skin, level - 1, cell, q, 1, false, points, max_points, n);
     return n;
 }
 
@@ -134,7 +149,7 @@ size_t sk_skin_cell_edge(const sk_skin *skin, int level, uint32_t cell, uint32_t
     if (cell >= lv->cell_count || edge >= lv->cells[cell].use_count) return 0;
     if (subdivide < 1) subdivide = 1;
     if (neighbour) *neighbour = lv->uses[lv->cells[cell].first_use + edge].neighbour;
-    return edge_points(skin, level - 1, cell, edge, subdivide, points, max_points, 0);
+    return edge_points(skin, level - 1, cell, edge, subdivide, true, points, max_points, 0);
 }
 
 sk_result sk_skin_cell_info_get(const sk_skin *skin, int level, uint32_t cell,

@@ -208,3 +208,26 @@ void sk__pores_eval(const sk_skin *skin, double x, double y, float *h, float gra
     *h = sum;
     grad[0] = gx, grad[1] = gy;
 }
+
+float sk__pores_deepest(const sk_skin *skin)
+{
+    /* A point of bucket b is reached only by the pores of b's list, and the pores that
+       reach it overlap one another: its pit is at most the depth of one of them plus the
+       depths of the others of the list that overlap that one. */
+    const sk__pore_grid *g = &skin->pores;
+    if (!g->count) return 0.0f;
+    double deepest = 0.0;
+    size_t nb = (size_t)g->nx * g->ny;
+    for (size_t b = 0; b < nb; b++)
+        for (uint32_t i = g->start[b]; i < g->start[b + 1]; i++) {
+            const sk__pore_near *p = &g->near[i];
+            double sum = p->depth;
+            for (uint32_t j = g->start[b]; j < g->start[b + 1]; j++) {
+                const sk__pore_near *q = &g->near[j];
+                double dx = p->x - q->x, dy = p->y - q->y, reach = (double)p->radius + q->radius;
+                if (j != i && dx * dx + dy * dy < reach * reach) sum += q->depth;
+            }
+            deepest = deepest > sum ? deepest : sum;
+        }
+    return (float)deepest;
+}

@@ -43,7 +43,7 @@ enum { ITEMS = SK__QUERY_BATCH * SK_SKIN_MAX_LEVELS };
 void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, const float *px,
                       const float *py, uint32_t *sector, float *z, float (*grad)[2])
 {
-    float xq[ITEMS], gxq[ITEMS], gyq[ITEMS];
+    float xq[ITEMS], gxq[ITEMS], gyq[ITEMS], qx[ITEMS], qy[ITEMS];
     float g[ITEMS], ggx[ITEMS], ggy[ITEMS];
     float dzdx[ITEMS], dzdg[ITEMS];
     int path[ITEMS];
@@ -60,6 +60,7 @@ void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, c
             const sk__sector *sec = lv->sectors + c->first_use;
             int n = (int)c->use_count;
             float x = px[i] - sec->cx, y = py[i] - sec->cy;
+            qx[i] = x, qy[i] = y;
             float best;
             int arg = centre_edge(sec, n, x, y, &sector[k], &best);
             float xk = 10.0f * best;
@@ -129,6 +130,7 @@ void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, c
         }
     }
     /* Step 3: the Newton step; heights and gradients in mm. */
+    bool radial = skin->desc.normal_model == SK_SKIN_NORMAL_PROFILE;
     for (int k = 0; k < L; k++) {
         const sk__level *lv = &skin->levels[k];
         float zs = lv->z_scale;
@@ -138,8 +140,26 @@ void sk__profile_eval(const sk_skin *skin, int L, int m, const uint32_t *cell, c
             if (path[i] == FLAT) {
                 grad[i][0] = grad[i][1] = 0.0f;
             } else {
-                grad[i][0] = (dzdx[i] * gxq[i] + dzdg[i] * ggx[i]) * zs;
-                grad[i][1] = (dzdx[i] * gyq[i] + dzdg[i] * ggy[i]) * zs;
+                float gx = (dzdx[i] * gxq[i] + dzdg[i] * ggx[i]) * zs;
+                float gy = (dzdx[i] * gyq[i] + dzdg[i] * ggy[i]) * zs;
+                if (radial) {
+                    /* Fig. 7: N1 = (S_x d, S_z) with S the normal of the profile drawn
+                       along the ray d from the centre (x' = 10 at the boundary, D(phi)
+                       away): the slope dz/dr of that ray, the gradient's part along d
+                       (x' grows along the ray as r / D, g not at all). The ray runs in
+                       the level's pre-stretch space, where the paper divides its cells,
+                       and the slope is stretched with the ridge: with u = M^-1 q the ray
+                       there, the slope vector is (g . q / |u|^2) M^-T u (u = q when the
+                       level is not stretched). */
+                    const float(*mi)[2] = lv->minvf;
+                    float ux = mi[0][0] * qx[i] + mi[0][1] * qy[i];
+                    float uy = mi[1][0] * qx[i] + mi[1][1] * qy[i];
+                    float uu = ux * ux + uy * uy;
+                    float s = uu > 0.0f ? (gx * qx[i] + gy * qy[i]) / uu : 0.0f;
+                    gx = s * (mi[0][0] * ux + mi[1][0] * uy);
+                    gy = s * (mi[0][1] * ux + mi[1][1] * uy);
+                }
+                grad[i][0] = gx, grad[i][1] = gy;
             }
             z[i] *= zs;
         }

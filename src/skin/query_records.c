@@ -24,7 +24,7 @@ sk_result sk__build_query_records(sk__level *lv, sk_error *err)
     lv->sectors = aligned_alloc(64, sizeof(sk__sector) * n);
     if (!lv->fans || !lv->sectors)
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the query records");
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (lv->cell_count >= SK__PARALLEL_ITEMS)
     for (long ci = 0; ci < (long)lv->cell_count; ci++) {
         uint32_t c = (uint32_t)ci;
         const sk__cell *cell = &lv->cells[c];

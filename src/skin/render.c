@@ -72,7 +72,9 @@ sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, s
     sk__loop_progress lp;
     sk__loop_progress_init(&lp, &desc->progress, rh);
 
-#pragma omp parallel for schedule(dynamic, 1)
+    /* under about a millisecond of work one thread is faster than two */
+    double work = (double)rw * rh * L * samples * samples;
+#pragma omp parallel for schedule(dynamic, 1) if (work >= SK__PARALLEL_PIXELS)
     for (int j = 0; j < rh; j++) {
         int gy = ry + j;
         sk__hint hint, sub_hints[8];

@@ -12,6 +12,7 @@
 
 static const char *const layout_names[] = {"default", "triangular", "square", "random", NULL};
 static const char *const jitter_names[] = {"default", "uniform", "normal", NULL};
+static const char *const normal_model_names[] = {"default", "gradient", "profile", NULL};
 
 #define STRUCT float
 static const sk_schema_field point_fields[] = {
@@ -191,6 +192,12 @@ static const sk_schema_field skin_fields[] = {
      .elem_size = sizeof(sk_skin_level),
      .schema = &level_schema,
      .doc = "hierarchy levels, largest ridges first; absent = the default 3-level skin"},
+    {.key = "normal_model",
+     .type = SK_FIELD_ENUM,
+     .offset = offsetof(STRUCT, normal_model),
+     .names = normal_model_names,
+     .doc = "gradient (default: the height's exact normal, for maps) or profile (the paper's "
+            "Fig. 7: the profile's slope along the ray from the cell centre)"},
     {.key = "pores",
      .type = SK_FIELD_OBJECT,
      .offset = offsetof(STRUCT, pores),

@@ -201,6 +201,14 @@ static inline double sk__tent(double t, double apex)
     return t < apex ? t / apex : (1.0 - t) / (1.0 - apex);
 }
 
+/* Construction loops over fewer items (cells, edges, points of a level) run on one
+ * thread: starting and joining threads and the spinning of idle ones cost more than the
+ * work, and on a loaded machine each join can wait a whole time slice for a descheduled
+ * thread (the skins of the paper's figures and the region presets build on one thread). */
+#define SK__PARALLEL_ITEMS 50000
+/* Renders of fewer pixel-levels (pixels x levels x samples) run on one thread. */
+#define SK__PARALLEL_PIXELS 32768
+
 /* Wraps a coordinate into [0, period). */
 static inline double sk__wrap(double v, double period)
 {
@@ -259,6 +267,8 @@ sk_result sk__build_grid(sk_skin *skin, sk_error *err);
 /* Pores (pores.c). */
 sk_result sk__build_pores(sk_skin *skin, sk_error *err);
 void sk__pores_eval(const sk_skin *skin, double x, double y, float *h, float grad[2]);
+/* A bound of the deepest pit the pores make anywhere (overlapping pores add up). */
+float sk__pores_deepest(const sk_skin *skin);
 
 /* ---- queries */
 /* Locates the level-1 cell of world point (x, y) (straight cells, no perturbation):
@@ -334,6 +344,12 @@ void sk__hint_reset(sk__hint *hint);
  * (eval.c). Each point's result is the same as on its own. */
 void sk__query(const sk_skin *skin, int n, const double *x, const double *y, unsigned flags,
                sk_skin_sample *out, sk__hint *hint);
+
+/* The perturbed polygon of a cell of `level` (1-based) in the frame where its level is
+ * built, before the levels above carry it (outline.c): its own edges' polylines and the
+ * straight pieces of its parent's boundary. Same count rules as sk_skin_cell_outline. */
+size_t sk__cell_polygon(const sk_skin *skin, int level, uint32_t cell, sk_vec2d *points,
+                        size_t max_points);
 
 /* Distance from p (frame of cell c, F(k-1)) to the perturbed boundary of c (furrow.c). */
 float sk__furrow_distance(const sk__level *lv, uint32_t c, float px, float py);
