@@ -10,97 +10,13 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cmd_hand_surface.h"
 #include "cmd_hand_prior.h"
+#include "hand_args.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/io.h"
 
 /* ------------------------------------------------------------ helpers */
-
-static int parse_side(const char *text, sk_hand_side *side)
-{
-    if (!text || strcmp(text, "right") == 0) *side = SK_HAND_SIDE_RIGHT;
-    else if (strcmp(text, "left") == 0) *side = SK_HAND_SIDE_LEFT;
-    else return cli_fail(CLI_EXIT_USAGE, "--side '%s' must be right or left", text);
-    return 0;
-}
-
-/* Skeleton from --side, --hand-length, --hand-breadth, --anatomy (each may be absent). */
-static int build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side,
-                          double length_mm, double breadth_mm, sk_hand_skeleton *skel)
-{
-    sk_error err = {0};
-    sk_hand_anatomy anatomy;
-    sk_hand_skeleton_desc desc = {0};
-    const char *anatomy_path = cli_get(cmd, args, "anatomy");
-    if (anatomy_path) {
-        if (sk_hand_anatomy_load_file(anatomy_path, &anatomy, &err) != SK_OK) return cli_fail_error(&err);
-        desc.anatomy = &anatomy;
-    }
-    double hl = length_mm, hb = breadth_mm;
-    int rc = cli_get_double(cmd, args, "hand-length", hl, 60, 400, &hl);
-    if (rc == 0) rc = cli_get_double(cmd, args, "hand-breadth", hb, 30, 200, &hb);
-    if (rc) return rc;
-    const char *side_text = cli_get(cmd, args, "side");
-    if (side_text && (rc = parse_side(side_text, &side))) return rc;
-    desc.side = side;
-    desc.hand_length_mm = hl;
-    desc.hand_breadth_mm = hb;
-    if (sk_hand_skeleton_init(skel, &desc, &err) != SK_OK) return cli_fail_error(&err);
-    return 0;
-}
-
-/* Largest magnitude of a --pin or --torque value (degrees, mm or stiffness x radians):
-   pins beyond a joint's limits are clamped to them, so any larger value means nothing. */
-#define INPUT_VALUE_MAX 1e6
-
-/* "DOF=value" -> dof index and the number (in file units). */
-static int parse_assignment(const char *option, const char *text, int *dof, double *value)
-{
-    const char *eq = strchr(text, '=');
-    if (!eq) return cli_fail(CLI_EXIT_USAGE, "--%s '%s': expected DOF=value, e.g. L.MCP.flex=60", option, text);
-    char name[64];
-    size_t n = (size_t)(eq - text);
-    if (n >= sizeof name) n = sizeof name - 1;
-    memcpy(name, text, n);
-    name[n] = '\0';
-    *dof = sk_hand_dof_find(name);
-    if (*dof < 0)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)",
-                        option, text, name);
-    if (!cli_parse_decimal(eq + 1, value) || fabs(*value) > INPUT_VALUE_MAX)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': the value must be a decimal number in [%.0f, %.0f]", option,
-                        text, -INPUT_VALUE_MAX, INPUT_VALUE_MAX);
-    return 0;
-}
-
-/* --pin and --torque into an input: each DOF takes at most one of them, once. */
-static int parse_inputs(const cli_command *cmd, const cli_args *args, sk_hand_input *in)
-{
-    static const char *const options[] = {"pin", "torque"};
-    const char *given[SK_HAND_DOF_COUNT] = {0};
-    memset(in, 0, sizeof *in);
-    for (int k = 0; k < 2; k++) {
-        const char *values[CLI_MAX_VALUES];
-        int n = cli_get_all(cmd, args, options[k], values, CLI_MAX_VALUES);
-        for (int i = 0; i < n; i++) {
-            int dof = 0;
-            double v = 0.0;
-            int rc = parse_assignment(options[k], values[i], &dof, &v);
-            if (rc) return rc;
-            if (given[dof])
-                return cli_fail(CLI_EXIT_USAGE, "--%s '%s': %s already has --%s (one input per DOF)",
-                                options[k], values[i], sk_hand_dof(dof)->name, given[dof]);
-            given[dof] = options[k];
-            if (k == 0) {
-                in->pinned[dof] = true;
-                in->pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
-            } else {
-                in->torque[dof] = v;
-            }
-        }
-    }
-    return 0;
-}
 
 static int write_positions(const sk_hand_skeleton *skel, const double *dofs, int frames, const char *path)
 {
@@ -300,7 +216,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
                                    {"--bvh", &bvh, NULL, false},
                                    {"--positions", &positions, k_positions_formats, false}};
     sk_hand_skeleton skel;
-    rc = build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    rc = hand_build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
     sk_output_set *written = NULL;
     if ((rc = cli_reserve_outputs(outputs, 4, &written))) return rc;
@@ -312,7 +228,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     }
     rc = hand_load_constraints(set ? set : "natural", &skel, c);
     sk_hand_input in = {0};
-    if (!rc) rc = parse_inputs(cmd, args, &in);
+    if (!rc) rc = hand_parse_inputs(cmd, args, &in);
     sk_hand_lut luts[16];
     int lut_count = 0;
     if (!rc) rc = build_luts(cmd, args, luts, &lut_count);
@@ -405,6 +321,15 @@ static const cli_option animate_options[] = {
     {"plot-dofs", 0, "LIST", "DOFs to plot, comma-separated (default: the driven ones, then the most moving)", false},
     {"plot-title", 0, "TEXT", "title of the plot (default: the animation file's name)", false},
     {"plot-size", 0, "WxH", "plot size in pixels (default 800x560)", false},
+    {"glb", 0, "FILE", "write the skinned, animated hand surface as glTF binary (skeleton, weights, 3 LODs)", false},
+    {"landmarks", 0, "FILE", "write the 21 hand landmarks of every frame (.json or .csv)", false},
+    {"meshes-dir", 0, "DIR", "write the hand surface of frames as DIR/frame_0000.obj, ... (with --mesh-frames)", false},
+    {"mesh-frames", 0, "LIST", "frames for --meshes-dir, comma-separated (default all)", false},
+    {"skinning", 0, "METHOD", "skinning of the surface outputs: rigid, lbs or dqs (default)", false},
+    {"texture", 0, "PREFIX", "with --meshes-dir: also bake the skin texture PREFIX-albedo.png, PREFIX-normal.png", false},
+    {"texture-size", 0, "N", "atlas size of --texture in pixels (default 1024)", false},
+    {"triangles", 0, "N", "triangles of the surface's level 0 (default 8000)", false},
+    {"flesh", 0, "FILE", "flesh sizes JSON of the surface (default built in)", false},
 };
 
 /* --plot: the listed DOFs (or the driven ones and those that move most) over the frames. */
@@ -485,8 +410,10 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
     const char *angles = cli_get(cmd, args, "angles");
     const char *frames_dir = cli_get(cmd, args, "frames-dir"), *plot = cli_get(cmd, args, "plot");
-    if (!bvh && !positions && !angles && !frames_dir && !plot)
-        return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions, --angles, --plot or --frames-dir");
+    bool surface_outputs = cli_has(cmd, args, "glb") || cli_has(cmd, args, "landmarks") || cli_has(cmd, args, "meshes-dir");
+    if (!bvh && !positions && !angles && !frames_dir && !plot && !surface_outputs)
+        return cli_fail(CLI_EXIT_USAGE, "nothing to write: give --bvh, --positions, --angles, --plot, --frames-dir, --glb, "
+                                        "--landmarks or --meshes-dir");
     static const char *const frame_options[] = {"views", "png-size", "labels", "bare", NULL};
     static const char *const plot_options[] = {"plot-dofs", "plot-title", "plot-size", NULL};
     sk_hand_draw_desc draw;
@@ -510,7 +437,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     const char *path = args->positional[0];
     if (!rc && sk_hand_animation_load_file(path, anim, &err) != SK_OK) rc = cli_fail_error(&err);
     sk_hand_skeleton skel;
-    if (!rc) rc = build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
+    if (!rc) rc = hand_build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
     const char *set = cli_get(cmd, args, "constraints");
     if (!rc) rc = hand_load_constraints(set ? set : anim->constraints, &skel, c);
     if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
@@ -547,6 +474,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_fail_error(&err);
     if (!rc && plot) rc = write_angle_plot(cmd, args, anim, dofs, frames, plot);
     if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
+    if (!rc && surface_outputs) rc = hand_animate_surface_outputs(cmd, args, &skel, dofs, frames, anim->fps);
     if (written) rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
     sk_hand_solver_destroy(solver);

@@ -7,6 +7,8 @@ extern const cli_command cmd_sheet;
 extern const cli_command cmd_hand_pose;
 extern const cli_command cmd_hand_animate;
 extern const cli_command cmd_hand_calibrate;
+extern const cli_command cmd_hand_mesh;
+extern const cli_command cmd_hand_scan;
 extern const cli_command cmd_hand_evaluate;
 extern const cli_command cmd_hand_synthesize;
 extern const cli_command cmd_skin;
@@ -22,6 +24,8 @@ const cli_command *const cli_commands[] = {
     &cmd_hand_pose,
     &cmd_hand_animate,
     &cmd_hand_calibrate,
+    &cmd_hand_mesh,
+    &cmd_hand_scan,
     &cmd_hand_evaluate,
     &cmd_hand_synthesize,
     &cmd_skin,

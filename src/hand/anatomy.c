@@ -208,13 +208,12 @@ sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *sou
     return r;
 }
 
+static sk_result parse_into(const char *text, size_t length, const char *source, void *out, sk_error *err)
+{
+    return sk_hand_anatomy_parse(text, length, source, out, err);
+}
+
 sk_result sk_hand_anatomy_load_file(const char *path, sk_hand_anatomy *out, sk_error *err)
 {
-    char *text = NULL;
-    size_t size = 0;
-    sk_result r = sk_read_file(path, SK_HAND_MAX_FILE_BYTES, &text, &size, err);
-    if (r != SK_OK) return r;
-    r = sk_hand_anatomy_parse(text, size, path, out, err);
-    free(text);
-    return r;
+    return sk_hand__parse_file(path, parse_into, out, err);
 }

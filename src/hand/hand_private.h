@@ -38,6 +38,12 @@ sk_result sk_hand__json_expect_object(const cJSON *item, const char *path, sk_er
 /* Looks up a DOF by name or fails: "<path>: unknown DOF \"name\"". */
 sk_result sk_hand__dof_by_name(const char *name, const char *path, int *dof, sk_error *err);
 
+/* Reads a whole data file (at most SK_HAND_MAX_FILE_BYTES) and hands it to a parser
+ * `parse(text, length, path, ctx, err)`. */
+typedef sk_result (*sk_hand__parse_fn)(const char *text, size_t length, const char *source_name, void *ctx,
+                                       sk_error *err);
+sk_result sk_hand__parse_file(const char *path, sk_hand__parse_fn parse, void *ctx, sk_error *err);
+
 /* Writes text through an atomic file (temp + rename). */
 sk_result sk_hand__write_text_file(const char *path, const char *text, sk_error *err);
 

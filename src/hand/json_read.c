@@ -3,6 +3,7 @@
  * inexact integers refused), then unknown keys, wrong types and out-of-range numbers are
  * errors naming the key path. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "hand/hand_private.h"
@@ -95,4 +96,15 @@ sk_result sk_hand__write_text_file(const char *path, const char *text, sk_error 
         return sk_atomic_file_write_failed(&file, err);
     }
     return sk_atomic_file_commit(&file, err);
+}
+
+sk_result sk_hand__parse_file(const char *path, sk_hand__parse_fn parse, void *ctx, sk_error *err)
+{
+    char *text = NULL;
+    size_t size = 0;
+    sk_result r = sk_read_file(path, SK_HAND_MAX_FILE_BYTES, &text, &size, err);
+    if (r != SK_OK) return r;
+    r = parse(text, size, path, ctx, err);
+    free(text);
+    return r;
 }

@@ -1,0 +1,130 @@
+/* Benchmarks of the hand surface (thesis 4.1): meshing the skeleton's flesh (target 1 s),
+ * a pose update + skinning + normals of the 8000-triangle hand on one thread (targets:
+ * 50 us LBS, 100 us DQS; MANO's 778-vertex LBS is the usual comparison, hence ns per
+ * vertex), the levels of detail, the thesis's defect per method (4.1.5) on a fully
+ * flexed index finger, and the whole `hand mesh` command with its files. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "shitsukan/hand.h"
+
+static void fail(const sk_error *err)
+{
+    fprintf(stderr, "bench_hand_surface: %s\n", err->message);
+    exit(1);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double min_of(const double *t, int n)
+{
+    double m = t[0];
+    for (int i = 1; i < n; i++) m = t[i] < m ? t[i] : m;
+    return m;
+}
+
+int main(void)
+{
+    sk_error err = {0};
+    sk_hand_skeleton skel;
+    if (sk_hand_skeleton_init(&skel, NULL, &err) != SK_OK) fail(&err);
+    FILE *la = fopen("/proc/loadavg", "r");
+    char load[64] = "?";
+    if (la) {
+        if (!fgets(load, sizeof load, la)) load[0] = '\0';
+        fclose(la);
+        load[strcspn(load, "\n")] = '\0';
+    }
+    printf("load average: %s; threads: %d\n", load, sk_threads_max());
+    /* meshing: best of 3 on all threads, and on one */
+    sk_hand_surface *s = NULL;
+    for (int threads = 0; threads <= 1; threads++) {
+        sk_threads_set(threads);
+        double t[3], cpu[3];
+        for (int i = 0; i < 3; i++) {
+            sk_hand_surface_destroy(s);
+            double t0 = sk_time_seconds();
+            clock_t c0 = clock();
+            if (sk_hand_surface_create(&s, &skel, NULL, &err) != SK_OK) fail(&err);
+            t[i] = sk_time_seconds() - t0;
+            cpu[i] = (double)(clock() - c0) / CLOCKS_PER_SEC;
+        }
+        printf("mesh generation (%s): best %.3f s wall of 3, %.3f s of CPU (target 1 s)\n",
+               threads ? "1 thread" : "all threads", min_of(t, 3), min_of(cpu, 3));
+    }
+    sk_threads_set(0);
+    const sk_mesh *m = sk_hand_surface_mesh(s);
+    printf("mesh: %zu vertices, %zu triangles\n", m->vertex_count, m->triangle_count);
+    /* pose update + skinning + normals, one thread (the deform is single-threaded below
+       20000 vertices) */
+    float *pos = malloc(3 * m->vertex_count * sizeof *pos), *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
+    const int poses = 2000;
+    double *t = malloc(poses * sizeof *t);
+    static const char *const names[] = {"rigid", "lbs", "dqs"};
+    double q[SK_HAND_DOF_COUNT];
+    for (int method = SK_HAND_SKINNING_RIGID; method <= SK_HAND_SKINNING_DQS; method++) {
+        double sink = 0;
+        for (int i = 0; i < poses; i++) {
+            sk_hand_relaxed(&skel, q);
+            sk_rng rng = sk_rng_make(5, (uint64_t)i, 0, 0);
+            for (int d = SK_HAND_WRIST_DOF_COUNT; d < SK_HAND_DOF_COUNT; d++)
+                q[d] = sk_rng_range(&rng, skel.dof[d].min, skel.dof[d].max);
+            double t0 = sk_time_seconds();
+            sk_hand_frames fr;
+            sk_hand_forward(&skel, q, &fr);
+            sk_hand_surface_deform(s, &fr, (sk_hand_skinning)method, pos, nrm);
+            t[i] = sk_time_seconds() - t0;
+            sink += pos[3 * (i % m->vertex_count)];
+        }
+        qsort(t, poses, sizeof *t, cmp_double);
+        double us = t[poses / 2] * 1e6;
+        printf("pose update + skinning + normals, %s: median %.1f us per pose, %.2f ns per vertex (best %.1f us)%s\n",
+               names[method - 1], us, us * 1e3 / (double)m->vertex_count, t[0] * 1e6,
+               sink == 12345.678 ? "" : "");
+    }
+    /* levels of detail */
+    for (int l = 1; l < SK_HAND_LOD_COUNT; l++) {
+        sk_hand_surface *c;
+        double t0 = sk_time_seconds();
+        if (sk_hand_surface_simplify(&c, s, sk_hand_lod_triangles[l], &err) != SK_OK) fail(&err);
+        const sk_mesh *cm = sk_hand_surface_mesh(c);
+        printf("LOD %d: %zu vertices, %zu triangles (target %d) in %.3f s\n", l, cm->vertex_count, cm->triangle_count,
+               sk_hand_lod_triangles[l], sk_time_seconds() - t0);
+        sk_hand_surface_destroy(c);
+    }
+    /* the defect of the thesis on a fully flexed index (MCP 90, PIP 100, DIP 80 deg) */
+    sk_hand_relaxed(&skel, q);
+    q[sk_hand_dof_find("I.MCP.flex")] = 90 * SK_DEG_TO_RAD;
+    q[sk_hand_dof_find("I.PIP.flex")] = 100 * SK_DEG_TO_RAD;
+    q[sk_hand_dof_find("I.DIP.flex")] = 80 * SK_DEG_TO_RAD;
+    printf("defect, fully flexed index (%s):\n  method  volume lost mm^3  %% of finger  inside neighbour  max depth mm\n", "4.1.5");
+    for (int method = SK_HAND_SKINNING_RIGID; method <= SK_HAND_SKINNING_DQS; method++) {
+        sk_hand_defect d;
+        if (sk_hand_surface_defect(s, q, (sk_hand_skinning)method, SK_HAND_INDEX, &d, &err) != SK_OK) fail(&err);
+        printf("  %-6s  %16.0f  %11.1f  %9d / %4d  %12.2f\n", names[method - 1], d.volume_lost_mm3, d.volume_lost_percent,
+               d.inside_count, d.vertex_count, d.max_depth_mm);
+    }
+    /* the whole command as a user runs it, files written */
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "%s hand mesh --pin I.PIP.flex=90 -o %s/bench-hand.obj -q", SK_BENCH_CLI, SK_BENCH_TMP);
+    double best = 1e9;
+    for (int i = 0; i < 3; i++) {
+        double t0 = sk_time_seconds();
+        if (system(cmd) != 0) {
+            fprintf(stderr, "bench_hand_surface: %s failed\n", cmd);
+            return 1;
+        }
+        double dt = sk_time_seconds() - t0;
+        best = dt < best ? dt : best;
+    }
+    printf("shitsukan hand mesh --pin ... -o hand.obj: best %.3f s of 3 (mesh generation, solve, skinning, OBJ)\n", best);
+    free(pos), free(nrm), free(t);
+    sk_hand_surface_destroy(s);
+    return 0;
+}

@@ -1,0 +1,338 @@
+/* `shitsukan hand scan`: the scan-to-surface pipeline of Yasumuro's thesis (sec. 4.1) -
+ * simulated range scans of the hand (or of a user's mesh), registration by the markers,
+ * slices, polygons, 96 Bezier patches and Table 4.1 - writing its pictures and files into
+ * a folder. Argument parsing only; the pipeline is in the library. */
+#define _POSIX_C_SOURCE 200809L
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "hand_args.h"
+#include "shitsukan/hand.h"
+#include "shitsukan/io.h"
+
+#define MAX_PINS 64
+
+static const cli_option scan_options[] = {
+    {"input", 0, "FILE", "a mesh to scan like the cast, or a point cloud taken as the registered data "
+                         "(OBJ or PLY, mm, in the frame of the skeleton's pose); default: the hand surface", false},
+    {"pose", 0, "FILE", "the skeleton's pose in the data: a pose JSON as `hand pose -o` writes (default: the "
+                        "cast's open hand)", false},
+    {"pin", 0, "DOF=DEG", "set a DOF of that pose to an absolute angle in degrees; repeatable", true},
+    {"side", 0, "SIDE", "right (default) or left", false},
+    {"hand-length", 0, "MM", "hand length, wrist crease to middle fingertip (default 190)", false},
+    {"hand-breadth", 0, "MM", "hand breadth across the knuckles (default 85)", false},
+    {"anatomy", 0, "FILE", "anatomy JSON (default built in)", false},
+    {"lines", 0, "N", "scan lines of the range finder (default 512)", false},
+    {"points", 0, "N", "points per scan line (default 512)", false},
+    {"noise", 0, "MM", "depth noise sigma at normal view (default 0.05; 0 = none)", false},
+    {"slices", 0, "N", "slice planes across the links (default 50)", false},
+    {"bend", 0, "DOF=DEG", "pose of patches-posed.png, added to the cast's (default: I, M, R, L MCP 40, PIP 60, "
+                           "DIP 30); repeatable", true},
+    {"no-pictures", 0, NULL, "write the files only", false},
+};
+
+static int fail_error(const sk_error *err) { return cli_fail_error(err); }
+
+/* The pose from --pose (or the cast's open hand), then --pin. */
+static int read_pose(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel, double *q)
+{
+    sk_hand_scan_cast_pose(skel, q);
+    const char *pose = cli_get(cmd, args, "pose");
+    sk_error err = {0};
+    if (pose && sk_hand_pose_load_file(pose, skel, q, &err) != SK_OK) return cli_fail_error(&err);
+    const char *values[MAX_PINS];
+    int n = cli_get_all(cmd, args, "pin", values, MAX_PINS);
+    for (int i = 0; i < n; i++) {
+        int dof;
+        double v;
+        int rc = hand_parse_assignment("pin", values[i], &dof, &v);
+        if (rc) return rc;
+        q[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
+    }
+    return 0;
+}
+
+static int write_png(const sk_image *img, const char *dir, const char *name)
+{
+    char path[PATH_MAX];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    sk_error err = {0};
+    sk_png_write_desc d = {.compression_level = 3};
+    return sk_image_write_png(img, path, &d, &err) == SK_OK ? 0 : fail_error(&err);
+}
+
+/* Draws with `draw` into DIR/name. */
+typedef sk_result (*draw_fn)(const sk_hand_scan_result *res, sk_image *out, sk_error *err);
+static int picture(const sk_hand_scan_result *res, draw_fn draw, const char *dir, const char *name)
+{
+    sk_image img;
+    sk_error err = {0};
+    if (draw(res, &img, &err) != SK_OK) return fail_error(&err);
+    int rc = write_png(&img, dir, name);
+    sk_image_free(&img);
+    return rc;
+}
+
+static int mesh_picture(const sk_mesh *m, const char *title, const char *attr, const char *dir, const char *name)
+{
+    sk_image img;
+    sk_error err = {0};
+    if (sk_hand_draw_mesh_views(m, title, attr, NULL, 0, &img, &err) != SK_OK) return fail_error(&err);
+    int rc = write_png(&img, dir, name);
+    sk_image_free(&img);
+    return rc;
+}
+
+/* patches-posed.png: the patches moved to the cast's pose plus --bend (4.1.5). */
+static int posed_picture(const cli_command *cmd, const cli_args *args, const sk_hand_scan_result *res,
+                         const sk_hand_skeleton *skel, const double *q, const sk_hand_surface *surface, const char *dir)
+{
+    double bent[SK_HAND_DOF_COUNT];
+    memcpy(bent, q, sizeof bent);
+    const char *values[MAX_PINS];
+    int n = cli_get_all(cmd, args, "bend", values, MAX_PINS);
+    if (n == 0) {
+        static const char *const curl[] = {"I.MCP.flex=40", "I.PIP.flex=60", "I.DIP.flex=30", "M.MCP.flex=40",
+                                           "M.PIP.flex=60", "M.DIP.flex=30", "R.MCP.flex=40", "R.PIP.flex=60",
+                                           "R.DIP.flex=30", "L.MCP.flex=40", "L.PIP.flex=60", "L.DIP.flex=30"};
+        n = (int)(sizeof curl / sizeof curl[0]);
+        for (int i = 0; i < n; i++) values[i] = curl[i];
+    }
+    for (int i = 0; i < n; i++) {
+        int dof;
+        double v;
+        int rc = hand_parse_assignment("bend", values[i], &dof, &v);
+        if (rc) return rc;
+        bent[dof] += sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
+    }
+    sk_hand_clamp_to_limits(skel, bent);
+    sk_hand_frames pose;
+    sk_hand_forward(skel, bent, &pose);
+    sk_error err = {0};
+    sk_hand_patch_weights *w = NULL;
+    if (surface) {
+        w = malloc(sizeof *w * 16 * SK_HAND_PATCH_COUNT);
+        if (!w) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+        if (sk_hand_patch_weights_from_surface(surface, res->patches->patch, res->patches->count, w, &err) != SK_OK) {
+            free(w);
+            return fail_error(&err);
+        }
+    }
+    sk_image img;
+    sk_result r = sk_hand_draw_patches_posed(res->patches, &res->frames, &pose, w, &img, &err);
+    free(w);
+    if (r != SK_OK) return fail_error(&err);
+    int rc = write_png(&img, dir, "patches-posed.png");
+    sk_image_free(&img);
+    return rc;
+}
+
+static int write_pictures(const sk_hand_scan_result *res, const sk_mesh *patch_mesh, const char *dir)
+{
+    int rc = 0;
+    for (int s = 0; s < SK_HAND_SCAN_SIDE_COUNT && res->scanned && !rc; s++) {
+        sk_image img;
+        sk_error err = {0};
+        if (sk_hand_draw_range_scan(&res->scan[s], 1, &img, &err) != SK_OK) return fail_error(&err);
+        rc = write_png(&img, dir, s == SK_HAND_SCAN_PALM ? "scan-palm.png" : "scan-back.png");
+        sk_image_free(&img);
+    }
+    if (!rc) rc = picture(res, sk_hand_draw_registered, dir, "registered.png");
+    if (!rc) rc = picture(res, sk_hand_draw_slices, dir, "slices.png");
+    char title[160];
+    snprintf(title, sizeof title, "polygons, each slice resampled alone (eqs. 4.1, 4.2): %zu vertices, %zu triangles",
+             res->polygons_thesis.vertex_count, res->polygons_thesis.triangle_count);
+    if (!rc) rc = mesh_picture(&res->polygons_thesis, title, "link", dir, "polygons-thesis.png");
+    snprintf(title, sizeof title, "polygons resampled with the neighbouring slices: %zu vertices, %zu triangles",
+             res->polygons.vertex_count, res->polygons.triangle_count);
+    if (!rc) rc = mesh_picture(&res->polygons, title, "link", dir, "polygons.png");
+    snprintf(title, sizeof title, "%d + %d Bezier patches (palm + back), one colour each",
+             res->table.patches_fitted[0], res->table.patches_fitted[1]);
+    if (!rc) rc = mesh_picture(patch_mesh, title, "patch", dir, "patches.png");
+    return rc;
+}
+
+static int write_files(const sk_hand_scan_result *res, const sk_mesh *patch_mesh, const sk_hand_surface *surface,
+                       const char *dir)
+{
+    char path[PATH_MAX];
+    sk_error err = {0};
+#define PATH(name) (snprintf(path, sizeof path, "%s/%s", dir, name), path)
+    if (sk_hand_cloud_write_ply(&res->cloud, PATH("cloud.ply"), &err) != SK_OK) return fail_error(&err);
+    if (surface && sk_mesh_write(sk_hand_surface_mesh(surface), PATH("cast.obj"), &err) != SK_OK) return fail_error(&err);
+    if (sk_hand_table41_write_json(&res->table, PATH("table-4.1.json"), &err) != SK_OK ||
+        sk_hand_table41_write_text(&res->table, PATH("table-4.1.txt"), &err) != SK_OK ||
+        sk_hand_patches_write_json(res->patches, PATH("patches.json"), &err) != SK_OK ||
+        sk_mesh_write(patch_mesh, PATH("patches.obj"), &err) != SK_OK ||
+        sk_mesh_write(&res->polygons, PATH("polygons.obj"), &err) != SK_OK ||
+        sk_mesh_write(&res->polygons_thesis, PATH("polygons-thesis.obj"), &err) != SK_OK)
+        return fail_error(&err);
+    if (res->scanned && sk_hand_registration_write_json(&res->registration, &res->markers, PATH("registration.json"),
+                                                        &err) != SK_OK)
+        return fail_error(&err);
+#undef PATH
+    return 0;
+}
+
+/* Only the fitted patches, tessellated 16 x 16. */
+static int tessellate(const sk_hand_scan_result *res, sk_mesh *out)
+{
+    sk_hand_patch fitted[SK_HAND_PATCH_COUNT];
+    int n = 0;
+    for (int k = 0; k < res->patches->count; k++)
+        if (res->patches->fitted[k]) fitted[n++] = res->patches->patch[k];
+    sk_error err = {0};
+    if (n == 0) return cli_fail(CLI_EXIT_USAGE, "no patch had enough points to be fitted");
+    if (sk_hand_patches_tessellate(fitted, n, 16, out, &err) != SK_OK) return fail_error(&err);
+    return 0;
+}
+
+static void print_summary(const sk_hand_scan_result *res)
+{
+    if (res->scanned) {
+        printf("registration (back scan onto palm scan, 9 markers): rms %.4f mm, rotation error %.4f deg, "
+               "translation error %.4f mm\n",
+               res->registration.rms_mm, res->registration.rotation_error_deg, res->registration.translation_error_mm);
+        for (int k = 0; k < res->markers.count; k++)
+            printf("  %-16s residual %.4f mm  (%d palm, %d back samples)\n", res->markers.name[k],
+                   res->registration.residual_mm[k], res->registration.palm_used[k], res->registration.back_used[k]);
+    }
+    printf("cloud: %zu points; polygons: %zu vertices, %zu triangles (fold %.1f deg; slice by slice: %.1f deg)\n",
+           res->cloud.count, res->polygons.vertex_count, res->polygons.triangle_count, res->polygons_stats.fold_mean_deg,
+           res->polygons_thesis_stats.fold_mean_deg);
+    const sk_hand_table41 *t = &res->table;
+    printf("Table 4.1 [mm]      thesis mean / max   scan mean / max     truth mean / max\n");
+    static const char *const names[2] = {"palm", "back"};
+    static const double thesis[2][2] = {{SK_HAND_THESIS_PALM_MEAN_MM, SK_HAND_THESIS_PALM_MAX_MM},
+                                        {SK_HAND_THESIS_BACK_MEAN_MM, SK_HAND_THESIS_BACK_MAX_MM}};
+    for (int s = 0; s < 2; s++) {
+        printf("  %-4s (%2d patches) %8.3f / %-8.3g %8.4f / %-8.3g", names[s], t->patches_fitted[s], thesis[s][0],
+               thesis[s][1], t->scan[s].mean_mm, t->scan[s].max_mm);
+        if (t->has_truth) printf(" %8.4f / %-8.3g", t->truth[s].mean_mm, t->truth[s].max_mm);
+        printf("\n");
+    }
+    const sk_hand_scan_timings *tm = &res->timings;
+    printf("time: simulate %.2f s, register %.2f s, segment %.2f s, resample %.2f s, fit %.2f s, measure %.2f s, "
+           "total %.2f s\n",
+           tm->simulate, tm->register_, tm->segment, tm->resample, tm->fit, tm->measure, tm->total);
+}
+
+static int run_scan(const cli_command *cmd, const cli_args *args)
+{
+    const char *dir = args->common.output;
+    if (!dir) return cli_fail(CLI_EXIT_USAGE, "-o DIR is required (the folder for the pictures and files)");
+    sk_hand_skeleton skel;
+    int rc = hand_build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    double q[SK_HAND_DOF_COUNT];
+    if (!rc) rc = read_pose(cmd, args, &skel, q);
+    sk_hand_scan_desc d = {0};
+    long long lines = 512, points = 512, slices = 50;
+    double noise = 0.05;
+    if (!rc) rc = cli_get_int(cmd, args, "lines", 512, 8, 4096, &lines);
+    if (!rc) rc = cli_get_int(cmd, args, "points", 512, 8, 4096, &points);
+    if (!rc) rc = cli_get_int(cmd, args, "slices", 50, 2, 2000, &slices);
+    if (!rc) rc = cli_get_double(cmd, args, "noise", 0.05, 0, 10, &noise);
+    if (rc) return rc;
+    d.scanner.lines = (int)lines;
+    d.scanner.points = (int)points;
+    d.scanner.noise_mm = noise;
+    d.scanner.no_noise = noise == 0;
+    d.slices.count = (int)slices;
+    d.seed = args->common.has_seed ? args->common.seed : 0;
+    const char *input = cli_get(cmd, args, "input");
+    sk_error err = {0};
+    sk_mesh mesh = {0};
+    sk_hand_scan_target *target = NULL;
+    sk_hand_surface *surface = NULL;
+    sk_hand_skeleton cast;
+    sk_hand_scan_input in = {.skeleton = &skel, .dofs = q};
+    double t_surface = sk_time_seconds();
+    if (!input) {
+        /* the cast: the hand surface meshed in the pose */
+        if (sk_hand_scan_cast(&skel, q, NULL, &cast, &surface, &target, &err) != SK_OK) return fail_error(&err);
+        in.skeleton = &cast;
+        in.target = target;
+    } else {
+        if (sk_mesh_read(&mesh, input, NULL, &err) != SK_OK) return fail_error(&err);
+        if (mesh.triangle_count > 0) {
+            sk_hand_scan_target_desc td = {.mesh = &mesh};
+            if (sk_hand_scan_target_create(&target, &td, &err) != SK_OK) {
+                sk_error_prefix(&err, err.result, "%s", input);
+                sk_mesh_free(&mesh);
+                return fail_error(&err);
+            }
+            in.target = target;
+        } else {
+            in.cloud = &mesh;
+        }
+    }
+    t_surface = sk_time_seconds() - t_surface;
+    if (sk_make_dirs(dir, &err) != SK_OK) rc = fail_error(&err);
+    sk_hand_scan_result res;
+    sk_progress_bar bar;
+    if (!rc) {
+        sk_progress_bar_begin(&bar, "hand scan", !args->common.quiet);
+        sk_result r = sk_hand_scan_run(&in, &d, &res, sk_progress_bar_sink(&bar), &err);
+        sk_progress_bar_end(&bar);
+        if (r != SK_OK) {
+            if (input) sk_error_prefix(&err, err.result, "%s", input);
+            rc = fail_error(&err);
+        }
+    }
+    sk_hand_scan_target_destroy(target);
+    sk_mesh_free(&mesh);
+    if (rc) {
+        sk_hand_surface_destroy(surface);
+        return rc;
+    }
+    sk_mesh patch_mesh = {0};
+    rc = tessellate(&res, &patch_mesh);
+    if (!rc) rc = write_files(&res, &patch_mesh, surface, dir);
+    if (!rc && !cli_has(cmd, args, "no-pictures")) rc = write_pictures(&res, &patch_mesh, dir);
+    if (!rc && !cli_has(cmd, args, "no-pictures"))
+        rc = posed_picture(cmd, args, &res, in.skeleton, q, surface, dir);
+    if (!rc && !args->common.quiet) {
+        if (!input) printf("hand surface (the cast) meshed in %.2f s\n", t_surface);
+        print_summary(&res);
+    }
+    sk_mesh_free(&patch_mesh);
+    sk_hand_scan_result_free(&res);
+    sk_hand_surface_destroy(surface);
+    return rc;
+}
+
+const cli_command cmd_hand_scan = {
+    .name = "hand scan",
+    .summary = "the thesis's scan-to-surface pipeline: range scans, registration, slices, polygons, Bezier patches, "
+               "Table 4.1",
+    .usage = "shitsukan hand scan [--input cloud.ply|mesh.obj] [--pose pose.json] [--pin DOF=DEG]... -o DIR",
+    .description =
+        "Reproduces sec. 4.1 of Yasumuro's thesis. A mesh (the hand surface, or --input) is scanned\n"
+        "like the plaster cast by a simulated laser range finder (512 lines x 512 points over\n"
+        "250 x 200 x 200 mm, depth in 0.2 mm steps, noise, occlusion, the table removed by a depth\n"
+        "threshold), palm up and turned over, with 9 marker bumps; the back scan is registered onto\n"
+        "the palm scan by least squares on the markers; about 50 slices across the links give\n"
+        "polygons (eqs. 4.1, 4.2, slice by slice as in the thesis and with the neighbouring\n"
+        "slices); 48 + 48 bicubic Bezier patches are fitted by least squares with parameter\n"
+        "correction (eqs. 4.3-4.7), and their error is measured as in Table 4.1, against the scan\n"
+        "and against the true surface. A point cloud as --input is taken as the registered data.\n"
+        "The skeleton's pose in the data is the cast's open hand, or --pose, changed with --pin;\n"
+        "an --input must be in that skeleton's frame (mm; X radial, Y distal, Z palmar).\n"
+        "Writes into DIR: table-4.1.txt/.json, registration.json, patches.json (control points),\n"
+        "patches.obj, polygons.obj, polygons-thesis.obj, cloud.ply (the registered data, with\n"
+        "its scan side), cast.obj (the scanned hand surface), and the pictures scan-palm.png,\n"
+        "scan-back.png, registered.png, slices.png, polygons.png, polygons-thesis.png, patches.png,\n"
+        "patches-posed.png (the control points moving with their links: rigid, and with the\n"
+        "surface's smooth weights).",
+    .examples = "  shitsukan hand scan --input hand.obj -o scan\n"
+                "  shitsukan hand scan --input cloud.ply --pose pose.json --pin I.MCP.flex=20 -o scan --no-pictures",
+    .options = scan_options,
+    .option_count = (int)(sizeof scan_options / sizeof scan_options[0]),
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_SEED | CLI_COMMON_THREADS | CLI_COMMON_QUIET,
+    .min_positional = 0,
+    .max_positional = 0,
+    .run = run_scan,
+};

@@ -1,0 +1,96 @@
+/* Options shared by the `shitsukan hand ...` commands: the skeleton from --side,
+ * --hand-length, --hand-breadth and --anatomy, and "DOF=value" assignments. Argument
+ * parsing only. */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hand_args.h"
+
+static int parse_side(const char *text, sk_hand_side *side)
+{
+    if (!text || strcmp(text, "right") == 0) *side = SK_HAND_SIDE_RIGHT;
+    else if (strcmp(text, "left") == 0) *side = SK_HAND_SIDE_LEFT;
+    else return cli_fail(CLI_EXIT_USAGE, "--side '%s' must be right or left", text);
+    return 0;
+}
+
+int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side, double length_mm,
+                        double breadth_mm, sk_hand_skeleton *skel)
+{
+    sk_error err = {0};
+    sk_hand_anatomy anatomy;
+    sk_hand_skeleton_desc desc = {0};
+    const char *anatomy_path = cli_get(cmd, args, "anatomy");
+    if (anatomy_path) {
+        if (sk_hand_anatomy_load_file(anatomy_path, &anatomy, &err) != SK_OK) return cli_fail_error(&err);
+        desc.anatomy = &anatomy;
+    }
+    double hl = length_mm, hb = breadth_mm;
+    int rc = cli_get_double(cmd, args, "hand-length", hl, 60, 400, &hl);
+    if (rc == 0) rc = cli_get_double(cmd, args, "hand-breadth", hb, 30, 200, &hb);
+    if (rc) return rc;
+    const char *side_text = cli_get(cmd, args, "side");
+    if (side_text && (rc = parse_side(side_text, &side))) return rc;
+    desc.side = side;
+    desc.hand_length_mm = hl;
+    desc.hand_breadth_mm = hb;
+    if (sk_hand_skeleton_init(skel, &desc, &err) != SK_OK) return cli_fail_error(&err);
+    return 0;
+}
+
+/* Largest magnitude of a --pin or --torque value (degrees, mm or stiffness x radians):
+   pins beyond a joint's limits are clamped to them, so any larger value means nothing. */
+#define INPUT_VALUE_MAX 1e6
+
+int hand_parse_assignment(const char *option, const char *text, int *dof, double *value)
+{
+    const char *eq = strchr(text, '=');
+    if (!eq) return cli_fail(CLI_EXIT_USAGE, "--%s '%s': expected DOF=value, e.g. L.MCP.flex=60", option, text);
+    char name[64];
+    size_t n = (size_t)(eq - text);
+    if (n >= sizeof name) n = sizeof name - 1;
+    memcpy(name, text, n);
+    name[n] = '\0';
+    *dof = sk_hand_dof_find(name);
+    if (*dof < 0)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)",
+                        option, text, name);
+    if (!cli_parse_decimal(eq + 1, value) || fabs(*value) > INPUT_VALUE_MAX)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': the value must be a decimal number in [%.0f, %.0f]", option,
+                        text, -INPUT_VALUE_MAX, INPUT_VALUE_MAX);
+    return 0;
+}
+
+/* --pin and --torque into an input: each DOF takes at most one of them, once. */
+int hand_parse_inputs(const cli_command *cmd, const cli_args *args, sk_hand_input *in)
+{
+    static const char *const options[] = {"pin", "torque"};
+    const char *given[SK_HAND_DOF_COUNT] = {0};
+    memset(in, 0, sizeof *in);
+    for (int k = 0; k < 2; k++) {
+        const char *values[CLI_MAX_VALUES];
+        int n = cli_get_all(cmd, args, options[k], values, CLI_MAX_VALUES);
+        for (int i = 0; i < n; i++) {
+            int dof = 0;
+            double v = 0.0;
+            int rc = hand_parse_assignment(options[k], values[i], &dof, &v);
+            if (rc) return rc;
+            if (given[dof])
+                return cli_fail(CLI_EXIT_USAGE, "--%s '%s': %s already has --%s (one input per DOF)",
+                                options[k], values[i], sk_hand_dof(dof)->name, given[dof]);
+            given[dof] = options[k];
+            if (k == 0) {
+                in->pinned[dof] = true;
+                in->pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
+            } else {
+                in->torque[dof] = v;
+            }
+        }
+    }
+    return 0;
+}
+
+
