@@ -35,7 +35,7 @@ build_packages=(
 )
 node_packages=(nodejs npm)
 video_packages=(ffmpeg)
-blender_packages=(blender)
+blender_packages=(blender python3-numpy) # numpy: Blender's glTF importer needs it
 studio_packages=(emscripten node-acorn chromium)
 fuzz_packages=(clang libclang-rt-14-dev)
 

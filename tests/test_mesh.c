@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "io/polygon_triangulate.h"
+#include "shitsukan/image.h"
 #include "shitsukan/io.h"
 #include "shitsukan/mesh.h"
 
@@ -106,6 +107,12 @@ static void make_grid(sk_mesh *m, bool attributes)
         for (int k = 0; k < 3; k++) dir[3 * i + (size_t)k] = (float)(i * 3 + (size_t)k) / 7.0f;
     }
 }
+
+/* Colours pass through the sRGB curve in files: OBJ's decimal values come back within
+ * float rounding, PLY's 8-bit codes within half a code, which is up to 2.28 times as much
+ * in linear terms (the curve's steepest inverse slope, at 1). */
+#define OBJ_COLOR_TOL 1e-6
+#define PLY_COLOR_TOL (2.28 * 0.5 / 255.0)
 
 /* Compares two meshes corner by corner (vertex order may differ). */
 static void assert_same_triangles(const sk_mesh *a, const sk_mesh *b, double color_tol)
@@ -336,7 +343,7 @@ static void test_obj_roundtrip(void **state)
     SK_ASSERT_OK(sk_mesh_read_obj(&back, path, NULL, &e_));
     assert_int_equal(back.vertex_count, 12);
     assert_int_equal(back.attribute_count, 0); /* OBJ has no attributes */
-    assert_same_triangles(&m, &back, 0.0);     /* %.9g: bit-exact floats */
+    assert_same_triangles(&m, &back, OBJ_COLOR_TOL); /* %.9g: bit-exact floats */
     sk_mesh_free(&back);
 
     /* Without normals and uvs the faces use the plain form. */
@@ -345,7 +352,7 @@ static void test_obj_roundtrip(void **state)
     m.normals = m.uvs = NULL;
     SK_ASSERT_OK(sk_mesh_write_obj(&m, path, NULL, &e_));
     SK_ASSERT_OK(sk_mesh_read_obj(&back, path, NULL, &e_));
-    assert_same_triangles(&m, &back, 0.0);
+    assert_same_triangles(&m, &back, OBJ_COLOR_TOL);
     sk_mesh_free(&back);
 
     /* A point cloud keeps every vertex in order. */
@@ -361,7 +368,7 @@ static void test_obj_roundtrip(void **state)
     assert_int_equal(back.vertex_count, 5);
     assert_int_equal(back.triangle_count, 0);
     assert_memory_equal(back.positions, cloud.positions, 15 * sizeof(float));
-    assert_memory_equal(back.colors, cloud.colors, 15 * sizeof(float));
+    for (int i = 0; i < 15; i++) assert_float_equal(back.colors[i], cloud.colors[i], OBJ_COLOR_TOL);
     sk_mesh_free(&back);
     sk_mesh_free(&cloud);
     sk_mesh_free(&m);
@@ -516,6 +523,91 @@ static void test_obj_material(void **state)
     sk_mesh_free(&m);
 }
 
+
+/* Files hold vertex colours sRGB-encoded, as Blender and MeshLab read them: a linear 0.5
+ * is 0.735356987 in an OBJ and code 188 in a PLY (written linearly, Blender showed 0.21), and
+ * both read back as 0.5. */
+static void test_vertex_colors_are_srgb_in_files(void **state)
+{
+    (void)state;
+    sk_mesh m, back;
+    SK_ASSERT_OK(sk_mesh_create(&m, 3, 1, SK_MESH_COLORS, &e_));
+    for (int i = 0; i < 9; i++) m.positions[i] = (float)(i % 4);
+    m.indices[0] = 0, m.indices[1] = 1, m.indices[2] = 2;
+    const float linear[3] = {0.5f, 0.0031308f * 0.5f, 1.0f};
+    for (int v = 0; v < 3; v++)
+        for (int c = 0; c < 3; c++) m.colors[3 * v + c] = linear[c];
+    const char *obj = sk_test_path("mesh/srgb.obj"), *ply = sk_test_path("mesh/srgb.ply");
+    SK_ASSERT_OK(sk_mesh_write_obj(&m, obj, NULL, &e_));
+    char *text;
+    size_t size;
+    SK_ASSERT_OK(sk_read_file(obj, 0, &text, &size, &e_));
+    assert_non_null(strstr(text, " 0.735356987 0.020224968 1\n"));
+    free(text);
+    SK_ASSERT_OK(sk_mesh_read_obj(&back, obj, NULL, &e_));
+    for (int c = 0; c < 3; c++) assert_float_equal(back.colors[c], linear[c], OBJ_COLOR_TOL);
+    sk_mesh_free(&back);
+    SK_ASSERT_OK(sk_mesh_write_ply(&m, ply, &e_));
+    SK_ASSERT_OK(sk_read_file(ply, 0, &text, &size, &e_));
+    /* the first vertex record follows the header: x y z floats, then r g b bytes */
+    const char *body = strstr(text, "end_header\n") + 11;
+    const unsigned char *rgb = (const unsigned char *)body + 12;
+    assert_int_equal(rgb[0], 188);
+    assert_int_equal(rgb[1], 5);   /* 255 * 12.92 * 0.00157 = 5.2 */
+    assert_int_equal(rgb[2], 255);
+    free(text);
+    SK_ASSERT_OK(sk_mesh_read_ply(&back, ply, NULL, &e_));
+    for (int c = 0; c < 3; c++) assert_float_equal(back.colors[c], linear[c], PLY_COLOR_TOL);
+    assert_float_equal(back.colors[0], sk_linear_from_srgb(188.0f / 255.0f), 1e-7);
+    sk_mesh_free(&back);
+    sk_mesh_free(&m);
+}
+
+/* Several objects with their own materials in one OBJ and its MTL. */
+static void test_obj_objects_and_materials(void **state)
+{
+    (void)state;
+    sk_mesh m, back;
+    make_grid(&m, false);
+    const sk_obj_material mats[2] = {{"oak", {0.5f, 0.25f, 0.125f}, "oak.png"}, {"paint", {1, 0, 0}, NULL}};
+    const sk_obj_group groups[3] = {{"lid", 4, 0}, {"side", 6, 1}, {"base", 2, -1}};
+    sk_obj_write_desc desc = {.materials = mats, .material_count = 2, .groups = groups, .group_count = 3};
+    const char *path = sk_test_path("mesh/objects.obj");
+    SK_ASSERT_OK(sk_mesh_write_obj(&m, path, &desc, &e_));
+    char *text;
+    SK_ASSERT_OK(sk_read_file(path, 0, &text, NULL, &e_));
+    assert_non_null(strstr(text, "mtllib objects.mtl\n"));
+    assert_non_null(strstr(text, "\no lid\nusemtl oak\nf "));
+    assert_non_null(strstr(text, "\no side\nusemtl paint\nf "));
+    assert_non_null(strstr(text, "\no base\nf "));
+    assert_int_equal(sk_test_count_lines(strstr(text, "\no side\n") + 1), 1 + 1 + 6 + 1 + 2);
+    free(text);
+    SK_ASSERT_OK(sk_read_file(sk_test_path("mesh/objects.mtl"), 0, &text, NULL, &e_));
+    assert_non_null(strstr(text, "newmtl oak\nKa 0 0 0\nKd 0.5 0.25 0.125\n"));
+    assert_non_null(strstr(text, "map_Kd oak.png\n"));
+    assert_non_null(strstr(text, "newmtl paint\nKa 0 0 0\nKd 1 0 0\n"));
+    free(text);
+    SK_ASSERT_OK(sk_mesh_read_obj(&back, path, NULL, &e_));
+    assert_same_triangles(&m, &back, OBJ_COLOR_TOL);
+    sk_mesh_free(&back);
+    sk_error err = {0};
+    const sk_obj_group short_groups[1] = {{"lid", 4, 0}};
+    desc.groups = short_groups;
+    desc.group_count = 1;
+    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &desc, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "the groups hold 4 triangles, the mesh has 12");
+    const sk_obj_group bad_material[1] = {{"all", 12, 2}};
+    desc.groups = bad_material;
+    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &desc, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "groups[0].material = 2");
+    const sk_obj_material bad_kd[1] = {{"x", {2, 0, 0}, NULL}};
+    sk_obj_write_desc kd = {.materials = bad_kd, .material_count = 1};
+    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &kd, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "materials[0].diffuse[0]");
+    assert_false(sk_test_file_exists(sk_test_path("mesh/bad_groups.obj")));
+    sk_mesh_free(&m);
+}
+
 /* ------------------------------------------------------------------ PLY */
 
 static void test_ply_roundtrip(void **state)
@@ -528,7 +620,7 @@ static void test_ply_roundtrip(void **state)
     SK_ASSERT_OK(sk_mesh_read_ply(&back, path, NULL, &e_));
     assert_int_equal(back.vertex_count, 12);
     assert_memory_equal(back.indices, m.indices, 36 * sizeof(uint32_t));
-    assert_same_triangles(&m, &back, 0.5 / 255.0 + 1e-7);
+    assert_same_triangles(&m, &back, PLY_COLOR_TOL);
     assert_int_equal(back.attribute_count, 2);
     for (int a = 0; a < 2; a++) {
         const sk_mesh_attribute *want = &m.attributes[a];
@@ -542,7 +634,7 @@ static void test_ply_roundtrip(void **state)
     const char *upper = sk_test_path("mesh/grid_upper.PLY");
     SK_ASSERT_OK(sk_mesh_write(&m, upper, &e_));
     SK_ASSERT_OK(sk_mesh_read(&back, upper, NULL, &e_));
-    assert_same_triangles(&m, &back, 0.5 / 255.0 + 1e-7);
+    assert_same_triangles(&m, &back, PLY_COLOR_TOL);
     sk_mesh_free(&back);
     sk_mesh_free(&m);
 }
@@ -584,7 +676,7 @@ static void test_ply_ascii(void **state)
     assert_non_null(m.colors);
     assert_float_equal(m.normals[5], 1.0f, 0.0); /* (0, 0, 2) normalised */
     assert_float_equal(m.uvs[2 * 2 + 1], 1.0f, 0.0);
-    assert_float_equal(m.colors[3 * 3 + 1], 0.4f, 1e-7);
+    assert_float_equal(m.colors[3 * 3 + 1], sk_linear_from_srgb(0.4f), 1e-7); /* 102 / 255, sRGB */
     const sk_mesh_attribute *q = sk_mesh_find_attribute(&m, "quality");
     assert_non_null(q);
     assert_float_equal(q->data[4], -1e-3f, 0.0);
@@ -679,7 +771,7 @@ static void test_ply_binary_both_endians(void **state)
         assert_float_equal(m.positions[3 * 3], 1.0f, 0.0);
         assert_float_equal(m.positions[3 * 3 + 1], 1.0f, 0.0);
         assert_float_equal(m.positions[3 * 3 + 2], -3.0f, 0.0);
-        assert_float_equal(m.colors[3 * 2], 120.0f / 255.0f, 1e-7);
+        assert_float_equal(m.colors[3 * 2], sk_linear_from_srgb(120.0f / 255.0f), 1e-7);
         assert_float_equal(m.colors[3 * 2 + 2], 1.0f, 0.0);
         static const char *const names[4] = {"c", "us", "i", "ui"};
         const double want[4] = {-3, 60003, -300000, 4000000003.0};
@@ -793,7 +885,7 @@ static void test_mesh_dispatch_and_writer_checks(void **state)
     const char *obj = sk_test_path("mesh/upper.OBJ");
     SK_ASSERT_OK(sk_mesh_write(&m, obj, &e_));
     SK_ASSERT_OK(sk_mesh_read(&back, obj, NULL, &e_));
-    assert_same_triangles(&m, &back, 0.0);
+    assert_same_triangles(&m, &back, OBJ_COLOR_TOL);
     sk_mesh_free(&back);
     /* Attribute names must survive as PLY property names. */
     SK_ASSERT_OK(sk_mesh_add_attribute(&m, "red", 1, NULL, &e_));
@@ -824,6 +916,8 @@ int main(void)
         cmocka_unit_test(test_obj_polygons),
         cmocka_unit_test(test_obj_malformed),
         cmocka_unit_test(test_obj_material),
+        cmocka_unit_test(test_obj_objects_and_materials),
+        cmocka_unit_test(test_vertex_colors_are_srgb_in_files),
         cmocka_unit_test(test_ply_roundtrip),
         cmocka_unit_test(test_ply_ascii),
         cmocka_unit_test(test_ply_binary_both_endians),

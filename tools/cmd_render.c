@@ -16,6 +16,11 @@ static const cli_option k_options[] = {
     {"exposure", 0, "EV", "exposure in stops (overrides film.exposure)", false},
     {"exr", 0, "PATH", "also write the linear radiance as EXR", false},
     {"stats", 0, NULL, "print camera rays per second and the intersection / shading split", false},
+    {"export", 0, "FILE", "write the scene's geometry and approximated materials as .glb or .obj "
+                          "(without -o: no image is rendered)", false},
+    {"texture-size", 0, "N", "pixels per side of the textures --export bakes (default 1024)", false},
+    {"no-textures", 0, NULL, "--export bakes no textures: wood gets its mean colour, skin no normal map",
+     false},
 };
 
 static bool find_preset(void *user, const char *module, const char *name, char *path, size_t size)
@@ -84,6 +89,22 @@ static int write_image(const sk_image *image, const sk_render_film_desc *film, c
     return 0;
 }
 
+/* --export: the scene's geometry for other tools (texture size checked before the scene
+ * is built). */
+static int export_scene(const cli_command *command, const cli_args *args, const sk_render_scene *scene,
+                        long long size)
+{
+    sk_progress_bar bar;
+    sk_progress_bar_begin(&bar, "export", !args->common.quiet);
+    sk_render_export_desc desc = {.texture_size = (int)size,
+                                  .no_textures = cli_has(command, args, "no-textures"),
+                                  .progress = sk_progress_bar_sink(&bar)};
+    sk_error err = {0};
+    sk_result r = sk_render_scene_export(scene, cli_get(command, args, "export"), &desc, &err);
+    sk_progress_bar_end(&bar);
+    return r == SK_OK ? 0 : cli_fail_error(&err);
+}
+
 static int run_render(const cli_command *command, const cli_args *args)
 {
     if (args->positional_count == 1 && args->common.preset)
@@ -91,6 +112,11 @@ static int run_render(const cli_command *command, const cli_args *args)
     if (args->positional_count == 0 && !args->common.preset)
         return cli_fail(CLI_EXIT_USAGE, "no scene: give a SCENE file or --preset NAME "
                                         "(see 'shitsukan presets scenes')");
+    long long texture_size = 0;
+    int status;
+    if (cli_has(command, args, "texture-size") &&
+        (status = cli_get_int(command, args, "texture-size", 1024, 16, 8192, &texture_size)))
+        return status;
     /* the scene tree with every --set applied (a positional SCENE is loaded like --preset) */
     cli_args scene_args = *args;
     if (args->positional_count == 1) scene_args.common.preset = args->positional[0];
@@ -101,7 +127,7 @@ static int run_render(const cli_command *command, const cli_args *args)
     else if (!cli_find_preset("scenes", name, scene_path, sizeof scene_path))
         snprintf(scene_path, sizeof scene_path, "%s", name); /* cli_load_preset reports it */
     sk_preset *tree = NULL;
-    int status = cli_load_preset(command, &scene_args, &tree);
+    status = cli_load_preset(command, &scene_args, &tree);
     if (status) return status;
     if ((status = apply_overrides(command, args, tree))) {
         sk_preset_free(tree);
@@ -146,10 +172,12 @@ static int run_render(const cli_command *command, const cli_args *args)
             return status;
         }
     }
+    /* with --export and no -o, no image is rendered */
+    bool image_wanted = args->common.output || !cli_has(command, args, "export");
     sk_output_set *outputs = NULL;
     const char *staged_output = NULL, *staged_exr = NULL;
     if (r == SK_OK) r = sk_output_set_create(&outputs, &err);
-    if (r == SK_OK) r = sk_output_set_file(outputs, output, &staged_output, &err);
+    if (r == SK_OK && image_wanted) r = sk_output_set_file(outputs, output, &staged_output, &err);
     if (r == SK_OK && exr) r = sk_output_set_file(outputs, exr, &staged_exr, &err);
     sk_render_scene *scene = NULL;
     if (r == SK_OK) r = sk_render_scene_create(desc, &scene, &err);
@@ -160,6 +188,14 @@ static int run_render(const cli_command *command, const cli_args *args)
     }
 
     const sk_render_scene_desc *d = sk_render_scene_get_desc(scene);
+    if (cli_has(command, args, "export")) {
+        status = export_scene(command, args, scene, texture_size);
+        if (status || !image_wanted) {
+            sk_render_scene_destroy(scene);
+            sk_output_set_abort(outputs);
+            return status;
+        }
+    }
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "render", !args->common.quiet);
     sk_render_options options = {.progress = sk_progress_bar_sink(&bar),
@@ -202,10 +238,16 @@ const cli_command cmd_render = {
         "standard, skin and wood materials. The output type follows the extension: .png is\n"
         "tone-mapped 8-bit sRGB with alpha, .exr keeps linear radiance (premultiplied RGBA).\n"
         "Without -o the image is written as <scene name>.png. Any scene key can be changed\n"
-        "with --set (e.g. --set camera.fov_deg=30 --set lights[0].intensity=2).",
+        "with --set (e.g. --set camera.fov_deg=30 --set lights[0].intensity=2).\n"
+        "--export writes the geometry for other tools (Blender, game engines): primitives\n"
+        "tessellated, meshes as loaded, object transforms, in metres; materials approximated\n"
+        "(base colour, roughness; wood baked into a base colour texture, skin as a normal\n"
+        "map of one tile; see docs/render.md, \"Export\"). With --export and no -o, nothing\n"
+        "is rendered.",
     .examples = "  shitsukan render presets/scenes/wrist.json --size 1280x720 --spp 16 -o wrist.png\n"
                 "  shitsukan render --preset wrist -o wrist.exr\n"
-                "  shitsukan render scene.json --set camera.projection=orthographic --stats",
+                "  shitsukan render scene.json --set camera.projection=orthographic --stats\n"
+                "  shitsukan render --preset piano --export piano.glb",
     .options = k_options,
     .option_count = sizeof k_options / sizeof k_options[0],
     .common = CLI_COMMON_ALL,

@@ -76,6 +76,10 @@ typedef struct sk_png_write_desc {
  * Linear files carry no colour-space chunk (no sRGB, no gAMA). `desc` may be NULL. */
 sk_result sk_image_write_png(const sk_image *image, const char *path,
                              const sk_png_write_desc *desc, sk_error *err);
+/* The same bytes into memory (e.g. to embed in a glTF file): *out_data (free with free())
+ * and *out_size, which are NULL and 0 on failure. */
+sk_result sk_image_write_png_memory(const sk_image *image, const sk_png_write_desc *desc,
+                                    uint8_t **out_data, size_t *out_size, sk_error *err);
 
 typedef struct sk_png_read_desc {
     sk_png_encoding encoding; /* 0 = sRGB: decode 8/16-bit sRGB codes to linear floats;

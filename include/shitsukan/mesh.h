@@ -29,7 +29,9 @@ typedef struct sk_mesh {
     float *positions; /* 3 per vertex */
     float *normals;   /* 3 per vertex, unit length, or NULL */
     float *uvs;       /* 2 per vertex, or NULL */
-    float *colors;    /* 3 per vertex, linear RGB in [0, 1], or NULL */
+    float *colors;    /* 3 per vertex, linear RGB in [0, 1], or NULL (in memory always
+                         linear; the OBJ and PLY files hold them sRGB-encoded, as Blender,
+                         MeshLab and other tools read them) */
     size_t triangle_count;
     uint32_t *indices; /* 3 per triangle, each < vertex_count */
     int attribute_count;
@@ -73,7 +75,7 @@ typedef struct sk_mesh_read_desc {
     size_t max_bytes;
 } sk_mesh_read_desc;
 
-/* Reads OBJ: v (with optional r g b), vt, vn, f with v, v/vt, v//vn, v/vt/vn and
+/* Reads OBJ: v (with optional r g b, sRGB-encoded in the file, decoded to linear), vt, vn, f with v, v/vt, v//vn, v/vt/vn and
  * negative (relative) indices; polygons are triangulated; o/g/s/usemtl/mtllib lines are
  * accepted and ignored; a file with only v lines is a point cloud. Malformed lines,
  * indices out of range and non-finite numbers fail with SK_ERROR_PARSE naming the line.
@@ -93,8 +95,9 @@ sk_result sk_mesh_read_obj(sk_mesh *mesh, const char *path, const sk_mesh_read_d
  * scalar vertex properties as 1-component attributes; face vertex_indices (or
  * vertex_index) lists, polygons triangulated; other elements skipped.
  *
- * Details: integer colours are divided by their type's maximum (uchar 255, ushort 65535),
- * float colours kept. A run of properties "<name>_0", "<name>_1" .. (2-4 of them) is one
+ * Details: colours are sRGB-encoded in the file and decoded to linear: integer colours are
+ * divided by their type's maximum (uchar 255, ushort 65535) first, float colours taken as
+ * the encoded value. A run of properties "<name>_0", "<name>_1" .. (2-4 of them) is one
  * attribute "<name>" with that many components (the writer's form for vector
  * attributes); attributes beyond SK_MESH_MAX_ATTRIBUTES are skipped. Validation is strict,
  * with SK_ERROR_PARSE naming the element and record (and the line in ASCII): element
@@ -109,16 +112,38 @@ sk_result sk_mesh_read(sk_mesh *mesh, const char *path, const sk_mesh_read_desc 
                        sk_error *err);
 
 /* ------------------------------------------------------------------ writing */
+/* A material of the MTL file written beside an OBJ. */
+typedef struct sk_obj_material {
+    const char *name;         /* non-empty, no white space */
+    float diffuse[3];         /* Kd: linear RGB in [0, 1] (Blender reads Kd as its linear
+                                 base colour) */
+    const char *texture_path; /* map_Kd, relative to the OBJ's folder, or NULL */
+} sk_obj_material;
+
+/* A run of triangles written as one OBJ object ("o name") with one material. */
+typedef struct sk_obj_group {
+    const char *name;         /* non-empty, no white space */
+    size_t triangle_count;    /* groups take the triangles in order and cover them all */
+    int material;             /* index into the desc's materials, or -1 for none */
+} sk_obj_group;
+
 typedef struct sk_obj_write_desc {
     /* When set, an MTL file "<name>.mtl" is written beside the OBJ with one material
        whose diffuse map (map_Kd) is this path, and the OBJ references it. */
     const char *texture_path;
     const char *material_name; /* NULL = "material" */
+    /* Several materials and objects instead (texture_path and material_name must then be
+       NULL): the MTL file holds `materials`, the OBJ one "o" and "usemtl" per group. */
+    const sk_obj_material *materials;
+    int material_count;
+    const sk_obj_group *groups;
+    int group_count;
 } sk_obj_write_desc;
 
 /* Writes v/vt/vn/f (attributes and colours are not representable in OBJ and are
- * skipped, except vertex colours as the common "v x y z r g b" extension). Floats are
- * printed with 9 significant digits, so they read back bit-exact. With texture_path, the
+ * skipped, except vertex colours as the common "v x y z r g b" extension, sRGB-encoded).
+ * Floats are printed with 9 significant digits, so they read back bit-exact (colours to
+ * about 1e-7, through the sRGB curve and back). With texture_path, the
  * MTL file takes the OBJ's name with the extension ".mtl", the OBJ names it by its base
  * name (mtllib), and texture_path is written as given (make it relative to the OBJ's
  * folder); material_name must have no white space. Both files are written atomically,
@@ -126,7 +151,8 @@ typedef struct sk_obj_write_desc {
 sk_result sk_mesh_write_obj(const sk_mesh *mesh, const char *path,
                             const sk_obj_write_desc *desc, sk_error *err);
 /* Writes binary little-endian PLY with every array and attribute as float properties
- * (colours as uchar red/green/blue) and faces as "list uchar uint vertex_indices".
+ * (colours as sRGB-encoded uchar red/green/blue, so a linear 0.5 is code 188 and reads
+ * back within half a code) and faces as "list uchar uint vertex_indices".
  * Property names: x y z, nx ny nz, s t (what Blender writes and reads), red green blue;
  * an attribute "<name>" of k > 1 components becomes "<name>_0" .. "<name>_{k-1}".
  * Attribute names must not contain white space nor be one of those standard names.

@@ -429,6 +429,47 @@ sk_result sk_render_tonemap(const sk_image *linear, const sk_render_film_desc *f
 sk_result sk_render_write(const sk_image *linear, const sk_render_film_desc *film,
                           const char *path, const sk_image_metadata *metadata, sk_error *err);
 
+/* ------------------------------------------------------------------ export */
+
+/* The scene's geometry for other tools: every object's mesh (primitives tessellated as the
+ * renderer tessellates them, meshes as loaded) with its material approximated (glTF
+ * metallic-roughness, metallic 0, double-sided as the renderer shades both sides):
+ *   - standard: base colour (1 - specular) albedo, times its albedo texture (embedded, with
+ *     the material's uv_scale / uv_offset applied to the uvs); roughness from the
+ *     Blinn-Phong exponent, (2 / (n + 2))^(1/4), or 1 without specular; its normal map;
+ *   - skin: base colour (1 - specular) albedo (an albedo texture joins as its mean); the
+ *     microrelief as a normal texture of one skin tile (texture_size pixels square),
+ *     repeated by uvs of st / tile size (periodic skins only), normal scale = bump_scale;
+ *   - wood: its albedo times its diffuse weight baked into a base colour texture over an
+ *     atlas of the object (runs of triangles laid flat at their true size, so the mesh is
+ *     unwelded and its uvs are the atlas's; texels coarser than 0.25 mm average 2 x 2
+ *     samples), the largest wood object texture_size pixels square, the others at the
+ *     same texels per mm (powers of two, at least 64); with no_textures, or when an object
+ *     has too many triangles for its atlas, the mean albedo over the surface instead;
+ *     roughness from the wood's specular exponent.
+ * A base colour texture holds the whole colour (its factor is 1). Not carried over: the
+ * figure sheen, the texture/shading blend, procedural texture callbacks, vertex colours,
+ * lights and cameras.
+ *
+ * ".glb": one node per object with its transform as translation / rotation / scale, under
+ * a root node "scene" scaling scene units to metres (unit_mm / 1000); objects with the
+ * same mesh and material share one glTF mesh. ".obj": one OBJ object per scene object,
+ * transforms applied to the vertices, in metres, an MTL file beside it with each
+ * material's Kd (linear, as Blender reads it) and map_Kd, the base colour textures as sRGB
+ * PNG files beside it ("<obj name>-<material>.png"); normal maps are not written to OBJ.
+ * Material names are made distinct. */
+typedef struct sk_render_export_desc {
+    int texture_size;     /* pixels per side of the skin tile and of the largest wood
+                             object's texture; 0 = 1024; [16, 8192] */
+    bool no_textures;     /* bake nothing: wood gets its mean albedo, skin no normal map */
+    sk_progress progress; /* fraction of the baking done */
+} sk_render_export_desc;
+
+/* Writes the export by the path's extension (.glb or .obj; atomically, like every file).
+ * `desc` may be NULL. */
+sk_result sk_render_scene_export(const sk_render_scene *scene, const char *path,
+                                 const sk_render_export_desc *desc, sk_error *err);
+
 /* ------------------------------------------------------------------ primitives */
 
 /* The built-in primitives as meshes: positions, normals, UVs and a 4-component "tangent"

@@ -2,8 +2,8 @@
 # Renderer demo: Ishii 1991 Fig. 20 (skin bump-mapped around a wrist), Kawai 2000 Fig. 9
 # (the moving figure sheen, three panels and a light sweep), an oak piano cabinet with a
 # close-up, a turntable of the wood species, and the texture/shading blend of Yasumuro's
-# thesis (Fig. 4.15). Writes PNG (tone-mapped sRGB) and EXR (linear radiance) into
-# $OUT/render/.
+# thesis (Fig. 4.15), and the piano exported as glTF and OBJ. Writes PNG (tone-mapped sRGB),
+# EXR (linear radiance), GLB and OBJ into $OUT/render/.
 set -euo pipefail
 : "${SK:?}" "${OUT:?}"
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -67,3 +67,9 @@ texture="$out/skin-texture.png"
   --label "smooth shading (white surface)" "$out/blend-shading.png" \
   --label "texture mapping" "$out/blend-texture.png" \
   --label "shading and texture blended 0.3 : 0.7" "$out/blend.png" -o "$out/blend-sheet.png"
+
+# the piano exported for other tools (Blender, game engines): glTF with the oak baked into
+# base colour textures, and the same as OBJ + MTL + PNG textures
+"$SK" render "$scenes/piano.json" -q --export "$out/piano.glb"
+mkdir -p "$out/piano-obj"
+"$SK" render "$scenes/piano.json" -q --export "$out/piano-obj/piano.obj"

@@ -73,8 +73,6 @@ void sk_hand_anatomy_default(sk_hand_anatomy *out)
     }
 }
 
-static const char finger_letters[SK_HAND_FINGER_COUNT] = {'T', 'I', 'M', 'R', 'L'};
-
 static sk_result parse_finger(const cJSON *obj, const char *path, int f, sk_hand_finger_data *fd,
                               sk_error *err)
 {
@@ -179,9 +177,7 @@ sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *sou
         r = sk_hand__json_expect_object(fingers, "fingers", err);
         for (const cJSON *it = fingers ? fingers->child : NULL; r == SK_OK && it; it = it->next) {
             if (sk_preset_is_doc_key(it->string)) continue;
-            int f = -1;
-            for (int i = 0; i < SK_HAND_FINGER_COUNT; i++)
-                if (it->string[0] == finger_letters[i] && it->string[1] == '\0') f = i;
+            int f = sk_hand__finger_by_letter(it->string);
             char path[96];
             snprintf(path, sizeof path, "fingers.%s", it->string);
             if (f < 0) {

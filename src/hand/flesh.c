@@ -9,8 +9,6 @@
 #include "hand/hand_private.h"
 #include "shitsukan/io.h"
 
-static const char finger_letters[SK_HAND_FINGER_COUNT] = {'T', 'I', 'M', 'R', 'L'};
-
 void sk_hand_flesh_default(sk_hand_flesh *f)
 {
     memset(f, 0, sizeof *f);
@@ -95,9 +93,7 @@ static sk_result parse_fingers(const cJSON *fingers, sk_hand_flesh *out, sk_erro
     sk_result r = sk_hand__json_expect_object(fingers, "fingers", err);
     for (const cJSON *it = fingers->child; r == SK_OK && it; it = it->next) {
         if (sk_preset_is_doc_key(it->string)) continue;
-        int f = -1;
-        for (int i = 0; i < SK_HAND_FINGER_COUNT; i++)
-            if (it->string[0] == finger_letters[i] && it->string[1] == '\0') f = i;
+        int f = sk_hand__finger_by_letter(it->string);
         char path[96];
         snprintf(path, sizeof path, "fingers.%s", it->string);
         if (f < 0) return sk_fail(err, SK_ERROR_PARSE, "%s: unknown finger (T, I, M, R or L)", path);

@@ -35,6 +35,9 @@ sk_result sk_hand__json_string(const cJSON *object, const char *path, const char
                                const char **out, sk_error *err);
 /* Requires `item` to be an object. */
 sk_result sk_hand__json_expect_object(const cJSON *item, const char *path, sk_error *err);
+/* A finger by its letter ("T", "I", "M", "R", "L"), or -1. */
+int sk_hand__finger_by_letter(const char *name);
+
 /* Looks up a DOF by name or fails: "<path>: unknown DOF \"name\"". */
 sk_result sk_hand__dof_by_name(const char *name, const char *path, int *dof, sk_error *err);
 

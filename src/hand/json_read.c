@@ -108,3 +108,11 @@ sk_result sk_hand__parse_file(const char *path, sk_hand__parse_fn parse, void *c
     free(text);
     return r;
 }
+
+int sk_hand__finger_by_letter(const char *name)
+{
+    static const char letters[SK_HAND_FINGER_COUNT] = {'T', 'I', 'M', 'R', 'L'};
+    for (int i = 0; i < SK_HAND_FINGER_COUNT; i++)
+        if (name[0] == letters[i] && name[1] == '\0') return i;
+    return -1;
+}

@@ -1,4 +1,4 @@
-/* Wavefront OBJ reader: v (with optional colour), vt, vn and f statements with strict
+/* Wavefront OBJ reader: v (with optional sRGB colour, decoded to linear), vt, vn and f statements with strict
  * validation; (v, vt, vn) corner triples unified into single-index vertices by a hash
  * map; polygons triangulated. */
 #define _POSIX_C_SOURCE 200809L
@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/image_internal.h"
 #include "io/io_internal.h"
 #include "io/mesh_internal.h"
 #include "io/polygon_triangulate.h"
@@ -146,6 +147,8 @@ static sk_result read_v(obj_reader *r, const token *t, int n)
     if (res == SK_OK && n == 4) res = parse_float(r, t[3], "w", &w);
     if (res == SK_OK && n == 6) res = parse_floats(r, t + 3, 3, "colour", rgb);
     if (res != SK_OK) return res;
+    /* the colour extension holds sRGB values (what Blender and MeshLab write and read) */
+    for (int c = 0; n == 6 && c < 3; c++) rgb[c] = (float)sk__srgb_decode(rgb[c]);
     if (n == 6 && r->colors.count == 0 && r->v.count > 0) {
         /* First coloured vertex: earlier vertices get white. */
         for (size_t i = 0; res == SK_OK && i < r->v.count; i++) {

@@ -1,5 +1,5 @@
 /* PLY 1.0 reader (ascii, binary little and big endian): header with any elements and
- * scalar or list properties of every PLY type; vertex positions, normals, UVs, colours and
+ * scalar or list properties of every PLY type; vertex positions, normals, UVs, colours (sRGB, decoded) and
  * other scalars as attributes; face lists triangulated; other elements skipped. Counts are
  * checked against the file size and the read cap before anything is allocated. */
 #define _POSIX_C_SOURCE 200809L
@@ -12,6 +12,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "io/image_internal.h"
 #include "io/io_internal.h"
 #include "io/mesh_internal.h"
 #include "io/polygon_triangulate.h"
@@ -604,7 +605,8 @@ static sk_result store_vertex_value(ply_reader *r, const ply_property *p, size_t
     case R_RED:
     case R_GREEN:
     case R_BLUE:
-        m->colors[3 * i + (size_t)(p->role - R_RED)] = (float)(v / type_max[p->type]);
+        /* stored sRGB-encoded, as tools write them; linear in memory */
+        m->colors[3 * i + (size_t)(p->role - R_RED)] = (float)sk__srgb_decode(v / type_max[p->type]);
         break;
     case R_ATTR: {
         sk_mesh_attribute *a = &m->attributes[p->attr];

@@ -1,10 +1,11 @@
-/* Binary little-endian PLY writer: float x y z, nx ny nz, s t and attributes, uchar
+/* Binary little-endian PLY writer: float x y z, nx ny nz, s t and attributes, uchar sRGB
  * colours, "list uchar uint vertex_indices" faces; byte order set explicitly, so any host
  * writes the same file. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <string.h>
 
+#include "io/image_internal.h"
 #include "shitsukan/io.h"
 #include "shitsukan/mesh.h"
 
@@ -46,11 +47,13 @@ static unsigned char *put_f32(unsigned char *p, float f)
     return put_u32(p, bits);
 }
 
+/* The 8-bit sRGB code of a linear colour component: tools (Blender, MeshLab) read PLY
+ * colours as sRGB, so a linear 0.5 is written as 188, not 128. */
 static unsigned char color_code(float c)
 {
     if (!(c > 0.0f)) return 0;
     if (c >= 1.0f) return 255;
-    return (unsigned char)floorf(c * 255.0f + 0.5f);
+    return (unsigned char)floor(sk__srgb_encode(c) * 255.0 + 0.5);
 }
 
 static void write_header(FILE *fp, const sk_mesh *m)

@@ -1,5 +1,6 @@
 /* PNG writer (libpng): 8/16-bit grey, grey+alpha, RGB, RGBA with the sRGB curve or linear
- * codes, text metadata as tEXt (ASCII) or iTXt (UTF-8) chunks, written atomically. */
+ * codes, text metadata as tEXt (ASCII) or iTXt (UTF-8) chunks, written atomically to a file
+ * or into memory (the same bytes). */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
@@ -200,12 +201,12 @@ static sk_result prepare_texts(png_writer *w, const sk_image_metadata *meta, sk_
     return SK_OK;
 }
 
-sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_png_write_desc *desc,
-                             sk_error *err)
+/* Checks the image and the desc and fills in the desc's defaults. */
+static sk_result resolve_desc(const sk_image *image, const sk_png_write_desc *desc,
+                              sk_png_write_desc *out, sk_error *err)
 {
     sk_result r = sk__image_validate(image, err);
     if (r != SK_OK) return r;
-    if (!path) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "output path is NULL");
     sk_png_write_desc d = {0};
     if (desc) d = *desc;
     if (d.bit_depth == 0) d.bit_depth = 8;
@@ -219,14 +220,22 @@ sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_p
     if (d.encoding != SK_PNG_ENCODING_SRGB && d.encoding != SK_PNG_ENCODING_LINEAR)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "encoding = %d is not a sk_png_encoding",
                        (int)d.encoding);
+    *out = d;
+    return SK_OK;
+}
 
+/* Encodes the image into an open stream (a file or memory); `name` labels messages. */
+static sk_result write_stream(const sk_image *image, const sk_png_write_desc *d, FILE *fp,
+                              const char *name, sk_error *err)
+{
     png_writer *w = calloc(1, sizeof *w);
     if (!w) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     w->image = image;
-    w->bit_depth = d.bit_depth;
-    w->encoding = d.encoding;
-    w->compression_level = d.compression_level;
-    r = prepare_texts(w, d.metadata, err);
+    w->bit_depth = d->bit_depth;
+    w->encoding = d->encoding;
+    w->compression_level = d->compression_level;
+    w->fp = fp;
+    sk_result r = prepare_texts(w, d->metadata, err);
     if (r != SK_OK) {
         free(w);
         return r;
@@ -234,31 +243,62 @@ sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_p
     /* Thresholds in double straight from the curve (not through float) so that the
        search gives the same code as rounding 255 * srgb(v). */
     for (int k = 0; k < 255; k++) w->threshold8[k] = sk__srgb_decode((k + 0.5) / 255.0);
-    size_t row_bytes = (size_t)image->width * (size_t)image->channels * (size_t)(d.bit_depth / 8);
+    size_t row_bytes = (size_t)image->width * (size_t)image->channels * (size_t)(d->bit_depth / 8);
     w->row = malloc(row_bytes);
-    sk_atomic_file file;
-    r = w->row ? sk_atomic_file_open(&file, path, err)
-               : sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
-    if (r != SK_OK) {
-        free(w->row);
-        free(w);
-        return r;
-    }
-    w->fp = file.fp;
-    w->png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w->error, sk__png_on_error,
-                                     sk__png_on_warning);
+    if (w->row)
+        w->png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w->error, sk__png_on_error,
+                                         sk__png_on_warning);
     if (w->png) w->info = png_create_info_struct(w->png);
-    if (!w->png || !w->info) {
-        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "%s: cannot set up libpng", path);
+    if (!w->row || !w->png || !w->info) {
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "%s: cannot set up libpng", name);
     } else if (!write_body(w)) {
-        r = sk_fail(err, SK_ERROR_IO, "%s: PNG write failed (%s)", path, w->error.message);
+        r = sk_fail(err, SK_ERROR_IO, "%s: PNG write failed (%s)", name, w->error.message);
     }
     png_destroy_write_struct(&w->png, &w->info);
     free(w->row);
     free(w);
-    if (r != SK_OK) {
+    return r;
+}
+
+sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_png_write_desc *desc,
+                             sk_error *err)
+{
+    sk_png_write_desc d;
+    sk_result r = resolve_desc(image, desc, &d, err);
+    if (r != SK_OK) return r;
+    if (!path) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "output path is NULL");
+    sk_atomic_file file;
+    if ((r = sk_atomic_file_open(&file, path, err)) != SK_OK) return r;
+    if ((r = write_stream(image, &d, file.fp, path, err)) != SK_OK) {
         sk_atomic_file_abort(&file);
         return r;
     }
     return sk_atomic_file_commit(&file, err);
+}
+
+sk_result sk_image_write_png_memory(const sk_image *image, const sk_png_write_desc *desc,
+                                    uint8_t **out_data, size_t *out_size, sk_error *err)
+{
+    if (!out_data || !out_size)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "out_data or out_size is NULL");
+    *out_data = NULL;
+    *out_size = 0;
+    sk_png_write_desc d;
+    sk_result r = resolve_desc(image, desc, &d, err);
+    if (r != SK_OK) return r;
+    char *buffer = NULL;
+    size_t size = 0;
+    FILE *fp = open_memstream(&buffer, &size);
+    if (!fp) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a PNG stream");
+    r = write_stream(image, &d, fp, "PNG in memory", err);
+    if (fclose(fp) != 0 && r == SK_OK)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a PNG of %dx%d",
+                    image->width, image->height);
+    if (r != SK_OK) {
+        free(buffer);
+        return r;
+    }
+    *out_data = (uint8_t *)buffer;
+    *out_size = size;
+    return SK_OK;
 }
