@@ -299,6 +299,11 @@ static const bad_case k_bad_cases[] = {
      "--max-memory 64M -o OUT.png",
      "objects[0]", "--max-memory"},
     {"render DIR/scene.json --set unit_mm=1e-7 -o OUT.png", "unit_mm", "[1e-06, 1e+09]"},
+    {"render DIR/scene.json --export OUT.stl", "--export", ".glb, .obj"},
+    {"render DIR/scene.json --texture-size 64 -o OUT.png", "--texture-size", "--export"},
+    {"render DIR/scene.json --export OUT.glb --texture-size 8", "--texture-size", "[16, 8192]"},
+    {"render DIR/scene.json --export OUT.glb --exr OUT.exr", "--exr", "needs -o"},
+    {"render DIR/scene.json --export DIR/folder.glb -o OUT.png", "--export", "names a folder"},
 };
 
 /* Small inputs of every kind the commands read. */
@@ -307,7 +312,7 @@ static void make_inputs(const char *dir)
     char path[2048];
     snprintf(path, sizeof path, "%s/file", dir);
     sk_test_write_file(path, "not an image\n", 13);
-    snprintf(path, sizeof path, "mkdir -p '%s/folder.png'", dir);
+    snprintf(path, sizeof path, "mkdir -p '%s/folder.png' '%s/folder.glb'", dir, dir);
     assert_int_equal(system(path), 0);
     snprintf(path, sizeof path, "%s/a.png", dir);
     assert_int_equal(sk_test_cli(&g_run, "noise --size 8 -q -o '%s'", path), 0);
@@ -418,6 +423,24 @@ static void test_outputs_are_all_or_nothing(void **state)
         assert_one_line_error(&g_run, 1);
         assert_non_null(strstr(g_run.err, "No space left on device"));
         assert_false(sk_test_file_exists(path));
+        /* render --export: the export's files (OBJ, MTL) go with the pictures */
+        char obj[1024], mtl[1024];
+        snprintf(obj, sizeof obj, "%s/export.obj", dir);
+        snprintf(mtl, sizeof mtl, "%s/export.mtl", dir);
+        text = "{\"image\": {\"width\": 8, \"height\": 8, \"samples\": 1}, "
+               "\"objects\": [{\"shape\": \"sphere\"}]}";
+        sk_test_write_file(scene, text, strlen(text));
+        sk_test_cli(&g_run, "render '%s' -q --export '%s' -o '%s' --exr '%s'", scene, obj, path, full);
+        assert_one_line_error(&g_run, 1);
+        assert_false(sk_test_file_exists(path));
+        assert_false(sk_test_file_exists(obj));
+        assert_false(sk_test_file_exists(mtl));
+        /* and without an image, the export alone onto the full device */
+        snprintf(obj, sizeof obj, "%s/full.glb", dir);
+        assert_int_equal(symlink("/dev/full", obj), 0);
+        sk_test_cli(&g_run, "render '%s' -q --export '%s'", scene, obj);
+        assert_one_line_error(&g_run, 1);
+        assert_non_null(strstr(g_run.err, "No space left on device"));
 
         snprintf(scene, sizeof scene, "%s/anim.json", dir);
         text = "{\"steps\": 3, \"keys\": [{\"pin\": {\"L.MCP.flex\": 0}}, "

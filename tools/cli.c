@@ -349,6 +349,11 @@ bool cli_has(const cli_command *command, const cli_args *args, const char *name)
     return args->count[option_index(command, name)] > 0;
 }
 
+bool cli_takes(const cli_command *command, const char *name)
+{
+    return find_option(command, name, strlen(name), 0) >= 0;
+}
+
 int cli_get_all(const cli_command *command, const cli_args *args, const char *name,
                 const char **out, int max)
 {

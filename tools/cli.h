@@ -117,6 +117,8 @@ void cli_group_subcommands(const char *group, char *out, size_t size);
 /* Option access by long name (the name must be one of the command's options). */
 const char *cli_get(const cli_command *command, const cli_args *args, const char *name);
 bool cli_has(const cli_command *command, const cli_args *args, const char *name);
+/* Whether the command has option --name at all (for helpers shared by commands). */
+bool cli_takes(const cli_command *command, const char *name);
 /* Values of a repeatable option, in order; returns how many were written (<= max). */
 int cli_get_all(const cli_command *command, const cli_args *args, const char *name,
                 const char **out, int max);

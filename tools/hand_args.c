@@ -64,33 +64,45 @@ int hand_parse_assignment(const char *option, const char *text, int *dof, double
     return 0;
 }
 
-/* --pin and --torque into an input: each DOF takes at most one of them, once. */
-int hand_parse_inputs(const cli_command *cmd, const cli_args *args, sk_hand_input *in)
+/* The values of repeatable option `option` ("DOF=value" each), in model units when
+   `angles` (degrees to radians; mm stay mm), as given otherwise. `taken[dof]` names the
+   option that already set a DOF (shared between the options of one input). */
+static int parse_dof_option(const cli_command *cmd, const cli_args *args, const char *option, bool angles,
+                            const char *taken[SK_HAND_DOF_COUNT], bool given[SK_HAND_DOF_COUNT],
+                            double value[SK_HAND_DOF_COUNT])
 {
-    static const char *const options[] = {"pin", "torque"};
-    const char *given[SK_HAND_DOF_COUNT] = {0};
-    memset(in, 0, sizeof *in);
-    for (int k = 0; k < 2; k++) {
-        const char *values[CLI_MAX_VALUES];
-        int n = cli_get_all(cmd, args, options[k], values, CLI_MAX_VALUES);
-        for (int i = 0; i < n; i++) {
-            int dof = 0;
-            double v = 0.0;
-            int rc = hand_parse_assignment(options[k], values[i], &dof, &v);
-            if (rc) return rc;
-            if (given[dof])
-                return cli_fail(CLI_EXIT_USAGE, "--%s '%s': %s already has --%s (one input per DOF)",
-                                options[k], values[i], sk_hand_dof(dof)->name, given[dof]);
-            given[dof] = options[k];
-            if (k == 0) {
-                in->pinned[dof] = true;
-                in->pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
-            } else {
-                in->torque[dof] = v;
-            }
-        }
+    if (!cli_takes(cmd, option)) return 0;
+    const char *values[CLI_MAX_VALUES];
+    int n = cli_get_all(cmd, args, option, values, CLI_MAX_VALUES);
+    for (int i = 0; i < n; i++) {
+        int dof = 0;
+        double v = 0.0;
+        int rc = hand_parse_assignment(option, values[i], &dof, &v);
+        if (rc) return rc;
+        if (taken[dof])
+            return cli_fail(CLI_EXIT_USAGE, "--%s '%s': %s already has --%s (one value per DOF)", option,
+                            values[i], sk_hand_dof(dof)->name, taken[dof]);
+        taken[dof] = option;
+        given[dof] = true;
+        value[dof] = angles && !sk_hand_dof(dof)->translation ? v * SK_DEG_TO_RAD : v;
     }
     return 0;
 }
 
+int hand_parse_inputs(const cli_command *cmd, const cli_args *args, sk_hand_input *in)
+{
+    const char *taken[SK_HAND_DOF_COUNT] = {0};
+    bool torqued[SK_HAND_DOF_COUNT] = {0};
+    memset(in, 0, sizeof *in);
+    int rc = parse_dof_option(cmd, args, "pin", true, taken, in->pinned, in->pin_value);
+    if (!rc) rc = parse_dof_option(cmd, args, "torque", false, taken, torqued, in->torque);
+    return rc;
+}
 
+int hand_parse_dof_values(const cli_command *cmd, const cli_args *args, const char *option,
+                          bool given[SK_HAND_DOF_COUNT], double value[SK_HAND_DOF_COUNT])
+{
+    const char *taken[SK_HAND_DOF_COUNT] = {0};
+    memset(given, 0, SK_HAND_DOF_COUNT * sizeof *given);
+    return parse_dof_option(cmd, args, option, true, taken, given, value);
+}

@@ -72,6 +72,10 @@ sk_result sk_output_set_file(sk_output_set *set, const char *path, const char **
 /* Reserves output folder `path`; *staged is a folder (created now) to write its files in. */
 sk_result sk_output_set_folder(sk_output_set *set, const char *path, const char **staged,
                                sk_error *err);
+/* The checks sk_output_set_file makes of `path` (links followed; devices and FIFOs
+ * accepted; folders, block devices and sockets refused; its folder must exist), without
+ * reserving it: for outputs a library call reserves later, checked before the work. */
+sk_result sk_output_check(const char *path, sk_error *err);
 /* Moves every staged output into place. A reserved file that was not written is an
  * error. On failure everything is removed as by abort. */
 sk_result sk_output_set_commit(sk_output_set *set, sk_error *err);

@@ -29,6 +29,7 @@
 
 #include "shitsukan/core.h"
 #include "shitsukan/image.h"
+#include "shitsukan/io.h"
 #include "shitsukan/mesh.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/skin.h"
@@ -463,12 +464,19 @@ typedef struct sk_render_export_desc {
                              object's texture; 0 = 1024; [16, 8192] */
     bool no_textures;     /* bake nothing: wood gets its mean albedo, skin no normal map */
     sk_progress progress; /* fraction of the baking done */
+    /* NULL: the export's files (the .glb; or the .obj, its .mtl and textures) appear all
+       together or none. Given: they are reserved in this set and written under its staged
+       names, and appear when the caller commits it (with the run's other outputs). */
+    sk_output_set *outputs;
 } sk_render_export_desc;
 
-/* Writes the export by the path's extension (.glb or .obj; atomically, like every file).
- * `desc` may be NULL. */
+/* Writes the export by the path's extension (.glb or .obj; all files or none, each
+ * atomically). The output paths are checked before the baking. `desc` may be NULL. */
 sk_result sk_render_scene_export(const sk_render_scene *scene, const char *path,
                                  const sk_render_export_desc *desc, sk_error *err);
+/* The memory the export peaks at beyond the scene's (bytes): the meshes copied, and the
+ * textures baked at texture_size (12 bytes a texel, 20 while the wood is baked). */
+double sk_render_scene_export_memory(const sk_render_scene *scene, const sk_render_export_desc *desc);
 
 /* ------------------------------------------------------------------ primitives */
 

@@ -86,6 +86,17 @@ static char *staged_name(sk_output_set *set, const char *final)
     return NULL;
 }
 
+sk_result sk_output_check(const char *path, sk_error *err)
+{
+    char *final;
+    sk__output_kind kind;
+    sk_result r = sk__output_resolve(path, &final, &kind, err);
+    if (r != SK_OK) return r;
+    if (kind == SK__OUTPUT_FILE) r = sk__output_folder_exists(final, err);
+    free(final);
+    return r;
+}
+
 sk_result sk_output_set_file(sk_output_set *set, const char *path, const char **staged,
                              sk_error *err)
 {
