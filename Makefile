@@ -6,12 +6,13 @@ ASAN_DIR  ?= build-asan
 FUZZ_DIR  ?= build-fuzz
 VALGRIND_DIR ?= build-valgrind
 FUZZ_SECONDS ?= 60
+WASM_DIR  ?= build-wasm
 OUT_DIR   ?= out
 PREFIX    ?= /usr/local
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 
-.PHONY: all deps deps-test build build-only demo test test-asan test-valgrind fuzz bench install clean
+.PHONY: all deps deps-test build build-only demo test test-asan test-valgrind fuzz bench install clean studio studio-build studio-if-available studio-docs
 
 all: build
 
@@ -32,9 +33,33 @@ build-only:
 demo: deps-test build-only
 	@bash scripts/demo.sh $(BUILD_DIR)/shitsukan $(OUT_DIR)
 
-# The whole test suite through ctest.
-test: deps-test build-only
+# The whole test suite through ctest (the browser studio's tests too when emscripten,
+# node and Chromium are present: its WebAssembly build is made first).
+test: deps-test build-only studio-if-available
 	@ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+# The browser studio: the library compiled to WebAssembly and its page, assembled into
+# $(WASM_DIR)/www (served by `build/shitsukan studio`). Installs emscripten, Chromium and
+# the npm packages first.
+studio: deps build-only
+	@bash scripts/deps.sh studio
+	@$(MAKE) --no-print-directory studio-build
+
+studio-build:
+	@NODE_PATH=/usr/share/nodejs emcmake cmake -S web -B $(WASM_DIR) -DSK_WERROR=ON >/dev/null
+	@NODE_PATH=/usr/share/nodejs cmake --build $(WASM_DIR) -j $(JOBS)
+
+# (cJSON's source comes from Debian's package archive: without it the tests are skipped)
+studio-if-available:
+	@if ! command -v emcmake >/dev/null 2>&1 || [ ! -f node_modules/three/build/three.module.js ]; then \
+		echo "studio: no emscripten (or no node_modules/three): the browser tests will be skipped (make studio installs them)"; \
+	elif ! bash web/fetch-cjson.sh $(WASM_DIR)/cjson; then \
+		echo "studio: could not fetch cJSON's source package: the browser tests will be skipped"; \
+	else $(MAKE) --no-print-directory studio-build; fi
+
+# The studio's tests with their screenshots written into docs/images/studio.
+studio-docs: studio
+	@STUDIO_SHOTS=$(CURDIR)/docs/images/studio bash web/tests/run.sh $(BUILD_DIR)/shitsukan $(WASM_DIR)/www $(WASM_DIR)/studio-tests
 
 # The same tests built with AddressSanitizer + UndefinedBehaviorSanitizer.
 test-asan: deps-test
@@ -71,4 +96,4 @@ install: build
 	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(FUZZ_DIR) $(VALGRIND_DIR) $(OUT_DIR)
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(FUZZ_DIR) $(VALGRIND_DIR) $(WASM_DIR) $(OUT_DIR)

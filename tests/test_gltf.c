@@ -660,6 +660,18 @@ static void test_writer_refuses_bad_input(void **state)
     sk_gltf_mesh_desc needs_tangents = {.mesh = &m, .material = normal_mat};
     sk_test_expect_failure(sk_gltf_add_mesh(g, &needs_tangents, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "tangent");
+    sk_gltf_material_desc glow = {.emissive_texture = &tex};
+    sk_test_expect_failure(sk_gltf_add_material(g, &glow, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "emissive_texture without an emissive factor");
+    glow.emissive[2] = 1.5f;
+    sk_test_expect_failure(sk_gltf_add_material(g, &glow, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "emissive[2]");
+    glow.emissive[2] = 0.5f;
+    int glow_mat;
+    SK_ASSERT_OK(sk_gltf_add_material(g, &glow, &glow_mat, &e_));
+    sk_gltf_mesh_desc glow_needs_uv = {.mesh = &bare, .material = glow_mat};
+    sk_test_expect_failure(sk_gltf_add_mesh(g, &glow_needs_uv, &index, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "needs uvs");
     sk_gltf_mesh_desc no_material = {.mesh = &m, .material = 7};
     sk_test_expect_failure(sk_gltf_add_mesh(g, &no_material, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "material = 7");
@@ -776,7 +788,7 @@ static void test_writer_refuses_bad_input(void **state)
     sk_gltf_doc *doc;
     SK_ASSERT_OK(sk_gltf_read_glb_memory(&doc, data, size, NULL, &e_));
     assert_int_equal(sk_gltf_doc_count(doc).meshes, 2);
-    assert_int_equal(sk_gltf_doc_count(doc).images, 2);
+    assert_int_equal(sk_gltf_doc_count(doc).images, 3); /* the textured, the normal and the emissive material's */
     sk_gltf_doc_free(doc);
     free(data);
     const char *not_a_folder = sk_test_path("gltf/plain-file");

@@ -557,6 +557,94 @@ static void test_rings_join_arcs_as_a_manifold(void **state)
     sk_hand_cloud_free(&c);
 }
 
+/* Where a finger's metacarpal strips end and its phalanx's tube begins, the two join: one
+ * surface from the palm into the finger, still a manifold facing outward. */
+static void test_finger_joins_its_metacarpal(void **state)
+{
+    (void)state;
+    sk_hand_cloud c;
+    cylinder_cloud(10.0, 40.0, 0.0, 0.0, &c);
+    /* below y = 20 (the metacarpal) the sides are unseen, as between the palm's strips */
+    size_t n = 0;
+    for (size_t i = 0; i < c.count; i++) {
+        sk_vec3d p = c.position[i];
+        double th = atan2(p.z, p.x);
+        if (p.y < 20.0 && (fabs(th) < 0.6 || fabs(th) > SK_PI - 0.6)) continue;
+        c.position[n] = p;
+        c.side[n++] = c.side[i];
+    }
+    c.count = n;
+    sk_hand_link_geometry g = single_link(sk_v3d(0, 20, 0), sk_v3d(0, 45, 0)); /* link 5: index proximal */
+    g.a[4] = sk_v3d(0, -5, 0), g.b[4] = sk_v3d(0, 20, 0);                    /* link 4: its metacarpal */
+    sk_hand_slices_desc sd = {.count = 10};
+    sk_hand_slices sl;
+    sk_error err;
+    assert_int_equal(sk_hand_slices_build(&c, &g, &sd, &sl, &err), SK_OK);
+    sk_mesh m;
+    sk_hand_resample_stats st;
+    assert_int_equal(sk_hand_resample(&sl, &g, NULL, &m, &st, &err), SK_OK);
+    assert_int_equal(st.rings, 5);
+    assert_int_equal(st.arcs, 10);
+    size_t ne;
+    edge_count *e = count_edges(&m, &ne);
+    for (size_t i = 0; i < ne; i++) assert_true(e[i].forward <= 1 && e[i].backward <= 1);
+    free(e);
+    assert_faces_away_from_the_y_axis(&m);
+    bool joined = false;
+    for (size_t t = 0; t < m.triangle_count; t++) {
+        float y0 = m.positions[3 * m.indices[3 * t] + 1], y1 = m.positions[3 * m.indices[3 * t + 1] + 1];
+        joined = joined || (y0 < 20.0f && y1 > 20.0f) || (y0 > 20.0f && y1 < 20.0f);
+    }
+    assert_true(joined);
+    sk_mesh_free(&m);
+    sk_hand_slices_free(&sl);
+    sk_hand_cloud_free(&c);
+}
+
+/* Two metacarpals side by side under one flat section: each link's points are an arc, and
+ * where the arcs meet the strips are bridged, so the palm is one tube (V - E + F = 0, the
+ * only boundary the two end sections), not two strips with gaps. */
+static void test_palm_strips_are_bridged(void **state)
+{
+    (void)state;
+    int rows = 80, around = 240;
+    sk_hand_cloud c;
+    sk_error err;
+    assert_int_equal(sk_hand_cloud_alloc(&c, (size_t)rows * around, false, &err), SK_OK);
+    for (int i = 0; i < rows; i++)
+        for (int j = 0; j < around; j++) {
+            double th = 2 * SK_PI * (j + 0.5) / around;
+            c.position[i * around + j] = sk_v3d(24 * cos(th), (i + 0.5) * 0.5, 8 * sin(th));
+            c.side[i * around + j] = sin(th) > 0 ? SK_HAND_SCAN_PALM : SK_HAND_SCAN_BACK;
+        }
+    c.count = (size_t)rows * around;
+    sk_hand_link_geometry g = single_link(sk_v3d(1000, 0, 0), sk_v3d(1000, 1, 0));
+    g.a[4] = sk_v3d(10, -5, 0), g.b[4] = sk_v3d(10, 45, 0); /* the index metacarpal */
+    g.a[8] = sk_v3d(-10, -5, 0), g.b[8] = sk_v3d(-10, 45, 0); /* the middle metacarpal */
+    sk_hand_slices_desc sd = {.count = 8};
+    sk_hand_slices sl;
+    assert_int_equal(sk_hand_slices_build(&c, &g, &sd, &sl, &err), SK_OK);
+    sk_mesh m;
+    sk_hand_resample_stats st;
+    assert_int_equal(sk_hand_resample(&sl, &g, NULL, &m, &st, &err), SK_OK);
+    assert_int_equal(st.rings, 0);
+    assert_int_equal(st.arcs, 16);
+    size_t ne;
+    edge_count *e = count_edges(&m, &ne);
+    int boundary = 0;
+    for (size_t i = 0; i < ne; i++) {
+        assert_true(e[i].forward <= 1 && e[i].backward <= 1);
+        boundary += e[i].forward + e[i].backward == 1;
+    }
+    free(e);
+    assert_int_equal(boundary, 2 * 20); /* the first and the last section: 2 arcs of 9 edges, 2 bridges */
+    assert_int_equal((long)m.vertex_count - (long)ne + (long)m.triangle_count, 0);
+    assert_faces_away_from_the_y_axis(&m);
+    sk_mesh_free(&m);
+    sk_hand_slices_free(&sl);
+    sk_hand_cloud_free(&c);
+}
+
 static void test_neighbouring_slices_remove_the_wrinkles(void **state)
 {
     (void)state;
@@ -691,6 +779,8 @@ int main(void)
         cmocka_unit_test(test_markers_are_found_where_they_are),
         cmocka_unit_test(test_resampled_tube_is_a_closed_manifold),
         cmocka_unit_test(test_rings_join_arcs_as_a_manifold),
+        cmocka_unit_test(test_finger_joins_its_metacarpal),
+        cmocka_unit_test(test_palm_strips_are_bridged),
         cmocka_unit_test(test_neighbouring_slices_remove_the_wrinkles),
         cmocka_unit_test(test_pipeline_on_a_hand_of_capsules),
     };

@@ -96,7 +96,7 @@ static void test_flesh_errors(void **state)
 
 /* ------------------------------------------------------------ topology */
 typedef struct edge {
-    uint32_t a, b;
+    uint32_t a, b, c; /* directed edge a -> b of triangle (a, b, c) */
 } edge;
 static int edge_cmp(const void *x, const void *y)
 {
@@ -106,7 +106,8 @@ static int edge_cmp(const void *x, const void *y)
 }
 
 /* Closed oriented 2-manifold: every directed edge once, with its reverse; every vertex's
- * fan one cycle. Returns the Euler characteristic. */
+ * triangles one fan (a disc, not two fans touching at the vertex). Returns the Euler
+ * characteristic. */
 static long check_manifold(const sk_mesh *m)
 {
     size_t T = m->triangle_count, V = m->vertex_count;
@@ -115,29 +116,35 @@ static long check_manifold(const sk_mesh *m)
         for (int k = 0; k < 3; k++) {
             e[3 * t + k].a = m->indices[3 * t + k];
             e[3 * t + k].b = m->indices[3 * t + (k + 1) % 3];
+            e[3 * t + k].c = m->indices[3 * t + (k + 2) % 3];
             assert_int_not_equal(e[3 * t + k].a, e[3 * t + k].b);
         }
     qsort(e, 3 * T, sizeof *e, edge_cmp);
     for (size_t i = 0; i + 1 < 3 * T; i++) assert_false(e[i].a == e[i + 1].a && e[i].b == e[i + 1].b);
     for (size_t i = 0; i < 3 * T; i++) {
-        edge rev = {e[i].b, e[i].a};
+        edge rev = {e[i].b, e[i].a, 0};
         assert_non_null(bsearch(&rev, e, 3 * T, sizeof *e, edge_cmp));
     }
-    /* fans: following "next edge around the vertex" from one triangle visits them all */
-    uint32_t *count = calloc(V, sizeof *count);
-    for (size_t t = 0; t < T; t++)
-        for (int k = 0; k < 3; k++) count[m->indices[3 * t + k]]++;
-    for (size_t v = 0; v < V; v++) assert_true(count[v] >= 3);
-    /* outgoing edges of v in sorted e: from v to each neighbour; walking w -> next
-       neighbour (the vertex after w in the triangle v, w, x) must cycle through all */
+    /* around v, triangle (v, w, x) leads from neighbour w to x: from one outgoing edge
+       the walk must visit all of v's triangles before it comes back */
     size_t lo = 0;
     for (size_t v = 0; v < V; v++) {
-        while (lo < 3 * T && e[lo].a < v) lo++;
+        assert_true(lo < 3 * T && e[lo].a == v); /* every vertex is used */
         size_t hi = lo;
         while (hi < 3 * T && e[hi].a == v) hi++;
-        assert_int_equal(hi - lo, count[v]);
+        assert_true(hi - lo >= 3);
+        uint32_t w = e[lo].b;
+        size_t steps = 0;
+        do {
+            edge key = {(uint32_t)v, w, 0};
+            const edge *d = bsearch(&key, e + lo, hi - lo, sizeof *e, edge_cmp);
+            assert_non_null(d);
+            w = d->c;
+            steps++;
+        } while (w != e[lo].b && steps <= hi - lo);
+        assert_int_equal(steps, hi - lo);
+        lo = hi;
     }
-    free(count);
     free(e);
     return (long)V - (long)(3 * T / 2) + (long)T;
 }
@@ -406,6 +413,53 @@ static void test_rigid_skinning_moves_with_link(void **state)
     free(nrm);
 }
 
+/* Linear blend skinning against its definition in double precision: every vertex at
+ * sum_k w_k (R_k p + t_k) with R_k, t_k taking link k's relaxed frame to its posed one,
+ * its normal sum_k w_k R_k n renormalised (a vertex with one link keeps it as turned). */
+static void test_lbs_matches_definition(void **state)
+{
+    (void)state;
+    const sk_hand_surface *s = fx->surface;
+    const sk_mesh *m = sk_hand_surface_mesh(s);
+    double q[SK_HAND_DOF_COUNT];
+    sk_hand_relaxed(&fx->right, q);
+    sk_hand_frames f0, f1;
+    sk_hand_forward(&fx->right, q, &f0);
+    q[sk_hand_dof_find("wrist.roll")] = 0.7;
+    q[sk_hand_dof_find("I.MCP.flex")] = 1.2;
+    q[sk_hand_dof_find("M.PIP.flex")] = 1.5;
+    q[sk_hand_dof_find("T.CMC.abd")] = 0.9;
+    q[sk_hand_dof_find("L.MCP.abd")] = -0.3;
+    q[1] = 12.0;
+    sk_hand_forward(&fx->right, q, &f1);
+    float *pos = malloc(3 * m->vertex_count * sizeof *pos), *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
+    sk_hand_surface_deform(s, &f1, SK_HAND_SKINNING_LBS, pos, nrm);
+    const uint16_t *ls;
+    const float *ws;
+    sk_hand_surface_weights(s, SK_HAND_WEIGHTS_SMOOTH, &ls, &ws);
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        sk_vec3d p = sk_v3d(m->positions[3 * v], m->positions[3 * v + 1], m->positions[3 * v + 2]);
+        sk_vec3d n = sk_v3d(m->normals[3 * v], m->normals[3 * v + 1], m->normals[3 * v + 2]);
+        sk_vec3d want = sk_v3d(0, 0, 0), wn = sk_v3d(0, 0, 0);
+        for (int k = 0; k < 4 && ws[4 * v + k] > 0; k++) {
+            int j = ls[4 * v + k];
+            sk_mat3d r = sk_m3d_mul(f1.rotation[j], sk_m3d_transpose(f0.rotation[j]));
+            sk_vec3d t = sk_v3d_sub(f1.point[sk_hand_link_point(j)], sk_m3d_apply(r, f0.point[sk_hand_link_point(j)]));
+            want = sk_v3d_add(want, sk_v3d_scale(sk_v3d_add(sk_m3d_apply(r, p), t), ws[4 * v + k]));
+            wn = sk_v3d_add(wn, sk_v3d_scale(sk_m3d_apply(r, n), ws[4 * v + k]));
+        }
+        wn = sk_v3d_normalize(wn);
+        assert_float_equal(pos[3 * v], want.x, 1e-3);
+        assert_float_equal(pos[3 * v + 1], want.y, 1e-3);
+        assert_float_equal(pos[3 * v + 2], want.z, 1e-3);
+        assert_float_equal(nrm[3 * v], wn.x, 1e-4);
+        assert_float_equal(nrm[3 * v + 1], wn.y, 1e-4);
+        assert_float_equal(nrm[3 * v + 2], wn.z, 1e-4);
+    }
+    free(pos);
+    free(nrm);
+}
+
 /* Candy wrapper: turn a finger about its own axis (not a DOF of the hand, so the frames
  * are built by hand): linear blending pulls the blended vertices toward the axis, dual
  * quaternions keep their distance. */
@@ -517,6 +571,8 @@ static void test_levels_of_detail(void **state)
         sk_hand_surface *c;
         assert_int_equal(sk_hand_surface_simplify(&c, fx->surface, sk_hand_lod_triangles[l], NULL), SK_OK);
         const sk_mesh *m = sk_hand_surface_mesh(c);
+        /* one closed surface of genus 0 at every level, as the full mesh */
+        assert_int_equal(check_manifold(m), 2);
         assert_true(m->triangle_count <= (size_t)sk_hand_lod_triangles[l]);
         assert_true(m->triangle_count >= (size_t)sk_hand_lod_triangles[l] * 9 / 10);
         assert_true(signed_volume(m) > 0.8 * signed_volume(base));
@@ -531,8 +587,29 @@ static void test_levels_of_detail(void **state)
             assert_memory_equal(cw + 4 * v, bw + 4 * j, 4 * sizeof(float));
             assert_memory_equal(cl + 4 * v, bl + 4 * j, 4 * sizeof(uint16_t));
         }
+        /* the atlas keeps the full surface's bounds: a kept vertex has its uv in each
+           chart, so one texture serves every level */
+        sk_mesh ce, be;
+        assert_int_equal(sk_hand_surface_export_mesh(c, NULL, NULL, false, &ce, NULL), SK_OK);
+        assert_int_equal(sk_hand_surface_export_mesh(fx->surface, NULL, NULL, false, &be, NULL), SK_OK);
+        size_t matched = 0;
+        for (size_t v = 0; v < ce.vertex_count; v += 7)
+            for (size_t k = 0; k < be.vertex_count; k++)
+                if (memcmp(be.positions + 3 * k, ce.positions + 3 * v, 3 * sizeof(float)) == 0 &&
+                    (be.uvs[2 * k] < 0.5f) == (ce.uvs[2 * v] < 0.5f)) {
+                    assert_memory_equal(be.uvs + 2 * k, ce.uvs + 2 * v, 2 * sizeof(float));
+                    matched++;
+                }
+        assert_true(matched > ce.vertex_count / 7 / 2);
+        sk_mesh_free(&ce);
+        sk_mesh_free(&be);
         sk_hand_surface_destroy(c);
     }
+    /* the left hand's levels too */
+    sk_hand_surface *c;
+    assert_int_equal(sk_hand_surface_simplify(&c, fx->mirror, 500, NULL), SK_OK);
+    assert_int_equal(check_manifold(sk_hand_surface_mesh(c)), 2);
+    sk_hand_surface_destroy(c);
 }
 
 static void test_atlas_export(void **state)
@@ -689,6 +766,7 @@ int main(void)
         cmocka_unit_test(test_field_and_distance),
         cmocka_unit_test(test_weights),
         cmocka_unit_test(test_rigid_skinning_moves_with_link),
+        cmocka_unit_test(test_lbs_matches_definition),
         cmocka_unit_test(test_dqs_keeps_radius_under_twist),
         cmocka_unit_test(test_defect_measure),
         cmocka_unit_test(test_desc_errors_and_threads),

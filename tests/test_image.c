@@ -539,10 +539,11 @@ static void test_png_foreign_layouts(void **state)
 static void test_exr_float_roundtrip_bit_exact(void **state)
 {
     (void)state;
-    const sk_exr_compression comps[3] = {SK_EXR_COMPRESSION_NONE, SK_EXR_COMPRESSION_ZIP,
-                                         SK_EXR_COMPRESSION_PIZ};
+    const sk_exr_compression comps[6] = {SK_EXR_COMPRESSION_NONE, SK_EXR_COMPRESSION_ZIP,
+                                         SK_EXR_COMPRESSION_PIZ,  SK_EXR_COMPRESSION_RLE,
+                                         SK_EXR_COMPRESSION_ZIPS, SK_EXR_COMPRESSION_DEFAULT};
     for (int channels = 1; channels <= 4; channels++)
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < 6; k++) {
             char name[64];
             snprintf(name, sizeof name, "image/float_%d_%d.exr", channels, k);
             const char *path = sk_test_path(name);
@@ -561,6 +562,63 @@ static void test_exr_float_roundtrip_bit_exact(void **state)
             sk_image_free(&im);
             sk_image_free(&back);
         }
+}
+
+/* Images of many chunks are encoded in parallel: every compression and level reads back
+ * bit for bit, half too, and the bytes are the same on 1 and 2 threads; smooth data
+ * compresses, and a bad level is refused. */
+static void test_exr_parallel_chunks(void **state)
+{
+    (void)state;
+    sk_image im, back;
+    /* 5 MB of floats (1.7 MB under the sanitizers), more than one thread's share */
+    const int W = getenv("SK_TEST_SANITIZED") ? 400 : 700, H = getenv("SK_TEST_SANITIZED") ? 350 : 600;
+    SK_ASSERT_OK(sk_image_create(&im, W, H, 3, &e_));
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++)
+            for (int c = 0; c < 3; c++)
+                sk_image_pixel(&im, x, y)[c] = (float)floor(1024.0 * sin(0.01 * x + c) * cos(0.013 * y)) / 1024.0f;
+    const struct {
+        sk_exr_compression c;
+        int level, tile;
+        sk_exr_pixel_type type;
+    } kinds[] = {{SK_EXR_COMPRESSION_ZIP, 1, 0, 0},   {SK_EXR_COMPRESSION_ZIP, 9, 0, 0},
+                 {SK_EXR_COMPRESSION_ZIPS, 4, 0, 0},  {SK_EXR_COMPRESSION_DEFAULT, 0, 0, 0},
+                 {SK_EXR_COMPRESSION_PIZ, 0, 0, 0},   {SK_EXR_COMPRESSION_RLE, 0, 0, 0},
+                 {SK_EXR_COMPRESSION_NONE, 0, 0, 0},  {SK_EXR_COMPRESSION_ZIP, 0, 64, 0},
+                 {SK_EXR_COMPRESSION_DEFAULT, 0, 0, SK_EXR_PIXEL_HALF}};
+    int threads = sk_threads_max();
+    long none_size = 0;
+    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
+        const char *one = sk_test_path("image/chunks1.exr"), *two = sk_test_path("image/chunks2.exr");
+        sk_exr_write_desc wd = {.compression = kinds[k].c, .compression_level = kinds[k].level,
+                                .tile_size = kinds[k].tile, .pixel_type = kinds[k].type};
+        sk_threads_set(1);
+        SK_ASSERT_OK(sk_image_write_exr(&im, one, &wd, &e_));
+        sk_threads_set(2);
+        SK_ASSERT_OK(sk_image_write_exr(&im, two, &wd, &e_));
+        sk_threads_set(threads);
+        assert_true(sk_test_same_file(one, two));
+        SK_ASSERT_OK(sk_image_read_exr(&back, two, NULL, &e_));
+        for (size_t i = 0; i < (size_t)W * H * 3; i++) {
+            float want = im.data[i];
+            if (kinds[k].type == SK_EXR_PIXEL_HALF) {
+                if (fabsf(back.data[i] - want) > fabsf(want) * 0x1p-11f + 0x1p-25f)
+                    fail_msg("kind %zu sample %zu: %.9g came back as %.9g", k, i, want, back.data[i]);
+            } else if (back.data[i] != want) {
+                fail_msg("kind %zu sample %zu: %.9g came back as %.9g", k, i, want, back.data[i]);
+            }
+        }
+        sk_image_free(&back);
+        if (kinds[k].c == SK_EXR_COMPRESSION_NONE) none_size = file_size(two);
+        if (k == 3) assert_true(file_size(two) < W * H * 3 * 4 * 0.9); /* the default compresses */
+    }
+    assert_true(none_size >= W * H * 3 * 4);
+    sk_error err = {0};
+    sk_exr_write_desc bad = {.compression = SK_EXR_COMPRESSION_ZIP, .compression_level = 10};
+    assert_int_equal(sk_image_write_exr(&im, sk_test_path("image/bad.exr"), &bad, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "compression_level = 10 is out of range [1, 9]"));
+    sk_image_free(&im);
 }
 
 static void test_exr_half_roundtrip(void **state)
@@ -931,12 +989,49 @@ static void test_write_auto_by_extension(void **state)
     sk_image_free(&im);
 }
 
+/* The codes for callers that encode files themselves are the PNG writer's codes: every
+ * encoding and depth, read back raw (LINEAR decoding gives code / max). */
+static void test_codes_match_png_writer(void **state)
+{
+    (void)state;
+    sk_image img;
+    assert_int_equal(sk_image_create(&img, 613, 3, 4, NULL), SK_OK);
+    size_t n = (size_t)img.width * img.height * 4;
+    for (size_t i = 0; i < n; i++) img.data[i] = (float)i / (float)(n - 40) - 0.01f;
+    img.data[5] = NAN;
+    const sk_png_encoding encodings[2] = {SK_PNG_ENCODING_SRGB, SK_PNG_ENCODING_LINEAR};
+    uint8_t *c8 = malloc(n);
+    uint16_t *c16 = malloc(n * 2);
+    for (int e = 0; e < 2; e++)
+        for (int depth = 8; depth <= 16; depth += 8) {
+            const char *path = sk_test_path(depth == 8 ? "codes/c8.png" : "codes/c16.png");
+            sk_png_write_desc wd = {.bit_depth = depth, .encoding = encodings[e]};
+            assert_int_equal(sk_image_write_png(&img, path, &wd, NULL), SK_OK);
+            sk_image back;
+            sk_png_read_desc rd = {.encoding = SK_PNG_ENCODING_LINEAR};
+            assert_int_equal(sk_image_read_png(&back, path, &rd, NULL, NULL, NULL), SK_OK);
+            if (depth == 8) sk_image_codes8(img.data, (size_t)img.width * img.height, 4, encodings[e], c8);
+            else sk_image_codes16(img.data, (size_t)img.width * img.height, 4, encodings[e], c16);
+            double max = depth == 8 ? 255.0 : 65535.0;
+            for (size_t i = 0; i < n; i++) {
+                long file_code = lround(back.data[i] * max);
+                long code = depth == 8 ? c8[i] : c16[i];
+                assert_int_equal(code, file_code);
+            }
+            sk_image_free(&back);
+        }
+    free(c8);
+    free(c16);
+    sk_image_free(&img);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_image_create_caps),
         cmocka_unit_test(test_metadata_set_get),
         cmocka_unit_test(test_srgb_curve),
+        cmocka_unit_test(test_codes_match_png_writer),
         cmocka_unit_test(test_png_roundtrip_all_layouts),
         cmocka_unit_test(test_png_16bit_gradient_exact),
         cmocka_unit_test(test_png_compression_level),
@@ -947,6 +1042,7 @@ int main(void)
         cmocka_unit_test(test_png_malformed_files),
         cmocka_unit_test(test_png_foreign_layouts),
         cmocka_unit_test(test_exr_float_roundtrip_bit_exact),
+        cmocka_unit_test(test_exr_parallel_chunks),
         cmocka_unit_test(test_exr_half_roundtrip),
         cmocka_unit_test(test_exr_metadata_roundtrip),
         cmocka_unit_test(test_exr_channel_order),

@@ -287,6 +287,25 @@ static void test_schema_print_lists_paths(void **state)
     free(text);
 }
 
+/* The JSON description walks the same tree: every nested key with its type and range. */
+static void test_schema_describe_json(void **state)
+{
+    (void)state;
+    char *text = sk_schema_describe_json(&k_desc_schema);
+    assert_non_null(text);
+    sk_preset *p;
+    sk_error err = {0};
+    /* it is JSON the preset reader takes */
+    assert_int_equal(sk_preset_parse(&p, text, strlen(text), "describe", &err), SK_OK);
+    sk_preset_free(p);
+    assert_non_null(strstr(text, "\"key\":\"levels\",\"type\":\"array\""));
+    assert_non_null(strstr(text, "\"names\":[\"default\",\"triangular\",\"square\",\"random\"]"));
+    assert_non_null(strstr(text, "\"key\":\"jitter\",\"type\":\"float\",\"min\":0,\"max\":1"));
+    assert_non_null(strstr(text, "\"key\":\"octaves\",\"type\":\"int\""));
+    assert_non_null(strstr(text, "\"key\":null"));
+    free(text);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -296,6 +315,7 @@ int main(void)
         cmocka_unit_test(test_set_overrides),
         cmocka_unit_test(test_desc_to_json_round_trip),
         cmocka_unit_test(test_schema_print_lists_paths),
+        cmocka_unit_test(test_schema_describe_json),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

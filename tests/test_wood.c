@@ -622,10 +622,11 @@ static void test_cut_same_bytes_for_threads_and_regions(void **state)
     sk_wood_destroy(w);
 }
 
-/* Every pixel of a cut (one sample per pixel) is sk_wood_eval_filtered at the pixel's
- * point with the pixel's footprint, shaded by sk_wood_shade, to the bit: the cut's
- * vectorized batches give what a single point gives. */
-static void check_cut_equals_eval(const sk_wood *w, int W, int H)
+/* Every pixel of a cut is sk_wood_eval_filtered at its samples' points with their
+ * footprint, shaded by sk_wood_shade and averaged in the cut's order, to the bit: the
+ * cut's vectorized batches (and, on flat and quarter faces, its shared per-column stage)
+ * give what a single point gives. */
+static void check_cut_equals_eval(const sk_wood *w, int W, int H, int S)
 {
     size_t np = (size_t)W * H;
     float *shaded = malloc(np * 3 * sizeof(float)), *albedo = malloc(np * 3 * sizeof(float));
@@ -634,6 +635,7 @@ static void check_cut_equals_eval(const sk_wood *w, int W, int H)
     sk_wood_view_cut(w, &sk_wood_get_desc(w)->view, &c);
     c.width = W;
     c.height = H;
+    c.samples = S;
     c.shaded = shaded;
     c.albedo = albedo;
     c.vessel = vessel;
@@ -651,25 +653,42 @@ static void check_cut_equals_eval(const sk_wood *w, int W, int H)
     sk_vec3f view = sk_v3f_normalize(sk_v3f_add(sk_v3f_scale(n, (float)cos(c.view_incidence)),
                                                 sk_v3f_scale(up, (float)sin(c.view_incidence))));
     double width_mm = c.width_mm, height_mm = width_mm * H / W;
-    float footprint = (float)(width_mm / W);
+    float footprint = (float)(width_mm / W / S), inv = 1.0f / (float)(S * S);
     int vessels = 0;
-    for (int Y = 0; Y < H; Y++) {
-        double fy = 0.5 - (Y + 0.5) * (1.0 / H);
-        sk_vec3f row = sk_v3f_add(c.point, sk_v3f_scale(up, (float)(fy * height_mm)));
+    for (int Y = 0; Y < H; Y++)
         for (int X = 0; X < W; X++) {
-            double fx = (X + 0.5) * (1.0 / W) - 0.5;
-            sk_vec3f p = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * width_mm)));
-            sk_wood_sample s;
-            sk_wood_eval_filtered(w, p, n, footprint, &s);
-            sk_vec3f col = sk_wood_shade(w, &s, n, light, view);
+            float sum[3] = {0, 0, 0}, alb[3] = {0, 0, 0}, ves = 0.0f, dv = 0.0f;
+            for (int sy = 0; sy < S; sy++) {
+                double fy = 0.5 - (Y + (sy + 0.5) / S) * (1.0 / H);
+                sk_vec3f row = sk_v3f_add(c.point, sk_v3f_scale(up, (float)(fy * height_mm)));
+                for (int sx = 0; sx < S; sx++) {
+                    double fx = ((double)X + (sx + 0.5) / S) * (1.0 / W) - 0.5;
+                    sk_vec3f p = sk_v3f_add(row, sk_v3f_scale(a, (float)(fx * width_mm)));
+                    sk_wood_sample s;
+                    sk_wood_eval_filtered(w, p, n, footprint, &s);
+                    sk_vec3f col = sk_wood_shade(w, &s, n, light, view);
+                    if (S == 1) { /* the cut stores 0 + value */
+                        sum[0] = col.x, sum[1] = col.y, sum[2] = col.z;
+                        alb[0] = s.albedo.x, alb[1] = s.albedo.y, alb[2] = s.albedo.z;
+                        ves = s.vessel, dv = s.dive;
+                    } else {
+                        sum[0] += col.x, sum[1] += col.y, sum[2] += col.z;
+                        alb[0] += s.albedo.x, alb[1] += s.albedo.y, alb[2] += s.albedo.z;
+                        ves += s.vessel, dv += s.dive;
+                    }
+                    vessels += s.vessel > 0.0f;
+                }
+            }
+            if (S > 1) {
+                for (int k = 0; k < 3; k++) sum[k] *= inv, alb[k] *= inv;
+                ves *= inv, dv *= inv;
+            }
             size_t i = (size_t)Y * W + X;
-            assert_memory_equal(&albedo[3 * i], &s.albedo, 3 * sizeof(float));
-            assert_memory_equal(&shaded[3 * i], &col, 3 * sizeof(float));
-            assert_memory_equal(&vessel[i], &s.vessel, sizeof(float));
-            assert_memory_equal(&dive[i], &s.dive, sizeof(float));
-            vessels += s.vessel > 0.0f;
+            assert_memory_equal(&albedo[3 * i], alb, 3 * sizeof(float));
+            assert_memory_equal(&shaded[3 * i], sum, 3 * sizeof(float));
+            assert_memory_equal(&vessel[i], &ves, sizeof(float));
+            assert_memory_equal(&dive[i], &dv, sizeof(float));
         }
-    }
     assert_true(vessels > 0); /* the comparison took the vessel paths too */
     free(shaded);
     free(albedo);
@@ -683,7 +702,20 @@ static void test_cut_equals_eval(void **state)
     /* ring-porous and sparse diffuse vessels, fluctuating rings, wavy grain with dg */
     sk_wood_desc d = busy_desc();
     sk_wood *w = make_wood(&d);
-    check_cut_equals_eval(w, 77, 9);
+    check_cut_equals_eval(w, 77, 9, 1);
+    check_cut_equals_eval(w, 31, 5, 2);
+    sk_wood_destroy(w);
+    /* the same on an untilted flat-sawn face and a quarter-sawn one, whose columns share
+       their cross-section stage */
+    d.view.tilt = 0.0f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 77, 9, 1);
+    check_cut_equals_eval(w, 31, 5, 2);
+    sk_wood_destroy(w);
+    d.view.plane = SK_WOOD_PLANE_QUARTER;
+    d.view.distance_mm = 30.0f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 61, 7, 2);
     sk_wood_destroy(w);
     /* dense diffuse vessels, round rings, a rotated tree, fibre highlight shading */
     d = busy_desc();
@@ -697,7 +729,223 @@ static void test_cut_equals_eval(void **state)
     d.shading.model = SK_WOOD_SHADING_FIBRE;
     d.view.width_mm = 6.0f;
     w = make_wood(&d);
-    check_cut_equals_eval(w, 77, 9);
+    check_cut_equals_eval(w, 77, 9, 1);
+    sk_wood_destroy(w);
+    /* knots (sound and dead, whorls 25 mm apart) and broad rays on both kinds of cut */
+    d = busy_desc();
+    d.rays.spacing_mm = 1.0f;
+    d.rays.width_mm = 0.3f;
+    d.rays.height_mm = 4.0f;
+    d.rays.jitter = 0.8f;
+    d.knots.whorl_spacing_mm = 25.0f;
+    d.knots.per_whorl = 6;
+    d.knots.rise = 0.3f;
+    d.knots.dead_after_years = 8.0f;
+    d.knots.jitter = 0.7f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 77, 9, 1);
+    sk_wood_destroy(w);
+    d.view.tilt = 0.0f;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 31, 5, 2);
+    sk_wood_destroy(w);
+    /* round rings seen quarter-sawn (the figure of Fig. 9) */
+    d = busy_desc();
+    d.rings.fluctuation = 0.0f;
+    d.view.tilt = 0.0f;
+    d.view.plane = SK_WOOD_PLANE_QUARTER;
+    w = make_wood(&d);
+    check_cut_equals_eval(w, 40, 6, 2);
+    sk_wood_destroy(w);
+}
+
+/* ------------------------------------------------------------------ knots */
+
+/* One branch a whorl, no jitter: the branch of whorl k leaves the pith at height
+ * (k + phase) spacing towards the whorl's rotation. */
+static sk_wood_desc knot_desc(float dead_years)
+{
+    sk_wood_desc d = {0};
+    d.seed = 5;
+    d.log.radius_mm = 100.0f;
+    d.rings.width_mm = 3.0f;
+    d.knots.whorl_spacing_mm = 400.0f;
+    d.knots.per_whorl = 1;
+    d.knots.growth = 0.2f;
+    d.knots.dead_after_years = dead_years;
+    d.knots.stub_mm = 30.0f;
+    return d;
+}
+
+/* The tree of knot_desc and where its branch of whorl 0 leaves the pith. */
+static sk_wood *knot_wood(float dead_years, double *y0, double *theta)
+{
+    sk_wood_desc d = knot_desc(dead_years);
+    sk_wood *w = make_wood(&d);
+    const sk__knots *k = &w->knots;
+    uint64_t h = sk__wood_hash(k->seed, 0, 0, 0);
+    *y0 = k->phase * k->spacing;
+    *theta = 2.0 * SK_PI * (double)((h >> 16) & 0xffffu) / 65536.0;
+    return w;
+}
+
+/* The point at radius r on the branch's side, `across` mm round the tree from its axis
+ * and `up` mm above it. */
+static sk_vec3f knot_point(double y0, double theta, double r, double across, double up)
+{
+    double a = theta + across / r;
+    return sk_v3f((float)(r * cos(a)), (float)(y0 + up), (float)(r * sin(a)));
+}
+
+/* A live branch is a cone from the pith: its wood's half width is growth x r at every r
+ * (the branch's rings grow 0.2 of the stem's a year), its fibres run along the branch,
+ * its end grain is darker by the darkening. */
+static void test_knot_is_a_cone_from_the_pith(void **state)
+{
+    (void)state;
+    double y0, theta;
+    sk_wood *w = knot_wood(0.0f, &y0, &theta);
+    sk_vec3f axis = sk_v3f((float)cos(theta), 0.0f, (float)sin(theta)), n = sk_v3f(0, 1, 0);
+    for (int k = 1; k <= 3; k++) {
+        double r = 20.0 * k;
+        sk_wood_sample in, out;
+        sk_wood_eval(w, knot_point(y0, theta, r, 0.0, 0.0), n, &in);
+        assert_true(fabs(sk_v3f_dot(in.fibre, axis)) > 0.999);
+        /* the edge: knot fibres inside, the stem's (up the tree) outside */
+        double lo = 0.0, hi = 0.6 * r;
+        for (int it = 0; it < 40; it++) {
+            double mid = 0.5 * (lo + hi);
+            sk_wood_eval(w, knot_point(y0, theta, r, mid, 0.0), n, &out);
+            if (fabs(sk_v3f_dot(out.fibre, axis)) > 0.5) lo = mid; else hi = mid;
+        }
+        double half_width = lo;
+        if (fabs(half_width / r - 0.2) > 0.01)
+            fail_msg("r = %g: knot half width %.3f mm, want %.3f", r, half_width, 0.2 * r);
+        /* darker: the knot's ring colour times 1 - 0.4 */
+        sk_wood_eval(w, knot_point(y0, theta, r, 3.0 * half_width, 0.0), n, &out);
+        double ew = sk_linear_from_srgb(0.64f), lwc = sk_linear_from_srgb(0.42f);
+        assert_true(in.albedo.y <= 0.6 * fmax(ew, lwc) + 1e-6);
+        assert_true(in.albedo.y >= 0.6 * fmin(ew, lwc) - 1e-6);
+    }
+    sk_wood_destroy(w);
+}
+
+/* The grain's deflection round a knot is a smooth map: no jumps along lines past the
+ * knot, nothing beyond its reach; and the fibre follows the deflected grain (moving
+ * along the fibre keeps the end-grain point the stem is looked up at). */
+static void test_knot_deflection_is_smooth_and_follows_the_fibre(void **state)
+{
+    (void)state;
+    double y0, theta;
+    sk_wood *w = knot_wood(0.0f, &y0, &theta);
+    const sk__knots *k = &w->knots;
+    double r = 50.0, t_stem = r / 3.0, a = 0.2 * r; /* the knot's radius there */
+    sk__knot_hit h;
+    for (int line = 0; line < 3; line++) {
+        double across = (0.3 + 0.8 * line) * a; /* through the knot, its edge, its side */
+        double prev = NAN;
+        for (int i = -400; i <= 400; i++) {
+            double up = i * 0.0125 * a; /* +-5 knot radii along the axis */
+            double th = theta + across / r, shift = 0.0;
+            if (sk__knots_hit(k, &w->rings, r, th, y0 + up, t_stem, 0.0, &h)) shift = h.theta_shift;
+            if (fabs(up) > k->reach * a * 1.01) assert_true(shift == 0.0); /* out of reach */
+            if (!isnan(prev) && across > a) assert_true(fabs(shift - prev) * r < 0.08 * a);
+            prev = shift;
+        }
+    }
+    /* along the fibre the lookup stays: theta + shift constant to second order */
+    int checked = 0;
+    for (int i = 0; i < 200; i++) {
+        double across = a * (1.05 + 1.5 * sk_rand_uniform(1, (uint64_t)i, 0, 0)) * (i % 2 ? 1 : -1);
+        double up = a * (3.0 * sk_rand_uniform(2, (uint64_t)i, 0, 0) - 1.5);
+        if (across * across + up * up < 1.1 * a * a) continue;
+        double th = theta + across / r, eps = 1e-3;
+        if (!sk__knots_hit(k, &w->rings, r, th, y0 + up, t_stem, 0.0, &h)) continue;
+        double look = th + h.theta_shift, slope = -h.psi_y / h.psi_u; /* du / dy, G = 0 */
+        sk__knot_hit h2, h3;
+        double straight = 0.0, along;
+        assert_true(sk__knots_hit(k, &w->rings, r, th + slope * eps / r, y0 + up + eps, t_stem, 0.0, &h2));
+        along = fabs(th + slope * eps / r + h2.theta_shift - look);
+        if (sk__knots_hit(k, &w->rings, r, th, y0 + up + eps, t_stem, 0.0, &h3))
+            straight = fabs(th + h3.theta_shift - look);
+        if (straight < 1e-9) continue;
+        if (!(along < 0.02 * straight + 1e-8)) fail_msg("across %g up %g (a %g): along %g straight %g psi_u %g psi_y %g", across, up, a, along, straight, h.psi_u, h.psi_y);
+        checked++;
+    }
+    assert_true(checked > 50);
+    sk_wood_destroy(w);
+}
+
+/* A branch that died after 12 years is a dead knot further out: the radius it had then,
+ * a ring of bark, and nothing past its stub. */
+static void test_dead_knot(void **state)
+{
+    (void)state;
+    double y0, theta;
+    sk_wood *w = knot_wood(12.0f, &y0, &theta);
+    sk_vec3f n = sk_v3f(0, 1, 0), axis = sk_v3f((float)cos(theta), 0.0f, (float)sin(theta));
+    double a = 0.2 * 3.0 * 12.0; /* 7.2 mm */
+    sk_vec3f bark = sk_v3f(sk_linear_from_srgb(0.24f), sk_linear_from_srgb(0.15f), sk_linear_from_srgb(0.09f));
+    for (double r = 45.0; r <= 60.0; r += 5.0) { /* past 36 mm, the stem when it died */
+        sk_wood_sample s;
+        sk_wood_eval(w, knot_point(y0, theta, r, 0.5 * a, 0.0), n, &s);
+        assert_true(fabs(sk_v3f_dot(s.fibre, axis)) > 0.999);
+        sk_wood_eval(w, knot_point(y0, theta, r, a - 0.3, 0.0), n, &s); /* in the bark ring */
+        assert_true(fabs(s.albedo.x - bark.x) < 1e-3 && fabs(s.albedo.z - bark.z) < 1e-3);
+        sk_wood_eval(w, knot_point(y0, theta, r, a + 0.3, 0.0), n, &s); /* the stem beside it */
+        assert_true(fabs(sk_v3f_dot(s.fibre, axis)) < 0.5);
+    }
+    sk_wood_sample s;
+    sk_wood_eval(w, knot_point(y0, theta, 36.0 + 30.0 + 2.0, 0.0, 0.0), n, &s); /* overgrown */
+    assert_true(fabs(sk_v3f_dot(s.fibre, axis)) < 0.5);
+    sk_wood_destroy(w);
+}
+
+/* ------------------------------------------------------------------ rays */
+
+/* How radial the fibre is at an end-grain point: 1 inside a ray, whose cells run out from
+ * the pith. */
+static double radial_part(const sk_wood *w, double r, double theta, double y)
+{
+    sk_wood_sample s;
+    sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), (float)y, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+    return fabs(s.fibre.x * cos(theta) + s.fibre.z * sin(theta));
+}
+
+/* Broad rays are radial ribbons: a point in one stays in it a couple of millimetres
+ * further out, leaves it a width away round the tree, and holds no pores; they cover a
+ * fair share of the wood. */
+static void test_rays_are_radial_ribbons(void **state)
+{
+    (void)state;
+    sk_wood_desc d = {0};
+    d.seed = 3;
+    d.log.radius_mm = 100.0f;
+    d.rings.width_mm = 4.0f;
+    d.vessels.diffuse.density_per_mm2 = 20.0f;
+    d.vessels.diffuse.radius_mm = 0.05f;
+    d.rays.spacing_mm = 1.5f;
+    d.rays.width_mm = 0.45f;
+    d.rays.height_mm = 15.0f;
+    d.rays.length_mm = 40.0f;
+    sk_wood *w = make_wood(&d);
+    int in = 0, stays = 0, leaves = 0, total = 4000;
+    for (int i = 0; i < total; i++) {
+        double r = 30.0 + 40.0 * sk_rand_uniform(7, (uint64_t)i, 0, 0);
+        double theta = 2.0 * SK_PI * sk_rand_uniform(7, (uint64_t)i, 1, 0);
+        double y = 50.0 * sk_rand_uniform(7, (uint64_t)i, 2, 0);
+        if (radial_part(w, r, theta, y) < 0.99) continue;
+        in++;
+        sk_wood_sample s;
+        sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), (float)y, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+        assert_true(s.vessel == 0.0f);
+        stays += radial_part(w, r + 2.0, theta, y) > 0.99;
+        leaves += radial_part(w, r, theta + 1.0 / r, y) < 0.5; /* 1 mm round the tree */
+    }
+    /* the lenses fill about a tenth of the wood (two sets of one per 3 mm x 24 mm) */
+    assert_true(in > total / 40 && in < total / 4);
+    assert_true(stays > 0.8 * in);
+    assert_true(leaves > 0.9 * in);
     sk_wood_destroy(w);
 }
 
@@ -773,6 +1021,32 @@ static void test_bad_parameters(void **state)
     d = (sk_wood_desc){0};
     d.grain.wavy_amplitude = 0.2f;
     expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "grain.wavy_wavelength_mm = 0 must be", NULL);
+
+    d = (sk_wood_desc){0};
+    d.knots.whorl_spacing_mm = 5.0f;
+    expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "knots.whorl_spacing_mm = 5 is out of range", "20");
+
+    d = (sk_wood_desc){0};
+    d.knots.whorl_spacing_mm = 300.0f;
+    d.knots.rise = (float)(85.0 * SK_DEG_TO_RAD);
+    expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "knots.rise_deg = 85 is out of range", NULL);
+
+    /* the steepest branches, jittered, stay finite */
+    d = (sk_wood_desc){0};
+    d.knots.whorl_spacing_mm = 20.0f;
+    d.knots.rise = (float)(80.0 * SK_DEG_TO_RAD);
+    d.knots.jitter = 1.0f;
+    sk_wood *steep = make_wood(&d);
+    for (int i = 0; i < 2000; i++) {
+        sk_wood_sample s;
+        sk_wood_eval(steep, random_point((uint64_t)i, 60.0f, 200.0f), sk_v3f(0, 0, 1), &s);
+        assert_true(isfinite(s.albedo.x) && isfinite(s.fibre.x) && isfinite(s.t));
+    }
+    sk_wood_destroy(steep);
+
+    d = (sk_wood_desc){0};
+    d.fibre.shift_mode = (sk_wood_shift_mode)7;
+    expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "fibre.shift_mode = 7 is out of range", NULL);
 
     d = (sk_wood_desc){0};
     d.grain.interlocked_slope = 0.1f;
@@ -879,6 +1153,20 @@ static void test_presets_bind_and_build(void **state)
         assert_non_null(strstr(text, "\"source\""));
         if (strncmp(e->d_name, "fig", 3) != 0) species++;
         free(text);
+        /* every vessel a preset can draw lies within the 20-400 um diameters of Kawai 2000
+           sec. 3.2 (radius ~ Normal cut at 3 sd, at least a tenth of the mean) */
+        sk_wood_desc rd = sk_wood_desc_resolved(&desc);
+        const float *sizes[2][2] = {{&rd.vessels.diffuse.radius_mm, &rd.vessels.diffuse.radius_sd_mm},
+                                    {&rd.vessels.ring.radius_mm, &rd.vessels.ring.radius_sd_mm}};
+        bool on[2] = {rd.vessels.diffuse.density_per_mm2 > 0.0f, rd.vessels.ring.linear_density > 0.0f};
+        for (int k = 0; k < 2; k++) {
+            if (!on[k]) continue;
+            double mean = *sizes[k][0], sd = *sizes[k][1];
+            double lo = fmax(mean - 3.0 * sd, 0.1 * mean), hi = mean + 3.0 * sd;
+            if (2.0 * lo < 0.020 - 1e-6 || 2.0 * hi > 0.400 + 1e-6)
+                fail_msg("%s: %s vessels %.0f-%.0f um across, outside 20-400 um", e->d_name,
+                         k ? "ring" : "diffuse", 2000.0 * lo, 2000.0 * hi);
+        }
         desc.log.radius_mm = desc.log.radius_mm > 0.0f ? fminf(desc.log.radius_mm, 40.0f) : 40.0f;
         sk_wood *w = make_wood(&desc);
         sk_wood_sample s;
@@ -888,7 +1176,7 @@ static void test_presets_bind_and_build(void **state)
         count++;
     }
     closedir(d);
-    assert_true(count >= 14);  /* Figs. 5a-c, 6a-c, 7, 9 and the species */
+    assert_true(count >= 15);  /* Figs. 5a-c, 6a-c, 7, 9, the ring fluctuation and the species */
     assert_true(species >= 6); /* oak, ash, maple, birch, cherry and a conifer */
 }
 
@@ -899,11 +1187,12 @@ static void test_figure_presets_hold_the_paper_values(void **state)
     static const struct {
         const char *name;
         float spiral, amplitude, wavelength, fluctuation, shift, specular;
+        bool ring_fluctuation; /* the figure shows R(t, theta) fluctuating (sec. 4.4) */
     } figs[] = {
-        {"fig5a", 0, 0, 0, 0, 0, 0},       {"fig5b", 0.12f, 0, 0, 0.02f, 0, 0},
-        {"fig5c", 0, 0.2f, 40, 0.02f, 0, 0}, {"fig6b", 0.12f, 0, 0, 0.02f, 0, 0},
-        {"fig6c", 0, 0.2f, 40, 0.02f, 0, 0}, {"fig7", 0, 0.15f, 15, 0, 0.4f, 0},
-        {"fig9", 0, 0.15f, 20, 0, 0, 0.3f},
+        {"fig5a", 0, 0, 0, 0, 0, 0, false},       {"fig5b", 0.12f, 0, 0, 0.02f, 0, 0, false},
+        {"fig5c", 0, 0.2f, 40, 0.02f, 0, 0, false}, {"fig6b", 0.12f, 0, 0, 0.02f, 0, 0, false},
+        {"fig6c", 0, 0.2f, 40, 0.02f, 0, 0, false}, {"fig7", 0, 0.15f, 15, 0, 0.4f, 0, true},
+        {"fig9", 0, 0.15f, 20, 0, 0, 0.3f, false},
     };
     for (size_t i = 0; i < sizeof figs / sizeof figs[0]; i++) {
         char path[1024];
@@ -920,6 +1209,83 @@ static void test_figure_presets_hold_the_paper_values(void **state)
         assert_true(d.grain.fluctuation == figs[i].fluctuation);
         assert_true(d.fibre.brightness_shift == figs[i].shift);
         assert_true(d.shading.specular == figs[i].specular);
+        assert_true((d.rings.fluctuation > 0.0f) == figs[i].ring_fluctuation);
+        /* the paper adds the brightness shift (sec. 6.3) */
+        assert_true(sk_wood_desc_resolved(&d).fibre.shift_mode == SK_WOOD_SHIFT_ADD);
+    }
+}
+
+/* The ring-fluctuation preset shows R(t, theta) at work: its rings' radii vary by more
+ * than a quarter around the tree yet grow with t at every angle (rings never cross), and
+ * T inverts R there. */
+static void test_ring_fluctuation_preset(void **state)
+{
+    (void)state;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/wood/ring-fluctuation.json", SK_TEST_PRESET_DIR);
+    sk_preset *preset = NULL;
+    assert_int_equal(sk_preset_load_file(&preset, path, NULL), SK_OK);
+    sk_wood_desc d;
+    memset(&d, 0, sizeof d);
+    assert_int_equal(sk_preset_bind(preset, &sk_wood_schema, &d, NULL), SK_OK);
+    sk_preset_free(preset);
+    sk_wood *w = make_wood(&d);
+    const sk__rings *rg = &w->rings;
+    double widest = 0.0;
+    for (int year = 2; year <= 20; year++) {
+        double lo = INFINITY, hi = 0.0;
+        for (int k = 0; k < 360; k++) {
+            double theta = k * SK_PI / 180.0, R = sk__rings_R(rg, year, theta);
+            lo = fmin(lo, R);
+            hi = fmax(hi, R);
+            assert_true(sk__rings_R(rg, year + 0.5, theta) > R);
+            double back = sk__rings_T(rg, R, theta, NULL, NULL);
+            assert_true(fabs(back - year) < 1e-4);
+        }
+        widest = fmax(widest, (hi - lo) / (0.5 * (hi + lo)));
+    }
+    assert_true(widest > 0.25);
+    assert_true(w->vessels.ring.on); /* pores placed through R(t, theta) */
+    sk_wood_destroy(w);
+}
+
+/* The brightness shift is added to the cell's brightness (its sRGB value) as the paper
+ * adds it: centred on the ring's colour, spread over the whole range; the old form
+ * multiplies by 1 - shift u and only darkens. */
+static void test_brightness_shift_modes(void **state)
+{
+    (void)state;
+    for (int mode = SK_WOOD_SHIFT_ADD; mode <= SK_WOOD_SHIFT_MULTIPLY; mode++) {
+        sk_wood_desc d = {0};
+        d.rings.latewood_fraction = 0.02f; /* earlywood almost everywhere */
+        d.fibre.brightness_shift = 0.4f;
+        d.fibre.cell_mm = 0.05f;
+        d.fibre.shift_mode = (sk_wood_shift_mode)mode;
+        sk_wood *w = make_wood(&d);
+        double ew = d.rings.earlywood_srgb[1] ? d.rings.earlywood_srgb[1] : 0.64;
+        double lo = INFINITY, hi = -INFINITY, sum = 0.0;
+        int n = 0;
+        for (int i = 0; i < 4000; i++) {
+            /* end grain, mid-ring (t = k + 0.5): the ring profile is earlywood */
+            double r = 3.0 * (5 + i % 20) + 1.5, theta = i * 0.7;
+            sk_wood_sample s;
+            sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), 0.0f, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+            double v = mode == SK_WOOD_SHIFT_ADD ? sk_srgb_from_linear(s.albedo.y) - ew
+                                                 : s.albedo.y / sk_linear_from_srgb((float)ew);
+            lo = fmin(lo, v);
+            hi = fmax(hi, v);
+            sum += v;
+            n++;
+        }
+        if (mode == SK_WOOD_SHIFT_ADD) {
+            assert_true(lo >= -0.2 - 1e-3 && hi <= 0.2 + 1e-3); /* within 40 % of each other */
+            assert_true(lo < -0.18 && hi > 0.18);              /* and filling that range */
+            assert_true(fabs(sum / n) < 0.01);                 /* centred: the ring keeps its mean */
+        } else {
+            assert_true(lo >= 0.6 - 1e-5 && hi <= 1.0 + 1e-6);
+            assert_true(lo < 0.62);
+        }
+        sk_wood_destroy(w);
     }
 }
 
@@ -952,12 +1318,17 @@ static void test_cli_cut_and_region(void **state)
     int bits = 0;
     assert_int_equal(sk_image_read_png(&a, path, &linear, NULL, &bits, NULL), SK_OK);
     assert_int_equal(bits, 16);
+    int up = 0;
     for (int i = 0; i < a.width * a.height; i++) {
         const float *f = a.data + 3 * i;
         double x = 2 * f[0] - 1, y = 2 * f[1] - 1, z = 2 * f[2] - 1;
         assert_true(fabs(sqrt(x * x + y * y + z * z) - 1.0) < 1e-3);
-        assert_true(y > 0.9); /* a flat-sawn face: fibres run up the image */
+        /* a flat-sawn face: fibres run up the image, but for the broad rays' cells, which
+           run out of it (towards the bark, towards the viewer) */
+        assert_true(y > -1e-3 && z > -0.2);
+        up += y > 0.9;
     }
+    assert_true(up > a.width * a.height * 3 / 4);
     sk_image_free(&a);
     snprintf(path, sizeof path, "%s/albedo.png", maps);
     assert_true(sk_test_file_exists(path));
@@ -1053,6 +1424,12 @@ int main(void)
         cmocka_unit_test(test_defaults),
         cmocka_unit_test(test_presets_bind_and_build),
         cmocka_unit_test(test_figure_presets_hold_the_paper_values),
+        cmocka_unit_test(test_ring_fluctuation_preset),
+        cmocka_unit_test(test_knot_is_a_cone_from_the_pith),
+        cmocka_unit_test(test_knot_deflection_is_smooth_and_follows_the_fibre),
+        cmocka_unit_test(test_dead_knot),
+        cmocka_unit_test(test_rays_are_radial_ribbons),
+        cmocka_unit_test(test_brightness_shift_modes),
         cmocka_unit_test(test_cli_cut_and_region),
         cmocka_unit_test(test_cli_errors),
         cmocka_unit_test(test_cli_sweep_and_sheet),

@@ -628,6 +628,18 @@ static bool is_file(const char *path)
     return stat(path, &st) == 0 && S_ISREG(st.st_mode);
 }
 
+bool cli_executable_dir(char *out, size_t size)
+{
+    char exe[PATH_MAX];
+    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (len <= 0) return false;
+    exe[len] = '\0';
+    char *slash = strrchr(exe, '/');
+    if (!slash) return false;
+    *slash = '\0';
+    return (size_t)snprintf(out, size, "%s", exe) < size;
+}
+
 int cli_preset_dirs(const char **out, int max)
 {
     /* Filled once per call into static storage: the process is single-threaded here. */
@@ -636,15 +648,9 @@ int cli_preset_dirs(const char **out, int max)
     const char *env = getenv("SHITSUKAN_PRESET_DIR");
     if (env && env[0] && is_dir(env) && n < max) out[n++] = env;
     char exe[PATH_MAX];
-    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (len > 0) {
-        exe[len] = '\0';
-        char *slash = strrchr(exe, '/');
-        if (slash) {
-            *slash = '\0';
-            snprintf(installed, sizeof installed, "%s/../share/shitsukan/presets", exe);
-            if (is_dir(installed) && n < max) out[n++] = installed;
-        }
+    if (cli_executable_dir(exe, sizeof exe)) {
+        snprintf(installed, sizeof installed, "%s/../share/shitsukan/presets", exe);
+        if (is_dir(installed) && n < max) out[n++] = installed;
     }
     if (is_dir(SK_SOURCE_PRESET_DIR) && n < max) out[n++] = SK_SOURCE_PRESET_DIR;
     if (is_dir(SK_INSTALL_PRESET_DIR) && n < max) out[n++] = SK_INSTALL_PRESET_DIR;

@@ -147,6 +147,8 @@ int cli_parse_region(const char *text, int width, int height, int region[4]);
 int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset **out);
 /* Finds a shipped preset file: writes its path and returns true. */
 bool cli_find_preset(const char *module, const char *name, char *path, size_t size);
+/* The folder of the running executable (for the share folder of an installed tool). */
+bool cli_executable_dir(char *out, size_t size);
 /* The preset folders searched, in order; returns how many were written (<= max). */
 int cli_preset_dirs(const char **out, int max);
 

@@ -327,7 +327,8 @@ static const cli_option animate_options[] = {
     {"mesh-frames", 0, "LIST", "frames for --meshes-dir, comma-separated (default all)", false},
     {"skinning", 0, "METHOD", "skinning of the surface outputs: rigid, lbs or dqs (default)", false},
     {"texture", 0, "PREFIX", "with --meshes-dir: also bake the skin texture PREFIX-albedo.png, PREFIX-normal.png", false},
-    {"texture-size", 0, "N", "atlas size of --texture in pixels (default 1024)", false},
+    {"texture-size", 0, "N", "atlas size of --texture and --glb in pixels (default 1024)", false},
+    {"material", 0, "KIND", "--glb material: blend (the thesis's 0.3 lit : 0.7 unlit texture, default) or pbr", false},
     {"triangles", 0, "N", "triangles of the surface's level 0 (default 8000)", false},
     {"flesh", 0, "FILE", "flesh sizes JSON of the surface (default built in)", false},
 };

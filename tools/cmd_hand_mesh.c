@@ -26,6 +26,7 @@ static const cli_option mesh_options[] = {
     {"flesh", 0, "FILE", "flesh sizes JSON (default presets/hand/flesh.json's built-in values)", false},
     {"texture", 0, "PREFIX", "also bake the skin texture: PREFIX-albedo.png and PREFIX-normal.png (OBJ: an MTL)", false},
     {"texture-size", 0, "N", "atlas size in pixels (default 1024)", false},
+    {"material", 0, "KIND", ".glb material: blend (the thesis's 0.3 lit : 0.7 unlit texture, default) or pbr", false},
 };
 
 int hand_parse_skinning(const char *text, sk_hand_skinning *out)
@@ -141,7 +142,8 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
     if (!pose && (rc = solve_pins(cmd, args, &skel, q))) return rc;
     sk_hand_surface *surface;
     if ((rc = hand_build_surface(cmd, args, &skel, (int)lod, &surface))) return rc;
-    if (glb) rc = hand_write_glb(surface, q, 1, 30.0, method, out);
+    /* a .glb holds all three levels of detail, unless --lod chose one */
+    if (glb) rc = hand_write_glb(cmd, args, surface, q, 1, 30.0, false, cli_has(cmd, args, "lod") ? 1 : SK_HAND_LOD_COUNT, method, out);
     else rc = hand_write_posed_mesh(cmd, args, surface, q, method, out);
     if (!rc && !args->common.quiet)
         fprintf(stderr, "shitsukan: %zu vertices, %zu triangles (%s skinning)\n", sk_hand_surface_mesh(surface)->vertex_count,

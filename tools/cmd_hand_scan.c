@@ -28,7 +28,7 @@ static const cli_option scan_options[] = {
     {"lines", 0, "N", "scan lines of the range finder (default 512)", false},
     {"points", 0, "N", "points per scan line (default 512)", false},
     {"noise", 0, "MM", "depth noise sigma at normal view (default 0.05; 0 = none)", false},
-    {"slices", 0, "N", "slice planes across the links (default 50)", false},
+    {"slices", 0, "N", "slice planes across the links (default 75: the thesis's about 4000 polygon vertices)", false},
     {"bend", 0, "DOF=DEG", "pose of patches-posed.png, added to the cast's (default: I, M, R, L MCP 40, PIP 60, "
                            "DIP 30); repeatable", true},
     {"no-pictures", 0, NULL, "write the files only", false},
@@ -200,9 +200,11 @@ static void print_summary(const sk_hand_scan_result *res)
             printf("  %-16s residual %.4f mm  (%d palm, %d back samples)\n", res->markers.name[k],
                    res->registration.residual_mm[k], res->registration.palm_used[k], res->registration.back_used[k]);
     }
-    printf("cloud: %zu points; polygons: %zu vertices, %zu triangles (fold %.1f deg; slice by slice: %.1f deg)\n",
+    printf("cloud: %zu points; polygons: %zu vertices, %zu triangles (fold %.1f deg, %.3f mm from the truth; slice by "
+           "slice: %.1f deg, %.3f mm)\n",
            res->cloud.count, res->polygons.vertex_count, res->polygons.triangle_count, res->polygons_stats.fold_mean_deg,
-           res->polygons_thesis_stats.fold_mean_deg);
+           res->polygons_stats.truth_mean_mm, res->polygons_thesis_stats.fold_mean_deg,
+           res->polygons_thesis_stats.truth_mean_mm);
     const sk_hand_table41 *t = &res->table;
     printf("Table 4.1 [mm]      thesis mean / max   scan mean / max     truth mean / max\n");
     static const char *const names[2] = {"palm", "back"};
@@ -229,11 +231,11 @@ static int run_scan(const cli_command *cmd, const cli_args *args)
     double q[SK_HAND_DOF_COUNT];
     if (!rc) rc = read_pose(cmd, args, &skel, q);
     sk_hand_scan_desc d = {0};
-    long long lines = 512, points = 512, slices = 50;
+    long long lines = 512, points = 512, slices = 75;
     double noise = 0.05;
     if (!rc) rc = cli_get_int(cmd, args, "lines", 512, 8, 4096, &lines);
     if (!rc) rc = cli_get_int(cmd, args, "points", 512, 8, 4096, &points);
-    if (!rc) rc = cli_get_int(cmd, args, "slices", 50, 2, 2000, &slices);
+    if (!rc) rc = cli_get_int(cmd, args, "slices", 75, 2, 2000, &slices);
     if (!rc) rc = cli_get_double(cmd, args, "noise", 0.05, 0, 10, &noise);
     if (rc) return rc;
     d.scanner.lines = (int)lines;
@@ -314,11 +316,11 @@ const cli_command cmd_hand_scan = {
         "like the plaster cast by a simulated laser range finder (512 lines x 512 points over\n"
         "250 x 200 x 200 mm, depth in 0.2 mm steps, noise, occlusion, the table removed by a depth\n"
         "threshold), palm up and turned over, with 9 marker bumps; the back scan is registered onto\n"
-        "the palm scan by least squares on the markers; about 50 slices across the links give\n"
-        "polygons (eqs. 4.1, 4.2, slice by slice as in the thesis and with the neighbouring\n"
-        "slices); 48 + 48 bicubic Bezier patches are fitted by least squares with parameter\n"
-        "correction (eqs. 4.3-4.7), and their error is measured as in Table 4.1, against the scan\n"
-        "and against the true surface. A point cloud as --input is taken as the registered data.\n"
+        "the palm scan by least squares on the markers; 75 slices across the links (the thesis:\n"
+        "about 50) give polygons of about 4000 vertices (eqs. 4.1, 4.2, slice by slice as in the\n"
+        "thesis and with the neighbouring slices); 48 + 48 bicubic Bezier patches are fitted by\n"
+        "least squares with parameter correction (eqs. 4.3-4.7), and their error is measured as in\n"
+        "Table 4.1, against the scan and against the true surface. A point cloud as --input is taken as the registered data.\n"
         "The skeleton's pose in the data is the cast's open hand, or --pose, changed with --pin;\n"
         "an --input must be in that skeleton's frame (mm; X radial, Y distal, Z palmar).\n"
         "Writes into DIR: table-4.1.txt/.json, registration.json, patches.json (control points),\n"

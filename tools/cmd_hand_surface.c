@@ -35,9 +35,9 @@ static int load_skin(const char *name, sk_skin **out)
     return r == SK_OK ? 0 : cli_fail_error(&err);
 }
 
-/* --texture PREFIX: PREFIX-albedo.png and PREFIX-normal.png of the atlas. */
-static int write_texture(const cli_command *cmd, const cli_args *args, const sk_hand_surface *surface, const char *prefix,
-                         char *albedo_path, size_t size)
+/* The atlas's albedo and normal map at --texture-size, with the skin module's microrelief. */
+static int bake_texture(const cli_command *cmd, const cli_args *args, const sk_hand_surface *surface, sk_image *albedo,
+                        sk_image *normal)
 {
     long long n;
     int rc = cli_get_int(cmd, args, "texture-size", 1024, 64, 8192, &n);
@@ -48,17 +48,26 @@ static int write_texture(const cli_command *cmd, const cli_args *args, const sk_
         return rc;
     }
     sk_hand_texture_desc d = {.size = (int)n, .back_skin = back, .palm_skin = palm};
-    sk_image albedo, normal;
     sk_error err = {0};
-    sk_result r = sk_hand_texture_bake(surface, &d, &albedo, &normal, &err);
+    sk_result r = sk_hand_texture_bake(surface, &d, albedo, normal, &err);
     sk_skin_destroy(back);
     sk_skin_destroy(palm);
-    if (r != SK_OK) return cli_fail_error(&err);
+    return r == SK_OK ? 0 : cli_fail_error(&err);
+}
+
+/* --texture PREFIX: PREFIX-albedo.png and PREFIX-normal.png of the atlas. */
+static int write_texture(const cli_command *cmd, const cli_args *args, const sk_hand_surface *surface, const char *prefix,
+                         char *albedo_path, size_t size)
+{
+    sk_image albedo, normal;
+    int rc = bake_texture(cmd, args, surface, &albedo, &normal);
+    if (rc) return rc;
     char normal_path[PATH_MAX];
     snprintf(albedo_path, size, "%s-albedo.png", prefix);
     snprintf(normal_path, sizeof normal_path, "%s-normal.png", prefix);
     sk_png_write_desc linear = {.encoding = SK_PNG_ENCODING_LINEAR};
-    r = sk_image_write_png(&albedo, albedo_path, NULL, &err);
+    sk_error err = {0};
+    sk_result r = sk_image_write_png(&albedo, albedo_path, NULL, &err);
     if (r == SK_OK) r = sk_image_write_png(&normal, normal_path, &linear, &err);
     sk_image_free(&albedo);
     sk_image_free(&normal);
@@ -93,11 +102,34 @@ int hand_write_posed_mesh(const cli_command *cmd, const cli_args *args, const sk
     return rc;
 }
 
-int hand_write_glb(const sk_hand_surface *surface, const double *dofs, int frame_count, double fps, sk_hand_skinning method,
-                   const char *path)
+int hand_write_glb(const cli_command *cmd, const cli_args *args, const sk_hand_surface *surface, const double *dofs,
+                   int frame_count, double fps, bool animation, int lod_count, sk_hand_skinning method, const char *path)
 {
-    (void)surface, (void)dofs, (void)frame_count, (void)fps, (void)method;
-    return cli_fail(CLI_EXIT_USAGE, "%s: glTF output is not available in this build yet", path);
+    const char *material = cli_get(cmd, args, "material");
+    sk_hand_gltf_desc d = {.dofs = dofs, .frame_count = frame_count, .fps = fps, .animation = animation,
+                           .weights = method == SK_HAND_SKINNING_RIGID ? SK_HAND_WEIGHTS_NEAREST : SK_HAND_WEIGHTS_SMOOTH};
+    if (!material || strcmp(material, "blend") == 0) d.material = SK_HAND_GLTF_MATERIAL_BLEND;
+    else if (strcmp(material, "pbr") == 0) d.material = SK_HAND_GLTF_MATERIAL_PBR;
+    else return cli_fail(CLI_EXIT_USAGE, "--material '%s' must be blend or pbr", material);
+    const sk_hand_surface *lods[SK_HAND_LOD_COUNT] = {surface};
+    sk_hand_surface *coarse[SK_HAND_LOD_COUNT] = {NULL};
+    int count = lod_count < 1 ? 1 : lod_count > SK_HAND_LOD_COUNT ? SK_HAND_LOD_COUNT : lod_count, rc = 0;
+    sk_error err = {0};
+    for (int l = 1; l < count && !rc; l++) {
+        if (sk_hand_surface_simplify(&coarse[l], surface, sk_hand_lod_triangles[l], &err) != SK_OK) rc = cli_fail_error(&err);
+        lods[l] = coarse[l];
+    }
+    d.lods = lods;
+    d.lod_count = count;
+    sk_image albedo = {0}, normal = {0};
+    if (!rc) rc = bake_texture(cmd, args, surface, &albedo, &normal);
+    d.albedo = &albedo;
+    d.normal_map = &normal;
+    if (!rc && sk_hand_gltf_write(&d, path, &err) != SK_OK) rc = cli_fail_error(&err);
+    sk_image_free(&albedo);
+    sk_image_free(&normal);
+    for (int l = 1; l < count; l++) sk_hand_surface_destroy(coarse[l]);
+    return rc;
 }
 
 /* --mesh-frames "0,5,10": marks the listed frames (all when absent). */
@@ -142,7 +174,7 @@ int hand_animate_surface_outputs(const cli_command *cmd, const cli_args *args, c
     }
     sk_hand_surface *surface = NULL;
     rc = hand_build_surface(cmd, args, skel, 0, &surface);
-    if (!rc && glb) rc = hand_write_glb(surface, dofs, frame_count, fps, method, glb);
+    if (!rc && glb) rc = hand_write_glb(cmd, args, surface, dofs, frame_count, fps, true, SK_HAND_LOD_COUNT, method, glb);
     if (!rc && dir && sk_make_dirs(dir, &err) != SK_OK) rc = cli_fail_error(&err);
     const char *prefix = cli_get(cmd, args, "texture");
     char albedo[PATH_MAX] = "";

@@ -14,9 +14,12 @@ int hand_build_surface(const cli_command *cmd, const cli_args *args, const sk_ha
 /* One pose as OBJ or PLY (by extension), with --texture's maps. */
 int hand_write_posed_mesh(const cli_command *cmd, const cli_args *args, const sk_hand_surface *surface,
                           const double *dofs, sk_hand_skinning method, const char *path);
-/* Frames (frame_count x SK_HAND_DOF_COUNT) as a skinned, animated glTF binary. */
-int hand_write_glb(const sk_hand_surface *surface, const double *dofs, int frame_count, double fps,
-                   sk_hand_skinning method, const char *path);
+/* The skinned hand as glTF binary: a pose (frame_count 1, no animation) or frames
+ * (frame_count x SK_HAND_DOF_COUNT) as an animation; `surface` and, with lod_count 3, its
+ * levels 1 and 2 of detail; the baked texture (--texture-size), the material (--material). */
+int hand_write_glb(const cli_command *cmd, const cli_args *args, const sk_hand_surface *surface, const double *dofs,
+                   int frame_count, double fps, bool animation, int lod_count, sk_hand_skinning method,
+                   const char *path);
 
 /* `hand animate`'s surface outputs: --glb, --landmarks, --meshes-dir (--mesh-frames,
  * --skinning, --texture). */

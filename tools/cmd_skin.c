@@ -206,11 +206,7 @@ static void band_progress_fn(void *user, double fraction)
 }
 
 /* A colour per cell id (stable for a seed): for per-ridge variation in shaders. */
-static void id_colour(uint32_t id, float rgb[3])
-{
-    uint64_t h = sk_hash(0x43454c4cULL, id, 0, 0);
-    for (int i = 0; i < 3; i++) rgb[i] = (float)((h >> (16 * i)) & 0xffff) / 65535.0f;
-}
+static void id_colour(uint32_t id, float rgb[3]) { sk_skin_cell_color(id, rgb); }
 
 /* What a map set keeps of every pixel between rendering and writing: height in mm (float,
  * height.exr), the normal's x and y in 1/32767 (z follows; normal.png and the preview

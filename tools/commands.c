@@ -16,6 +16,7 @@ extern const cli_command cmd_skin_maps;
 extern const cli_command cmd_wood_cut;
 extern const cli_command cmd_wood_sweep;
 extern const cli_command cmd_render;
+extern const cli_command cmd_studio;
 
 const cli_command *const cli_commands[] = {
     &cmd_presets,
@@ -33,5 +34,6 @@ const cli_command *const cli_commands[] = {
     &cmd_wood_cut,
     &cmd_wood_sweep,
     &cmd_render,
+    &cmd_studio,
     NULL,
 };

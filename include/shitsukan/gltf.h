@@ -59,6 +59,12 @@ typedef struct sk_gltf_material_desc {
     const sk_image *normal_texture;
     float normal_scale;        /* 0 = 1 */
     bool double_sided;
+    /* Light the surface gives off whatever lights it (glTF's emissive): a linear RGB factor
+       in [0, 1] (all zero = none) multiplying emissive_texture (linear RGB in [0, 1],
+       written sRGB; NULL = white). A texture without a factor emits nothing, so it is
+       refused. */
+    float emissive[3];
+    const sk_image *emissive_texture;
 } sk_gltf_material_desc;
 
 sk_result sk_gltf_add_material(sk_gltf *gltf, const sk_gltf_material_desc *desc, int *out_index,

@@ -27,6 +27,7 @@
 
 #include "shitsukan/core.h"
 #include "shitsukan/draw.h"
+#include "shitsukan/gltf.h"
 #include "shitsukan/image.h"
 #include "shitsukan/mesh.h"
 #include "shitsukan/skin.h"
@@ -963,6 +964,55 @@ sk_result sk_hand_surface_export_mesh(const sk_hand_surface *surface, const floa
 /* Vertex of the surface mesh behind each export vertex (export vertex count entries). */
 const uint32_t *sk_hand_surface_export_map(const sk_hand_surface *surface, size_t *count);
 
+/* ------------------------------------------------------------- glTF export */
+/* The skinned hand as glTF 2.0 (include/shitsukan/gltf.h): the skeleton as 20 joint
+ * nodes in the link tree, named as the BVH export names them ("Hand", "T_CMC", ...,
+ * "L_DIP"), one skin whose inverse bind matrices are the relaxed (bind) pose, one skinned
+ * mesh node per level of detail ("hand_LOD0", ...) with JOINTS_0 / WEIGHTS_0, the atlas
+ * UVs and the skin material, and optionally the frames as an animation (every joint's
+ * rotation and the root's translation, one key per frame at frame / fps seconds, LINEAR).
+ *
+ * Units and axes: glTF's metres; the hand's frame is kept (X radial, Y distal = glTF's
+ * up, Z palmar = glTF's front), so a glTF coordinate is the hand's millimetres / 1000.
+ * A joint node's translation is its joint centre in its parent link's frame, its rotation
+ * the link frame in the parent's (R_parent^T R_link); the root's are the carpus frame and
+ * the wrist centre in the world. */
+typedef enum sk_hand_gltf_material {
+    SK_HAND_GLTF_MATERIAL_DEFAULT = 0, /* = BLEND */
+    SK_HAND_GLTF_MATERIAL_BLEND,       /* the thesis's blend (4.1.6): a white surface lit at
+                                          1 - w (base colour, with the normal map) plus the
+                                          unlit albedo at w (emissive) */
+    SK_HAND_GLTF_MATERIAL_PBR          /* the albedo as base colour, lit (engines' usual
+                                          material), with the normal map */
+} sk_hand_gltf_material;
+
+typedef struct sk_hand_gltf_desc {
+    /* Levels of detail, finest first, all built on one skeleton (a surface and its
+       sk_hand_surface_simplify results); each is a mesh node sharing the one skin. */
+    const sk_hand_surface *const *lods;
+    int lod_count;                /* [1, 8] */
+    const double *dofs;           /* frame_count x SK_HAND_DOF_COUNT absolute DOF values */
+    int frame_count;              /* [1, 1000000]; more than 1 needs `animation` */
+    bool animation;               /* write the frames as an animation (the nodes then stand
+                                     in the bind pose); false: the nodes stand in the one
+                                     pose given */
+    double fps;                   /* key rate of the animation; 0 = 30; (0, 1000] */
+    sk_hand_weights weights;      /* 0 = smooth; NEAREST gives every vertex one joint (the
+                                     thesis's rigid links) */
+    const sk_image *albedo;       /* the atlas's albedo (sk_hand_texture_bake); NULL = a
+                                     plain skin colour and no UVs */
+    const sk_image *normal_map;   /* its normal map; NULL = none (needs albedo) */
+    sk_hand_gltf_material material;
+    double texture_weight;        /* w of the blend; 0 = 0.7 (the thesis's 0.3 : 0.7);
+                                     [0, 1] */
+} sk_hand_gltf_desc;
+
+/* Adds the hand to a document (nodes, skin, meshes, material, animation). Errors name the
+ * desc field and its range; nothing is added on an error of the desc. */
+sk_result sk_hand_gltf_add(sk_gltf *gltf, const sk_hand_gltf_desc *desc, sk_error *err);
+/* The hand alone as one .glb file (atomically written). */
+sk_result sk_hand_gltf_write(const sk_hand_gltf_desc *desc, const char *path, sk_error *err);
+
 /* ------------------------------------------------------------- poses, landmarks */
 /* Reads a pose file: {"dofs": {"L.MCP.flex": 60, ...}} in degrees (mm for wrist.tx/ty/tz),
  * the format sk_hand_pose_write_json writes (its other keys are accepted); DOFs not given
@@ -1247,7 +1297,9 @@ void sk_hand_link_geometry_from_frames(const sk_hand_frames *frames, sk_hand_lin
 int sk_hand_nearest_link(const sk_hand_link_geometry *links, sk_vec3d p, double *distance);
 
 typedef struct sk_hand_slices_desc {
-    int count;                /* slice planes y = const across the hand; 0 = 50; range [2, 2000] */
+    int count;                /* slice planes y = const across the hand; 0 = 75 (2.9 mm apart on
+                                 the default cast: 10 points per segment then give the thesis's
+                                 about 4000 vertices); range [2, 2000] */
     double half_thickness_mm; /* points this near a plane are projected onto it; 0 = 0.5;
                                  range (0, 50] */
 } sk_hand_slices_desc;

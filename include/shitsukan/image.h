@@ -1,6 +1,7 @@
-/* shitsukan images: float images with 1-4 interleaved channels, PNG (8/16-bit, libpng)
- * and OpenEXR (32-bit float / 16-bit half, OpenEXR's C API) readers and writers, with
- * text metadata (PNG tEXt chunks, EXR string attributes).
+/* shitsukan images: float images with 1-4 interleaved channels, PNG (8/16-bit; read with
+ * libpng, written by our own encoder with libdeflate) and OpenEXR (32-bit float / 16-bit
+ * half, OpenEXR's C API) readers and writers, with text metadata (PNG tEXt/iTXt chunks,
+ * EXR string attributes).
  *
  * Thread-safety: all functions are thread-safe on distinct images. */
 #ifndef SHITSUKAN_IMAGE_H
@@ -65,12 +66,18 @@ typedef struct sk_png_write_desc {
     int bit_depth;            /* 8 or 16; 0 = 8 */
     sk_png_encoding encoding; /* 0 = sRGB */
     const sk_image_metadata *metadata; /* optional tEXt chunks */
-    int compression_level;    /* zlib level 1 (fastest) .. 9 (smallest); 0 = 6. Large
-                                 maps write several times faster at 1-3 for files a
-                                 few percent larger. */
+    int compression_level;    /* deflate level 1 (fastest) .. 9 (smallest) of libdeflate;
+                                 0 = 6 (within a few percent of libpng's size at zlib
+                                 level 6, about twice as fast). Level 1 is about twice
+                                 as fast again for files 5-40 % larger; 9 is many times
+                                 slower (docs/images.md). */
 } sk_png_write_desc;
 
-/* Values are clamped to [0, 1] (NaN to 0) and rounded to the nearest code. Metadata keys
+/* Values are clamped to [0, 1] (NaN to 0) and rounded to the nearest code (sRGB codes by
+ * an exact table of the curve's code boundaries). Every row uses the Up filter; images
+ * of more than about a megabyte of rows are compressed in strips in parallel (OpenMP),
+ * joined into one zlib stream: the file's bytes depend on the image and desc only, not
+ * on the thread count. Metadata keys
  * must be PNG keywords (1-79 printable ASCII characters, no leading, trailing or double
  * spaces) and values UTF-8: ASCII values go into tEXt chunks, others into iTXt chunks.
  * Linear files carry no colour-space chunk (no sRGB, no gAMA). `desc` may be NULL. */
@@ -100,6 +107,15 @@ typedef struct sk_png_read_desc {
 sk_result sk_image_read_png(sk_image *image, const char *path, const sk_png_read_desc *desc,
                             sk_image_metadata *metadata, int *bit_depth, sk_error *err);
 
+/* The integer codes the PNG writer stores for `pixels` x `channels` float samples
+ * (interleaved): LINEAR round(v * max); SRGB (0 = default) the code nearest to
+ * max * srgb(v) for colour channels, alpha (channel 2 of 2, 4 of 4) linear; values
+ * clamped to [0, 1], NaN to 0. For callers that encode files themselves. */
+void sk_image_codes8(const float *samples, size_t pixels, int channels, sk_png_encoding encoding,
+                     uint8_t *codes);
+void sk_image_codes16(const float *samples, size_t pixels, int channels, sk_png_encoding encoding,
+                      uint16_t *codes);
+
 /* ------------------------------------------------------------------------ EXR */
 typedef enum sk_exr_pixel_type {
     SK_EXR_PIXEL_DEFAULT = 0, /* = FLOAT */
@@ -108,15 +124,20 @@ typedef enum sk_exr_pixel_type {
 } sk_exr_pixel_type;
 
 typedef enum sk_exr_compression {
-    SK_EXR_COMPRESSION_DEFAULT = 0, /* = ZIP */
+    SK_EXR_COMPRESSION_DEFAULT = 0, /* = ZIP at level 1: see docs/images.md, "EXR compression" */
     SK_EXR_COMPRESSION_NONE,
-    SK_EXR_COMPRESSION_ZIP,   /* lossless, 16 scanlines per block */
-    SK_EXR_COMPRESSION_PIZ    /* lossless wavelet, good for noisy renders */
+    SK_EXR_COMPRESSION_ZIP,   /* lossless deflate (libdeflate), 16 scanlines per block */
+    SK_EXR_COMPRESSION_PIZ,   /* lossless wavelet, good for noisy renders */
+    SK_EXR_COMPRESSION_RLE,   /* lossless run lengths (flat areas only) */
+    SK_EXR_COMPRESSION_ZIPS   /* lossless deflate, one scanline per block */
 } sk_exr_compression;
 
 typedef struct sk_exr_write_desc {
     sk_exr_pixel_type pixel_type;
     sk_exr_compression compression;
+    /* Deflate level of ZIP and ZIPS, 1 (fastest) .. 9 (smallest); 0 = 1 for the default
+       compression, 4 (OpenEXR's own default) when ZIP or ZIPS is asked for. */
+    int compression_level;
     /* Channel names; NULL = by channel count: 1 "Y", 2 "Y","A", 3 "R","G","B",
        4 "R","G","B","A". */
     const char *const *channel_names;
@@ -127,7 +148,9 @@ typedef struct sk_exr_write_desc {
 } sk_exr_write_desc;
 
 /* Linear data is written as is (EXR is linear by convention); HALF rounds each float to
- * the nearest half (ties to even), values beyond +-65504 become +-infinity. Channel names
+ * the nearest half (ties to even), values beyond +-65504 become +-infinity. Images of
+ * more than a megabyte have their chunks encoded in parallel (OpenMP; ZIP and ZIPS by
+ * libdeflate) and written in order: the bytes do not depend on the thread count. Channel names
  * must be unique and 1-255 bytes; metadata keys must not be EXR's own attribute names
  * (channels, compression, dataWindow, ...). `desc` may be NULL. */
 sk_result sk_image_write_exr(const sk_image *image, const char *path,

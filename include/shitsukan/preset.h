@@ -93,6 +93,13 @@ const char *sk_preset_get_string(const sk_preset *preset, const char *key);
 /* JSON text of a desc as the schema sees it (the inverse of bind; free with free()). */
 char *sk_schema_to_json(const sk_schema *schema, const void *desc);
 
+/* The schema as JSON (free with free()), for interfaces that build a control per key:
+ * {"name": ..., "fields": [{"key", "type" (float double int seed bool enum string floats
+ * object array), "min", "max" (numbers, as written in JSON), "min_count", "max_count"
+ * (floats, arrays), "max_length" (strings), "names" (enums), "doc", "fields" (objects,
+ * array elements; an element field with "key": null is the element itself)}]}. */
+char *sk_schema_describe_json(const sk_schema *schema);
+
 /* Writes one line per key path with its type, range and doc ("levels[].jitter  float
  * [0, 1]  maximum jitter as a fraction of the spacing; default 0"). */
 void sk_schema_print(const sk_schema *schema, FILE *out);

@@ -253,6 +253,9 @@ typedef struct sk_skin_render_desc {
 /* Renders the requested maps (parallel over rows; same bytes for any thread count). */
 sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, sk_error *err);
 
+/* The colour of a cell id in the cells map (linear RGB in [0, 1], a hash of the id). */
+void sk_skin_cell_color(uint32_t id, float rgb[3]);
+
 /* Shades one normal with the skin's shading (linear RGB), as the preview does. */
 sk_vec3f sk_skin_shade(const sk_skin *skin, sk_vec3f normal);
 

@@ -2,7 +2,9 @@
  * "Modeling fiber stream of internal wood"): annual rings with fluctuation, grain (spiral,
  * wavy, interlocked, tabulated, fractal) as a coordinate transform, vessels (diffuse- and
  * ring-porous), the fibre brightness-shift texture, the figure sheen of eq. (4) and a 3D
- * fibre highlight in the manner of Marschner et al. 2005; planar cuts to images.
+ * fibre highlight in the manner of Marschner et al. 2005; beyond the paper, knots (as
+ * Larsson et al. 2022 model them, the grain flowing round them) and broad rays; planar
+ * cuts to images.
  *
  * Units: millimetres and radians (preset keys ending in _deg are degrees). Colours in the
  * desc are sRGB-encoded in [0, 1] (as artists type them); every output colour is linear.
@@ -105,17 +107,80 @@ typedef struct sk_wood_vessels_desc {
     float color_srgb[3]; /* colour of an open vessel (pore); all 0 = (0.20, 0.13, 0.08) */
 } sk_wood_vessels_desc;
 
-/* Shifting brightness (sec. 6): every cell of the end-grain array C'(t, theta) is darkened
- * by an independent random fraction, then seen through the grain transform as fibre
+/* Broad rays (medullary rays; beyond Kawai 2000, who names the radial tissues in sec. 3.2
+ * and as future work in sec. 8): ribbons of ray tissue running out from the pith, thin
+ * around the tree (`width_mm`), tall along it (`height_mm`), `length_mm` long radially,
+ * one every `spacing_mm` round a ring, placed on the end grain and carried by the grain
+ * transform like everything else. Their cells run radially, so a quarter-sawn face (a
+ * ray's own plane) shows them as broad shiny flecks (the silver figure of oak) and a
+ * flat-sawn face as short lines. */
+typedef struct sk_wood_rays_desc {
+    float spacing_mm;   /* distance between rays round a ring; default 0 = none; [0.2, 100] */
+    float width_mm;     /* width round the tree at a ray's middle; 0 = 0.4; [0.01, 5] */
+    float height_mm;    /* height along the fibre; 0 = 20; [0.1, 1000] */
+    float length_mm;    /* length out from the pith; 0 = 50; [1, 5000] */
+    float jitter;       /* randomness of places and sizes; default 0; [0, 1] */
+    float color_srgb[3]; /* colour of the ray tissue; all 0 = (0.86, 0.76, 0.60) */
+} sk_wood_rays_desc;
+
+/* How the brightness shift of sec. 6 changes a cell. */
+typedef enum sk_wood_shift_mode {
+    SK_WOOD_SHIFT_DEFAULT = 0, /* = ADD */
+    SK_WOOD_SHIFT_ADD,         /* the paper's (sec. 6.3): the cell's brightness (its sRGB-encoded
+                                  value) plus an independent shift uniform in
+                                  [-shift / 2, +shift / 2], clamped to [0, 1] */
+    SK_WOOD_SHIFT_MULTIPLY,    /* the colour times (1 - shift u), u uniform in [0, 1): darkens
+                                  only */
+    SK_WOOD_SHIFT_COUNT
+} sk_wood_shift_mode;
+
+/* Shifting brightness (sec. 6): every cell of the end-grain array C'(t, theta) gets an
+ * independent random brightness shift, then is seen through the grain transform as fibre
  * streaks. Cells follow the rings: rows of cell_mm in t (at the mean ring width), each row
  * cut into cells of about cell_mm around the tree, like the radial files of wood cells. */
 typedef struct sk_wood_fibre_desc {
-    float brightness_shift; /* largest darkening of a cell (Fig. 7: 0.4); default 0; [0, 1] */
+    float brightness_shift; /* the spread of the cells' shifts: added, at most this much
+                               brighter or darker from cell to cell (Fig. 7: 0.4 = 40 %);
+                               default 0; [0, 1] */
+    sk_wood_shift_mode shift_mode; /* preset key "shift_mode": "add" or "multiply" */
     float cell_mm;          /* cell size of the end-grain array; 0 = 0.08; [0.005, 10] */
     float length_mm;        /* length of a fibre: along the fibre the cell's shift is drawn
                                anew every length_mm (ends staggered); default 0 = endless,
                                the paper's projection; [0, 10000] */
 } sk_wood_fibre_desc;
+
+/* Knots (beyond Kawai 2000, as Larsson et al. 2022 model them): branches in whorls along
+ * the stem, each a cone from the pith whose own rings grow by `growth` times the stem's
+ * ring width a year. Branch and stem are one growth layer a year (their formation times
+ * merged by a smooth minimum): while the branch lives it is a sound knot with the rings
+ * curving into it. After `dead_after_years` it stops growing: further out it is a dead
+ * knot of constant size in a ring of bark, the stem's later rings wrapping round it, for
+ * `stub_mm`, then overgrown. The stem's fibres flow round every knot (a smooth deflection
+ * of the grain, like a stream round a post), and the knot's own end grain is darker. */
+typedef struct sk_wood_knots_desc {
+    float whorl_spacing_mm; /* distance between whorls along the axis; default 0 = no knots;
+                               [20, 100000] */
+    int per_whorl;          /* branches per whorl; 0 = 4; [1, 12] */
+    float rise;             /* a branch's angle above the horizontal, radians (key
+                               "rise_deg"); default 0; [-10, 80] degrees */
+    float growth;           /* a branch's ring width over the stem's (the cone's slope);
+                               0 = 0.12; [0.01, 1] */
+    float dead_after_years; /* years the branch lives; default 0 = alive throughout;
+                               [0, 1000] */
+    float stub_mm;          /* how far the dead branch reaches out of the stem before it is
+                               overgrown; 0 = 40; [0.1, 1000] */
+    float jitter;           /* randomness of whorl heights, branch azimuths, angles and
+                               sizes; default 0; [0, 1] */
+    float darkening;        /* the knot's wood (end grain) darker by this fraction; 0 = 0.4;
+                               [0, 1] */
+    float bark_mm;          /* width of the bark ring round a dead knot; 0 = 0.8; [0.01, 20] */
+    float bark_srgb[3];     /* its colour; all 0 = (0.24, 0.15, 0.09) */
+    float collar;           /* width of the smooth union of branch and stem rings (how far
+                               the rings curve round a knot), a fraction of the knot's age;
+                               0 = 0.5; [0.01, 2] */
+    float deflection_reach; /* how far the grain bends round a knot, in knot radii; 0 = 3;
+                               [1.1, 20] */
+} sk_wood_knots_desc;
 
 typedef enum sk_wood_shading_model {
     SK_WOOD_SHADING_DEFAULT = 0, /* = FIGURE */
@@ -177,7 +242,9 @@ typedef struct sk_wood_desc {
     sk_wood_rings_desc rings;
     sk_wood_grain_desc grain;
     sk_wood_vessels_desc vessels;
+    sk_wood_rays_desc rays;
     sk_wood_fibre_desc fibre;
+    sk_wood_knots_desc knots;
     sk_wood_shading_desc shading;
     sk_wood_view_desc view;
 } sk_wood_desc;
@@ -294,9 +361,11 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
  * (end / flat / quarter, distance, height, tilt, width) in the scene frame. */
 void sk_wood_view_cut(const sk_wood *wood, const sk_wood_view_desc *view, sk_wood_cut_desc *cut);
 
-/* Names of the enums as used in presets ("figure", "fibre"; "end", "flat", "quarter"). */
+/* Names of the enums as used in presets ("figure", "fibre"; "end", "flat", "quarter";
+ * "add", "multiply"). */
 extern const char *const sk_wood_shading_model_names[];
 extern const char *const sk_wood_plane_names[];
+extern const char *const sk_wood_shift_mode_names[];
 
 #ifdef __cplusplus
 }

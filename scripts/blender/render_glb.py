@@ -3,9 +3,11 @@
 tool.
 
     blender -b --factory-startup --python scripts/blender/render_glb.py -- \
-        scene.glb out.png X,Y,Z TX,TY,TZ FOV_DEG WIDTH HEIGHT [SAMPLES]
+        scene.glb out.png X,Y,Z TX,TY,TZ FOV_DEG WIDTH HEIGHT [SAMPLES] [frame=N] [only=NAME]
 
-One sun light and a grey sky; no denoiser (Debian's Blender has none).
+One sun light and a grey sky; no denoiser (Debian's Blender has none). frame=N shows the
+animation at scene frame N; only=NAME renders only the meshes whose object name contains
+NAME (e.g. one level of detail of a file with several).
 """
 import math
 import sys
@@ -29,6 +31,8 @@ def blender_frame(p):
 
 
 def main(args):
+    options = dict(a.split("=", 1) for a in args if "=" in a)
+    args = [a for a in args if "=" not in a]
     src, out = args[0], args[1]
     eye, target = [[float(v) for v in a.split(",")] for a in args[2:4]]
     fov, width, height = float(args[4]), int(args[5]), int(args[6])
@@ -36,6 +40,12 @@ def main(args):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     bpy.ops.import_scene.gltf(filepath=src)
     scene = bpy.context.scene
+    if "only" in options:
+        for o in scene.objects:
+            if o.type == "MESH":
+                o.hide_render = options["only"] not in o.name
+    if "frame" in options:
+        scene.frame_set(int(options["frame"]))
     cam = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
     scene.collection.objects.link(cam)
     cam.location = blender_frame(eye)

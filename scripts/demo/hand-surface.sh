@@ -3,8 +3,9 @@
 # texture, shaded as the thesis does (0.3 shading : 0.7 texture, presets/hand/skin-scene.json):
 # the relaxed hand, Fig. 4.17-style poses, the keyframe animation of Fig. 4.18 (19 frames, keys
 # at 1, 9 and 19), the constrained curls of Figs. 4.19 / 4.20 as image sequences and contact
-# sheets, and rigid vs LBS vs DQS skinning on a fully flexed index finger. Writes into
-# $OUT/hand/: surface-*.png, fig4.17-poses.png, fig4.18-*, fig4.19-*, fig4.20-*, skinning-*.
+# sheets, and rigid vs LBS vs DQS skinning on a fully flexed index finger; the skinned hand as
+# glTF binary, posed and animated. Writes into $OUT/hand/: surface-*.png, fig4.17-poses.png,
+# fig4.18-* (fig4.18.glb: the animation), fig4.19-*, fig4.20-*, skinning-*, hand.glb.
 set -euo pipefail
 : "${SK:?}" "${OUT:?}"
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -45,11 +46,13 @@ for p in point horns spread ring; do
   poses+=(--label "$p" "pose-$p.png")
 done
 "$SK" sheet --columns 4 --title "Fig. 4.17-style poses (DQS skinning)" "${poses[@]}" -o "$out/fig4.17-poses.png"
+# the pointing pose as glTF: skeleton, skin, the 3 levels of detail, the baked texture
+"$SK" hand mesh --pose "$presets/fig4.17-point.json" -o "$out/hand.glb" -q
 
 # Fig. 4.18: 3 keys, every joint DOF by Bezier curves; 19 frames with the keys at 1, 9, 19
 frames=0,5,10,15,20,25,30,35,40,44,48,52,56,60,64,68,72,76,80
 "$SK" hand animate "$presets/fig4.18-keys.json" -q --meshes-dir fig4.18 --mesh-frames "$frames" \
-  --landmarks "$out/fig4.18-landmarks.csv"
+  --landmarks "$out/fig4.18-landmarks.csv" --glb "$out/fig4.18.glb"
 mkdir -p "$out/fig4.18-frames"
 for f in ${frames//,/ }; do
   name=$(printf 'frame_%04d' "$f")

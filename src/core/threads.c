@@ -1,8 +1,12 @@
-/* Thread count control over OpenMP (the only process-wide setting, and it is OpenMP's). */
+/* Thread count control over OpenMP (the only process-wide setting, and it is OpenMP's).
+ * Builds without OpenMP (WebAssembly) run every loop on one thread. */
+#ifdef _OPENMP
 #include <omp.h>
+#endif
 
 #include "shitsukan/core.h"
 
+#ifdef _OPENMP
 static int default_threads(void) { return omp_get_num_procs() > 0 ? omp_get_num_procs() : 1; }
 
 void sk_threads_set(int count)
@@ -18,3 +22,10 @@ void sk_threads_rest(void)
        host's thread pool ends them now (the next parallel loop starts new ones). */
     if (!omp_in_parallel()) omp_pause_resource_all(omp_pause_soft);
 }
+#else
+void sk_threads_set(int count) { (void)count; }
+
+int sk_threads_max(void) { return 1; }
+
+void sk_threads_rest(void) {}
+#endif

@@ -1,9 +1,9 @@
-/* Cholesky factorisations (LAPACK dpotrf / dpotrs) of the free-DOF block of the
+/* Cholesky factorisations (dense_private.h) of the free-DOF block of the
  * equilibrium matrix (eq. 3.17), cached by free set until K, A or W change: pinning a
  * slider or reaching a limit changes the free set, a new input value does not. */
-#include <lapacke.h>
 #include <string.h>
 
+#include "hand/dense_private.h"
 #include "hand/solver_private.h"
 
 const sk_hand_factor *sk_hand__factor(sk_hand_solver *s, uint64_t key, sk_error *err)
@@ -39,7 +39,7 @@ const sk_hand_factor *sk_hand__factor(sk_hand_solver *s, uint64_t key, sk_error 
     slot->key = key;
     slot->valid = false;
     if (nf > 0) {
-        lapack_int info = LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', nf, slot->l, nf);
+        int info = sk_hand__cholesky_at(slot->l, nf);
         if (info != 0) {
             sk_fail(err, SK_ERROR_NUMERIC,
                     "equilibrium matrix K + A'WA is not positive definite (at %s)",
@@ -54,6 +54,5 @@ const sk_hand_factor *sk_hand__factor(sk_hand_solver *s, uint64_t key, sk_error 
 
 void sk_hand__factor_solve(const sk_hand_factor *f, double *rhs)
 {
-    if (f->nf == 0) return;
-    LAPACKE_dpotrs_work(LAPACK_COL_MAJOR, 'L', f->nf, 1, f->l, f->nf, rhs, f->nf);
+    sk_hand__cholesky_solve(f->l, f->nf, rhs, 1);
 }

@@ -1,47 +1,17 @@
 /* Dense linear algebra and Gaussian statistics for the calibrated potential (thesis
  * 3.2.2 read as a Gaussian of the joint angles, eq. 3.17): Cholesky, inverses, eigen
- * decompositions of small symmetric matrices, sample moments and conditional means. */
-#include <lapacke.h>
+ * decompositions of small symmetric matrices (dense_private.h), sample moments and
+ * conditional means. */
 #include <math.h>
 #include <string.h>
 
 #include "hand/gaussian_private.h"
-
-bool sk_hand__cholesky(double *a, int n)
-{
-    if (n == 0) return true;
-    return LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', n, a, n) == 0;
-}
-
-void sk_hand__cholesky_solve(const double *l, int n, double *b, int nrhs)
-{
-    if (n == 0 || nrhs == 0) return;
-    LAPACKE_dpotrs_work(LAPACK_COL_MAJOR, 'L', n, nrhs, l, n, b, n);
-}
 
 double sk_hand__cholesky_logdet(const double *l, int n)
 {
     double s = 0.0;
     for (int i = 0; i < n; i++) s += 2.0 * log(l[(size_t)i * n + i]);
     return s;
-}
-
-bool sk_hand__spd_inverse(double *a, int n)
-{
-    if (n == 0) return true;
-    if (LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', n, a, n) != 0) return false;
-    if (LAPACKE_dpotri_work(LAPACK_COL_MAJOR, 'L', n, a, n) != 0) return false;
-    for (int j = 0; j < n; j++)
-        for (int i = 0; i < j; i++) a[(size_t)j * n + i] = a[(size_t)i * n + j];
-    return true;
-}
-
-bool sk_hand__sym_eigen(double *a, int n, double *values, bool vectors)
-{
-    if (n == 0) return true;
-    double work[64 * SK_HAND_DOF_COUNT];
-    return LAPACKE_dsyev_work(LAPACK_COL_MAJOR, vectors ? 'V' : 'N', 'L', n, a, n, values, work,
-                              (lapack_int)(sizeof work / sizeof work[0])) == 0;
 }
 
 void sk_hand__moments(const sk_hand_samples *s, const int *dofs, int d, const int *idx, int n,

@@ -1,27 +1,16 @@
 /* Dense linear algebra and Gaussian statistics for the calibrated potential of natural
  * posture (thesis 3.2.2 read as a Gaussian, eq. 3.17): small symmetric matrices
- * (n <= SK_HAND_DOF_COUNT), column-major, through LAPACK. */
+ * (n <= SK_HAND_DOF_COUNT), column-major, through dense_private.h. */
 #ifndef SK_HAND_GAUSSIAN_PRIVATE_H
 #define SK_HAND_GAUSSIAN_PRIVATE_H
 
 #include <stdbool.h>
 
+#include "hand/dense_private.h"
 #include "hand/hand_private.h"
 
-/* Lower Cholesky factor in place (upper triangle left as is); false if not positive
- * definite. */
-bool sk_hand__cholesky(double *a, int n);
-/* Solves L L' x = b in place for `nrhs` columns of b (leading dimension n). */
-void sk_hand__cholesky_solve(const double *l, int n, double *b, int nrhs);
 /* log det of L L'. */
 double sk_hand__cholesky_logdet(const double *l, int n);
-/* Inverse of a symmetric positive definite matrix in place (full matrix); false if not
- * positive definite. */
-bool sk_hand__spd_inverse(double *a, int n);
-/* Eigenvalues (ascending) and, if `vectors` is true, eigenvectors in place of `a`
- * (columns); false on failure. */
-bool sk_hand__sym_eigen(double *a, int n, double *values, bool vectors);
-
 /* Mean and scatter sum_i (x_i - mean)(x_i - mean)' of the columns `dofs[0..d)` over the
  * samples idx[0..n) (all samples when idx is NULL). */
 void sk_hand__moments(const sk_hand_samples *s, const int *dofs, int d, const int *idx, int n,

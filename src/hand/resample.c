@@ -1,7 +1,9 @@
 /* Polygons from the segmented slices, thesis 4.1.3: per slice and link, the points in
  * polar coordinates about the link, resampled at evenly spaced angles (eq. 4.1) by linear
  * interpolation of the radius between the neighbouring data points (eq. 4.2), 10 points
- * each, joined to the same link's points on the next slice.
+ * each, joined to the same link's points on the next slice, a finger's tube to the palm's
+ * strips over its metacarpal, and neighbouring palm strips to each other where they meet
+ * (one surface, as the thesis's polygon model, Fig. 4.7).
  *
  * Eq. (4.1) spaces theta*_i = theta_min + (theta_max - theta_min) i / 10, i = 0..9: the
  * step of a closed ring, whose last interval runs back to theta_min; so a ring (a phalanx
@@ -226,9 +228,20 @@ static double fold_deg(sk_vec3d a, sk_vec3d b, sk_vec3d c, sk_vec3d d)
     return acos(cs) * SK_RAD_TO_DEG;
 }
 
+/* Whether a ring and arcs join across slices: the same group (where a link's points change
+ * from surrounding it to lying on its sides), or one finger's metacarpal and phalanges
+ * (where the palm's strips over a metacarpal end and the finger's tube begins), so that a
+ * finger and the palm over its metacarpal are one surface, as the hand is. */
+static bool joins(const segment *a, const segment *b)
+{
+    if (a->ring == b->ring) return false;
+    if (a->group == b->group) return true;
+    int f = sk_hand__finger_of_link(a->link);
+    return f >= 0 && f == sk_hand__finger_of_link(b->link);
+}
+
 /* The segments of slice s + 1 that `seg` (slice s) joins to: its match of the same kind,
- * else, between a ring and arcs of the same group (where a link's points change from
- * surrounding it to lying on its sides), each of those. Returns how many (<= max). */
+ * else the rings or arcs it joins (above), each of those. Returns how many (<= max). */
 static int partners(const slice_work *next, const segment *seg, const segment **out, int max)
 {
     double shift;
@@ -240,7 +253,7 @@ static int partners(const slice_work *next, const segment *seg, const segment **
     int n = 0;
     for (int k = 0; k < next->segment_count && n < max; k++) {
         const segment *b = &next->segments[k];
-        if (b->group == seg->group && b->ring != seg->ring && (seg->ring || n == 0)) out[n++] = b;
+        if (joins(seg, b) && (seg->ring || n == 0)) out[n++] = b;
     }
     return n;
 }
@@ -277,6 +290,54 @@ static size_t zipper(const uint32_t *a, const double *aa, int p, const uint32_t 
         uint32_t *tri = ix + 3 * t++;
         tri[0] = a[i], tri[1] = b[j];
         tri[2] = along_a ? a[++i] : b[++j];
+    }
+    return t;
+}
+
+static double vertex_distance(const float *P, int a, int b)
+{
+    const float *p = P + 3 * (size_t)a, *q = P + 3 * (size_t)b;
+    return sqrt((double)(p[0] - q[0]) * (p[0] - q[0]) + (double)(p[1] - q[1]) * (p[1] - q[1]) +
+                (double)(p[2] - q[2]) * (p[2] - q[2]));
+}
+
+/* Where the palm's strips of two links meet (the metacarpals side by side), an arc's last
+ * vertex lies next to another link's arc's first one: the two strips are bridged by a
+ * quad between them on each pair of slices where both continue, so the palm is one
+ * surface and not a strip per link (the thesis's mesh, Fig. 4.7). An end takes the other
+ * link's nearest start within one sample spacing of its own arc, and only if that start
+ * takes it back (never two bridges on one edge). Wound as the strips. */
+static size_t bridge_strips(const slice_work *w, const slice_work *next, int n, const float *P, uint32_t *ix)
+{
+    size_t t = 0;
+    for (int k = 0; k < w->segment_count; k++) {
+        const segment *a = &w->segments[k];
+        if (a->ring || a->group >= SK_HAND_LINK_COUNT) continue;
+        int a_end = a->vertex + n - 1;
+        double reach = vertex_distance(P, a_end, a_end - 1);
+        const segment *b = NULL;
+        double best = INFINITY;
+        for (int j = 0; j < w->segment_count; j++) {
+            const segment *c = &w->segments[j];
+            if (c->ring || c->group == a->group || c->group >= SK_HAND_LINK_COUNT) continue;
+            double d = vertex_distance(P, a_end, c->vertex);
+            if (d < best) best = d, b = c;
+        }
+        if (!b || best > reach) continue;
+        /* b's start takes a's end back: no other arc's end is nearer to it */
+        bool mutual = true;
+        for (int j = 0; j < w->segment_count && mutual; j++) {
+            const segment *c = &w->segments[j];
+            if (c == a || c->ring || c->group == b->group || c->group >= SK_HAND_LINK_COUNT) continue;
+            mutual = vertex_distance(P, c->vertex + n - 1, b->vertex) >= best;
+        }
+        double shift;
+        const segment *a2 = matching_arc(next, a, &shift), *b2 = matching_arc(next, b, &shift);
+        if (!mutual || !a2 || !b2 || vertex_distance(P, a2->vertex + n - 1, b2->vertex) > reach) continue;
+        uint32_t a0 = (uint32_t)a_end, a1 = (uint32_t)b->vertex, b0 = (uint32_t)(a2->vertex + n - 1), b1 = (uint32_t)b2->vertex;
+        ix[6 * (t / 2)] = a0, ix[6 * (t / 2) + 1] = b0, ix[6 * (t / 2) + 2] = a1;
+        ix[6 * (t / 2) + 3] = a1, ix[6 * (t / 2) + 4] = b0, ix[6 * (t / 2) + 5] = b1;
+        t += 2;
     }
     return t;
 }
@@ -343,7 +404,7 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
     for (int s = 0; s + 1 < count; s++)
         for (int k = 0; k < work[s].segment_count; k++) {
             const segment *with[8];
-            triangles += 2 * (size_t)n * (size_t)partners(&work[s + 1], &work[s].segments[k], with, 8);
+            triangles += 2 * (size_t)n * (size_t)partners(&work[s + 1], &work[s].segments[k], with, 8) + 2;
         }
     if (vertices == 0 || triangles == 0) {
         free_work(work, count);
@@ -431,6 +492,8 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
                 }
             }
         }
+    /* pass 4: the strips of neighbouring palm links bridged where they meet */
+    for (int s = 0; s + 1 < count; s++) t += bridge_strips(&work[s], &work[s + 1], n, out->positions, out->indices + 3 * t);
     free_work(work, count);
     free(angle_of);
     out->triangle_count = t;

@@ -1,36 +1,42 @@
 /* Deformation of the hand surface with the skeleton (thesis 4.1.5): rigid links (each
  * vertex with its nearest link, the thesis's method), linear blend skinning, and dual
  * quaternion skinning (Kavan, Collins, Zara, O'Sullivan 2008) with the smooth weights.
- * The transform of a link takes its relaxed (bind) frame to its posed frame. */
+ * The transform of a link takes its relaxed (bind) frame to its posed frame. The vertices
+ * are taken one influence count at a time (the surface groups them), each count with its
+ * own loop, and the link transforms are vectors of columns (see link_matrices). */
 #include <math.h>
 #include <string.h>
 
 #include "hand/surface_private.h"
 
-/* Rigid transform of every link: 3x4 row-major (rotation | translation), float. */
-static void link_matrices(const sk_hand_surface *s, const sk_hand_frames *fr, float mats[SK_HAND_LINK_COUNT][12])
+/* Rigid transform of every link as four columns (the rotation's three, then the
+ * translation), each a vector of four floats (the fourth 0): the blends and transforms
+ * below run four lanes at a time, each lane in the order of the scalar sums
+ * ((c0 x + c1 y) + c2 z) + c3, so the results are those of the scalar code. */
+typedef float sk__lane4 __attribute__((vector_size(16)));
+typedef sk__lane4 link_columns[4];
+
+static void link_matrices(const sk_hand_surface *s, const sk_hand_frames *fr, link_columns *mats)
 {
     for (int j = 0; j < SK_HAND_LINK_COUNT; j++) {
         sk_mat3d r = sk_m3d_mul(fr->rotation[j], sk_m3d_transpose(s->bind.rotation[j]));
         sk_vec3d o = fr->point[sk_hand_link_point(j)], b = s->bind.point[sk_hand_link_point(j)];
         sk_vec3d t = sk_v3d_sub(o, sk_m3d_apply(r, b));
-        for (int i = 0; i < 3; i++) {
-            mats[j][4 * i] = (float)r.m[i][0];
-            mats[j][4 * i + 1] = (float)r.m[i][1];
-            mats[j][4 * i + 2] = (float)r.m[i][2];
-        }
-        mats[j][3] = (float)t.x, mats[j][7] = (float)t.y, mats[j][11] = (float)t.z;
+        for (int c = 0; c < 3; c++) mats[j][c] = (sk__lane4){(float)r.m[0][c], (float)r.m[1][c], (float)r.m[2][c], 0.0f};
+        mats[j][3] = (sk__lane4){(float)t.x, (float)t.y, (float)t.z, 0.0f};
     }
 }
 
 /* Unit dual quaternion of each link: real part (w, x, y, z), dual part. */
-static void link_dual_quaternions(float mats[SK_HAND_LINK_COUNT][12], float dq[SK_HAND_LINK_COUNT][8])
+typedef float link_dual[8];
+
+static void link_dual_quaternions(link_columns *mats, link_dual *dq)
 {
     for (int j = 0; j < SK_HAND_LINK_COUNT; j++) {
-        const float *m = mats[j];
-        sk_mat3d r = {{{m[0], m[1], m[2]}, {m[4], m[5], m[6]}, {m[8], m[9], m[10]}}};
+        const sk__lane4 *m = mats[j];
+        sk_mat3d r = {{{m[0][0], m[1][0], m[2][0]}, {m[0][1], m[1][1], m[2][1]}, {m[0][2], m[1][2], m[2][2]}}};
         sk_quatd q = sk_m3d_to_qd(r);
-        sk_quatd t = sk_qd(0, m[3], m[7], m[11]);
+        sk_quatd t = sk_qd(0, m[3][0], m[3][1], m[3][2]);
         sk_quatd d = sk_qd_mul(t, q);
         dq[j][0] = (float)q.w, dq[j][1] = (float)q.x, dq[j][2] = (float)q.y, dq[j][3] = (float)q.z;
         dq[j][4] = (float)(0.5 * d.w), dq[j][5] = (float)(0.5 * d.x), dq[j][6] = (float)(0.5 * d.y),
@@ -38,73 +44,64 @@ static void link_dual_quaternions(float mats[SK_HAND_LINK_COUNT][12], float dq[S
     }
 }
 
-static void apply(const float *m, const float *P, const float *N, size_t v, float *pos, float *nrm)
+/* p' = M p (with translation) and n' = M n (rotation only), optionally renormalised. */
+static inline void transform(const sk__lane4 *restrict m, const float *restrict p, const float *restrict n,
+                             float *restrict po, float *restrict no, bool normalise)
 {
-    float x = P[3 * v], y = P[3 * v + 1], z = P[3 * v + 2];
-    pos[3 * v] = m[0] * x + m[1] * y + m[2] * z + m[3];
-    pos[3 * v + 1] = m[4] * x + m[5] * y + m[6] * z + m[7];
-    pos[3 * v + 2] = m[8] * x + m[9] * y + m[10] * z + m[11];
-    float a = N[3 * v], b = N[3 * v + 1], c = N[3 * v + 2];
-    nrm[3 * v] = m[0] * a + m[1] * b + m[2] * c;
-    nrm[3 * v + 1] = m[4] * a + m[5] * b + m[6] * c;
-    nrm[3 * v + 2] = m[8] * a + m[9] * b + m[10] * c;
+    sk__lane4 P4 = m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + m[3];
+    sk__lane4 N4 = m[0] * n[0] + m[1] * n[1] + m[2] * n[2];
+    po[0] = P4[0], po[1] = P4[1], po[2] = P4[2];
+    if (normalise) {
+        float len2 = N4[0] * N4[0] + N4[1] * N4[1] + N4[2] * N4[2];
+        float inv = len2 > 0.0f ? 1.0f / sqrtf(len2) : 0.0f;
+        N4 *= inv;
+    }
+    no[0] = N4[0], no[1] = N4[1], no[2] = N4[2];
 }
 
-static void deform_lbs(const sk_hand_surface *s, float mats[SK_HAND_LINK_COUNT][12], bool rigid, size_t lo,
-                       size_t hi, float *pos, float *nrm)
+/* Linear blend of the vertices vs[lo, hi) that have `n` influences (a constant where it
+ * is called, so that each count gets its own unrolled loop). One link moves a vertex by
+ * its rigid motion as it is; a blend renormalises the normal. */
+static inline void lbs_group(const sk_hand_surface *s, link_columns *mats, const uint16_t *restrict L,
+                             const float *restrict W, const uint32_t *restrict vs, size_t lo, size_t hi, int n,
+                             float *restrict pos, float *restrict nrm)
 {
     const float *P = s->mesh.positions, *N = s->mesh.normals;
-    const uint16_t *L = s->links[rigid ? 0 : 1];
-    const float *W = s->weights[rigid ? 0 : 1];
-    for (size_t v = lo; v < hi; v++) {
+    for (size_t i = lo; i < hi; i++) {
+        size_t v = vs ? vs[i] : i;
         const uint16_t *l = L + 4 * v;
         const float *w = W + 4 * v;
-        float m[12];
-        int n = rigid ? 1 : s->influences[v];
         if (n == 1) {
-            apply(mats[l[0]], P, N, v, pos, nrm);
+            transform(mats[l[0]], P + 3 * v, N + 3 * v, pos + 3 * v, nrm + 3 * v, false);
             continue;
-        } else {
-            for (int i = 0; i < 12; i++) m[i] = w[0] * mats[l[0]][i];
-            for (int k = 1; k < n; k++)
-                for (int i = 0; i < 12; i++) m[i] += w[k] * mats[l[k]][i];
         }
-        float x = P[3 * v], y = P[3 * v + 1], z = P[3 * v + 2];
-        pos[3 * v] = m[0] * x + m[1] * y + m[2] * z + m[3];
-        pos[3 * v + 1] = m[4] * x + m[5] * y + m[6] * z + m[7];
-        pos[3 * v + 2] = m[8] * x + m[9] * y + m[10] * z + m[11];
-        float a = N[3 * v], b = N[3 * v + 1], c = N[3 * v + 2];
-        float nx = m[0] * a + m[1] * b + m[2] * c, ny = m[4] * a + m[5] * b + m[6] * c,
-              nz = m[8] * a + m[9] * b + m[10] * c;
-        float len2 = nx * nx + ny * ny + nz * nz;
-        float inv = len2 > 0.0f ? 1.0f / sqrtf(len2) : 0.0f;
-        nrm[3 * v] = nx * inv, nrm[3 * v + 1] = ny * inv, nrm[3 * v + 2] = nz * inv;
+        link_columns m;
+        for (int c = 0; c < 4; c++) m[c] = w[0] * mats[l[0]][c];
+        for (int k = 1; k < n; k++)
+            for (int c = 0; c < 4; c++) m[c] += w[k] * mats[l[k]][c];
+        transform(m, P + 3 * v, N + 3 * v, pos + 3 * v, nrm + 3 * v, true);
     }
 }
 
-static void deform_dqs(const sk_hand_surface *s, float mats[SK_HAND_LINK_COUNT][12], float dq[SK_HAND_LINK_COUNT][8],
-                       size_t lo, size_t hi, float *pos, float *nrm)
+/* Dual quaternion blend of the vertices vs[lo, hi) with `n` (>= 2) influences. */
+static inline void dqs_group(const sk_hand_surface *s, link_dual *dq, const uint32_t *restrict vs, size_t lo, size_t hi,
+                             int n, float *restrict pos, float *restrict nrm)
 {
     const float *P = s->mesh.positions, *N = s->mesh.normals;
     const uint16_t *L = s->links[1];
     const float *W = s->weights[1];
-    for (size_t v = lo; v < hi; v++) {
+    for (size_t i = lo; i < hi; i++) {
+        size_t v = vs[i];
         const uint16_t *l = L + 4 * v;
         const float *w = W + 4 * v;
-        int n = s->influences[v];
-        if (n == 1) {
-            /* one link: its rigid motion, the same as the dual quaternion's */
-            apply(mats[l[0]], P, N, v, pos, nrm);
-            continue;
-        }
         const float *q0 = dq[l[0]];
         float b[8];
-        for (int i = 0; i < 8; i++) b[i] = w[0] * q0[i];
+        for (int k = 0; k < 8; k++) b[k] = w[0] * q0[k];
         for (int k = 1; k < n; k++) {
             const float *q = dq[l[k]];
             /* the shortest path: quaternions in the first one's hemisphere */
             float wk = q0[0] * q[0] + q0[1] * q[1] + q0[2] * q[2] + q0[3] * q[3] < 0.0f ? -w[k] : w[k];
-            for (int i = 0; i < 8; i++) b[i] += wk * q[i];
+            for (int c = 0; c < 8; c++) b[c] += wk * q[c];
         }
         float inv = 1.0f / sqrtf(b[0] * b[0] + b[1] * b[1] + b[2] * b[2] + b[3] * b[3]);
         float qw = b[0] * inv, qx = b[1] * inv, qy = b[2] * inv, qz = b[3] * inv;
@@ -116,14 +113,33 @@ static void deform_dqs(const sk_hand_surface *s, float mats[SK_HAND_LINK_COUNT][
         float r00 = 1 - 2 * (qy * qy + qz * qz), r01 = 2 * (qx * qy - qw * qz), r02 = 2 * (qx * qz + qw * qy);
         float r10 = 2 * (qx * qy + qw * qz), r11 = 1 - 2 * (qx * qx + qz * qz), r12 = 2 * (qy * qz - qw * qx);
         float r20 = 2 * (qx * qz - qw * qy), r21 = 2 * (qy * qz + qw * qx), r22 = 1 - 2 * (qx * qx + qy * qy);
-        float x = P[3 * v], y = P[3 * v + 1], z = P[3 * v + 2];
-        pos[3 * v] = r00 * x + r01 * y + r02 * z + tx;
-        pos[3 * v + 1] = r10 * x + r11 * y + r12 * z + ty;
-        pos[3 * v + 2] = r20 * x + r21 * y + r22 * z + tz;
-        float a = N[3 * v], bb = N[3 * v + 1], c = N[3 * v + 2];
-        nrm[3 * v] = r00 * a + r01 * bb + r02 * c;
-        nrm[3 * v + 1] = r10 * a + r11 * bb + r12 * c;
-        nrm[3 * v + 2] = r20 * a + r21 * bb + r22 * c;
+        link_columns m = {{r00, r10, r20, 0.0f}, {r01, r11, r21, 0.0f}, {r02, r12, r22, 0.0f}, {tx, ty, tz, 0.0f}};
+        transform(m, P + 3 * v, N + 3 * v, pos + 3 * v, nrm + 3 * v, false);
+    }
+}
+
+/* Part c of `chunks` of every influence group. */
+static void deform_chunk(const sk_hand_surface *s, link_columns *mats, link_dual *dq,
+                         sk_hand_skinning method, int c, int chunks, float *pos, float *nrm)
+{
+    if (method == SK_HAND_SKINNING_RIGID) {
+        size_t V = s->mesh.vertex_count;
+        lbs_group(s, mats, s->links[0], s->weights[0], NULL, V * (size_t)c / (size_t)chunks,
+                  V * (size_t)(c + 1) / (size_t)chunks, 1, pos, nrm);
+        return;
+    }
+    const uint32_t *vs = s->by_influence, *first = s->influence_first;
+    for (int n = 1; n <= 4; n++) {
+        size_t a = first[n - 1], count = first[n] - a;
+        size_t lo = a + count * (size_t)c / (size_t)chunks, hi = a + count * (size_t)(c + 1) / (size_t)chunks;
+        const uint16_t *L = s->links[1];
+        const float *W = s->weights[1];
+        /* one link: its rigid motion, the same as the dual quaternion's */
+        if (n == 1) lbs_group(s, mats, L, W, vs, lo, hi, 1, pos, nrm);
+        else if (method == SK_HAND_SKINNING_DQS) dqs_group(s, dq, vs, lo, hi, n, pos, nrm);
+        else if (n == 2) lbs_group(s, mats, L, W, vs, lo, hi, 2, pos, nrm);
+        else if (n == 3) lbs_group(s, mats, L, W, vs, lo, hi, 3, pos, nrm);
+        else lbs_group(s, mats, L, W, vs, lo, hi, 4, pos, nrm);
     }
 }
 
@@ -132,19 +148,15 @@ static void deform_dqs(const sk_hand_surface *s, float mats[SK_HAND_LINK_COUNT][
 void sk_hand_surface_deform(const sk_hand_surface *s, const sk_hand_frames *frames, sk_hand_skinning method,
                             float *positions, float *normals)
 {
-    float mats[SK_HAND_LINK_COUNT][12];
+    link_columns mats[SK_HAND_LINK_COUNT];
     link_matrices(s, frames, mats);
     size_t V = s->mesh.vertex_count;
     if (method == SK_HAND_SKINNING_DEFAULT) method = SK_HAND_SKINNING_DQS;
-    float dq[SK_HAND_LINK_COUNT][8];
+    link_dual dq[SK_HAND_LINK_COUNT];
     if (method == SK_HAND_SKINNING_DQS) link_dual_quaternions(mats, dq);
     int chunks = V >= PARALLEL_MIN_VERTICES ? 64 : 1;
 #pragma omp parallel for schedule(static) if (chunks > 1)
-    for (int c = 0; c < chunks; c++) {
-        size_t lo = V * (size_t)c / (size_t)chunks, hi = V * (size_t)(c + 1) / (size_t)chunks;
-        if (method == SK_HAND_SKINNING_DQS) deform_dqs(s, mats, dq, lo, hi, positions, normals);
-        else deform_lbs(s, mats, method == SK_HAND_SKINNING_RIGID, lo, hi, positions, normals);
-    }
+    for (int c = 0; c < chunks; c++) deform_chunk(s, mats, dq, method, c, chunks, positions, normals);
 }
 
 sk_result sk_hand_surface_pose(const sk_hand_surface *s, const double dofs[SK_HAND_DOF_COUNT],

@@ -7,10 +7,10 @@
  * increase, and the Gauss-Newton step (curvature 2w of the squared distance) as the
  * fallback direction; limits kept by projection. A solve that can make no more progress
  * stops and says so (converged false, its residual). */
-#include <lapacke.h>
 #include <math.h>
 #include <string.h>
 
+#include "hand/dense_private.h"
 #include "hand/solver_private.h"
 
 /* Free DOFs: not pinned and not held at a limit by a gradient pushing outward. */
@@ -79,9 +79,9 @@ static bool newton_direction(const sk_hand_solver *s, const int *free_dof, int n
         for (int b = 0; b < nf; b++)
             for (int a = 0; a < nf; a++)
                 m[b * nf + a] = hess[free_dof[b] * N_DOF + free_dof[a]] + (a == b ? mu : 0.0);
-        if (LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', nf, m, nf) == 0) {
+        if (sk_hand__cholesky(m, nf)) {
             for (int a = 0; a < nf; a++) d[a] = -grad[free_dof[a]];
-            LAPACKE_dpotrs_work(LAPACK_COL_MAJOR, 'L', nf, 1, m, nf, d, nf);
+            sk_hand__cholesky_solve(m, nf, d, 1);
             return true;
         }
         mu = mu == 0.0 ? 1e-6 * fmax(scale, 1e-12) : mu * 10.0;

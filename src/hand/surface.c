@@ -50,6 +50,7 @@ void sk_hand_surface_destroy(sk_hand_surface *s)
         free(s->weights[i]);
     }
     free(s->influences);
+    free(s->by_influence);
     free(s->export_map);
     free(s->export_uv);
     free(s->export_indices);
@@ -77,7 +78,8 @@ sk_result sk_hand__surface_finish(sk_hand_surface *s, sk_error *err)
         if (!s->links[i] || !s->weights[i]) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin weights");
     }
     s->influences = malloc(V);
-    if (!s->influences) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin weights");
+    s->by_influence = malloc(V * sizeof *s->by_influence);
+    if (!s->influences || !s->by_influence) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin weights");
     field_normals(&s->field, m);
     sk_hand__weights_compute(&s->field, &s->right, m->positions, V, s->links[0], s->weights[0], s->links[1],
                              s->weights[1]);
@@ -86,6 +88,12 @@ sk_result sk_hand__surface_finish(sk_hand_surface *s, sk_error *err)
         while (n < 4 && s->weights[1][4 * v + n] > 0.0f) n++;
         s->influences[v] = (uint8_t)(n ? n : 1);
     }
+    uint32_t fill[5] = {0};
+    for (size_t v = 0; v < V; v++) fill[s->influences[v]]++;
+    s->influence_first[0] = 0;
+    for (int n = 1; n <= 4; n++) s->influence_first[n] = s->influence_first[n - 1] + fill[n];
+    for (int n = 1; n <= 4; n++) fill[n] = s->influence_first[n - 1];
+    for (size_t v = 0; v < V; v++) s->by_influence[fill[s->influences[v]]++] = (uint32_t)v;
     /* the nail plates: vertices on a nail primitive's surface */
     float *nail;
     sk_result r = sk_mesh_add_attribute(m, "nail", 1, &nail, err);

@@ -91,14 +91,21 @@ sk_result sk_hand__atlas_build(sk_hand_surface *s, sk_error *err)
         r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the atlas");
         goto done;
     }
+    /* bounds given beforehand (a level of detail keeps its full surface's, so that one
+       texture fits every level) or those of the mesh */
     float lo[2] = {FLT_MAX, FLT_MAX}, hi[2] = {-FLT_MAX, -FLT_MAX};
-    for (size_t v = 0; v < V; v++)
-        for (int a = 0; a < 2; a++) {
-            lo[a] = fminf(lo[a], m->positions[3 * v + a]);
-            hi[a] = fmaxf(hi[a], m->positions[3 * v + a]);
-        }
-    memcpy(s->atlas_lo, lo, sizeof lo);
-    memcpy(s->atlas_hi, hi, sizeof hi);
+    if (s->atlas_hi[0] > s->atlas_lo[0]) {
+        memcpy(lo, s->atlas_lo, sizeof lo);
+        memcpy(hi, s->atlas_hi, sizeof hi);
+    } else {
+        for (size_t v = 0; v < V; v++)
+            for (int a = 0; a < 2; a++) {
+                lo[a] = fminf(lo[a], m->positions[3 * v + a]);
+                hi[a] = fmaxf(hi[a], m->positions[3 * v + a]);
+            }
+        memcpy(s->atlas_lo, lo, sizeof lo);
+        memcpy(s->atlas_hi, hi, sizeof hi);
+    }
     float cx = 0.5f * (lo[0] + hi[0]), cy = 0.5f * (lo[1] + hi[1]);
     float k = 0.97f * fminf(0.5f / (hi[0] - lo[0]), 1.0f / (hi[1] - lo[1]));
     for (size_t i = 0; i < 2 * V; i++) {

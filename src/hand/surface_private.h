@@ -69,6 +69,13 @@ void sk_hand__relax(sk_hand__trimesh *mesh, const sk_hand__field *field, int ite
 /* Smooths the vertices around crossing triangle pairs until none cross. */
 void sk_hand__untangle(sk_hand__trimesh *mesh, const sk_hand__field *field);
 
+/* 1 if the triangles form a closed, oriented 2-manifold over all vertex_count vertices
+ * (every edge in exactly two triangles wound oppositely, every vertex's triangles one
+ * fan), 0 if not, -1 out of memory; `euler` (may be NULL) gets V - E + F when 1; `bad`
+ * (vertex_count entries, may be NULL) marks the vertices of every defect with 1. */
+int sk_hand__mesh_topology(const uint32_t *tri, size_t triangle_count, size_t vertex_count, long *euler,
+                           uint8_t *bad);
+
 /* Skin weights: 4 links and weights per vertex. */
 void sk_hand__weights_compute(const sk_hand__field *field, const sk_hand_skeleton *right_skeleton,
                               const float *positions, size_t vertex_count, uint16_t *nearest_links,
@@ -84,6 +91,11 @@ struct sk_hand_surface {
     uint16_t *links[2];             /* [0] nearest, [1] smooth: vertex_count x 4 */
     float *weights[2];
     uint8_t *influences;            /* non-zero smooth weights per vertex (1..4) */
+    uint32_t *by_influence;         /* the vertices grouped by influence count, ascending
+                                       within each group: the skinning loops run one
+                                       count at a time, without a branch per vertex */
+    uint32_t influence_first[5];    /* group n (1..4) is by_influence[first[n-1] ..
+                                       first[n]); first[0] = 0 */
     /* atlas: export vertices (seam split) */
     size_t export_count;
     uint32_t *export_map;           /* export vertex -> mesh vertex */

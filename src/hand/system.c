@@ -1,8 +1,8 @@
 /* Assembly of the equilibrium system (K + A'WA) theta = tau_hat - A'Wb (eq. 3.17) and
  * of the energy 1/2 th'K th - tau_hat'th + J (eqs. 3.8, 3.14) whose minimum it is. */
-#include <lapacke.h>
 #include <string.h>
 
+#include "hand/dense_private.h"
 #include "hand/solver_private.h"
 
 void sk_hand__assemble(sk_hand_solver *s)
@@ -82,12 +82,11 @@ sk_result sk_hand__check_positive_definite(const sk_hand_skeleton *skel,
 {
     double h[N_DOF * N_DOF];
     sk_hand__equilibrium_matrix(skel, c, h);
-    lapack_int info = LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', N_DOF, h, N_DOF);
+    int info = sk_hand__cholesky_at(h, N_DOF);
     if (info > 0)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "K + A'WA is not positive definite (Cholesky fails at %s): a negative "
                        "weight outweighs the stiffness",
                        sk_hand_dof((int)info - 1)->name);
-    if (info < 0) return sk_fail(err, SK_ERROR_NUMERIC, "dpotrf: argument %d", (int)-info);
     return SK_OK;
 }

@@ -24,4 +24,17 @@ exr_context_initializer_t sk__exr_initializer(sk__exr_io *io, bool writing);
 sk_result sk__exr_fail(sk_error *err, const sk__exr_io *io, exr_result_t rv, sk_result fallback,
                        const char *path, const char *what);
 
+/* ZIP and ZIPS chunk compression by libdeflate, an exr_encode_pipeline_t compress_fn
+ * (exr_zip.c): the format's byte split and predictor, then a zlib stream at the level
+ * of the sk__exr_zip given as the pipeline's encoding_user_data. The compressed chunk
+ * is malloc'ed and handed to the caller in `chunk` (the pipeline does not own it). */
+typedef struct sk__exr_zip {
+    struct libdeflate_compressor *compressor;
+    uint8_t *scratch;
+    size_t scratch_size;
+    uint8_t *chunk; /* the last chunk's bytes, for the caller to take */
+    size_t chunk_size;
+} sk__exr_zip;
+exr_result_t sk__exr_zip_compress(exr_encode_pipeline_t *encode);
+
 #endif

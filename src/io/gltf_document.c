@@ -154,6 +154,11 @@ static sk_result check_material(const sk_gltf_material_desc *d, sk_error *err)
     if (r == SK_OK) r = sk_check_range_f(err, "metallic", d->metallic, 0.0, 1.0);
     if (r == SK_OK) r = sk_check_range_f(err, "roughness", d->roughness, 0.0, 1.0);
     if (r == SK_OK) r = sk_check_range_f(err, "normal_scale", d->normal_scale, -100.0, 100.0);
+    static const char *const glow[3] = {"emissive[0]", "emissive[1]", "emissive[2]"};
+    for (int c = 0; c < 3 && r == SK_OK; c++) r = sk_check_range_f(err, glow[c], d->emissive[c], 0.0, 1.0);
+    if (r == SK_OK && d->emissive_texture && all_zero(d->emissive, 3))
+        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                    "emissive_texture without an emissive factor: all zero emits nothing");
     return r;
 }
 
@@ -177,7 +182,8 @@ sk_result sk_gltf_add_material(sk_gltf *gltf, const sk_gltf_material_desc *desc,
     m.roughness = desc->roughness > 0.0f ? desc->roughness : 0.5f;
     m.normal_scale = desc->normal_scale != 0.0f ? desc->normal_scale : 1.0f;
     m.double_sided = desc->double_sided;
-    m.base_color_image = m.normal_image = -1;
+    memcpy(m.emissive, desc->emissive, sizeof m.emissive);
+    m.base_color_image = m.normal_image = m.emissive_image = -1;
     /* images are added only once the material is known to be valid, so a failed call
        leaves no unused image behind (an unused object would make the validator report) */
     int first_image = gltf->image_count;
@@ -190,6 +196,10 @@ sk_result sk_gltf_add_material(sk_gltf *gltf, const sk_gltf_material_desc *desc,
     if (r == SK_OK && desc->normal_texture) {
         snprintf(field, sizeof field, "materials[%d].normal_texture", index);
         r = sk__gltf_add_image(gltf, desc->normal_texture, true, field, &m.normal_image, err);
+    }
+    if (r == SK_OK && desc->emissive_texture) {
+        snprintf(field, sizeof field, "materials[%d].emissive_texture", index);
+        r = sk__gltf_add_image(gltf, desc->emissive_texture, false, field, &m.emissive_image, err);
     }
     if (r == SK_OK) {
         m.name = sk__gltf_name(desc->name, "material", index);

@@ -59,6 +59,8 @@ typedef struct sk__gltf_material {
     int normal_image;
     float normal_scale;
     bool double_sided;
+    float emissive[3];
+    int emissive_image;
 } sk__gltf_material;
 
 typedef struct sk__gltf_mesh {

@@ -142,6 +142,8 @@ static void write_meshes(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
     }
 }
 
+static bool all_zero3(const float *v) { return v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f; }
+
 static void write_materials(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
 {
     if (g->image_count > 0) {
@@ -182,6 +184,11 @@ static void write_materials(sk__gltf_out *out, cJSON *root, const sk_gltf *g)
             cJSON *tex = J(cJSON_AddObjectToObject(mat, "normalTexture"));
             if (tex) add_number(out, tex, "index", m->normal_image);
             if (tex && m->normal_scale != 1.0f) add_number(out, tex, "scale", m->normal_scale);
+        }
+        if (!all_zero3(m->emissive)) add_floats(out, mat, "emissiveFactor", m->emissive, 3);
+        if (m->emissive_image >= 0) {
+            cJSON *tex = J(cJSON_AddObjectToObject(mat, "emissiveTexture"));
+            if (tex) add_number(out, tex, "index", m->emissive_image);
         }
         bool blend =
             c[3] < 1.0f || (m->base_color_image >= 0 && g->images[m->base_color_image].has_alpha);

@@ -42,7 +42,7 @@ sk_result sk__mesh_create_capped(sk_mesh *mesh, size_t vertex_count, size_t tria
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%zu triangles need vertices",
                        triangle_count);
     size_t bytes;
-    if (vertex_count > (size_t)UINT32_MAX + 1 ||
+    if ((uint64_t)vertex_count > (uint64_t)UINT32_MAX + 1 || /* in 64 bits: a 32-bit size_t wraps */
         !sk__mesh_bytes(vertex_count, triangle_count, flags, 0, &bytes) || bytes > max_bytes)
         return sk_fail(err, SK_ERROR_LIMIT,
                        "a mesh of %zu vertices and %zu triangles exceeds the cap of %zu bytes",

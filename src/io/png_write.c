@@ -1,112 +1,83 @@
-/* PNG writer (libpng): 8/16-bit grey, grey+alpha, RGB, RGBA with the sRGB curve or linear
- * codes, text metadata as tEXt (ASCII) or iTXt (UTF-8) chunks, written atomically to a file
- * or into memory (the same bytes). */
+/* PNG writer: 8/16-bit grey, grey+alpha, RGB, RGBA with the sRGB curve or linear codes,
+ * text metadata as tEXt (ASCII) or iTXt (UTF-8) chunks. The chunks and their CRCs are
+ * written here (PNG spec, ISO/IEC 15948); the image data is filtered with one fixed
+ * filter and compressed by libdeflate in strips of about a megabyte, in parallel for
+ * large images, joined into the single zlib stream PNG requires (deflate_join.c). The
+ * strips depend only on the image size, so the bytes are the same for any thread count.
+ * Written atomically to a file, or into memory (the same bytes). */
 #define _POSIX_C_SOURCE 200809L
-#include <math.h>
-#include <setjmp.h>
+#include <libdeflate.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/deflate_join.h"
 #include "io/image_internal.h"
-#include "io/png_internal.h"
+#include "io/png_encode.h"
+#include "io/png_quantize.h"
 #include "shitsukan/image.h"
 #include "shitsukan/io.h"
 
-/* Everything that changes after setjmp lives here, outside the frame of the function that
- * calls setjmp, so no local can be clobbered by the long jump. */
-typedef struct png_writer {
-    sk__png_error error;
-    const sk_image *image;
-    int bit_depth;
-    int compression_level;
-    sk_png_encoding encoding;
-    FILE *fp;
-    png_structp png;
-    png_infop info;
-    unsigned char *row;
-    /* Code k + 1 starts at linear value threshold8[k] (8-bit sRGB quantisation). */
-    double threshold8[255];
-    sk_image_metadata text_store; /* writable copy: png_text wants non-const strings */
-    png_text texts[SK_IMAGE_MAX_METADATA];
-    int text_count;
-} png_writer;
+/* Raw (filtered) bytes per strip: large enough that restarting the compressor's window
+ * at a strip costs little, small enough that a 2048 x 2048 RGB image has a dozen. */
+#define STRIP_BYTES ((size_t)1 << 20)
+/* Strips encoded before their chunks are written: bounds the memory held at once. */
+#define STRIPS_IN_FLIGHT 16
+/* Filter type of every row (PNG spec 9.2): Up, the difference from the row above,
+ * suits textures whose structure runs down the image (wood grain, rendered surfaces) and
+ * costs one subtraction; see docs/images.md for the measurements behind the choice. */
+#define ROW_FILTER 2
+/* libdeflate level when the desc leaves it at 0. */
+#define DEFAULT_LEVEL 6
 
-static bool is_alpha_channel(int channel, int channels)
+/* ------------------------------------------------------------------ chunks */
+
+static void put32(uint8_t *p, uint32_t v)
 {
-    return (channels == 2 && channel == 1) || (channels == 4 && channel == 3);
+    p[0] = (uint8_t)(v >> 24);
+    p[1] = (uint8_t)(v >> 16);
+    p[2] = (uint8_t)(v >> 8);
+    p[3] = (uint8_t)v;
 }
 
-static unsigned quantize_linear(double v, unsigned max_code)
+typedef struct png_out {
+    sk__png_sink *sink;
+    bool ok;
+} png_out;
+
+static void emit(png_out *o, const void *data, size_t size)
 {
-    if (!(v > 0.0)) return 0; /* also NaN */
-    if (v >= 1.0) return max_code;
-    return (unsigned)floor(v * max_code + 0.5);
+    if (o->ok && size > 0) o->ok = o->sink->write(o->sink->context, data, size);
 }
 
-static unsigned quantize_srgb8(const png_writer *w, float v)
+/* A chunk: length, type, data and the CRC-32 of type and data (`crc` given, or 0 to
+ * compute it here). */
+static void emit_chunk_crc(png_out *o, const char type[4], const uint8_t *data, size_t size,
+                           uint32_t crc)
 {
-    if (!(v > 0.0f)) return 0;
-    unsigned lo = 0, hi = 255; /* answer in [lo, hi] */
-    while (lo < hi) {
-        unsigned mid = (lo + hi + 1) / 2;
-        if ((double)v >= w->threshold8[mid - 1])
-            lo = mid;
-        else
-            hi = mid - 1;
-    }
-    return lo;
+    uint8_t head[8], tail[4];
+    put32(head, (uint32_t)size);
+    memcpy(head + 4, type, 4);
+    put32(tail, crc);
+    emit(o, head, 8);
+    emit(o, data, size);
+    emit(o, tail, 4);
 }
 
-static unsigned quantize(const png_writer *w, float v, int channel)
+static uint32_t chunk_crc(const char type[4], const uint8_t *data, size_t size)
 {
-    unsigned max_code = w->bit_depth == 16 ? 65535u : 255u;
-    if (w->encoding == SK_PNG_ENCODING_LINEAR || is_alpha_channel(channel, w->image->channels))
-        return quantize_linear(v, max_code);
-    if (w->bit_depth == 8) return quantize_srgb8(w, v);
-    if (!(v > 0.0f)) return 0;
-    return quantize_linear(sk__srgb_encode(v >= 1.0f ? 1.0 : v), max_code);
+    /* (libdeflate_crc32 with a NULL buffer returns the initial value, not crc) */
+    uint32_t crc = libdeflate_crc32(0, type, 4);
+    return size > 0 ? libdeflate_crc32(crc, data, size) : crc;
 }
 
-static void fill_row(png_writer *w, int y)
+static void emit_chunk(png_out *o, const char type[4], const uint8_t *data, size_t size)
 {
-    const sk_image *im = w->image;
-    const float *src = sk_image_pixel(im, 0, y);
-    size_t n = (size_t)im->width * (size_t)im->channels;
-    for (size_t i = 0; i < n; i++) {
-        unsigned code = quantize(w, src[i], (int)(i % (size_t)im->channels));
-        if (w->bit_depth == 16) {
-            w->row[2 * i] = (unsigned char)(code >> 8); /* PNG samples are big-endian */
-            w->row[2 * i + 1] = (unsigned char)(code & 0xff);
-        } else {
-            w->row[i] = (unsigned char)code;
-        }
-    }
+    emit_chunk_crc(o, type, data, size, chunk_crc(type, data, size));
 }
 
-/* Drives libpng; returns false after a libpng error (message in w->error). */
-static bool write_body(png_writer *w)
-{
-    if (setjmp(png_jmpbuf(w->png))) return false;
-    static const int color_types[5] = {0, PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA,
-                                       PNG_COLOR_TYPE_RGB, PNG_COLOR_TYPE_RGB_ALPHA};
-    png_init_io(w->png, w->fp);
-    png_set_compression_level(w->png, w->compression_level);
-    png_set_IHDR(w->png, w->info, (png_uint_32)w->image->width, (png_uint_32)w->image->height,
-                 w->bit_depth, color_types[w->image->channels], PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    /* Linear data (height, normal and mask maps) gets no colour-space chunk at all: a
-       gAMA of 1.0 would make some viewers brighten it, and it must not claim sRGB. */
-    if (w->encoding == SK_PNG_ENCODING_SRGB)
-        png_set_sRGB_gAMA_and_cHRM(w->png, w->info, PNG_sRGB_INTENT_PERCEPTUAL);
-    if (w->text_count > 0) png_set_text(w->png, w->info, w->texts, w->text_count);
-    png_write_info(w->png, w->info);
-    for (int y = 0; y < w->image->height; y++) {
-        fill_row(w, y);
-        png_write_row(w->png, w->row);
-    }
-    png_write_end(w->png, NULL);
-    return true;
-}
+/* ------------------------------------------------------------------ text */
 
 static bool is_ascii(const char *s)
 {
@@ -148,116 +119,303 @@ static bool is_valid_utf8(const unsigned char *s)
 
 /* A PNG keyword is 1-79 printable Latin-1 characters without leading, trailing or
  * doubled spaces (PNG spec 11.3.4.2); keys are restricted to the ASCII part of that. */
-static sk_result check_text(const sk_image_metadata_entry *e, sk_error *err)
+static sk_result check_text(const char *key, const char *value, sk_error *err)
 {
-    size_t n = strlen(e->key);
-    bool ok = n >= 1 && n <= 79 && e->key[0] != ' ' && e->key[n - 1] != ' ';
+    size_t n = strlen(key);
+    bool ok = n >= 1 && n <= 79 && key[0] != ' ' && key[n - 1] != ' ';
     for (size_t i = 0; ok && i < n; i++) {
-        unsigned char c = (unsigned char)e->key[i];
-        if (c < 0x20 || c > 0x7e || (c == ' ' && e->key[i + 1] == ' ')) ok = false;
+        unsigned char c = (unsigned char)key[i];
+        if (c < 0x20 || c > 0x7e || (c == ' ' && key[i + 1] == ' ')) ok = false;
     }
     if (!ok)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "metadata key \"%s\" is not a PNG keyword (1-79 printable ASCII "
                        "characters, no leading, trailing or double spaces)",
-                       e->key);
-    if (!is_valid_utf8((const unsigned char *)e->value))
+                       key);
+    if (!is_valid_utf8((const unsigned char *)value))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "metadata value of \"%s\" is not valid UTF-8", e->key);
+                       "metadata value of \"%s\" is not valid UTF-8", key);
     return SK_OK;
 }
 
-static sk_result prepare_texts(png_writer *w, const sk_image_metadata *meta, sk_error *err)
+/* The entry's key and value, terminated (the entries are caller-filled fixed arrays). */
+static void entry_text(const sk_image_metadata_entry *e, char *key, char *value)
+{
+    memcpy(key, e->key, sizeof e->key);
+    key[sizeof e->key - 1] = '\0';
+    memcpy(value, e->value, sizeof e->value);
+    value[sizeof e->value - 1] = '\0';
+}
+
+static sk_result check_metadata(const sk_image_metadata *meta, sk_error *err)
 {
     if (!meta) return SK_OK;
     if (meta->count < 0 || meta->count > SK_IMAGE_MAX_METADATA)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "metadata count = %d is out of range [0, %d]", meta->count,
                        SK_IMAGE_MAX_METADATA);
-    w->text_store = *meta;
     for (int i = 0; i < meta->count; i++) {
-        sk_image_metadata_entry *e = &w->text_store.entries[i];
-        /* Terminate defensively: the entries are caller-filled fixed-size arrays. */
-        e->key[sizeof e->key - 1] = '\0';
-        e->value[sizeof e->value - 1] = '\0';
-        sk_result r = check_text(e, err);
+        char key[sizeof meta->entries[0].key], value[sizeof meta->entries[0].value];
+        entry_text(&meta->entries[i], key, value);
+        sk_result r = check_text(key, value, err);
         if (r != SK_OK) return r;
-        png_text *t = &w->texts[i];
-        memset(t, 0, sizeof *t);
-        t->key = e->key;
-        t->text = e->value;
-        t->text_length = strlen(e->value);
-        /* tEXt is Latin-1, so anything beyond ASCII goes into an iTXt chunk (UTF-8). */
-        if (is_ascii(e->value)) {
-            t->compression = PNG_TEXT_COMPRESSION_NONE;
-        } else {
-            t->compression = PNG_ITXT_COMPRESSION_NONE;
-            t->itxt_length = t->text_length;
-            t->lang = (png_charp) "";
-            t->lang_key = (png_charp) "";
-        }
     }
-    w->text_count = meta->count;
     return SK_OK;
 }
 
-/* Checks the image and the desc and fills in the desc's defaults. */
+/* tEXt is Latin-1, so anything beyond ASCII goes into an iTXt chunk (UTF-8, no
+ * compression, empty language tag and translated keyword). */
+static void emit_text(png_out *o, const sk_image_metadata_entry *e)
+{
+    char key[sizeof e->key], value[sizeof e->value];
+    entry_text(e, key, value);
+    uint8_t data[sizeof e->key + sizeof e->value + 8];
+    size_t nk = strlen(key), nv = strlen(value), n = 0;
+    memcpy(data, key, nk + 1);
+    n = nk + 1;
+    bool ascii = is_ascii(value);
+    if (!ascii) {
+        data[n++] = 0; /* compression flag */
+        data[n++] = 0; /* compression method */
+        data[n++] = 0; /* language tag */
+        data[n++] = 0; /* translated keyword */
+    }
+    memcpy(data + n, value, nv);
+    emit_chunk(o, ascii ? "tEXt" : "iTXt", data, n + nv);
+}
+
+static void emit_header(png_out *o, const sk_image *image, int bit_depth, sk_png_encoding encoding,
+                        const sk_image_metadata *meta)
+{
+    static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const uint8_t color_types[5] = {0, 0, 4, 2, 6}; /* grey, grey+alpha, RGB, RGBA */
+    emit(o, signature, sizeof signature);
+    uint8_t ihdr[13];
+    put32(ihdr, (uint32_t)image->width);
+    put32(ihdr + 4, (uint32_t)image->height);
+    ihdr[8] = (uint8_t)bit_depth;
+    ihdr[9] = color_types[image->channels];
+    ihdr[10] = 0; /* deflate */
+    ihdr[11] = 0; /* adaptive filtering with the five basic filters */
+    ihdr[12] = 0; /* not interlaced */
+    emit_chunk(o, "IHDR", ihdr, sizeof ihdr);
+    /* sRGB data says so, with the gAMA and cHRM values the PNG spec recommends beside an
+       sRGB chunk (11.3.3.5); linear data (height, normal and mask maps) gets no colour-space
+       chunk at all: a gAMA of 1.0 would make some viewers brighten it. */
+    if (encoding == SK_PNG_ENCODING_SRGB) {
+        uint8_t intent = 0; /* perceptual */
+        emit_chunk(o, "sRGB", &intent, 1);
+        uint8_t gama[4];
+        put32(gama, 45455);
+        emit_chunk(o, "gAMA", gama, 4);
+        static const uint32_t chrm_values[8] = {31270, 32900, 64000, 33000,
+                                                30000, 60000, 15000, 6000};
+        uint8_t chrm[32];
+        for (int i = 0; i < 8; i++) put32(chrm + 4 * i, chrm_values[i]);
+        emit_chunk(o, "cHRM", chrm, sizeof chrm);
+    }
+    for (int i = 0; meta && i < meta->count; i++) emit_text(o, &meta->entries[i]);
+}
+
+/* ------------------------------------------------------------------ image data */
+
+typedef struct png_job {
+    const sk_image *image;
+    sk__png_quantizer *quantizer;
+    size_t row_bytes; /* sample bytes of a row (without the filter byte) */
+    int rows_per_strip, strips, level;
+} png_job;
+
+/* One strip's IDAT data: the zlib header before the first strip's DEFLATE bytes, room for
+ * the Adler-32 after the last's. */
+typedef struct strip_out {
+    uint8_t *bytes;
+    size_t size, raw_size;
+    uint32_t adler, crc; /* Adler-32 of the strip's filtered bytes; the chunk's CRC */
+} strip_out;
+
+/* What one thread needs to encode strips. */
+typedef struct strip_worker {
+    struct libdeflate_compressor *compressor;
+    uint8_t *prev, *cur, *raw;
+} strip_worker;
+
+static void worker_free(strip_worker *w)
+{
+    if (w->compressor) libdeflate_free_compressor(w->compressor);
+    free(w->prev);
+    free(w->cur);
+    free(w->raw);
+    memset(w, 0, sizeof *w);
+}
+
+static bool worker_init(strip_worker *w, const png_job *job)
+{
+    memset(w, 0, sizeof *w);
+    w->compressor = libdeflate_alloc_compressor(job->level);
+    w->prev = malloc(job->row_bytes);
+    w->cur = malloc(job->row_bytes);
+    w->raw = malloc((size_t)job->rows_per_strip * (job->row_bytes + 1));
+    if (w->compressor && w->prev && w->cur && w->raw) return true;
+    worker_free(w);
+    return false;
+}
+
+/* Filters and compresses strip s into out (false on allocation failure). */
+static bool encode_strip(const png_job *job, strip_worker *w, int s, strip_out *out)
+{
+    const sk_image *im = job->image;
+    int y0 = s * job->rows_per_strip;
+    int y1 = y0 + job->rows_per_strip < im->height ? y0 + job->rows_per_strip : im->height;
+    size_t rb = job->row_bytes, n = (size_t)(y1 - y0) * (rb + 1);
+    if (y0 > 0)
+        sk__png_quantize_row(job->quantizer, sk_image_pixel(im, 0, y0 - 1), im->width, w->prev);
+    else
+        memset(w->prev, 0, rb); /* the row above the first is zeros */
+    for (int y = y0; y < y1; y++) {
+        uint8_t *row = w->raw + (size_t)(y - y0) * (rb + 1);
+        sk__png_quantize_row(job->quantizer, sk_image_pixel(im, 0, y), im->width, w->cur);
+        row[0] = ROW_FILTER;
+        for (size_t i = 0; i < rb; i++) row[1 + i] = (uint8_t)(w->cur[i] - w->prev[i]);
+        uint8_t *t = w->prev;
+        w->prev = w->cur;
+        w->cur = t;
+    }
+    bool first = s == 0, last = s == job->strips - 1;
+    size_t bound = libdeflate_deflate_compress_bound(w->compressor, n);
+    size_t stored = sk__deflate_stored_bound(n);
+    size_t cap = 2 + (bound > stored ? bound : stored) + 5 + 4;
+    out->bytes = malloc(cap);
+    if (!out->bytes) return false;
+    out->raw_size = n;
+    out->adler = libdeflate_adler32(1, w->raw, n);
+    size_t head = first ? 2 : 0;
+    if (first) {
+        out->bytes[0] = 0x78; /* deflate, 32 KiB window */
+        out->bytes[1] = 0x9c; /* default level flag, check bits: 0x789c % 31 == 0 */
+    }
+    uint8_t *d = out->bytes + head;
+    size_t m = libdeflate_deflate_compress(w->compressor, w->raw, n, d, cap - head - 9);
+    /* a strip that does not compress or join (never seen: the walk reads what libdeflate
+       writes) is stored, which joins by construction */
+    if (m == 0 || (!last && !sk__deflate_make_continuable(d, &m))) m = sk__deflate_store(w->raw, n, last, d);
+    out->size = head + m;
+    if (!last) out->crc = chunk_crc("IDAT", out->bytes, out->size);
+    return true;
+}
+
+/* Encodes and writes the strips as IDAT chunks, STRIPS_IN_FLIGHT at a time, in parallel
+ * when there are several. */
+static sk_result emit_image_data(png_out *o, const png_job *job, sk_error *err)
+{
+    int in_flight = job->strips < STRIPS_IN_FLIGHT ? job->strips : STRIPS_IN_FLIGHT;
+    strip_out *outs = calloc((size_t)in_flight, sizeof *outs);
+    if (!outs) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the PNG strips");
+    bool memory_ok = true;
+    uint32_t adler = 1;
+    /* small images stay on the calling thread: a parallel region would cost more than
+       their one strip */
+#pragma omp parallel if (job->strips > 1)
+    {
+        strip_worker w;
+        bool have = worker_init(&w, job);
+        if (!have) {
+#pragma omp atomic write
+            memory_ok = false;
+        }
+        for (int g = 0; g < job->strips; g += in_flight) {
+            int count = job->strips - g < in_flight ? job->strips - g : in_flight;
+#pragma omp for schedule(dynamic, 1)
+            for (int k = 0; k < count; k++) {
+                bool ok;
+#pragma omp atomic read
+                ok = memory_ok;
+                if (!ok || !have) continue;
+                if (!encode_strip(job, &w, g + k, &outs[k])) {
+#pragma omp atomic write
+                    memory_ok = false;
+                }
+            }
+#pragma omp single
+            {
+                for (int k = 0; k < count; k++) {
+                    strip_out *so = &outs[k];
+                    if (memory_ok && o->ok) {
+                        adler = g + k == 0 ? so->adler : sk__adler32_combine(adler, so->adler, so->raw_size);
+                        if (g + k == job->strips - 1) {
+                            put32(so->bytes + so->size, adler);
+                            so->size += 4;
+                            so->crc = chunk_crc("IDAT", so->bytes, so->size);
+                        }
+                        emit_chunk_crc(o, "IDAT", so->bytes, so->size, so->crc);
+                    }
+                    free(so->bytes);
+                    so->bytes = NULL;
+                }
+            }
+        }
+        if (have) worker_free(&w);
+    }
+    free(outs);
+    if (!memory_ok) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory while compressing the PNG");
+    return SK_OK;
+}
+
+/* The desc with its defaults filled in, checked. */
 static sk_result resolve_desc(const sk_image *image, const sk_png_write_desc *desc,
-                              sk_png_write_desc *out, sk_error *err)
+                              sk_png_write_desc *d, sk_error *err)
 {
     sk_result r = sk__image_validate(image, err);
     if (r != SK_OK) return r;
-    sk_png_write_desc d = {0};
-    if (desc) d = *desc;
-    if (d.bit_depth == 0) d.bit_depth = 8;
-    if (d.bit_depth != 8 && d.bit_depth != 16)
+    memset(d, 0, sizeof *d);
+    if (desc) *d = *desc;
+    if (d->bit_depth == 0) d->bit_depth = 8;
+    if (d->bit_depth != 8 && d->bit_depth != 16)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "bit_depth = %d: must be 8 or 16",
-                       d.bit_depth);
-    if (d.compression_level == 0) d.compression_level = 6;
-    r = sk_check_range_i(err, "compression_level", d.compression_level, 1, 9);
+                       d->bit_depth);
+    if (d->compression_level == 0) d->compression_level = DEFAULT_LEVEL;
+    r = sk_check_range_i(err, "compression_level", d->compression_level, 1, 9);
     if (r != SK_OK) return r;
-    if (d.encoding == SK_PNG_ENCODING_DEFAULT) d.encoding = SK_PNG_ENCODING_SRGB;
-    if (d.encoding != SK_PNG_ENCODING_SRGB && d.encoding != SK_PNG_ENCODING_LINEAR)
+    if (d->encoding == SK_PNG_ENCODING_DEFAULT) d->encoding = SK_PNG_ENCODING_SRGB;
+    if (d->encoding != SK_PNG_ENCODING_SRGB && d->encoding != SK_PNG_ENCODING_LINEAR)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "encoding = %d is not a sk_png_encoding",
-                       (int)d.encoding);
-    *out = d;
-    return SK_OK;
+                       (int)d->encoding);
+    return check_metadata(d->metadata, err);
 }
 
-/* Encodes the image into an open stream (a file or memory); `name` labels messages. */
-static sk_result write_stream(const sk_image *image, const sk_png_write_desc *d, FILE *fp,
-                              const char *name, sk_error *err)
+/* Encodes with a resolved desc. */
+static sk_result encode(const sk_image *image, const sk_png_write_desc *d, sk__png_sink *sink,
+                        const char *name, sk_error *err)
 {
-    png_writer *w = calloc(1, sizeof *w);
-    if (!w) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
-    w->image = image;
-    w->bit_depth = d->bit_depth;
-    w->encoding = d->encoding;
-    w->compression_level = d->compression_level;
-    w->fp = fp;
-    sk_result r = prepare_texts(w, d->metadata, err);
-    if (r != SK_OK) {
-        free(w);
-        return r;
-    }
-    /* Thresholds in double straight from the curve (not through float) so that the
-       search gives the same code as rounding 255 * srgb(v). */
-    for (int k = 0; k < 255; k++) w->threshold8[k] = sk__srgb_decode((k + 0.5) / 255.0);
-    size_t row_bytes = (size_t)image->width * (size_t)image->channels * (size_t)(d->bit_depth / 8);
-    w->row = malloc(row_bytes);
-    if (w->row)
-        w->png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w->error, sk__png_on_error,
-                                         sk__png_on_warning);
-    if (w->png) w->info = png_create_info_struct(w->png);
-    if (!w->row || !w->png || !w->info) {
-        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "%s: cannot set up libpng", name);
-    } else if (!write_body(w)) {
-        r = sk_fail(err, SK_ERROR_IO, "%s: PNG write failed (%s)", name, w->error.message);
-    }
-    png_destroy_write_struct(&w->png, &w->info);
-    free(w->row);
-    free(w);
+    sk__png_quantizer *q = malloc(sizeof *q);
+    if (!q) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    sk__png_quantizer_init(q, image->channels, d->bit_depth, d->encoding);
+    png_job job = {.image = image, .quantizer = q, .level = d->compression_level};
+    job.row_bytes = (size_t)image->width * (size_t)image->channels * (size_t)(d->bit_depth / 8);
+    size_t rows = STRIP_BYTES / (job.row_bytes + 1);
+    job.rows_per_strip = rows < 1 ? 1 : (rows > (size_t)image->height ? image->height : (int)rows);
+    job.strips = (image->height + job.rows_per_strip - 1) / job.rows_per_strip;
+
+    png_out o = {.sink = sink, .ok = true};
+    emit_header(&o, image, d->bit_depth, d->encoding, d->metadata);
+    sk_result r = emit_image_data(&o, &job, err);
+    if (r == SK_OK) emit_chunk(&o, "IEND", NULL, 0);
+    free(q);
+    if (r == SK_OK && !o.ok) r = sk_fail(err, SK_ERROR_IO, "%s: PNG write failed", name);
     return r;
+}
+
+sk_result sk__png_encode(const sk_image *image, const sk_png_write_desc *desc, sk__png_sink *sink,
+                         const char *name, sk_error *err)
+{
+    sk_png_write_desc d;
+    sk_result r = resolve_desc(image, desc, &d, err);
+    return r == SK_OK ? encode(image, &d, sink, name, err) : r;
+}
+
+static bool file_write(void *context, const void *data, size_t size)
+{
+    return fwrite(data, 1, size, (FILE *)context) == size;
 }
 
 sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_png_write_desc *desc,
@@ -268,12 +426,40 @@ sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_p
     if (r != SK_OK) return r;
     if (!path) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "output path is NULL");
     sk_atomic_file file;
-    if ((r = sk_atomic_file_open(&file, path, err)) != SK_OK) return r;
-    if ((r = write_stream(image, &d, file.fp, path, err)) != SK_OK) {
+    r = sk_atomic_file_open(&file, path, err);
+    if (r != SK_OK) return r;
+    sk__png_sink sink = {file_write, file.fp};
+    r = encode(image, &d, &sink, path, err);
+    if (r != SK_OK) {
         sk_atomic_file_abort(&file);
         return r;
     }
     return sk_atomic_file_commit(&file, err);
+}
+
+/* A growing buffer as a sink. */
+typedef struct memory_sink {
+    uint8_t *data;
+    size_t size, capacity;
+} memory_sink;
+
+static bool memory_write(void *context, const void *data, size_t size)
+{
+    memory_sink *m = context;
+    if (size > m->capacity - m->size) {
+        size_t capacity = m->capacity ? m->capacity : 1 << 16;
+        while (capacity - m->size < size) {
+            if (capacity > SIZE_MAX / 2) return false;
+            capacity *= 2;
+        }
+        uint8_t *grown = realloc(m->data, capacity);
+        if (!grown) return false;
+        m->data = grown;
+        m->capacity = capacity;
+    }
+    memcpy(m->data + m->size, data, size);
+    m->size += size;
+    return true;
 }
 
 sk_result sk_image_write_png_memory(const sk_image *image, const sk_png_write_desc *desc,
@@ -286,19 +472,17 @@ sk_result sk_image_write_png_memory(const sk_image *image, const sk_png_write_de
     sk_png_write_desc d;
     sk_result r = resolve_desc(image, desc, &d, err);
     if (r != SK_OK) return r;
-    char *buffer = NULL;
-    size_t size = 0;
-    FILE *fp = open_memstream(&buffer, &size);
-    if (!fp) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a PNG stream");
-    r = write_stream(image, &d, fp, "PNG in memory", err);
-    if (fclose(fp) != 0 && r == SK_OK)
-        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a PNG of %dx%d",
-                    image->width, image->height);
+    memory_sink m = {0};
+    sk__png_sink sink = {memory_write, &m};
+    r = encode(image, &d, &sink, "PNG in memory", err);
+    if (r == SK_ERROR_IO) /* the only way memory fails */
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a PNG of %dx%d", image->width,
+                    image->height);
     if (r != SK_OK) {
-        free(buffer);
+        free(m.data);
         return r;
     }
-    *out_data = (uint8_t *)buffer;
-    *out_size = size;
+    *out_data = m.data;
+    *out_size = m.size;
     return SK_OK;
 }

@@ -1,5 +1,6 @@
 /* The inverse of binding: a desc written back as JSON through its schema, and the
- * schema printed as a table of key paths, types, ranges and docs (for --help-keys). */
+ * schema printed as a table of key paths, types, ranges and docs (for --help-keys) or
+ * described as JSON (for interfaces that build a control per key). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -172,3 +173,74 @@ static void print_fields(const sk_schema *schema, const char *prefix, FILE *out)
 }
 
 void sk_schema_print(const sk_schema *schema, FILE *out) { print_fields(schema, "", out); }
+
+static const char *field_kind(const sk_schema_field *f)
+{
+    switch (f->type) {
+    case SK_FIELD_FLOAT: return "float";
+    case SK_FIELD_DOUBLE: return "double";
+    case SK_FIELD_INT: return "int";
+    case SK_FIELD_SEED: return "seed";
+    case SK_FIELD_BOOL: return "bool";
+    case SK_FIELD_ENUM: return "enum";
+    case SK_FIELD_STRING: return "string";
+    case SK_FIELD_FLOATS: return "floats";
+    case SK_FIELD_OBJECT: return "object";
+    case SK_FIELD_ARRAY: return "array";
+    }
+    return "?";
+}
+
+static cJSON *describe_fields(const sk_schema *schema)
+{
+    cJSON *list = cJSON_CreateArray();
+    for (int i = 0; i < schema->field_count; i++) {
+        const sk_schema_field *f = &schema->fields[i];
+        cJSON *o = cJSON_CreateObject();
+        if (f->key) cJSON_AddStringToObject(o, "key", f->key);
+        else cJSON_AddNullToObject(o, "key");
+        cJSON_AddStringToObject(o, "type", field_kind(f));
+        switch (f->type) {
+        case SK_FIELD_FLOAT:
+        case SK_FIELD_DOUBLE:
+        case SK_FIELD_INT:
+        case SK_FIELD_FLOATS:
+            cJSON_AddNumberToObject(o, "min", f->min);
+            cJSON_AddNumberToObject(o, "max", f->max);
+            break;
+        case SK_FIELD_SEED:
+            cJSON_AddNumberToObject(o, "min", 0);
+            cJSON_AddNumberToObject(o, "max", 9007199254740992.0);
+            break;
+        default:
+            break;
+        }
+        if (f->type == SK_FIELD_FLOATS || f->type == SK_FIELD_ARRAY) {
+            bool fixed = f->count_offset == SK_FIELD_FIXED;
+            cJSON_AddNumberToObject(o, "min_count", fixed ? f->count : f->min_count);
+            cJSON_AddNumberToObject(o, "max_count", f->count);
+        }
+        if (f->type == SK_FIELD_STRING) cJSON_AddNumberToObject(o, "max_length", f->count - 1);
+        if (f->type == SK_FIELD_ENUM) {
+            cJSON *names = cJSON_CreateArray();
+            for (int k = 0; f->names && f->names[k]; k++)
+                cJSON_AddItemToArray(names, cJSON_CreateString(f->names[k]));
+            cJSON_AddItemToObject(o, "names", names);
+        }
+        if (f->doc) cJSON_AddStringToObject(o, "doc", f->doc);
+        if (f->type == SK_FIELD_OBJECT || f->type == SK_FIELD_ARRAY)
+            cJSON_AddItemToObject(o, "fields", describe_fields(f->schema));
+        cJSON_AddItemToArray(list, o);
+    }
+    return list;
+}
+
+char *sk_schema_describe_json(const sk_schema *schema)
+{
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddStringToObject(root, "name", schema->name ? schema->name : "");
+    cJSON_AddItemToObject(root, "fields", describe_fields(schema));
+    char *text = cJSON_PrintUnformatted(root);
+    cJSON_Delete(root);
+    return text;
+}

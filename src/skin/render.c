@@ -4,7 +4,6 @@
  * region renders the same bytes as the whole map, and rows run in parallel with the same
  * result for any thread count. */
 #include <math.h>
-#include <omp.h>
 
 #include "core/loop_progress.h"
 #include "skin/skin_internal.h"

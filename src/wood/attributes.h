@@ -1,5 +1,5 @@
 /* The unified end-grain attribute array C'(t, theta) (Kawai 2000 sec. 6.3): the ring
- * reflectance (earlywood/latewood profile across each ring) times an independent
+ * reflectance (earlywood/latewood profile across each ring) plus an independent
  * brightness shift per cell of the end grain (sec. 6.1, 6.2), looked up through the grain
  * transform. */
 #ifndef SK_WOOD_ATTRIBUTES_H
@@ -10,16 +10,41 @@
 #include "shitsukan/wood.h"
 #include "wood/numeric.h"
 
+#define SK__SHIFT_TABLE 4096
+
 typedef struct sk__attributes {
     sk_vec3f earlywood, latewood, vessel; /* linear RGB */
     /* latewood weight across a ring (u = t - floor(t)): 0 up to early_end, rising linearly
        to 1 at late_start, 1 until the ring's end */
     double early_end, late_start, per_year; /* per_year = integral over one ring */
-    double shift;                           /* largest darkening of a cell */
+    double shift;                           /* spread of the cells' shifts */
+    bool shift_add;                         /* the paper's added shift (else multiplied) */
     double rows_per_year;                   /* cell rows per unit of t */
     double length, inv_length;              /* fibre length (0 = endless) */
     uint64_t seed;
+    /* the sRGB curve both ways on [0, 1] at SK__SHIFT_TABLE + 1 points, linear between
+       (errors below 2e-5, a twentieth of an 8-bit code), for the added shift */
+    float to_srgb[SK__SHIFT_TABLE + 1], from_srgb[SK__SHIFT_TABLE + 1];
 } sk__attributes;
+
+/* value f(x) of a table of SK__SHIFT_TABLE + 1 points over [0, 1], x clamped */
+static inline float sk__attributes_table(const float *table, float x)
+{
+    x = x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x);
+    float u = x * (float)SK__SHIFT_TABLE;
+    int i = (int)u;
+    i = i > SK__SHIFT_TABLE - 1 ? SK__SHIFT_TABLE - 1 : i;
+    return table[i] + (u - (float)i) * (table[i + 1] - table[i]);
+}
+
+/* A linear colour channel c with the cell's shift applied (u: the cell's uniform number,
+ * sk__attributes_cell): the paper's brightness plus shift (u - 1/2), or c (1 - shift u). */
+static inline float sk__attributes_shifted(const sk__attributes *a, float c, double u)
+{
+    if (!a->shift_add) return c * (float)(1.0 - a->shift * u);
+    float v = sk__attributes_table(a->to_srgb, c) + (float)(a->shift * (u - 0.5));
+    return sk__attributes_table(a->from_srgb, v);
+}
 
 /* A desc colour (sRGB-encoded) as linear RGB. */
 sk_vec3f sk__linear_from_srgb3(const float srgb[3]);
@@ -56,13 +81,12 @@ static inline double sk__attributes_latewood(const sk__attributes *a, double t, 
            (2.0 * half);
 }
 
-/* Brightness factor in [1 - shift, 1] of the cell of C'(t, theta0) (theta0 in [0, 2 pi))
- * holding the fibre through height y. Row i of the array has round(2 pi (i + 1/2)) cells
- * around the tree, so cells are about square at the nominal radius (i + 1/2) cell. */
-static inline double sk__attributes_shift(const sk__attributes *a, double t, double theta0,
-                                          double y)
+/* The uniform number in [0, 1) of the cell of C'(t, theta0) (theta0 in [0, 2 pi))
+ * holding the fibre through height y, whose brightness shift it draws. Row i of the array
+ * has round(2 pi (i + 1/2)) cells around the tree, so cells are about square at the
+ * nominal radius (i + 1/2) cell. */
+static inline double sk__attributes_cell(const sk__attributes *a, double t, double theta0, double y)
 {
-    if (a->shift == 0.0) return 1.0;
     int64_t row = sk__floor_i64(t * a->rows_per_year);
     int64_t cells = (int64_t)(6.283185307179586 * ((double)row + 0.5) + 0.5);
     if (cells < 1) cells = 1;
@@ -74,7 +98,7 @@ static inline double sk__attributes_shift(const sk__attributes *a, double t, dou
         double offset = sk_u64_to_unit_d(sk__wood_hash(a->seed ^ 0x66696272ULL, row, cell, 0));
         segment = sk__floor_i64(y * a->inv_length + offset);
     }
-    return 1.0 - a->shift * sk_u64_to_unit_d(sk__wood_hash(a->seed, row, cell, segment));
+    return sk_u64_to_unit_d(sk__wood_hash(a->seed, row, cell, segment));
 }
 
 #endif

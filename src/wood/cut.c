@@ -3,11 +3,17 @@
  * are evaluated as one batch (eval.c) and shaded together. Each pixel's position depends
  * only on its coordinates in the full image, and a sample's value not on its batch, so a
  * region is exactly that part of the full image, and the output does not depend on the
- * thread count. */
+ * thread count. A cut whose image columns run across the tree axis and whose rows run
+ * along it (flat- and quarter-sawn faces, not tilted) has every sample's place on the
+ * cross-section, and all that follows from it (T(r, theta), the ring profile), set by
+ * its column: that stage is evaluated once per sub-pixel column and shared by every row
+ * and sub-row, the same values a sample would compute. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/loop_progress.h"
+#include "core/parallel.h"
 #include "wood/wood_internal.h"
 
 static sk_vec3f tilt_towards(sk_vec3f n, sk_vec3f up, sk_vec3f side, double incidence,
@@ -69,6 +75,9 @@ typedef struct cut_context {
     bool figure, lit;              /* eq. (4) shading; light above the surface */
     sk__figure_light fl;
     unsigned flags;
+    /* the cross-section stage of every sub-pixel column of the region (rw S entries,
+       sub-column k = pixel k / S, sample k % S), when the cut allows it; else NULL */
+    const sk__wood_section *columns;
 } cut_context;
 
 /* eq. (4) of the batch's samples under the cut's light (sk__shade_figure_lit), into rgb. */
@@ -159,16 +168,33 @@ static void render_span(const cut_context *c, int yy, int x0, int pixels)
         double fy = 0.5 - (Y + c->sub[sy]) * c->inv_H;
         sk_vec3f row = sk_v3f_add(desc->point, sk_v3f_scale(up, (float)(fy * c->height_mm)));
         double column = c->rx + x0;
+        if (c->columns) {
+            /* the row's height and the columns' cross-section stage (sk_wood_cut checked
+               that x and z follow the column alone and y the row: a.y = 0) */
+            double y[SK__WOOD_BATCH];
 #pragma omp simd
-        for (int j = 0; j < count; j++) {
-            /* (rx + x0 + pixel + sample offset) / W - 0.5, the integer part exact */
-            double fx = (column + c->pixel_x[j] + c->sub_x[j]) * c->inv_W - 0.5;
-            float s = (float)(fx * c->width_mm);
-            px[j] = row.x + a.x * s;
-            py[j] = row.y + a.y * s;
-            pz[j] = row.z + a.z * s;
+            for (int j = 0; j < count; j++) {
+                double fx = (column + c->pixel_x[j] + c->sub_x[j]) * c->inv_W - 0.5;
+                y[j] = row.y + a.y * (float)(fx * c->width_mm); /* row.y, to the sign of 0 */
+            }
+            size_t k = (size_t)x0 * (size_t)c->S;
+            const sk__wood_section *cs = c->columns;
+            sk__wood_section sec = {cs->r + k,     cs->cos_t + k, cs->sin_t + k,
+                                    cs->theta + k, cs->t + k,     cs->width + k,
+                                    cs->dR + k,    cs->half + k,  cs->late + k};
+            sk__wood_eval_section_batch(wood, count, &sec, y, n, c->footprint, c->flags, &b);
+        } else {
+#pragma omp simd
+            for (int j = 0; j < count; j++) {
+                /* (rx + x0 + pixel + sample offset) / W - 0.5, the integer part exact */
+                double fx = (column + c->pixel_x[j] + c->sub_x[j]) * c->inv_W - 0.5;
+                float s = (float)(fx * c->width_mm);
+                px[j] = row.x + a.x * s;
+                py[j] = row.y + a.y * s;
+                pz[j] = row.z + a.z * s;
+            }
+            sk__wood_eval_batch(wood, count, points, n, c->footprint, c->flags, &b);
         }
-        sk__wood_eval_batch(wood, count, points, n, c->footprint, c->flags, &b);
         if (sh) {
             if (c->figure) {
                 shade_figure_batch(c, &b, count, rgb);
@@ -294,9 +320,46 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
     }
     int batch_pixels = SK__WOOD_BATCH / S;
 
+    /* the shared cross-section stage: x and z of a sample follow its column alone when the
+       image's up has no x or z and its right no y, in the tree frame (= the scene's) */
+    sk__wood_section columns = {0};
+    double *column_store = NULL;
+    if (wood->frame.identity && up.x == 0.0f && up.z == 0.0f && a.y == 0.0f) {
+        size_t count = (size_t)rw * (size_t)S;
+        column_store = malloc(SK__WOOD_SECTION_FIELDS * count * sizeof(double));
+        if (column_store) {
+            double **fields[SK__WOOD_SECTION_FIELDS] = {
+                &columns.r, &columns.cos_t, &columns.sin_t, &columns.theta, &columns.t,
+                &columns.width, &columns.dR, &columns.half, &columns.late};
+            for (int f = 0; f < SK__WOOD_SECTION_FIELDS; f++) *fields[f] = column_store + (size_t)f * count;
+            c.columns = &columns;
+            int blocks = (int)((count + SK__WOOD_BATCH - 1) / SK__WOOD_BATCH);
+#pragma omp parallel for schedule(static) if (sk__parallel_worth(count, 60.0))
+            for (int blk = 0; blk < blocks; blk++) {
+                size_t k0 = (size_t)blk * SK__WOOD_BATCH;
+                int m = count - k0 < SK__WOOD_BATCH ? (int)(count - k0) : SK__WOOD_BATCH;
+                float px[SK__WOOD_BATCH], pz[SK__WOOD_BATCH];
+                for (int j = 0; j < m; j++) {
+                    size_t k = k0 + (size_t)j;
+                    /* render_span's sample position, the row's part being 0 in x and z */
+                    double fx = ((double)(rx + (int)(k / (size_t)S)) + c.sub[k % (size_t)S]) * c.inv_W - 0.5;
+                    float sx = (float)(fx * c.width_mm);
+                    px[j] = desc->point.x + a.x * sx;
+                    pz[j] = desc->point.z + a.z * sx;
+                }
+                sk__wood_section part = {columns.r + k0,     columns.cos_t + k0, columns.sin_t + k0,
+                                         columns.theta + k0, columns.t + k0,     columns.width + k0,
+                                         columns.dR + k0,    columns.half + k0,  columns.late + k0};
+                sk__wood_section_eval(wood, m, px, pz, n, c.footprint, &part);
+            }
+        }
+    }
+
     sk__loop_progress lp;
     sk__loop_progress_init(&lp, &desc->progress, rh);
-#pragma omp parallel for schedule(dynamic, 1)
+    /* about 100 ns a sample */
+    bool parallel = sk__parallel_worth((double)rw * rh * S * S, 100.0);
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
     for (int yy = 0; yy < rh; yy++) {
         for (int x0 = 0; x0 < rw; x0 += batch_pixels) {
             int pixels = rw - x0 < batch_pixels ? rw - x0 : batch_pixels;
@@ -305,5 +368,6 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
         sk__loop_progress_tick(&lp);
     }
     sk_progress_report(&desc->progress, 1.0);
+    free(column_store);
     return SK_OK;
 }

@@ -43,6 +43,23 @@ sk_wood_desc sk_wood_desc_resolved(const sk_wood_desc *desc)
     default_color(d.vessels.color_srgb, 0.20f, 0.13f, 0.08f);
 
     default_f(&d.fibre.cell_mm, 0.08f);
+    if (d.fibre.shift_mode == SK_WOOD_SHIFT_DEFAULT) d.fibre.shift_mode = SK_WOOD_SHIFT_ADD;
+
+    sk_wood_rays_desc *ry = &d.rays;
+    default_f(&ry->width_mm, 0.4f);
+    default_f(&ry->height_mm, 20.0f);
+    default_f(&ry->length_mm, 50.0f);
+    default_color(ry->color_srgb, 0.86f, 0.76f, 0.60f);
+
+    sk_wood_knots_desc *k = &d.knots;
+    if (k->per_whorl == 0) k->per_whorl = 4;
+    default_f(&k->growth, 0.12f);
+    default_f(&k->stub_mm, 40.0f);
+    default_f(&k->darkening, 0.4f);
+    default_f(&k->bark_mm, 0.8f);
+    default_color(k->bark_srgb, 0.24f, 0.15f, 0.09f);
+    default_f(&k->collar, 0.5f);
+    default_f(&k->deflection_reach, 3.0f);
 
     sk_wood_shading_desc *sh = &d.shading;
     if (sh->model == SK_WOOD_SHADING_DEFAULT) sh->model = SK_WOOD_SHADING_FIGURE;
@@ -186,6 +203,35 @@ sk_result sk_wood_desc_validate(const sk_wood_desc *desc_in, sk_error *err)
     CHECK(sk_check_range_f(err, "fibre.brightness_shift", d.fibre.brightness_shift, 0.0, 1.0));
     CHECK(sk_check_range_f(err, "fibre.cell_mm", d.fibre.cell_mm, 0.005, 10.0));
     CHECK(sk_check_range_f(err, "fibre.length_mm", d.fibre.length_mm, 0.0, 10000.0));
+    CHECK(sk_check_range_i(err, "fibre.shift_mode", d.fibre.shift_mode, 0, SK_WOOD_SHIFT_COUNT - 1));
+
+    const sk_wood_rays_desc *ry = &d.rays;
+    if (ry->spacing_mm != 0.0f) CHECK(sk_check_range_f(err, "rays.spacing_mm", ry->spacing_mm, 0.2, 100.0));
+    CHECK(sk_check_range_f(err, "rays.width_mm", ry->width_mm, 0.01, 5.0));
+    CHECK(sk_check_range_f(err, "rays.height_mm", ry->height_mm, 0.1, 1000.0));
+    CHECK(sk_check_range_f(err, "rays.length_mm", ry->length_mm, 1.0, 5000.0));
+    CHECK(sk_check_range_f(err, "rays.jitter", ry->jitter, 0.0, 1.0));
+    CHECK(check_color(err, "rays.color_srgb", ry->color_srgb));
+    if (ry->spacing_mm > 0.0f && ry->width_mm > 0.9f * 2.0f * ry->spacing_mm)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "rays.width_mm = %g is too wide for rays.spacing_mm = %g (at most 1.8 x "
+                       "the spacing)",
+                       ry->width_mm, ry->spacing_mm);
+
+    const sk_wood_knots_desc *k = &d.knots;
+    if (k->whorl_spacing_mm != 0.0f)
+        CHECK(sk_check_range_f(err, "knots.whorl_spacing_mm", k->whorl_spacing_mm, 20.0, 100000.0));
+    CHECK(sk_check_range_i(err, "knots.per_whorl", k->per_whorl, 1, 12));
+    CHECK(check_deg(err, "knots.rise_deg", k->rise, -10.0, 80.0));
+    CHECK(sk_check_range_f(err, "knots.growth", k->growth, 0.01, 1.0));
+    CHECK(sk_check_range_f(err, "knots.dead_after_years", k->dead_after_years, 0.0, 1000.0));
+    CHECK(sk_check_range_f(err, "knots.stub_mm", k->stub_mm, 0.1, 1000.0));
+    CHECK(sk_check_range_f(err, "knots.jitter", k->jitter, 0.0, 1.0));
+    CHECK(sk_check_range_f(err, "knots.darkening", k->darkening, 0.0, 1.0));
+    CHECK(sk_check_range_f(err, "knots.bark_mm", k->bark_mm, 0.01, 20.0));
+    CHECK(check_color(err, "knots.bark_srgb", k->bark_srgb));
+    CHECK(sk_check_range_f(err, "knots.collar", k->collar, 0.01, 2.0));
+    CHECK(sk_check_range_f(err, "knots.deflection_reach", k->deflection_reach, 1.1, 20.0));
 
     const sk_wood_shading_desc *sh = &d.shading;
     CHECK(sk_check_range_i(err, "shading.model", sh->model, 0, SK_WOOD_SHADING_COUNT - 1));

@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/parallel.h"
+
 void sk__grain_free(sk__grain *grain)
 {
     free(grain->dg);
@@ -123,7 +125,8 @@ sk_result sk__grain_build(sk__grain *g, const sk_wood_desc *desc, double t_max, 
     sk_fbm_desc fbm = {4, 2.0f, 0.5f};
     const int big = 1 << 20; /* t is not periodic: a period far beyond any table */
     double peak = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : peak)
+#pragma omp parallel for schedule(static) reduction(max : peak) \
+    if (sk__parallel_worth((double)g->nt * g->ny, 80.0))
     for (int i = 0; i < g->nt; i++) {
         float *r = g->dg + (size_t)i * row;
         double mean = 0.0;

@@ -43,6 +43,22 @@ static inline uint64_t sk__wood_hash(uint64_t seed, int64_t a, int64_t b, int64_
                     (uint64_t)c * SK__WOOD_HASH_C);
 }
 
+/* The 16-bit field `which` (0-3) of a hash as a number in [0, 1): four independent
+ * uniform numbers from one hash. */
+static inline double sk__hash_unit16(uint64_t h, int which)
+{
+    return (double)((h >> (which * 16)) & 0xffffu) * (1.0 / 65536.0);
+}
+
+/* Coverage of a shape at signed distance x inside its edge (mm), the edge a linear ramp
+ * over the footprint (mm); a step when the footprint is 0. */
+static inline double sk__edge_ramp(double x, double footprint)
+{
+    if (footprint <= 0.0) return x > 0.0 ? 1.0 : 0.0;
+    double v = 0.5 + x / footprint;
+    return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
+}
+
 /* atan2(y, x) in (-pi, pi]: the ratio q in [0, 1] of the smaller to the larger magnitude
  * is moved next to the nearest of c = 0, 1/4, .., 1 by atan(q) = atan(c) +
  * atan((q - c) / (1 + q c)), leaving |u| <= 1/8 for the series (error < u^11 / 11).

@@ -6,12 +6,13 @@
  * equals the interpolated dg, which keeps the phase consistent with the fibre direction. */
 #include <math.h>
 
+#include "core/parallel.h"
 #include "wood/grain.h"
 
 bool sk__phase_build(sk__grain *g)
 {
     size_t row = (size_t)g->ny + 1;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sk__parallel_worth((double)g->nt * g->ny, 3.0))
     for (int i = 0; i < g->nt; i++) {
         const float *d = g->dg + (size_t)i * row;
         float *p = g->phi + (size_t)i * row;

@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/parallel.h"
+
 /* Per-year width factor m_k = exp(sigma z_k - sigma^2 / 2), z_k ~ N(0, 1) cut at 3 sd. */
 static double year_factor(uint64_t seed, double sigma, int year)
 {
@@ -86,7 +88,7 @@ static bool build_tables(sk__rings *rg, const sk_wood_desc *desc, int years, con
     sk_fbm_desc fbm = {4, 2.0f, 0.5f};
     bool ok = true;
 
-#pragma omp parallel
+#pragma omp parallel if (sk__parallel_worth((double)ntheta, (a > 0.0 ? 100.0 * nn : 0.0) + 10.0 * rg->nt))
     {
         double *noise = a > 0.0 ? malloc((size_t)nn * sizeof(double)) : NULL;
         if (a > 0.0 && !noise) {
@@ -177,7 +179,7 @@ static bool build_guess(sk__rings *rg)
     rg->nguess = (int)ceil(rmax / rg->guess_step) + 1;
     rg->guess = malloc((size_t)rg->ntheta * (size_t)rg->nguess * sizeof(uint16_t));
     if (!rg->guess) return false;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sk__parallel_worth((double)rg->ntheta * rg->nguess, 3.0))
     for (int j = 0; j < rg->ntheta; j++) {
         const float *c0 = rg->R + (size_t)j * nt, *c1 = c0 + nt;
         uint16_t *g = rg->guess + (size_t)j * (size_t)rg->nguess;

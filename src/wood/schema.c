@@ -8,6 +8,7 @@
 
 const char *const sk_wood_shading_model_names[] = {"default", "figure", "fibre", NULL};
 const char *const sk_wood_plane_names[] = {"default", "end", "flat", "quarter", NULL};
+const char *const sk_wood_shift_mode_names[] = {"default", "add", "multiply", NULL};
 
 #define FLOAT_FIELD(T, member, k, lo, hi, text)                                             \
     {.key = k, .type = SK_FIELD_FLOAT, .offset = offsetof(T, member), .min = lo, .max = hi, \
@@ -132,7 +133,11 @@ static const sk_schema vessels_schema = {"vessels", vessels_fields, COUNT(vessel
 
 static const sk_schema_field fibre_fields[] = {
     FLOAT_FIELD(sk_wood_fibre_desc, brightness_shift, "brightness_shift", 0, 1,
-                "largest darkening of an end-grain cell (Fig. 7: 0.4); default 0"),
+                "spread of the cells' brightness shifts (Fig. 7: 0.4 = 40 %); default 0"),
+    {.key = "shift_mode", .type = SK_FIELD_ENUM, .offset = offsetof(sk_wood_fibre_desc, shift_mode),
+     .names = sk_wood_shift_mode_names,
+     .doc = "\"add\" (the paper: brightness + a shift in [-s/2, s/2]) or \"multiply\" "
+            "(colour x (1 - s u), darker only); default add"},
     FLOAT_FIELD(sk_wood_fibre_desc, cell_mm, "cell_mm", 0, 10,
                 "cell size of the end-grain array (mm); 0 = 0.08; [0.005, 10]"),
     FLOAT_FIELD(sk_wood_fibre_desc, length_mm, "length_mm", 0, 10000,
@@ -140,6 +145,50 @@ static const sk_schema_field fibre_fields[] = {
                 "default 0 (endless, as in the paper)"),
 };
 static const sk_schema fibre_schema = {"fibre", fibre_fields, COUNT(fibre_fields)};
+
+static const sk_schema_field rays_fields[] = {
+    FLOAT_FIELD(sk_wood_rays_desc, spacing_mm, "spacing_mm", 0, 100,
+                "distance between broad rays round a ring (mm); default 0 (none)"),
+    FLOAT_FIELD(sk_wood_rays_desc, width_mm, "width_mm", 0, 5,
+                "a ray's width round the tree (mm); 0 = 0.4"),
+    FLOAT_FIELD(sk_wood_rays_desc, height_mm, "height_mm", 0, 1000,
+                "a ray's height along the fibre (mm); 0 = 20"),
+    FLOAT_FIELD(sk_wood_rays_desc, length_mm, "length_mm", 0, 5000,
+                "a ray's length out from the pith (mm); 0 = 50"),
+    FLOAT_FIELD(sk_wood_rays_desc, jitter, "jitter", 0, 1,
+                "randomness of the rays' places and sizes; default 0"),
+    FLOATS_FIELD(sk_wood_rays_desc, color_srgb, "color_srgb", 3, 0, 1,
+                 "colour of the ray tissue (sRGB 0-1); default [0.86, 0.76, 0.60]"),
+};
+static const sk_schema rays_schema = {"rays", rays_fields, COUNT(rays_fields)};
+
+static const sk_schema_field knots_fields[] = {
+    FLOAT_FIELD(sk_wood_knots_desc, whorl_spacing_mm, "whorl_spacing_mm", 0, 100000,
+                "distance between whorls of branches along the axis (mm); default 0 (no knots)"),
+    {.key = "per_whorl", .type = SK_FIELD_INT, .offset = offsetof(sk_wood_knots_desc, per_whorl),
+     .min = 0, .max = 12, .doc = "branches per whorl; 0 = 4; [1, 12]"},
+    DEG_FIELD(sk_wood_knots_desc, rise, "rise_deg", -10, 80,
+              "a branch's angle above the horizontal (degrees); default 0"),
+    FLOAT_FIELD(sk_wood_knots_desc, growth, "growth", 0, 1,
+                "a branch's ring width over the stem's (the knot cone's slope); 0 = 0.12"),
+    FLOAT_FIELD(sk_wood_knots_desc, dead_after_years, "dead_after_years", 0, 1000,
+                "years a branch lives (then a dead knot in bark); default 0 (alive)"),
+    FLOAT_FIELD(sk_wood_knots_desc, stub_mm, "stub_mm", 0, 1000,
+                "how far a dead branch reaches before it is overgrown (mm); 0 = 40"),
+    FLOAT_FIELD(sk_wood_knots_desc, jitter, "jitter", 0, 1,
+                "randomness of whorl heights, azimuths, angles and sizes; default 0"),
+    FLOAT_FIELD(sk_wood_knots_desc, darkening, "darkening", 0, 1,
+                "the knot's end grain darker by this fraction; 0 = 0.4"),
+    FLOAT_FIELD(sk_wood_knots_desc, bark_mm, "bark_mm", 0, 20,
+                "bark ring round a dead knot (mm); 0 = 0.8"),
+    FLOATS_FIELD(sk_wood_knots_desc, bark_srgb, "bark_srgb", 3, 0, 1,
+                 "its colour (sRGB 0-1); default [0.24, 0.15, 0.09]"),
+    FLOAT_FIELD(sk_wood_knots_desc, collar, "collar", 0, 2,
+                "how far the rings curve round a knot, a fraction of its age; 0 = 0.5"),
+    FLOAT_FIELD(sk_wood_knots_desc, deflection_reach, "deflection_reach", 0, 20,
+                "how far the grain bends round a knot (knot radii); 0 = 3; [1.1, 20]"),
+};
+static const sk_schema knots_schema = {"knots", knots_fields, COUNT(knots_fields)};
 
 static const sk_schema_field shading_fields[] = {
     {.key = "model", .type = SK_FIELD_ENUM, .offset = offsetof(sk_wood_shading_desc, model),
@@ -193,7 +242,11 @@ static const sk_schema_field wood_fields[] = {
     OBJECT_FIELD(sk_wood_desc, rings, "rings", rings_schema, "annual rings R(t, theta) (sec. 4.4)"),
     OBJECT_FIELD(sk_wood_desc, grain, "grain", grain_schema, "grain G'(t, y) (eq. 1)"),
     OBJECT_FIELD(sk_wood_desc, vessels, "vessels", vessels_schema, "vessels (sec. 5)"),
+    OBJECT_FIELD(sk_wood_desc, rays, "rays", rays_schema,
+                 "broad (medullary) rays, the silver figure (beyond the paper)"),
     OBJECT_FIELD(sk_wood_desc, fibre, "fibre", fibre_schema, "shifting brightness (sec. 6)"),
+    OBJECT_FIELD(sk_wood_desc, knots, "knots", knots_schema,
+                 "knots: branches as cones from the pith (beyond the paper)"),
     OBJECT_FIELD(sk_wood_desc, shading, "shading", shading_schema, "reflection (sec. 7)"),
     OBJECT_FIELD(sk_wood_desc, view, "view", view_schema, "default planar cut and light"),
 };

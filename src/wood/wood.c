@@ -37,6 +37,8 @@ sk_result sk_wood_create(const sk_wood_desc *desc, sk_wood **out, sk_error *err)
     }
     sk__vessels_init(&w->vessels, &resolved);
     sk__attributes_init(&w->attr, &resolved);
+    sk__knots_init(&w->knots, &resolved);
+    sk__rays_init(&w->rays, &resolved);
     sk__shading_init(&w->shading, &resolved);
     w->stats.memory_bytes = sizeof *w + sk__rings_memory(&w->rings) + sk__grain_memory(&w->grain);
     w->stats.ring_count = w->rings.years;

@@ -1,0 +1,57 @@
+/* The hand module's dense symmetric algebra through LAPACK (dpotrf, dpotrs, dpotri,
+ * dsyev), or through the portable routines when the build has no LAPACKE. */
+#include "hand/dense_private.h"
+
+#ifdef SK_HAVE_LAPACKE
+#include <lapacke.h>
+
+int sk_hand__cholesky_at(double *a, int n)
+{
+    if (n == 0) return 0;
+    lapack_int info = LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', n, a, n);
+    return info > 0 ? (int)info : info < 0 ? 1 : 0;
+}
+
+void sk_hand__cholesky_solve(const double *l, int n, double *b, int nrhs)
+{
+    if (n == 0 || nrhs == 0) return;
+    LAPACKE_dpotrs_work(LAPACK_COL_MAJOR, 'L', n, nrhs, l, n, b, n);
+}
+
+bool sk_hand__spd_inverse(double *a, int n)
+{
+    if (n == 0) return true;
+    if (LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', n, a, n) != 0) return false;
+    if (LAPACKE_dpotri_work(LAPACK_COL_MAJOR, 'L', n, a, n) != 0) return false;
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < j; i++) a[(size_t)j * n + i] = a[(size_t)i * n + j];
+    return true;
+}
+
+bool sk_hand__sym_eigen(double *a, int n, double *values, bool vectors)
+{
+    if (n == 0) return true;
+    double work[64 * 64];
+    return LAPACKE_dsyev_work(LAPACK_COL_MAJOR, vectors ? 'V' : 'N', 'L', n, a, n, values, work,
+                              (lapack_int)(sizeof work / sizeof work[0])) == 0;
+}
+
+#else
+
+int sk_hand__cholesky_at(double *a, int n) { return sk_hand__portable_cholesky(a, n); }
+
+void sk_hand__cholesky_solve(const double *l, int n, double *b, int nrhs)
+{
+    sk_hand__portable_cholesky_solve(l, n, b, nrhs);
+}
+
+bool sk_hand__spd_inverse(double *a, int n) { return sk_hand__portable_spd_inverse(a, n); }
+
+bool sk_hand__sym_eigen(double *a, int n, double *values, bool vectors)
+{
+    return sk_hand__portable_sym_eigen(a, n, values, vectors);
+}
+
+#endif
+
+bool sk_hand__cholesky(double *a, int n) { return sk_hand__cholesky_at(a, n) == 0; }

@@ -1,0 +1,431 @@
+// The studio's browser tests: the page loads with no console error; a slider moves the
+// coupled joints by the angles `shitsukan hand pose` gives for that pin; a key press
+// moves the right finger and its piano key; a preset change updates the maps, whose
+// pixels equal the command line's at the same size; saved states reload identically;
+// the exported files are read by the library. Screenshots of each panel, and the speed
+// figures measured here (studio-speed.json).
+import { test, expect } from '@playwright/test';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+
+const BIN = process.env.SHITSUKAN;
+const TMP = process.env.STUDIO_TMP;
+const SHOTS = process.env.STUDIO_SHOTS;
+const shitsukan = (...args) => execFileSync(BIN, args, { encoding: 'utf8' });
+
+let errors = [];
+async function open(page) {
+  errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto('/');
+  await page.waitForFunction(() => document.body.dataset.ready === '1' || document.getElementById('status').className === 'error');
+  await expect(page.locator('#status')).toHaveText('ready');
+}
+
+async function shot(page, name) {
+  fs.mkdirSync(SHOTS, { recursive: true });
+  await page.screenshot({ path: path.join(SHOTS, `${name}.png`) });
+}
+
+// Pixels of an image file (PNG) as the page decodes it, RGBA.
+async function filePixels(page, file) {
+  const b64 = fs.readFileSync(file).toString('base64');
+  return page.evaluate(async (data) => {
+    const blob = await (await fetch(`data:image/png;base64,${data}`)).blob();
+    const bmp = await createImageBitmap(blob, { colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
+    const c = new OffscreenCanvas(bmp.width, bmp.height);
+    const g = c.getContext('2d');
+    g.drawImage(bmp, 0, 0);
+    return Array.from(g.getImageData(0, 0, bmp.width, bmp.height).data);
+  }, b64);
+}
+
+const canvasPixels = (page, id) => page.evaluate((id) => {
+  const c = document.getElementById(id);
+  return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+}, id);
+
+function compare(a, b) {
+  expect(a.length).toBe(b.length);
+  let max = 0, off = 0;
+  for (let i = 0; i < a.length; i++) {
+    const d = Math.abs(a[i] - b[i]);
+    if (d > max) max = d;
+    if (d > 1) off++;
+  }
+  return { max, off, count: a.length };
+}
+
+// Samples of a non-interlaced 8- or 16-bit grey/RGB/RGBA PNG file (any filters).
+function pngSamples(file) {
+  const buf = fs.readFileSync(file);
+  let p = 8, width = 0, height = 0, depth = 0, type = 0;
+  const idat = [];
+  while (p < buf.length) {
+    const len = buf.readUInt32BE(p), kind = buf.toString('latin1', p + 4, p + 8);
+    const data = buf.subarray(p + 8, p + 8 + len);
+    if (kind === 'IHDR') { width = data.readUInt32BE(0); height = data.readUInt32BE(4); depth = data[8]; type = data[9]; }
+    if (kind === 'IDAT') idat.push(data);
+    p += 12 + len;
+  }
+  const channels = { 0: 1, 2: 3, 4: 2, 6: 4 }[type];
+  const bpp = channels * depth / 8, stride = width * bpp;
+  const raw = zlib.inflateSync(Buffer.concat(idat));
+  const out = new Uint8Array(height * stride);
+  for (let y = 0; y < height; y++) {
+    const f = raw[y * (stride + 1)], line = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
+    for (let i = 0; i < stride; i++) {
+      const a = i >= bpp ? out[y * stride + i - bpp] : 0, b = y > 0 ? out[(y - 1) * stride + i] : 0;
+      const c = i >= bpp && y > 0 ? out[(y - 1) * stride + i - bpp] : 0;
+      const pa = Math.abs(b - c), pb = Math.abs(a - c), pc = Math.abs(a + b - 2 * c);
+      const pred = [0, a, b, (a + b) >> 1, pa <= pb && pa <= pc ? a : pb <= pc ? b : c][f];
+      out[y * stride + i] = (line[i] + pred) & 0xff;
+    }
+  }
+  if (depth === 8) return { width, height, channels, samples: out };
+  const s16 = new Uint16Array(out.length / 2);
+  for (let i = 0; i < s16.length; i++) s16[i] = (out[2 * i] << 8) | out[2 * i + 1];
+  return { width, height, channels, samples: s16 };
+}
+
+// 30 slider moves: best and median of each timing the hand panel keeps (ms).
+async function sliderRuns(page) {
+  const runs = await page.evaluate(() => {
+    const h = window.studio.panels.hand, t = [];
+    for (let k = 0; k < 30; k++) { h.setSlider('L.MCP.flex', 20 + (k % 30) * 2); t.push({ ...h.timings }); }
+    return t;
+  });
+  return (key) => { const v = runs.map((r) => r[key]).sort((a, b) => a - b); return { best: v[0], median: v[v.length >> 1] }; };
+}
+
+const speed = {};
+test.afterAll(() => {
+  if (Object.keys(speed).length) fs.writeFileSync(path.join(TMP, '..', 'studio-speed.json'), JSON.stringify(speed, null, 2) + '\n');
+});
+
+test('loads with no console error and shows every panel', async ({ page }) => {
+  await open(page);
+  await page.waitForTimeout(300);
+  await shot(page, 'hand');
+  for (const tab of ['piano', 'skin', 'wood', 'tissue']) {
+    await page.click(`#tabs button[data-tab=${tab}]`);
+    await page.waitForTimeout(300);
+    if (tab !== 'tissue') await shot(page, tab);
+  }
+  expect(errors).toEqual([]);
+  const wasm = fs.statSync(path.join(process.env.STUDIO_WWW, 'wasm', 'studio.wasm')).size;
+  speed.wasm_bytes = wasm;
+  expect(wasm).toBeLessThan(3 * 1024 * 1024);
+});
+
+test('a slider moves the coupled joints as hand pose does', async ({ page }) => {
+  await open(page);
+  for (const [dof, deg, set] of [['L.MCP.flex', 60, 'natural'], ['I.PIP.flex', 45, 'yasumuro-table-3.2']]) {
+    if (set !== 'natural') {
+      await page.selectOption('#hand-set', set);
+      await page.waitForTimeout(200);
+    }
+    await page.click('#hand-release');
+    await page.evaluate(([d, v]) => window.studio.panels.hand.setSlider(d, v), [dof, deg]);
+    const dofs = await page.evaluate(() => {
+      const m = window.studio.panels.hand.model;
+      return Object.fromEntries(m.info.dofs.map((d, i) => [d.name, m.degrees(i)]));
+    });
+    const out = path.join(TMP, `pose-${dof}.json`);
+    shitsukan('hand', 'pose', '--pin', `${dof}=${deg}`, '--constraints', set, '-o', out);
+    const native = JSON.parse(fs.readFileSync(out, 'utf8')).dofs;
+    let moved = 0;
+    for (const [name, v] of Object.entries(native)) {
+      expect(Math.abs(dofs[name] - v)).toBeLessThan(1e-6);
+      if (name !== dof && Math.abs(v - dofs[name]) < 1e-6) moved++;
+    }
+    expect(dofs[dof]).toBeCloseTo(deg, 9);
+    // the coupling moved other joints than the pinned one
+    const relaxed = await page.evaluate((d) => {
+      const m = window.studio.panels.hand.model;
+      return m.info.dofs.filter((x) => x.name !== d).some((x, i) => Math.abs(m.dofs[m.index[x.name]] - x.relaxed) > 0.01);
+    }, dof);
+    expect(relaxed).toBe(true);
+    expect(moved).toBeGreaterThan(0);
+  }
+  // a user's calibrated file (hand calibrate: the whole potential of eq. 3.17)
+  const cal = path.join(TMP, 'calibrated.json');
+  shitsukan('hand', 'calibrate', 'presets/hand/samples/synthetic-grasps.csv', '--method', 'gaussian', '--group', 'person',
+    '--ignore-columns', 'trial', '--quiet', '-o', cal);
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser'), page.selectOption('#hand-set', 'file')]);
+  await chooser.setFiles(cal);
+  await page.waitForFunction(() => window.studio.panels.hand.model.setName === 'calibrated.json');
+  await page.click('#hand-release');
+  await page.evaluate(() => window.studio.panels.hand.setSlider('I.MCP.flex', 50));
+  const calDofs = await page.evaluate(() => { const m = window.studio.panels.hand.model; return m.info.dofs.map((d, i) => m.degrees(i)); });
+  shitsukan('hand', 'pose', '--potential', cal, '--pin', 'I.MCP.flex=50', '-o', path.join(TMP, 'pose-cal.json'));
+  const calNative = Object.values(JSON.parse(fs.readFileSync(path.join(TMP, 'pose-cal.json'), 'utf8')).dofs);
+  calNative.forEach((v, i) => expect(Math.abs(calDofs[i] - v)).toBeLessThan(1e-6));
+  // coupling off: only the pinned joint moves
+  await page.uncheck('#hand-coupling');
+  await page.waitForTimeout(200);
+  await page.click('#hand-release');
+  await page.evaluate(() => window.studio.panels.hand.setSlider('L.MCP.flex', 60));
+  const others = await page.evaluate(() => {
+    const m = window.studio.panels.hand.model;
+    return m.info.dofs.map((x, i) => (x.name === 'L.MCP.flex' ? 0 : Math.abs(m.dofs[i] - x.relaxed))).reduce((a, b) => Math.max(a, b), 0);
+  });
+  expect(others).toBeLessThan(1e-9);
+  expect(errors).toEqual([]);
+});
+
+test('a fingertip dragged in the view pins its finger there', async ({ page }) => {
+  await open(page);
+  // where the index fingertip is on the screen
+  const tip = await page.evaluate(() => {
+    const h = window.studio.panels.hand, v = window.studio.view;
+    h.root.updateMatrixWorld(true);
+    const p = h.model.jointWorld(h.model.tipPoint(1)).project(v.camera);
+    const r = v.canvas.getBoundingClientRect();
+    return { x: r.left + (p.x + 1) / 2 * r.width, y: r.top + (1 - p.y) / 2 * r.height };
+  });
+  const before = await page.evaluate(() => window.studio.panels.hand.model.point(9).toArray());
+  await page.mouse.move(tip.x, tip.y);
+  await page.mouse.down();
+  for (let k = 1; k <= 5; k++) await page.mouse.move(tip.x + 4 * k, tip.y + 12 * k);
+  await page.mouse.up();
+  const after = await page.evaluate(() => {
+    const m = window.studio.panels.hand.model;
+    return { tip: m.point(9).toArray(), pinned: ['I.MCP.flex', 'I.MCP.abd', 'I.PIP.flex'].map((n) => m.pinned[m.index[n]]) };
+  });
+  expect(after.pinned).toEqual([true, true, true]);
+  const moved = Math.hypot(...after.tip.map((v, i) => v - before[i]));
+  expect(moved).toBeGreaterThan(5); // mm
+  expect(errors).toEqual([]);
+});
+
+test('a wood preset edit updates the view, equal to wood cut', async ({ page }) => {
+  await open(page);
+  await page.click('#tabs button[data-tab=wood]');
+  await page.selectOption('#wood-preset', 'oak');
+  await page.waitForTimeout(300);
+  const sp = page.locator('[data-panel=wood] .ctl[data-key="grain.spiral_slope"] input[type=number]');
+  await sp.fill('0.1');
+  await sp.dispatchEvent('change');
+  await page.waitForTimeout(300);
+  const tree = await page.evaluate(() => window.studio.panels.wood.tree);
+  expect(tree.grain.spiral_slope).toBe(0.1);
+  const file = path.join(TMP, 'wood-state.json');
+  fs.writeFileSync(file, JSON.stringify(tree));
+  const out = path.join(TMP, 'wood-native.png');
+  shitsukan('wood', 'cut', '--preset', file, '--size', '256', '--samples', '1', '--quiet', '-o', out);
+  const c = compare(await canvasPixels(page, 'wood-map-shaded'), await filePixels(page, out));
+  console.log(`wood cut 256: max difference ${c.max} codes, ${c.off} of ${c.count} beyond 1`);
+  expect(c.max).toBeLessThanOrEqual(1);
+  expect(errors).toEqual([]);
+});
+
+test('the skin surface follows the pose as hand mesh makes it', async ({ page }) => {
+  await open(page);
+  await page.check('#hand-surface');
+  await page.waitForFunction(() => window.studio.panels.hand.model.surface);
+  speed.surface_build_ms = await page.evaluate(() => window.studio.panels.hand.timings.surface_build_ms);
+  await page.evaluate(() => window.studio.panels.hand.setSlider('L.MCP.flex', 60));
+  const mine = await page.evaluate(() => {
+    const m = window.studio.panels.hand.model, a = m.surfaceMesh.geometry.attributes.position.array;
+    const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < a.length; i++) { lo[i % 3] = Math.min(lo[i % 3], a[i]); hi[i % 3] = Math.max(hi[i % 3], a[i]); }
+    return { lo, hi, v: m.surfaceVertices, t: m.surfaceTriangles };
+  });
+  const obj = path.join(TMP, 'hand-mesh.obj');
+  shitsukan('hand', 'mesh', '--pin', 'L.MCP.flex=60', '--skinning', 'dqs', '-o', obj);
+  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+  let faces = 0;
+  for (const line of fs.readFileSync(obj, 'utf8').split('\n')) {
+    if (line.startsWith('v ')) line.slice(2).trim().split(/\s+/).map(Number).forEach((x, k) => { lo[k] = Math.min(lo[k], x); hi[k] = Math.max(hi[k], x); });
+    if (line.startsWith('f ')) faces++;
+  }
+  expect(mine.t).toBe(faces);
+  for (let k = 0; k < 3; k++) {
+    expect(Math.abs(mine.lo[k] - lo[k])).toBeLessThan(1e-3);
+    expect(Math.abs(mine.hi[k] - hi[k])).toBeLessThan(1e-3);
+  }
+  await shot(page, 'hand-surface');
+  // the speed figure: slider move to the redrawn, skinned 8000-triangle hand
+  const stat = await sliderRuns(page);
+  speed.surface_slider_ms = stat('slider_ms');
+  speed.surface_slider_model_ms = stat('model_ms');
+  speed.surface_slider_render_ms = stat('render_ms');
+  console.log(`surface: ${mine.v} vertices, ${mine.t} triangles, built in ${speed.surface_build_ms.toFixed(0)} ms; slider move to the redrawn skinned hand: best ${speed.surface_slider_ms.best.toFixed(2)} ms (model ${speed.surface_slider_model_ms.best.toFixed(2)} ms: solve and skinning; drawing ${speed.surface_slider_render_ms.best.toFixed(2)} ms), median ${speed.surface_slider_ms.median.toFixed(2)} ms`);
+  expect(errors).toEqual([]);
+});
+
+test('slider speed: move to redrawn hand', async ({ page }) => {
+  await open(page);
+  // the skeleton alone (the figure with the skin surface is measured above)
+  await page.waitForFunction(() => !window.studio.panels.hand.model.surfaceAvailable() || window.studio.panels.hand.model.surface);
+  if (await page.isChecked('#hand-surface')) await page.uncheck('#hand-surface');
+  const stat = await sliderRuns(page);
+  speed.slider_ms = stat('slider_ms');
+  speed.slider_model_ms = stat('model_ms');
+  speed.slider_render_ms = stat('render_ms');
+  console.log(`skeleton only: slider move to redrawn hand: best ${speed.slider_ms.best.toFixed(2)} ms (model ${speed.slider_model_ms.best.toFixed(3)} ms, drawing ${speed.slider_render_ms.best.toFixed(2)} ms), median ${speed.slider_ms.median.toFixed(2)} ms`);
+});
+
+test('a key press moves the right finger and its key, with sound', async ({ page }) => {
+  await open(page);
+  await page.click('#tabs button[data-tab=piano]');
+  const before = await page.evaluate(() => window.studio.panels.hand.model.dofs.slice());
+  await page.keyboard.down('d'); // middle finger, E
+  // the inputs ease in over a few frames (software WebGL may draw slowly)
+  await page.waitForFunction(() => window.studio.panels.piano.level[2] > 0.99, null, { timeout: 20000 });
+  const during = await page.evaluate(() => {
+    const p = window.studio.panels.piano, m = window.studio.panels.hand.model;
+    return { dofs: m.dofs.slice(), keys: p.pianoKeys.map((k) => k.rotation.x), notes: p.notesPlayed, index: m.index };
+  });
+  await shot(page, 'piano-press');
+  await page.keyboard.up('d');
+  await page.waitForFunction(() => window.studio.panels.piano.level[2] === 0 && !window.studio.panels.piano.running, null, { timeout: 20000 });
+  const mcp = ['T.MCP.flex', 'I.MCP.flex', 'M.MCP.flex', 'R.MCP.flex', 'L.MCP.flex'].map((n) => during.dofs[during.index[n]] - before[during.index[n]]);
+  expect(mcp[2]).toBeGreaterThan(10 * Math.PI / 180);
+  expect(mcp[2]).toBe(Math.max(...mcp));
+  // the neighbours follow a little (the coupling), the key under the middle finger is down
+  expect(mcp[3]).toBeGreaterThan(0);
+  expect(Math.abs(during.keys[2])).toBeGreaterThan(0);
+  expect(during.keys.filter((r) => r !== 0).length).toBe(1);
+  expect(during.notes).toBe(1);
+  const after = await page.evaluate(() => ({ m: window.studio.panels.hand.model.dofs.slice(), k: window.studio.panels.piano.pianoKeys[2].rotation.x }));
+  expect(Math.abs(after.m[during.index['M.MCP.flex']] - before[during.index['M.MCP.flex']])).toBeLessThan(0.01);
+  expect(after.k).toBe(0);
+  expect(errors).toEqual([]);
+});
+
+test('a preset change updates the maps, equal to the command line', async ({ page }) => {
+  await open(page);
+  await page.click('#tabs button[data-tab=skin]');
+  await page.selectOption('#skin-size', '128');
+  await page.selectOption('#skin-preset', 'fig13a');
+  await page.waitForTimeout(500);
+  const first = await canvasPixels(page, 'skin-map-preview');
+  // change a key through its control: the seed
+  const seed = page.locator('[data-panel=skin] .ctl[data-key="seed"] input[type=number]');
+  await seed.fill('7');
+  await seed.dispatchEvent('change');
+  await page.waitForTimeout(300);
+  const second = await canvasPixels(page, 'skin-map-preview');
+  expect(compare(first, second).off).toBeGreaterThan(1000);
+  const tree = await page.evaluate(() => window.studio.panels.skin.tree);
+  expect(tree.seed).toBe(7);
+  const file = path.join(TMP, 'skin-state.json');
+  fs.writeFileSync(file, JSON.stringify(tree));
+  const dir = path.join(TMP, 'skin-native');
+  shitsukan('skin', 'maps', '--preset', file, '--size', '128', '--quiet', '-o', dir);
+  for (const [canvas, png] of [['skin-map-preview', 'preview.png'], ['skin-map-normal', 'normal.png'], ['skin-map-cells', 'cells.png']]) {
+    const c = compare(await canvasPixels(page, canvas), await filePixels(page, path.join(dir, png)));
+    console.log(`${png}: max difference ${c.max} codes, ${c.off} of ${c.count} samples beyond 1`);
+    expect(c.max).toBeLessThanOrEqual(1);
+  }
+  // speed: the shaded preview at 512 x 512 (skin built and rendered), best of 5
+  await page.selectOption('#skin-preset', 'back-of-hand');
+  await page.waitForTimeout(300);
+  const t = await page.evaluate(() => { const s = window.studio.panels.skin, r = []; for (let k = 0; k < 3; k++) r.push(s.timePreview(512)); return r; });
+  speed.skin_preview_512_ms = Math.min(...t);
+  console.log(`skin preview 512x512 (back-of-hand): best ${speed.skin_preview_512_ms.toFixed(1)} ms of ${t.map((x) => x.toFixed(0)).join(', ')}`);
+  expect(errors).toEqual([]);
+});
+
+test('saved states reload identically', async ({ page }) => {
+  await open(page);
+  // hand: two keys, saved as an animation file the command line reads
+  await page.evaluate(() => window.studio.panels.hand.setSlider('L.MCP.flex', 30));
+  await page.click('#hand-set-key');
+  await page.evaluate(() => window.studio.panels.hand.setSlider('L.MCP.flex', 80));
+  await page.evaluate(() => window.studio.panels.hand.setSlider('I.PIP.flex', 40));
+  await page.click('#hand-set-key');
+  let [dl] = await Promise.all([page.waitForEvent('download'), page.click('#hand-save')]);
+  const handFile = path.join(TMP, 'hand-state.json');
+  await dl.saveAs(handFile);
+  const dofsBefore = await page.evaluate(() => window.studio.panels.hand.model.dofs.slice());
+  shitsukan('hand', 'animate', handFile, '--angles', path.join(TMP, 'hand-angles.csv'), '--quiet');
+  // played in the page: every frame as hand animate solves it
+  const played = await page.evaluate(() => {
+    const h = window.studio.panels.hand, a = h.model.animate(h.animationJson());
+    return a.frames.map((f) => f.map((v, i) => (h.model.info.dofs[i].translation ? v : (v * 180) / Math.PI)));
+  });
+  const csv = fs.readFileSync(path.join(TMP, 'hand-angles.csv'), 'utf8').trim().split('\n').slice(1).map((l) => l.split(',').slice(2).map(Number));
+  expect(played.length).toBe(csv.length);
+  expect(played.length).toBe(25); // two keys, 24 steps
+  csv.forEach((row, f) => row.forEach((v, i) => expect(Math.abs(played[f][i] - v)).toBeLessThan(2e-6)));
+  await page.click('#hand-play');
+  await page.waitForFunction(() => !window.studio.panels.hand.playing || window.studio.panels.hand.playedFrame === 24, null, { timeout: 20000 });
+  // skin: a preset with an edit
+  await page.click('#tabs button[data-tab=skin]');
+  await page.selectOption('#skin-size', '128');
+  await page.selectOption('#skin-preset', 'fig14a');
+  await page.waitForTimeout(300);
+  const jr = page.locator('[data-panel=skin] .ctl[data-key="levels[0].jitter_rate"] input[type=number]');
+  await jr.fill('0.35');
+  await jr.dispatchEvent('change');
+  await page.waitForTimeout(300);
+  [dl] = await Promise.all([page.waitForEvent('download'), page.click('#skin-save')]);
+  const skinFile = path.join(TMP, 'skin-saved.json');
+  await dl.saveAs(skinFile);
+  const skinBefore = await canvasPixels(page, 'skin-map-preview');
+  const treeBefore = await page.evaluate(() => window.studio.panels.skin.tree);
+
+  await page.reload();
+  await page.waitForFunction(() => document.body.dataset.ready === '1');
+  // hand file back through the Load button
+  let [chooser] = await Promise.all([page.waitForEvent('filechooser'), page.click('text=Load JSON… >> nth=0')]);
+  await chooser.setFiles(handFile);
+  await page.waitForTimeout(300);
+  const keys = await page.evaluate(() => window.studio.panels.hand.keys.length);
+  expect(keys).toBe(2);
+  await page.click('#hand-keys button >> nth=1');
+  const dofsAfter = await page.evaluate(() => window.studio.panels.hand.model.dofs.slice());
+  for (let i = 0; i < dofsBefore.length; i++) expect(dofsAfter[i]).toBe(dofsBefore[i]);
+  // skin file back
+  await page.click('#tabs button[data-tab=skin]');
+  await page.selectOption('#skin-size', '128');
+  [chooser] = await Promise.all([page.waitForEvent('filechooser'), page.click('[data-panel=skin] >> text=Load JSON…')]);
+  await chooser.setFiles(skinFile);
+  await page.waitForTimeout(400);
+  expect(await page.evaluate(() => window.studio.panels.skin.tree)).toEqual(treeBefore);
+  expect(compare(await canvasPixels(page, 'skin-map-preview'), skinBefore).max).toBe(0);
+  expect(errors).toEqual([]);
+});
+
+test('exports the map sets as files the library reads', async ({ page }) => {
+  await open(page);
+  await page.click('#tabs button[data-tab=skin]');
+  await page.selectOption('#skin-size', '128');
+  await page.fill('#skin-export-size', '64');
+  const names = [], saved = [];
+  page.on('download', (d) => { names.push(d.suggestedFilename()); saved.push(d.saveAs(path.join(TMP, 'export', d.suggestedFilename()))); });
+  await page.click('#skin-export');
+  await expect.poll(() => names.length, { timeout: 30000 }).toBe(6);
+  await Promise.all(saved);
+  for (const n of ['preview.png', 'normal.png', 'cells.png', 'height.png', 'furrow.png', 'height.exr'])
+    expect(names).toContain(`skin-${n}`);
+  const dir = path.join(TMP, 'export');
+  // the library's readers take them (contact sheet of the EXR and the 16-bit PNGs)
+  shitsukan('sheet', path.join(dir, 'skin-height.exr'), path.join(dir, 'skin-height.png'), path.join(dir, 'skin-furrow.png'), '-o', path.join(TMP, 'export-sheet.png'), '--quiet');
+  // the page's 16-bit height equals the command line's
+  const native = path.join(TMP, 'skin-native-64');
+  shitsukan('skin', 'maps', '--size', '64', '--quiet', '-o', native);
+  for (const [mine, theirs] of [['skin-height.png', 'height.png'], ['skin-furrow.png', 'furrow.png'], ['skin-normal.png', 'normal.png'], ['skin-preview.png', 'preview.png']]) {
+    let a = pngSamples(path.join(dir, mine));
+    const b = pngSamples(path.join(native, theirs));
+    if (a.channels === 4 && b.channels === 3) a = { ...a, channels: 3, samples: a.samples.filter((_, i) => i % 4 !== 3) }; // the canvas adds alpha
+    expect([a.width, a.height, a.channels]).toEqual([b.width, b.height, b.channels]);
+    const c = compare(Array.from(a.samples), Array.from(b.samples));
+    console.log(`${theirs} exported at 64: max difference ${c.max} codes`);
+    expect(c.max).toBeLessThanOrEqual(b.samples instanceof Uint16Array ? 4 : 1);
+  }
+  await page.click('#tabs button[data-tab=wood]');
+  await page.fill('#wood-export-size', '64');
+  await page.click('#wood-export');
+  await expect.poll(() => names.length, { timeout: 30000 }).toBe(11);
+  await Promise.all(saved);
+  for (const n of ['cut.png', 'albedo.png', 'pores.png', 'fibre.png', 'cut.exr']) expect(names).toContain(`wood-${n}`);
+  shitsukan('sheet', path.join(dir, 'wood-cut.exr'), path.join(dir, 'wood-fibre.png'), '-o', path.join(TMP, 'export-wood.png'), '--quiet');
+  expect(errors).toEqual([]);
+});
