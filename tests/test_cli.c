@@ -231,6 +231,61 @@ static const bad_case k_bad_cases[] = {
     {"hand animate DIR/anim.json --plot OUT.png --plot-dofs X.Y", "--plot-dofs", "unknown DOF"},
     {"hand animate DIR/long-anim.json --bvh OUT.bvh --max-memory 1M", "10001 frames", "--max-memory"},
     {"hand animate DIR/garbage.json --bvh OUT.bvh", "garbage.json", "unexpected text"},
+    {"hand animate DIR/anim.json --glb OUT.gltf", "--glb", ".glb"},
+    {"hand animate DIR/anim.json --landmarks OUT.txt", "--landmarks", ".csv, .json"},
+    {"hand animate DIR/anim.json --meshes-dir DIR/file", "file", "not a folder"},
+    {"hand animate DIR/anim.json --meshes-dir OUT --mesh-frames 99", "--mesh-frames", "comma-separated"},
+    {"hand animate DIR/anim.json --meshes-dir OUT --mesh-frames 0,", "--mesh-frames", "comma-separated"},
+    {"hand animate DIR/anim.json --bvh OUT.bvh --mesh-frames 0", "--mesh-frames", "needs --meshes-dir"},
+    {"hand animate DIR/anim.json --bvh OUT.bvh --skinning lbs", "--skinning", "needs --glb"},
+    {"hand animate DIR/anim.json --glb OUT.glb --texture OUT", "--texture", "needs --meshes-dir"},
+    {"hand animate DIR/anim.json --glb OUT.glb --material wax", "--material", "blend or pbr"},
+    {"hand animate DIR/anim.json --glb OUT.glb --skinning soft", "--skinning", "rigid, lbs or dqs"},
+    {"hand animate DIR/anim.json --glb OUT.glb --texture-size 32", "--texture-size", "[64, 8192]"},
+    {"hand animate DIR/anim.json --glb OUT.glb --triangles 200000 --max-memory 64M", "--triangles", "--max-memory"},
+    {"hand animate DIR/anim.json --meshes-dir OUT --flesh DIR/garbage.json", "garbage.json", "unexpected text"},
+    /* hand mesh */
+    {"hand mesh", "-o", ".glb"},
+    {"hand mesh -o OUT.stl", "-o", ".obj, .ply, .glb"},
+    {"hand mesh -o DIR/folder.glb", "folder.glb", "names a folder"},
+    {"hand mesh --pin L.MCP.flex=0x3c -o OUT.obj", "--pin", "[-1000000, 1000000]"},
+    {"hand mesh --pin L.MCP.flex=1 --pin L.MCP.flex=2 -o OUT.obj", "L.MCP.flex", "already has --pin"},
+    {"hand mesh --pin L.MCP.flex=1 --pose DIR/pose.json -o OUT.obj", "--pose", "--pin"},
+    {"hand mesh --pose DIR/garbage.json -o OUT.obj", "garbage.json", "unexpected text"},
+    {"hand mesh --pose DIR/folder.png -o OUT.obj", "folder.png", "not a regular file"},
+    {"hand mesh --flesh DIR/garbage.json -o OUT.obj", "garbage.json", "unexpected text"},
+    {"hand mesh --triangles 100 -o OUT.obj", "--triangles", "[500, 200000]"},
+    {"hand mesh --lod 3 -o OUT.obj", "--lod", "[0, 2]"},
+    {"hand mesh --skinning soft -o OUT.obj", "--skinning", "rigid, lbs or dqs"},
+    {"hand mesh --material wax -o OUT.glb", "--material", "blend or pbr"},
+    {"hand mesh --material pbr -o OUT.obj", "--material", ".glb"},
+    {"hand mesh --texture OUT -o OUT.glb", "--texture", ".glb"},
+    {"hand mesh --texture-size 64 -o OUT.obj", "--texture-size", "--texture"},
+    {"hand mesh --texture OUT --texture-size 10 -o OUT.obj", "--texture-size", "[64, 8192]"},
+    {"hand mesh --constraints nope -o OUT.obj", "--constraints", "natural"},
+    {"hand mesh --triangles 200000 --max-memory 64M -o OUT.glb", "--triangles", "--max-memory"},
+    /* hand scan */
+    {"hand scan", "-o", "is required"},
+    {"hand scan -o DIR/file", "file", "not a folder"},
+    {"hand scan --lines 8 -o OUT", "--lines", "[75, 4096]"},
+    {"hand scan --points 5000 -o OUT", "--points", "[60, 4096]"},
+    {"hand scan --slices 1 -o OUT", "--slices", "[2, 2000]"},
+    {"hand scan --noise -1 -o OUT", "--noise", "[0, 10]"},
+    {"hand scan --pin I.MCP.flex=0x10 -o OUT", "--pin", "[-1000000, 1000000]"},
+    {"hand scan --pin I.MCP.flex=1 --pin I.MCP.flex=2 -o OUT", "I.MCP.flex", "already has --pin"},
+    {"hand scan --bend I.MCP.flex=1 --bend I.MCP.flex=2 -o OUT", "I.MCP.flex", "already has --bend"},
+    {"hand scan --bend X.MCP.flex=1 -o OUT", "--bend", "unknown DOF"},
+    {"hand scan --bend I.MCP.flex=1 --no-pictures -o OUT", "--bend", "--no-pictures"},
+    {"hand scan --pose DIR/garbage.json -o OUT", "garbage.json", "unexpected text"},
+    {"hand scan --input DIR/folder.png -o OUT", "folder.png", ".obj, .ply"},
+    {"hand scan --input DIR/no-such.ply -o OUT", "no-such.ply", "cannot open"},
+    {"hand scan --lines 4096 --points 4096 --max-memory 1G -o OUT", "--lines x --points", "--max-memory"},
+    /* studio */
+    {"studio --port 70000", "--port", "[0, 65535]"},
+    {"studio --port x", "--port", "[0, 65535]"},
+    {"studio --host nowhere", "--host", "IPv4"},
+    {"studio --root DIR/file", "--root", "must be a folder"},
+    {"studio --root DIR", "--root", "no index.html"},
     /* hand calibrate */
     {"hand calibrate DIR/s.csv --method x -o OUT.json", "--method", "mixture or gaussian"},
     /* hand evaluate, hand synthesize */
@@ -442,6 +497,22 @@ static void test_outputs_are_all_or_nothing(void **state)
         assert_one_line_error(&g_run, 1);
         assert_non_null(strstr(g_run.err, "No space left on device"));
 
+        /* hand mesh: the OBJ, its MTL and the two texture maps together (the normal map
+           onto the full device) */
+        char texture[1024];
+        snprintf(texture, sizeof texture, "%s/full-normal.png", dir);
+        assert_int_equal(symlink("/dev/full", texture), 0);
+        snprintf(texture, sizeof texture, "%s/full", dir);
+        snprintf(obj, sizeof obj, "%s/hand.obj", dir);
+        sk_test_cli(&g_run, "hand mesh -q --triangles 500 --texture '%s' --texture-size 64 -o '%s'", texture, obj);
+        assert_one_line_error(&g_run, 1);
+        assert_non_null(strstr(g_run.err, "No space left on device"));
+        assert_false(sk_test_file_exists(obj));
+        snprintf(obj, sizeof obj, "%s/hand.mtl", dir);
+        assert_false(sk_test_file_exists(obj));
+        snprintf(obj, sizeof obj, "%s/full-albedo.png", dir);
+        assert_false(sk_test_file_exists(obj));
+
         snprintf(scene, sizeof scene, "%s/anim.json", dir);
         text = "{\"steps\": 3, \"keys\": [{\"pin\": {\"L.MCP.flex\": 0}}, "
                "{\"pin\": {\"L.MCP.flex\": 60}}]}";
@@ -455,7 +526,31 @@ static void test_outputs_are_all_or_nothing(void **state)
         assert_non_null(strstr(g_run.err, "No space left on device"));
         assert_false(sk_test_file_exists(path));
         assert_false(sk_test_file_exists(frames));
+        /* hand animate's surface outputs: the landmarks and meshes go with the failed .glb */
+        char glb[1024], landmarks[1024];
+        snprintf(glb, sizeof glb, "%s/full.glb", dir);
+        snprintf(landmarks, sizeof landmarks, "%s/landmarks.csv", dir);
+        sk_test_cli(&g_run,
+                    "hand animate '%s' -q --landmarks '%s' --meshes-dir '%s' --mesh-frames 0 --triangles 500 "
+                    "--texture-size 64 --glb '%s'",
+                    scene, landmarks, frames, glb);
+        assert_one_line_error(&g_run, 1);
+        assert_non_null(strstr(g_run.err, "No space left on device"));
+        assert_false(sk_test_file_exists(landmarks));
+        assert_false(sk_test_file_exists(frames));
     }
+
+    /* hand scan: its many files appear in DIR together; one that cannot be moved into
+       place (a folder of its name) takes the others back */
+    char scan[1024];
+    snprintf(scan, sizeof scan, "%s/scan/patches.obj", dir);
+    snprintf(command, sizeof command, "mkdir -p '%s'", scan);
+    assert_int_equal(system(command), 0);
+    snprintf(scan, sizeof scan, "%s/scan", dir);
+    sk_test_cli(&g_run, "hand scan -q --lines 75 --points 60 --slices 20 --no-pictures -o '%s'", scan);
+    assert_one_line_error(&g_run, 1);
+    assert_non_null(strstr(g_run.err, "patches.obj"));
+    assert_int_equal(sk_test_count_files_containing(scan, "."), 3); /* ., .. and patches.obj */
     assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
     assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
 

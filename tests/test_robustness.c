@@ -14,6 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cjson/cJSON.h>
+
 #include "test_support.h"
 
 #include "shitsukan/hand.h"
@@ -23,6 +25,7 @@
 #include "shitsukan/noise_map.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/render.h"
+#include "shitsukan/skin.h"
 #include "shitsukan/wood.h"
 
 /* ------------------------------------------------------------ strict JSON */
@@ -210,6 +213,83 @@ static void test_documented_endpoints_are_accepted(void **state)
     scene->unit_mm = 0.9e-6f;
     assert_int_equal(sk_render_scene_desc_validate(scene, &err), SK_ERROR_INVALID_ARGUMENT);
     free(scene);
+}
+
+/* Every float and double key of the skin and wood schemas (their nested objects too, as
+ * the schema describes them) at its documented minimum and maximum: binding and validating
+ * never says that very value is out of range (a key may still be refused with another, as
+ * a pair of keys that must be ordered). */
+typedef sk_result (*validate_fn)(const void *desc, sk_error *err);
+static sk_result validate_skin(const void *d, sk_error *err) { return sk_skin_desc_validate(d, err); }
+static sk_result validate_wood(const void *d, sk_error *err) { return sk_wood_desc_validate(d, err); }
+
+static int sweep_endpoints(const sk_schema *schema, const cJSON *fields, const char *prefix, validate_fn validate,
+                           size_t desc_size, int *checked)
+{
+    int failures = 0;
+    const cJSON *f;
+    cJSON_ArrayForEach(f, fields)
+    {
+        const cJSON *key = cJSON_GetObjectItemCaseSensitive(f, "key");
+        const cJSON *type = cJSON_GetObjectItemCaseSensitive(f, "type");
+        if (!cJSON_IsString(key) || !cJSON_IsString(type)) continue;
+        char path[256];
+        snprintf(path, sizeof path, "%s%s%s", prefix, prefix[0] ? "." : "", key->valuestring);
+        if (strcmp(type->valuestring, "object") == 0) {
+            failures += sweep_endpoints(schema, cJSON_GetObjectItemCaseSensitive(f, "fields"), path, validate,
+                                        desc_size, checked);
+            continue;
+        }
+        if (strcmp(type->valuestring, "float") != 0 && strcmp(type->valuestring, "double") != 0) continue;
+        const cJSON *ends[2] = {cJSON_GetObjectItemCaseSensitive(f, "min"), cJSON_GetObjectItemCaseSensitive(f, "max")};
+        for (int e = 0; e < 2; e++) {
+            if (!cJSON_IsNumber(ends[e])) continue;
+            char set[320];
+            snprintf(set, sizeof set, "%s=%.17g", path, ends[e]->valuedouble);
+            sk_preset *p = NULL;
+            sk_error err = {0};
+            assert_int_equal(sk_preset_create(&p, &err), SK_OK);
+            void *desc = calloc(1, desc_size);
+            assert_non_null(desc);
+            sk_result r = sk_preset_set(p, set, &err);
+            if (r == SK_OK) r = sk_preset_bind(p, schema, desc, &err);
+            if (r == SK_OK) r = validate(desc, &err);
+            char refused[300];
+            snprintf(refused, sizeof refused, "%s = ", path);
+            if (r != SK_OK && strstr(err.message, refused) && strstr(err.message, "out of range")) {
+                print_error("%s: %s\n", set, err.message);
+                failures++;
+            }
+            (*checked)++;
+            sk_preset_free(p);
+            free(desc);
+        }
+    }
+    return failures;
+}
+
+static void test_every_schema_endpoint_is_accepted(void **state)
+{
+    (void)state;
+    const struct {
+        const sk_schema *schema;
+        validate_fn validate;
+        size_t size;
+    } schemas[] = {{&sk_skin_schema, validate_skin, sizeof(sk_skin_desc)},
+                   {&sk_wood_schema, validate_wood, sizeof(sk_wood_desc)}};
+    int failures = 0, checked = 0;
+    for (size_t i = 0; i < sizeof schemas / sizeof schemas[0]; i++) {
+        char *text = sk_schema_describe_json(schemas[i].schema);
+        assert_non_null(text);
+        cJSON *root = cJSON_Parse(text);
+        free(text);
+        assert_non_null(root);
+        failures += sweep_endpoints(schemas[i].schema, cJSON_GetObjectItemCaseSensitive(root, "fields"), "",
+                                    schemas[i].validate, schemas[i].size, &checked);
+        cJSON_Delete(root);
+    }
+    assert_true(checked > 40);
+    assert_int_equal(failures, 0);
 }
 
 /* ------------------------------------------------------------ atomic files */
@@ -572,6 +652,7 @@ int main(void)
         cmocka_unit_test(test_set_parses_the_whole_value),
         cmocka_unit_test(test_calibration_refuses_overflow),
         cmocka_unit_test(test_documented_endpoints_are_accepted),
+        cmocka_unit_test(test_every_schema_endpoint_is_accepted),
         cmocka_unit_test(test_atomic_file_writes_through_symlinks),
         cmocka_unit_test(test_atomic_file_writes_devices_and_fifos_in_place),
         cmocka_unit_test(test_atomic_file_takes_the_longest_names),

@@ -422,11 +422,26 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!draw_rc) draw_rc = require_option(cmd, args, "plot", plot_options);
     if (!draw_rc) draw_rc = parse_draw_options(cmd, args, &draw);
     if (draw_rc) return draw_rc;
+    static const char *const surface_options[] = {"skinning", "triangles", "flesh", NULL};
+    static const char *const mesh_options[] = {"mesh-frames", "texture", NULL};
+    if (!cli_has(cmd, args, "glb") && !cli_has(cmd, args, "meshes-dir"))
+        draw_rc = require_option(cmd, args, "glb", surface_options);
+    if (!draw_rc) draw_rc = require_option(cmd, args, "meshes-dir", mesh_options);
+    if (!draw_rc) draw_rc = require_option(cmd, args, "glb", (const char *const[]){"material", NULL});
+    if (!draw_rc && cli_has(cmd, args, "texture-size") && !cli_has(cmd, args, "glb") && !cli_has(cmd, args, "texture"))
+        draw_rc = cli_fail(CLI_EXIT_USAGE, "--texture-size needs --glb or --texture");
+    if (draw_rc) return draw_rc;
+    hand_animate_surface surface;
+    memset(&surface, 0, sizeof surface);
+    static const char *const k_glb_format[] = {".glb", NULL};
     const cli_output outputs[] = {{"--bvh", &bvh, NULL, false},
                                    {"--positions", &positions, k_positions_formats, false},
                                    {"--angles", &angles, NULL, false},
                                    {"--plot", &plot, k_png_format, false},
-                                   {"--frames-dir", &frames_dir, NULL, true}};
+                                   {"--frames-dir", &frames_dir, NULL, true},
+                                   {"--glb", &surface.glb, k_glb_format, false},
+                                   {"--landmarks", &surface.landmarks, k_positions_formats, false},
+                                   {"--meshes-dir", &surface.meshes_dir, NULL, true}};
     sk_output_set *written = NULL;
     sk_error err = {0};
     sk_hand_animation *anim = malloc(sizeof *anim);
@@ -454,7 +469,13 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_check_memory(args, (double)frames * SK_HAND_DOF_COUNT * sizeof *dofs * 2 + picture,
                               driver);
     }
-    if (!rc) rc = cli_reserve_outputs(outputs, 5, &written);
+    /* the surface outputs' options, memory and texture files */
+    if (!rc && surface_outputs) rc = hand_animate_surface_parse(cmd, args, frames, &surface);
+    if (!rc && (surface.glb || surface.meshes_dir))
+        rc = hand_surface_plan_check_memory(args, &surface.plan, &skel, surface.glb || surface.plan.texture,
+                                            surface.glb ? SK_HAND_LOD_COUNT : 1);
+    if (!rc) rc = cli_reserve_outputs(outputs, 8, &written);
+    if (!rc && surface_outputs) rc = hand_surface_plan_reserve(&surface.plan, written, NULL);
     if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))
         rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     sk_progress_bar bar;
@@ -475,9 +496,10 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_fail_error(&err);
     if (!rc && plot) rc = write_angle_plot(cmd, args, anim, dofs, frames, plot);
     if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
-    if (!rc && surface_outputs) rc = hand_animate_surface_outputs(cmd, args, &skel, dofs, frames, anim->fps);
+    if (!rc && surface_outputs) rc = hand_animate_surface_write(&surface, &skel, dofs, frames, anim->fps);
     if (written) rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
+    hand_animate_surface_free(&surface);
     sk_hand_solver_destroy(solver);
     free(dofs);
     free(anim);
