@@ -93,8 +93,9 @@ bool sk_in_range_f(double value, double lo, double hi)
 
 sk_result sk_check_range_f(sk_error *err, const char *name, double value, double lo, double hi)
 {
-    sk_result r = sk_check_finite(err, name, value);
-    if (r != SK_OK) return r;
+    if (!isfinite(value))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s is not a finite number (got %g; accepted: [%g, %g])",
+                       name, value, lo, hi);
     if (!sk_in_range_f(value, lo, hi))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %g is out of range [%g, %g]", name,
                        value, lo, hi);
