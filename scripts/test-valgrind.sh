@@ -16,8 +16,11 @@ vg="valgrind --tool=memcheck --error-exitcode=99 --leak-check=full --errors-for-
 #   test_wood       renders many cuts at several thread counts (about 15 s native).
 #   test_noise_map  renders maps at several sizes and thread counts (about 20 s native).
 #   install_package builds another project with cmake: not a test of our memory use.
+#   studio_browser  drives headless Chromium against the served page for minutes; the
+#                   server's request parser is replayed by fuzz_http_request and its
+#                   end-to-end test (test_studio_server) runs here.
 # Those run under ASan + UBSan in make test-asan.
-skip='^(test_render_.*|test_skin|test_wood|test_noise_map|install_package)$'
+skip='^(test_render_.*|test_skin|test_wood|test_noise_map|install_package|studio_browser)$'
 export SK_TEST_SANITIZED=1 OMP_NUM_THREADS=2
 export SK_TEST_CLI_WRAPPER="$vg"
 mapfile -t tests < <(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p')

@@ -261,6 +261,7 @@ static const bad_case k_bad_cases[] = {
     {"hand mesh --material pbr -o OUT.obj", "--material", ".glb"},
     {"hand mesh --texture OUT -o OUT.glb", "--texture", ".glb"},
     {"hand mesh --texture-size 64 -o OUT.obj", "--texture-size", "--texture"},
+    {"hand mesh --texture OUT -o /dev/null", "--texture", "device or FIFO"},
     {"hand mesh --texture OUT --texture-size 10 -o OUT.obj", "--texture-size", "[64, 8192]"},
     {"hand mesh --constraints nope -o OUT.obj", "--constraints", "natural"},
     {"hand mesh --triangles 200000 --max-memory 64M -o OUT.glb", "--triangles", "--max-memory"},
@@ -359,6 +360,8 @@ static const bad_case k_bad_cases[] = {
     {"render DIR/scene.json --export OUT.glb --texture-size 8", "--texture-size", "[16, 8192]"},
     {"render DIR/scene.json --export OUT.glb --exr OUT.exr", "--exr", "needs -o"},
     {"render DIR/scene.json --export DIR/folder.glb -o OUT.png", "--export", "names a folder"},
+    {"render DIR/wood-scene.json --export OUT.glb --texture-size 8192 --max-memory 256M", "--texture-size",
+     "--max-memory"},
 };
 
 /* Small inputs of every kind the commands read. */
@@ -392,6 +395,11 @@ static void make_inputs(const char *dir)
     const char *scene = "{\"image\": {\"width\": 8, \"height\": 8, \"samples\": 1}, "
                         "\"objects\": [{\"shape\": \"sphere\"}]}";
     sk_test_write_file(path, scene, strlen(scene));
+    snprintf(path, sizeof path, "%s/wood-scene.json", dir);
+    const char *wood = "{\"image\": {\"width\": 8, \"height\": 8, \"samples\": 1}, \"materials\": [{\"name\": "
+                       "\"oak\", \"type\": \"wood\", \"wood_preset\": \"oak\"}], \"objects\": [{\"shape\": "
+                       "\"sphere\", \"material\": \"oak\"}]}";
+    sk_test_write_file(path, wood, strlen(wood));
 }
 
 /* Replaces OUT and DIR in `text`. */

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli.h"
 #include "cmd_hand_surface.h"
@@ -89,6 +90,9 @@ int hand_surface_plan_reserve(hand_surface_plan *p, sk_output_set *set, const ch
         r = sk_output_set_file(set, p->albedo, &p->albedo_out, &err);
         if (r == SK_OK) r = sk_output_set_file(set, p->normal, &p->normal_out, &err);
     }
+    struct stat st;
+    if (r == SK_OK && obj && p->texture && stat(obj, &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)))
+        return cli_fail(CLI_EXIT_USAGE, "--texture with -o '%s' (a device or FIFO): the MTL needs an .obj file name", obj);
     if (r == SK_OK && obj && p->texture) {
         char *mtl = sk_obj_mtl_path(obj);
         if (!mtl) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");

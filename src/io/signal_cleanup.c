@@ -26,6 +26,7 @@ static atomic_bool g_folder[SLOTS];
 static atomic_flag g_installed = ATOMIC_FLAG_INIT;
 static const int k_signals[] = {SIGINT, SIGTERM, SIGHUP};
 
+#if defined(__linux__) && defined(SYS_getdents64)
 /* Linux directory entries as getdents64 returns them (async-signal-safe listing). */
 struct linux_dirent64 {
     unsigned long long d_ino;
@@ -34,11 +35,13 @@ struct linux_dirent64 {
     unsigned char d_type;
     char d_name[];
 };
+#endif
 
 /* Removes the files of a staged folder and the folder (the folder is flat: its files are
  * the outputs of one run). Only async-signal-safe calls. */
 static void remove_folder(const char *path)
 {
+#if defined(__linux__) && defined(SYS_getdents64)
     int fd = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd >= 0) {
         char buf[4096] __attribute__((aligned(8)));
@@ -55,6 +58,9 @@ static void remove_folder(const char *path)
         }
         close(fd);
     }
+#endif
+    /* elsewhere (the WebAssembly build) there is no async-signal-safe listing: an empty
+       folder is removed, a full one stays */
     rmdir(path);
 }
 
