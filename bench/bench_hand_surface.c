@@ -9,6 +9,7 @@
 #include <sys/resource.h>
 #include <time.h>
 
+#include "bench_load.h"
 #include "shitsukan/hand.h"
 
 static void fail(const sk_error *err)
@@ -35,13 +36,8 @@ int main(void)
     sk_error err = {0};
     sk_hand_skeleton skel;
     if (sk_hand_skeleton_init(&skel, NULL, &err) != SK_OK) fail(&err);
-    FILE *la = fopen("/proc/loadavg", "r");
-    char load[64] = "?";
-    if (la) {
-        if (!fgets(load, sizeof load, la)) load[0] = '\0';
-        fclose(la);
-        load[strcspn(load, "\n")] = '\0';
-    }
+    char load[64];
+    bench_load_average(load, sizeof load);
     printf("load average: %s; threads: %d\n", load, sk_threads_max());
     /* meshing: best of 3 on all threads, and on one */
     sk_hand_surface *s = NULL;

@@ -69,7 +69,7 @@ static void test_bad_usage_exits_2_with_one_line(void **state)
 static void test_groups_have_help(void **state)
 {
     (void)state;
-    static const char *const groups[] = {"hand", "wood"};
+    static const char *const groups[] = {"hand", "wood", "tissue"};
     for (size_t i = 0; i < sizeof groups / sizeof groups[0]; i++) {
         assert_int_equal(sk_test_cli(&g_run, "%s --help", groups[i]), 0);
         assert_non_null(strstr(g_run.out, "subcommands:"));
@@ -79,15 +79,15 @@ static void test_groups_have_help(void **state)
         assert_non_null(strstr(g_run.err, "needs a subcommand"));
         sk_test_cli(&g_run, "%s no-such-subcommand", groups[i]);
         assert_one_line_error(&g_run, 2);
-        assert_non_null(strstr(g_run.err, "unknown subcommand"));
+        assert_non_null(strstr(g_run.err, "unknown command"));
     }
     assert_int_equal(sk_test_cli(&g_run, "hand --help"), 0);
-    assert_non_null(strstr(g_run.out, "  pose "));
-    assert_non_null(strstr(g_run.out, "  calibrate "));
+    assert_non_null(strstr(g_run.out, "  hand pose "));
+    assert_non_null(strstr(g_run.out, "  hand calibrate "));
     /* a command that is also a group lists its subcommands under its own help */
     assert_int_equal(sk_test_cli(&g_run, "skin --help"), 0);
     assert_non_null(strstr(g_run.out, "usage: shitsukan skin [options]"));
-    assert_non_null(strstr(g_run.out, "  maps "));
+    assert_non_null(strstr(g_run.out, "  skin maps "));
 }
 
 /* --region sums overflowed a signed integer (0,0,4,4 ran for huge x, w). */
@@ -281,6 +281,28 @@ static const bad_case k_bad_cases[] = {
     {"hand scan --input DIR/folder.png -o OUT", "folder.png", ".obj, .ply"},
     {"hand scan --input DIR/no-such.ply -o OUT", "no-such.ply", "cannot open"},
     {"hand scan --lines 4096 --points 4096 --max-memory 1G -o OUT", "--lines x --points", "--max-memory"},
+    /* tissue */
+    {"tissue skin --character nobody -o OUT.obj", "--character", "arm, body"},
+    {"tissue skin --character DIR/garbage.json -o OUT.obj", "garbage.json", "unexpected text"},
+    {"tissue skin --character arm -o OUT.stl", "-o", ".obj, .ply"},
+    {"tissue skin --character arm -o OUT.obj --stats OUT.txt", "--stats", ".json"},
+    {"tissue skin --character arm --layers DIR/file", "file", "not a folder"},
+    {"tissue skin --character arm --set skin.spacing_mm=nan -o OUT.obj", "skin.spacing_mm", "[0, 50]"},
+    {"tissue skin --character arm --set skin.spacing_mm=1 --max-memory 512M -o OUT.obj", "skin.spacing_mm",
+     "--max-memory"},
+    {"tissue skin --character arm", "nothing to write", "--layers"},
+    {"tissue run --character arm --motion curl -o DIR/file", "file", "not a folder"},
+    {"tissue run --character arm --motion curl --plot OUT.jpg -o OUT", "--plot", ".png"},
+    {"tissue run --character arm --motion curl --fps 0 -o OUT", "--fps", "[1, 1000]"},
+    {"tissue run --character arm --motion curl --frames 5:2 -o OUT", "--frames", "A:B"},
+    {"tissue run --character arm --motion curl --render-width 10 -o OUT", "--render-width", "[64, 4096]"},
+    {"tissue run --character arm --motion DIR/no-such.bvh -o OUT", "no-such.bvh", "cannot open"},
+    {"tissue run --character arm --motion dance -o OUT", "--motion", "curl, jump, walk"},
+    {"tissue run --character arm --set skin.spacing_mm=10 --set skin.dilation_radius_mm=15 --motion curl "
+     "--resume DIR/file -o OUT",
+     "file", "SKTSTATE"},
+    {"tissue motion dance -o OUT.bvh", "dance", "curl, jump or walk"},
+    {"tissue motion curl -o OUT.txt", "-o", ".bvh"},
     /* studio */
     {"studio --port 70000", "--port", "[0, 65535]"},
     {"studio --port x", "--port", "[0, 65535]"},
@@ -546,6 +568,23 @@ static void test_outputs_are_all_or_nothing(void **state)
         assert_non_null(strstr(g_run.err, "No space left on device"));
         assert_false(sk_test_file_exists(landmarks));
         assert_false(sk_test_file_exists(frames));
+    }
+
+    /* tissue run: the folder and the plot go with the failed saved state */
+    if (have_full) {
+        char run[1024], plot[1024], saved[1024];
+        snprintf(run, sizeof run, "%s/tissue", dir);
+        snprintf(plot, sizeof plot, "%s/tissue-plot.png", dir);
+        snprintf(saved, sizeof saved, "%s/full.state", dir);
+        assert_int_equal(symlink("/dev/full", saved), 0);
+        sk_test_cli(&g_run,
+                    "tissue run --character arm --set skin.spacing_mm=10 --set skin.dilation_radius_mm=15 "
+                    "--motion curl --frames 0:2 -q -o '%s' --plot '%s' --save-state '%s'",
+                    run, plot, saved);
+        assert_one_line_error(&g_run, 1);
+        assert_non_null(strstr(g_run.err, "No space left on device"));
+        assert_false(sk_test_file_exists(run));
+        assert_false(sk_test_file_exists(plot));
     }
 
     /* hand scan: its many files appear in DIR together; one that cannot be moved into

@@ -562,6 +562,41 @@ static void test_output_set_is_all_or_nothing(void **state)
     assert_false(sk_test_file_exists(more));
     assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
 
+    /* a folder with subfolders (as tissue run's frames/): committed into the existing
+       folder, the subfolders merged; aborted, nothing of it stays */
+    char sub[1024];
+    for (int round = 0; round < 3; round++) {
+        assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+        assert_int_equal(sk_output_set_folder(set, frames, &sf, &err), SK_OK);
+        snprintf(sub, sizeof sub, "%s/sub", sf);
+        assert_int_equal(sk_make_dirs(sub, &err), SK_OK);
+        snprintf(frame, sizeof frame, "%s/sub/f%d.txt", sf, round);
+        assert_int_equal(write_text(frame, "S", &err), SK_OK);
+        if (round < 2) {
+            assert_int_equal(sk_output_set_commit(set, &err), SK_OK);
+        } else {
+            sk_output_set_abort(set);
+        }
+        snprintf(frame, sizeof frame, "%s/sub/f%d.txt", frames, round);
+        assert_int_equal(sk_test_file_exists(frame), round < 2);
+    }
+    snprintf(frame, sizeof frame, "%s/sub/f0.txt", frames);
+    assert_true(sk_test_file_exists(frame));
+    /* a commit that fails after merging a subfolder takes the merged files back out */
+    assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+    assert_int_equal(sk_output_set_folder(set, frames, &sf, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, c, &sb, &err), SK_OK);
+    snprintf(sub, sizeof sub, "%s/sub", sf);
+    assert_int_equal(sk_make_dirs(sub, &err), SK_OK);
+    snprintf(frame, sizeof frame, "%s/sub/f9.txt", sf);
+    assert_int_equal(write_text(frame, "S", &err), SK_OK);
+    assert_int_equal(sk_output_set_commit(set, &err), SK_ERROR_IO); /* c was not written */
+    snprintf(frame, sizeof frame, "%s/sub/f9.txt", frames);
+    assert_false(sk_test_file_exists(frame));
+    snprintf(frame, sizeof frame, "%s/sub/f1.txt", frames);
+    assert_true(sk_test_file_exists(frame));
+    assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+
     /* a reserved file that was never written fails the commit, which removes the rest */
     assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
     assert_int_equal(sk_output_set_file(set, c, &sb, &err), SK_OK);

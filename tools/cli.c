@@ -69,7 +69,7 @@ static void print_subcommands(const char *group, FILE *out)
     for (int i = 0; cli_commands[i]; i++) {
         const char *name = cli_commands[i]->name;
         if (strncmp(name, group, n) == 0 && name[n] == ' ')
-            fprintf(out, "  %-16s %s\n", name + n + 1, cli_commands[i]->summary);
+            fprintf(out, "  %-16s %s\n", name, cli_commands[i]->summary);
     }
 }
 

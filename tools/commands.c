@@ -16,6 +16,9 @@ extern const cli_command cmd_skin_maps;
 extern const cli_command cmd_wood_cut;
 extern const cli_command cmd_wood_sweep;
 extern const cli_command cmd_render;
+extern const cli_command cmd_tissue_skin;
+extern const cli_command cmd_tissue_run;
+extern const cli_command cmd_tissue_motion;
 extern const cli_command cmd_studio;
 
 const cli_command *const cli_commands[] = {
@@ -34,6 +37,9 @@ const cli_command *const cli_commands[] = {
     &cmd_wood_cut,
     &cmd_wood_sweep,
     &cmd_render,
+    &cmd_tissue_skin,
+    &cmd_tissue_run,
+    &cmd_tissue_motion,
     &cmd_studio,
     NULL,
 };

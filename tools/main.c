@@ -1,5 +1,6 @@
 /* The `shitsukan` command: dispatches to a subcommand (one or two words) and maps
  * results to exit codes (0 ok, 1 runtime failure, 2 bad usage or input). */
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -64,7 +65,7 @@ int main(int argc, char **argv)
             return CLI_EXIT_OK;
         }
         if (argc > 2 && argv[2][0] != '-')
-            return cli_fail(CLI_EXIT_USAGE, "unknown subcommand '%s %s' (see 'shitsukan %s --help')",
+            return cli_fail(CLI_EXIT_USAGE, "unknown command '%s %s' (see 'shitsukan %s --help')",
                             argv[1], argv[2], argv[1]);
         char names[256];
         cli_group_subcommands(argv[1], names, sizeof names);

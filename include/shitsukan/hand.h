@@ -25,6 +25,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "shitsukan/bvh.h"
 #include "shitsukan/core.h"
 #include "shitsukan/draw.h"
 #include "shitsukan/gltf.h"
@@ -637,29 +638,7 @@ sk_result sk_hand_bvh_write(const sk_hand_skeleton *skeleton, const double *dofs
 sk_result sk_hand_bvh_write_stream(const sk_hand_skeleton *skeleton, const double *dofs,
                                    int frame_count, double frame_time, FILE *out);
 
-/* A BVH file read back: any hierarchy; joint positions by its own forward kinematics. */
-#define SK_BVH_MAX_JOINTS 256
-typedef struct sk_bvh {
-    int joint_count;                 /* joints and end sites */
-    char name[SK_BVH_MAX_JOINTS][64]; /* end sites: "<parent>_end" */
-    int parent[SK_BVH_MAX_JOINTS];
-    sk_vec3d offset[SK_BVH_MAX_JOINTS];
-    int channel_count[SK_BVH_MAX_JOINTS];
-    int channel_first[SK_BVH_MAX_JOINTS]; /* index of the first channel in a frame */
-    char channel[SK_BVH_MAX_JOINTS][6];   /* 'x','y','z' position, 'X','Y','Z' rotation */
-    int frame_count;
-    int channels_per_frame;
-    double frame_time;
-    double *motion; /* frame_count x channels_per_frame */
-} sk_bvh;
-
-sk_result sk_bvh_parse(const char *text, size_t length, const char *source_name, sk_bvh *out,
-                       sk_error *err);
-sk_result sk_bvh_load_file(const char *path, sk_bvh *out, sk_error *err);
-void sk_bvh_free(sk_bvh *bvh);
-/* World positions of every joint (and end site) at a frame. */
-void sk_bvh_positions(const sk_bvh *bvh, int frame, sk_vec3d *out);
-int sk_bvh_find(const sk_bvh *bvh, const char *name);
+/* BVH files are read (and written) by the general functions of include/shitsukan/bvh.h. */
 /* Name in a BVH written by sk_hand_bvh_write of each hand point ("Hand", "T_CMC", ...,
  * "L_DIP", "L_DIP_end" for the tip). */
 const char *sk_hand_point_bvh_name(int point);

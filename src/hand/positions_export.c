@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "hand/hand_private.h"
+#include "io/json_file.h"
 #include "shitsukan/io.h"
 
 static sk_result write_csv(FILE *out, const sk_hand_skeleton *s, const double *dofs, int frames)
@@ -106,18 +107,5 @@ sk_result sk_hand_pose_write_json(const sk_hand_skeleton *s, const double dofs[S
             cJSON_AddBoolToObject(si, "converged", info->converged);
         }
     }
-    char *text = cJSON_Print(root);
-    cJSON_Delete(root);
-    if (!text) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
-    sk_atomic_file file;
-    sk_result r = sk_atomic_file_open(&file, path, err);
-    if (r == SK_OK) {
-        if (fputs(text, file.fp) < 0 || fputc('\n', file.fp) == EOF) {
-            r = sk_atomic_file_write_failed(&file, err);
-        } else {
-            r = sk_atomic_file_commit(&file, err);
-        }
-    }
-    cJSON_free(text);
-    return r;
+    return sk__json_write_file(root, path, err);
 }

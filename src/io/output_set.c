@@ -22,7 +22,7 @@ typedef struct entry {
     char *staged; /* where it is written until commit (the path given, for a stream) */
     int slot;     /* signal cleanup slot of `staged`, or -1 */
     bool placed;  /* commit has moved it into place */
-    char **moved; /* folder: the files commit moved into an existing final folder */
+    char **moved; /* folder: the files and folders commit moved into an existing final folder */
     int moved_count;
 } entry;
 
@@ -213,7 +213,7 @@ sk_result sk_output_set_folder(sk_output_set *set, const char *path, const char 
     return SK_OK;
 }
 
-/* Removes a flat folder of outputs (files only) and the folder. */
+/* Removes a folder of this run's outputs with its files and subfolders. */
 static void remove_folder(const char *path)
 {
     DIR *dir = opendir(path);
@@ -223,11 +223,59 @@ static void remove_folder(const char *path)
             if (strcmp(d->d_name, ".") == 0 || strcmp(d->d_name, "..") == 0) continue;
             char child[4096];
             snprintf(child, sizeof child, "%s/%s", path, d->d_name);
-            unlink(child);
+            struct stat st;
+            if (lstat(child, &st) == 0 && S_ISDIR(st.st_mode)) remove_folder(child);
+            else unlink(child);
         }
         closedir(dir);
     }
     rmdir(path);
+}
+
+/* A file or folder this run moved into place: removed on undo. */
+static void remove_moved(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) == 0 && S_ISDIR(st.st_mode)) remove_folder(path);
+    else unlink(path);
+}
+
+static sk_result note_moved(entry *e, const char *to, sk_error *err)
+{
+    char **grown = realloc(e->moved, sizeof *grown * (size_t)(e->moved_count + 1));
+    if (!grown) return out_of_memory(err);
+    e->moved = grown;
+    if (!(e->moved[e->moved_count] = strdup(to))) return out_of_memory(err);
+    e->moved_count++;
+    return SK_OK;
+}
+
+/* Moves what staged folder `from` holds into existing folder `to`: files (and folders `to`
+   lacks) are renamed, a subfolder `to` already has is merged the same way. Everything
+   moved is listed in e->moved for undoing. */
+static sk_result merge_folder(entry *e, const char *from, const char *to, sk_error *err)
+{
+    DIR *dir = opendir(from);
+    if (!dir) return sk_fail(err, SK_ERROR_IO, "%s: cannot read (%s)", from, strerror(errno));
+    sk_result r = SK_OK;
+    struct dirent *d;
+    while (r == SK_OK && (d = readdir(dir)) != NULL) {
+        if (strcmp(d->d_name, ".") == 0 || strcmp(d->d_name, "..") == 0) continue;
+        char src[4096], dst[4096];
+        snprintf(src, sizeof src, "%s/%s", from, d->d_name);
+        snprintf(dst, sizeof dst, "%s/%s", to, d->d_name);
+        struct stat s_st, d_st;
+        if (lstat(src, &s_st) == 0 && S_ISDIR(s_st.st_mode) && stat(dst, &d_st) == 0 && S_ISDIR(d_st.st_mode)) {
+            r = merge_folder(e, src, dst, err);
+            if (r == SK_OK) rmdir(src);
+        } else if (rename(src, dst) != 0) {
+            r = sk_fail(err, SK_ERROR_IO, "%s: cannot move into place (%s)", dst, strerror(errno));
+        } else {
+            r = note_moved(e, dst, err);
+        }
+    }
+    closedir(dir);
+    return r;
 }
 
 /* Moves the files of staged folder e into its final folder (or renames the folder when
@@ -249,32 +297,7 @@ static sk_result place_folder(sk_output_set *set, entry *e, sk_error *err)
         }
         return SK_OK;
     }
-    DIR *dir = opendir(e->staged);
-    if (!dir) return sk_fail(err, SK_ERROR_IO, "%s: cannot read (%s)", e->staged, strerror(errno));
-    sk_result r = SK_OK;
-    struct dirent *d;
-    while (r == SK_OK && (d = readdir(dir)) != NULL) {
-        if (strcmp(d->d_name, ".") == 0 || strcmp(d->d_name, "..") == 0) continue;
-        char from[4096], to[4096];
-        snprintf(from, sizeof from, "%s/%s", e->staged, d->d_name);
-        snprintf(to, sizeof to, "%s/%s", e->final, d->d_name);
-        char **grown = realloc(e->moved, sizeof *grown * (size_t)(e->moved_count + 1));
-        char *copy = strdup(to);
-        if (!grown || !copy) {
-            if (grown) e->moved = grown;
-            free(copy);
-            r = out_of_memory(err);
-            break;
-        }
-        e->moved = grown;
-        if (rename(from, to) != 0) {
-            free(copy);
-            r = sk_fail(err, SK_ERROR_IO, "%s: cannot move into place (%s)", to, strerror(errno));
-        } else {
-            e->moved[e->moved_count++] = copy;
-        }
-    }
-    closedir(dir);
+    sk_result r = merge_folder(e, e->staged, e->final, err);
     if (r == SK_OK) rmdir(e->staged);
     return r;
 }
@@ -304,7 +327,7 @@ void sk_output_set_abort(sk_output_set *set)
             if (e->placed) unlink(e->final);
         } else if (e->kind == ENTRY_FOLDER) {
             remove_folder(e->staged);
-            for (int k = 0; k < e->moved_count; k++) unlink(e->moved[k]);
+            for (int k = e->moved_count - 1; k >= 0; k--) remove_moved(e->moved[k]);
         }
     }
     /* folders the set created, deepest first (only if empty: never another's files) */

@@ -37,25 +37,47 @@ struct linux_dirent64 {
 };
 #endif
 
-/* Removes the files of a staged folder and the folder (the folder is flat: its files are
- * the outputs of one run). Only async-signal-safe calls. */
+#if defined(__linux__) && defined(SYS_getdents64)
+static void empty_folder(int fd, int depth);
+
+/* Removes entry `name` of folder `dirfd`: a file, or a folder with what it holds (at most
+   `depth` levels further down). */
+static void remove_entry(int dirfd, const char *name, int depth)
+{
+    if (unlinkat(dirfd, name, 0) == 0 || depth <= 0) return;
+    int fd = openat(dirfd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd >= 0) {
+        empty_folder(fd, depth - 1);
+        close(fd);
+    }
+    unlinkat(dirfd, name, AT_REMOVEDIR);
+}
+
+static void empty_folder(int fd, int depth)
+{
+    char buf[2048] __attribute__((aligned(8)));
+    for (;;) {
+        long n = syscall(SYS_getdents64, fd, buf, sizeof buf);
+        if (n <= 0) break;
+        for (long off = 0; off < n;) {
+            struct linux_dirent64 *e = (struct linux_dirent64 *)(buf + off);
+            const char *name = e->d_name;
+            if (!(name[0] == '.' && (name[1] == '\0' || (name[1] == '.' && name[2] == '\0'))))
+                remove_entry(fd, name, depth);
+            off += e->d_reclen;
+        }
+    }
+}
+#endif
+
+/* Removes a staged folder with its files and subfolders (the outputs of one run, a few
+ * levels deep at most). Only async-signal-safe calls. */
 static void remove_folder(const char *path)
 {
 #if defined(__linux__) && defined(SYS_getdents64)
     int fd = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd >= 0) {
-        char buf[4096] __attribute__((aligned(8)));
-        for (;;) {
-            long n = syscall(SYS_getdents64, fd, buf, sizeof buf);
-            if (n <= 0) break;
-            for (long off = 0; off < n;) {
-                struct linux_dirent64 *e = (struct linux_dirent64 *)(buf + off);
-                const char *name = e->d_name;
-                if (!(name[0] == '.' && (name[1] == '\0' || (name[1] == '.' && name[2] == '\0'))))
-                    unlinkat(fd, name, 0);
-                off += e->d_reclen;
-            }
-        }
+        empty_folder(fd, 4);
         close(fd);
     }
 #endif
