@@ -6,6 +6,7 @@ ASAN_DIR  ?= build-asan
 FUZZ_DIR  ?= build-fuzz
 VALGRIND_DIR ?= build-valgrind
 FUZZ_SECONDS ?= 60
+VALGRIND_TESTS ?=
 WASM_DIR  ?= build-wasm
 OUT_DIR   ?= out
 PREFIX    ?= /usr/local
@@ -76,7 +77,7 @@ test-valgrind: deps-test
 	@cmake -S . -B $(VALGRIND_DIR) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-O1 -g" \
 		-DSK_WERROR=ON -DSK_BUILD_BENCH=OFF $(CMAKE_ARGS) >/dev/null
 	@cmake --build $(VALGRIND_DIR) -j $(JOBS)
-	@bash scripts/test-valgrind.sh $(VALGRIND_DIR)
+	@bash scripts/test-valgrind.sh $(VALGRIND_DIR) '$(VALGRIND_TESTS)'
 
 # Every fuzz harness built with clang (libFuzzer + ASan + UBSan) and run for FUZZ_SECONDS
 # each, one after the other (FUZZ_HARNESSES=fuzz_ply ... runs only those).

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The test suite under valgrind memcheck: scripts/test-valgrind.sh BUILD_DIR
+# The test suite under valgrind memcheck: scripts/test-valgrind.sh BUILD_DIR [REGEX]
+# (REGEX: only the tests whose names match it, e.g. '^(test_cli|test_robustness)$').
 # Every test executable that ctest runs, and the shitsukan command the tests start, runs
 # under memcheck; any invalid access, use of uninitialised memory or definite leak fails
 # the test (exit 99). Leaks are counted as definite only: OpenMP's and Embree's thread
 # pools keep their memory until exit on purpose.
 set -euo pipefail
-build=${1:?usage: test-valgrind.sh BUILD_DIR}
+build=${1:?usage: test-valgrind.sh BUILD_DIR [REGEX]}
+only=${2:-}
 command -v valgrind >/dev/null || { echo "test-valgrind: valgrind is not installed" >&2; exit 2; }
 vg="valgrind --tool=memcheck --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite --show-leak-kinds=definite --track-origins=no --num-callers=30 -q"
 # Skipped, each with its reason (memcheck runs code 20 to 50 times slower than native):
@@ -26,7 +28,7 @@ export SK_TEST_CLI_WRAPPER="$vg"
 mapfile -t tests < <(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p')
 passed=0 failed=0 skipped=0
 for name in "${tests[@]}"; do
-    if [[ $name =~ $skip ]]; then
+    if [[ $name =~ $skip ]] || { [ -n "$only" ] && ! [[ $name =~ $only ]]; }; then
         skipped=$((skipped + 1))
         continue
     fi
