@@ -264,6 +264,8 @@ static const bad_case k_bad_cases[] = {
     {"hand mesh --texture OUT -o /dev/null", "--texture", "device or FIFO"},
     {"hand mesh --texture OUT --texture-size 10 -o OUT.obj", "--texture-size", "[64, 8192]"},
     {"hand mesh --constraints nope -o OUT.obj", "--constraints", "natural"},
+    {"hand mesh --potential DIR/garbage.json -o OUT.obj", "garbage.json", "unexpected text"},
+    {"hand mesh --potential DIR/garbage.json --constraints natural -o OUT.obj", "--potential", "--constraints"},
     {"hand mesh --triangles 200000 --max-memory 64M -o OUT.glb", "--triangles", "--max-memory"},
     /* hand scan */
     {"hand scan", "-o", "is required"},
@@ -310,7 +312,7 @@ static const bad_case k_bad_cases[] = {
     {"studio --root DIR/file", "--root", "must be a folder"},
     {"studio --root DIR", "--root", "no index.html"},
     /* hand calibrate */
-    {"hand calibrate DIR/s.csv --method x -o OUT.json", "--method", "mixture or gaussian"},
+    {"hand calibrate DIR/s.csv --method x -o OUT.json", "--method", "mixture, gaussian or pairs"},
     /* hand evaluate, hand synthesize */
     {"hand evaluate DIR/s.csv --pins L.MCP.flex --folds 0", "--folds", "[2, 1000]"},
     {"hand evaluate DIR/s.csv --pins L.MCP.flex --units furlongs", "--units", "rad or deg"},

@@ -105,6 +105,39 @@ static void parse_samples(const char *text, sk_hand_samples *s)
     assert_int_equal(sk_hand_samples_parse(text, strlen(text), "known.csv", s, &err), SK_OK);
 }
 
+/* Samples of n draws: the header, then one line per draw written by `row` (degrees). */
+typedef int (*row_writer)(int k, sk_rng *r, char *line, size_t size);
+static void drawn_samples(const char *header, int n, uint64_t seed, row_writer row, sk_hand_samples *s)
+{
+    size_t cap = (size_t)n * 64 + strlen(header) + 2, len = 0;
+    char *text = malloc(cap);
+    len += (size_t)snprintf(text, cap, "%s\n", header);
+    for (int k = 0; k < n; k++) {
+        sk_rng r = sk_rng_make(seed, (uint64_t)k, 0, 0);
+        len += (size_t)row(k, &r, text + len, cap - len);
+    }
+    parse_samples(text, s);
+    free(text);
+}
+
+/* Two clusters: an open and a closed index finger. */
+static int open_or_closed(int k, sk_rng *r, char *line, size_t size)
+{
+    bool closed = k % 2;
+    double mcp = (closed ? 70 : 10) + 4 * sk_rng_normal(r), pip = (closed ? 90 : 12) + 4 * sk_rng_normal(r);
+    return snprintf(line, size, "%.4f,%.4f\n", mcp, pip);
+}
+
+/* The DIP a hinge of the PIP (none below 40 degrees), an independent MCP. */
+static int dip_hinge(int k, sk_rng *r, char *line, size_t size)
+{
+    (void)k;
+    double pip = sk_rng_range(r, 5, 95);
+    double dip = (pip < 40 ? 0.0 : 0.9 * (pip - 40)) + 2.0 * sk_rng_normal(r);
+    double mcp = 40 + 10 * sk_rng_normal(r);
+    return snprintf(line, size, "%.4f,%.4f,%.4f\n", mcp, pip, dip < 0 ? 0 : dip);
+}
+
 static void test_gaussian_recovered(void **state)
 {
     (void)state;
@@ -216,26 +249,157 @@ static void test_gaussian_recovered(void **state)
     sk_hand_samples_free(&s);
 }
 
+/* The thesis's form calibrated with the pairs and the weight scale chosen on held-out
+ * samples: it finds the strong coupling, predicts near the conditional mean, far better
+ * than eq. 3.18's weights on the same pair; with a handful of samples it stays the
+ * published default (re-centred on the samples). */
+static void test_pair_choice(void **state)
+{
+    (void)state;
+    sk_hand_skeleton skel = skeleton();
+    static sk_hand_constraints natural;
+    sk_error err;
+    assert_int_equal(sk_hand_constraints_load_file(SK_TEST_PRESET_DIR "/hand/natural.json", &skel, &natural, &err),
+                     SK_OK);
+    char *text = known_csv(4000, 11);
+    sk_hand_samples s;
+    parse_samples(text, &s);
+    sk_hand_pin_set pins = {1, {sk_hand_dof_find("M.PIP.flex")}};
+    sk_hand_potential_desc d = {.method = SK_HAND_POTENTIAL_PAIRS, .base = &natural, .pin_sets = &pins,
+                                .pin_set_count = 1};
+    sk_hand_potential p;
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
+    assert_int_equal(p.component_count, 1);
+    assert_true(p.pair_count >= 1 && p.pair_count <= 16);
+    assert_true(p.weight_scale >= 0.25 && p.weight_scale <= 64);
+    const sk_hand_constraints *c = &p.component[0].constraints;
+    bool strongest = false;
+    for (int k = c->row_count - p.pair_count; k < c->row_count; k++) {
+        const sk_hand_row *row = &c->rows[k];
+        assert_int_equal(row->term_count, 2);
+        assert_true(row->weight > 0 && row->b == 0.0);
+        bool ip = row->dof[0] == sk_hand_dof_find("I.PIP.flex") || row->dof[1] == sk_hand_dof_find("I.PIP.flex");
+        bool mp = row->dof[0] == pins.dof[0] || row->dof[1] == pins.dof[0];
+        strongest |= ip && mp;
+    }
+    assert_true(strongest);
+    /* the relaxed posture is the samples' mean (shrunk a little toward the default) */
+    for (int i = 0; i < G_D; i++)
+        assert_true(fabs(p.component[0].relaxed[sk_hand_dof_find(G_NAME[i])] * SK_RAD_TO_DEG - G_MEAN[i]) < 2.0);
+    sk_hand_potential_free(&p);
+
+    /* held out: near the conditional mean, far better than the eq. 3.18 line */
+    sk_hand_evaluation *ev = malloc(sizeof *ev), *thesis = malloc(sizeof *thesis);
+    sk_hand_evaluation_desc ed = {.potential = d};
+    ed.potential.pin_sets = NULL;
+    ed.potential.pin_set_count = 0;
+    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &ed, ev, &err), SK_OK);
+    double want[G_D * G_D], condvar = 0.0;
+    known_cov(want);
+    for (int u = 0; u < G_D; u++)
+        if (u != 3) condvar += want[u * G_D + u] - want[u * G_D + 3] * want[u * G_D + 3] / want[3 * G_D + 3];
+    double expect = sqrt(condvar / 3) * DEG;
+    assert_true(ev->result[0].model_all < 1.08 * expect);
+    assert_true(ev->result[0].model_all < 0.8 * ev->result[0].mean_all);
+    assert_int_equal(ev->result[0].unconverged, 0);
+    int pair[1][2] = {{sk_hand_dof_find("I.PIP.flex"), pins.dof[0]}};
+    sk_hand_evaluation_desc td = {.model = SK_HAND_EVAL_MODEL_PAIRS, .pairs = (const int(*)[2])pair, .pair_count = 1};
+    td.potential.base = &natural;
+    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &td, thesis, &err), SK_OK);
+    assert_true(ev->result[0].model_all < 0.8 * thesis->result[0].model_all);
+    free(ev);
+    free(thesis);
+
+    /* only the given candidates; a candidate outside the samples is an error naming it */
+    int one[1][2] = {{sk_hand_dof_find("I.MCP.flex"), sk_hand_dof_find("I.DIP.flex")}};
+    d.pairs = (const int(*)[2])one;
+    d.pair_count = 1;
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
+    assert_true(p.pair_count <= 1);
+    if (p.pair_count == 1)
+        assert_string_equal(p.component[0].constraints.rows[p.component[0].constraints.row_count - 1].label,
+                            "I.MCP.flex:I.DIP.flex");
+    sk_hand_potential_free(&p);
+    one[0][1] = sk_hand_dof_find("L.PIP.flex");
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "L.PIP.flex"));
+    d.pairs = NULL;
+    d.pair_count = 0;
+    sk_hand_samples_free(&s);
+
+    /* six samples: no fitted rows, the published rows, a relaxed posture between the
+       default and the samples' mean */
+    char *end = text;
+    for (int line = 0; line < 7; line++) end = strchr(end, '\n') + 1;
+    *end = '\0';
+    parse_samples(text, &s);
+    free(text);
+    d.pin_sets = NULL;
+    d.pin_set_count = 0;
+    d.prior_strength = 16;
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
+    assert_int_equal(p.pair_count, 0);
+    assert_int_equal(p.component[0].constraints.row_count, natural.row_count);
+    for (int i = 0; i < G_D; i++) {
+        int dof = sk_hand_dof_find(G_NAME[i]);
+        double mean = 0.0;
+        for (int k = 0; k < s.count; k++) mean += s.column[dof][k] / s.count;
+        double lo = fmin(mean, skel.dof[dof].relaxed), hi = fmax(mean, skel.dof[dof].relaxed);
+        double got = p.component[0].relaxed[dof];
+        assert_true(got >= lo - 1e-9 && got <= hi + 1e-9);
+        /* 16 pseudo-samples against 6: nearer the default */
+        assert_true(fabs(got - skel.dof[dof].relaxed) <= fabs(got - mean) + 1e-9);
+    }
+    sk_hand_potential_free(&p);
+    sk_hand_samples_free(&s);
+}
+
+/* Torques with a mixture: they tilt each component's Gaussian, so pushing a joint into
+ * flexion moves the blend toward the closed-hand component, smoothly and monotonically. */
+static void test_mixture_torques(void **state)
+{
+    (void)state;
+    sk_hand_skeleton skel = skeleton();
+    sk_hand_samples s;
+    drawn_samples("I.MCP.flex,I.PIP.flex", 1200, 21, open_or_closed, &s);
+    sk_hand_potential_desc d = {.method = SK_HAND_POTENTIAL_MIXTURE, .components = 2, .prior_strength = -1};
+    sk_hand_potential p;
+    sk_error err;
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
+    assert_int_equal(p.component_count, 2);
+    int closed = p.component[1].relaxed[p.dof[0]] > p.component[0].relaxed[p.dof[0]];
+    sk_hand_potential_solver *ps;
+    assert_int_equal(sk_hand_potential_solver_create(&ps, &skel, &p, NULL, &err), SK_OK);
+    int pip = sk_hand_dof_find("I.PIP.flex"), mcp = sk_hand_dof_find("I.MCP.flex");
+    double last_resp = -1.0, last_mcp = -1.0;
+    for (int k = 0; k <= 20; k++) {
+        sk_hand_input in = {0};
+        in.torque[pip] = (k - 10) * 0.004;
+        double q[SK_HAND_DOF_COUNT], resp[2];
+        sk_hand_solve_info info;
+        assert_int_equal(sk_hand_potential_solve(ps, &in, q, &info, resp, &err), SK_OK);
+        assert_true(info.converged);
+        assert_true(resp[closed] > last_resp);
+        assert_true(q[mcp] > last_mcp);
+        if (k == 0) assert_true(resp[closed] < 0.05);
+        if (k == 10) assert_true(fabs(resp[closed] - p.component[closed].weight) < 1e-12);
+        if (k == 20) assert_true(resp[closed] > 0.95);
+        last_resp = resp[closed];
+        last_mcp = q[mcp];
+    }
+    sk_hand_potential_solver_destroy(ps);
+    sk_hand_potential_free(&p);
+    sk_hand_samples_free(&s);
+}
+
 /* DIP = a hinge of PIP (none below 40 degrees): one Gaussian fits a line, a mixture the
- * two pieces. */
+ * two pieces; a lookup table of the pair follows the hinge only to the noise. */
 static void test_mixture_beats_gaussian_on_nonlinear_relation(void **state)
 {
     (void)state;
     sk_hand_skeleton skel = skeleton();
-    int n = 2000;
-    size_t cap = (size_t)n * 48 + 64, len = 0;
-    char *text = malloc(cap);
-    len += (size_t)snprintf(text, cap, "I.MCP.flex,I.PIP.flex,I.DIP.flex\n");
-    for (int k = 0; k < n; k++) {
-        sk_rng r = sk_rng_make(5, (uint64_t)k, 0, 0);
-        double pip = sk_rng_range(&r, 5, 95);
-        double dip = (pip < 40 ? 0.0 : 0.9 * (pip - 40)) + 2.0 * sk_rng_normal(&r);
-        double mcp = 40 + 10 * sk_rng_normal(&r);
-        len += (size_t)snprintf(text + len, cap - len, "%.4f,%.4f,%.4f\n", mcp, pip, dip < 0 ? 0 : dip);
-    }
     sk_hand_samples s;
-    parse_samples(text, &s);
-    free(text);
+    drawn_samples("I.MCP.flex,I.PIP.flex,I.DIP.flex", 2000, 5, dip_hinge, &s);
     sk_hand_pin_set pins = {1, {sk_hand_dof_find("I.PIP.flex")}};
     sk_hand_evaluation *g = malloc(sizeof *g), *m = malloc(sizeof *m);
     sk_hand_evaluation_desc ed = {0};
@@ -252,6 +416,31 @@ static void test_mixture_beats_gaussian_on_nonlinear_relation(void **state)
     assert_true(dip_m < 0.7 * dip_g);
     assert_true(dip_m < 0.8 * m->result[0].linear[1]);
     assert_true(m->result[0].model_all < g->result[0].model_all);
+    /* the lookup table of the pair (3.2.3), built per fold, strong against the springs:
+       the DIP follows the hinge too, and every solve converges */
+    int pair[1][2] = {{pins.dof[0], sk_hand_dof_find("I.DIP.flex")}};
+    sk_hand_evaluation_desc td = {.model = SK_HAND_EVAL_MODEL_LUT, .pairs = (const int(*)[2])pair, .pair_count = 1};
+    td.lut.weight = 100;
+    sk_hand_evaluation *t = malloc(sizeof *t);
+    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &td, t, &err), SK_OK);
+    sk_hand_evaluation_desc fd = {.model = SK_HAND_EVAL_MODEL_FIXED};
+    sk_hand_evaluation *f = malloc(sizeof *f);
+    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &fd, f, &err), SK_OK);
+    /* measured: Gaussian 4.9, mixture 1.7, tables 4.8, springs alone 17.2 degrees; the
+       table's potential (squared distance to the nearest sample) is flat inside the noisy
+       band of samples, so the springs hold the DIP at the band's edge, about the noise
+       away from the hinge */
+    assert_true(t->result[0].model[1] < 0.35 * f->result[0].model[1]);
+    assert_true(t->result[0].model[1] < 1.05 * dip_g);
+    assert_true(dip_m < 0.5 * t->result[0].model[1]);
+    free(f);
+    assert_int_equal(t->result[0].unconverged, 0);
+    assert_int_equal(t->result[0].solves, s.count);
+    /* a pair outside the samples */
+    pair[0][1] = sk_hand_dof_find("L.DIP.flex");
+    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &td, t, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "L.DIP.flex is not a joint-angle column"));
+    free(t);
     free(g);
     free(m);
     sk_hand_samples_free(&s);
@@ -463,7 +652,7 @@ static void test_evaluation_deterministic_over_threads(void **state)
     assert_int_equal(sk_hand_parse_pin_set("I.MCP.flex,I.PIP.flex", &pins[0], &err), SK_OK);
     assert_int_equal(sk_hand_parse_pin_set("L.MCP.flex", &pins[1], &err), SK_OK);
     sk_hand_evaluation *one = malloc(sizeof *one), *two = malloc(sizeof *two);
-    sk_hand_evaluation_desc ed = {.by_group = true};
+    sk_hand_evaluation_desc ed = {.by_group = true, .potential = {.max_components = 4}};
     sk_threads_set(1);
     assert_int_equal(sk_hand_evaluate(&skel, &s, pins, 2, &ed, one, &err), SK_OK);
     sk_threads_set(2);
@@ -475,6 +664,23 @@ static void test_evaluation_deterministic_over_threads(void **state)
     assert_true(one->result[0].model_all < one->result[0].mean_all);
     assert_int_equal(one->result[0].unconverged, 0);
     assert_int_equal(one->result[0].joint_count, 10);
+    /* the same for the thesis's form with the pairs chosen and for lookup tables */
+    int pair[2][2] = {{sk_hand_dof_find("R.MCP.flex"), sk_hand_dof_find("L.MCP.flex")},
+                      {sk_hand_dof_find("I.PIP.flex"), sk_hand_dof_find("M.PIP.flex")}};
+    sk_hand_evaluation_desc other[2] = {
+        {.by_group = true,
+         .potential = {.method = SK_HAND_POTENTIAL_PAIRS, .pairs = (const int(*)[2])pair, .pair_count = 2}},
+        {.by_group = true, .model = SK_HAND_EVAL_MODEL_LUT, .pairs = (const int(*)[2])pair, .pair_count = 2,
+         .lut = {.resolution = 24}}};
+    for (int m = 0; m < 2; m++) {
+        sk_threads_set(1);
+        assert_int_equal(sk_hand_evaluate(&skel, &s, pins, 2, &other[m], one, &err), SK_OK);
+        sk_threads_set(2);
+        assert_int_equal(sk_hand_evaluate(&skel, &s, pins, 2, &other[m], two, &err), SK_OK);
+        sk_threads_set(0);
+        assert_memory_equal(one, two, sizeof *one);
+        assert_int_equal(one->result[1].unconverged, 0);
+    }
     free(one);
     free(two);
     sk_hand_samples_free(&s);
@@ -500,7 +706,9 @@ static void test_cli_evaluate(void **state)
 {
     (void)state;
     sk_test_run *run = malloc(sizeof *run);
-    const char *csv = sk_test_path("prior/cli-samples.csv");
+    char csv[1024], pot[1024]; /* kept: sk_test_path reuses its buffers */
+    snprintf(csv, sizeof csv, "%s", sk_test_path("prior/cli-samples.csv"));
+    snprintf(pot, sizeof pot, "%s", sk_test_path("prior/cli-potential.json"));
     assert_int_equal(sk_test_cli(run, "hand synthesize --people 3 --trials 1 --frames 20 -o '%s'", csv), 0);
     const char *report = sk_test_path("prior/cli-report.json"), *plot = sk_test_path("prior/cli-plot.png");
     assert_int_equal(sk_test_cli(run,
@@ -521,13 +729,64 @@ static void test_cli_evaluate(void **state)
     assert_non_null(strstr(text, "\"per_joint\":\t{\n\t\t\t\"I.DIP.flex\":"));
     assert_non_null(strstr(text, "\"baselines\":\t{\n\t\t\t\"mean\":"));
     assert_non_null(strstr(text, "\"pca\":\t{\n\t\t\t\t\"k\":\t6,\n\t\t\t\t\"rms_deg\":"));
+    assert_non_null(strstr(text, "\"solves\":\t{\n\t\t\t\"count\":\t600,\n\t\t\t\"not_converged\":\t0,"));
     free(text);
+    /* the lookup-table model (3.2.3) */
+    assert_int_equal(sk_test_cli(run,
+                                 "hand evaluate '%s' --pins L.MCP.flex --group person --ignore-columns trial "
+                                 "--model lookup-tables --pairs R.MCP.flex:L.MCP.flex --lut-resolution 60",
+                                 csv),
+                     0);
+    assert_non_null(strstr(run->out, "tables"));
+    assert_non_null(strstr(run->out, "0 not converged"));
+    assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins L.MCP.flex --ignore-columns trial,person "
+                                      "--model lookup-tables", csv),
+                     2);
+    assert_non_null(strstr(run->err, "--model lookup-tables needs --pairs"));
     /* calibrate a potential and pose with it */
-    const char *pot = sk_test_path("prior/cli-potential.json"), *pose = sk_test_path("prior/cli-pose.json");
-    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial -o '%s' -q", csv, pot),
+    const char *pose = sk_test_path("prior/cli-pose.json");
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --components 3 -o '%s' -q",
+                                 csv, pot),
                      0);
     assert_int_equal(sk_test_cli(run, "hand pose --potential '%s' --pin I.MCP.flex=60 -o '%s'", pot, pose), 0);
     assert_true(sk_test_file_exists(pose));
+    /* animation and the surface with a calibrated potential (a mixture: pins and torques) */
+    const char *angles = sk_test_path("prior/cli-angles.csv"), *mesh = sk_test_path("prior/cli-mesh.obj");
+    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/piano-key.json' --potential '%s' --angles '%s' -q",
+                                 SK_TEST_PRESET_DIR, pot, angles),
+                     0);
+    assert_true(sk_test_file_exists(angles));
+    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-mcp.json' --potential '%s' --constraints natural --angles '%s'",
+                                 SK_TEST_PRESET_DIR, pot, angles),
+                     2);
+    assert_non_null(strstr(run->err, "--potential does not go with --constraints"));
+    assert_int_equal(sk_test_cli(run, "hand mesh --potential '%s' --pin I.MCP.flex=60 --lod 2 -o '%s' -q", pot, mesh), 0);
+    assert_true(sk_test_file_exists(mesh));
+    /* the thesis's form with the pairs chosen, written as a potential */
+    const char *pairs_pot = sk_test_path("prior/cli-pairs.json");
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --method pairs "
+                                 "--pairs R.MCP.flex:L.MCP.flex,L.MCP.flex:L.PIP.flex,I.PIP.flex:M.PIP.flex -o '%s'",
+                                 csv, pairs_pot),
+                     0);
+    assert_non_null(strstr(run->out, "weight scale"));
+    assert_int_equal(sk_test_cli(run, "hand pose --potential '%s' --pin L.MCP.flex=70 -o '%s'", pairs_pot, pose), 0);
+    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --ignore-columns trial,person --max-pairs 3 -o '%s'", csv,
+                                 pairs_pot),
+                     2);
+    assert_non_null(strstr(run->err, "--max-pairs needs --method pairs"));
+    assert_int_equal(sk_test_cli(run,
+                                 "hand evaluate '%s' --pins L.MCP.flex --group person --ignore-columns trial "
+                                 "--method pairs --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:M.PIP.flex --max-pairs 2",
+                                 csv),
+                     0);
+    assert_non_null(strstr(run->out, "pins L.MCP.flex: held-out RMS error"));
+    /* the group's help lists its commands; an unknown one is a one-line error */
+    assert_int_equal(sk_test_cli(run, "hand --help"), 0);
+    assert_non_null(strstr(run->out, "hand evaluate"));
+    assert_non_null(strstr(run->out, "hand calibrate"));
+    assert_int_equal(sk_test_cli(run, "hand evalute"), 2);
+    assert_int_equal(sk_test_count_lines(run->err), 1);
+    assert_non_null(strstr(run->err, "unknown command 'hand evalute'"));
     /* errors: one line, exit 2, no report */
     const char *none = sk_test_path("prior/cli-none.json");
     assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins T.MCP.flex --ignore-columns trial,person --report '%s'",
@@ -556,6 +815,8 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_gaussian_recovered),
+        cmocka_unit_test(test_pair_choice),
+        cmocka_unit_test(test_mixture_torques),
         cmocka_unit_test(test_mixture_beats_gaussian_on_nonlinear_relation),
         cmocka_unit_test(test_lut_solves_converge),
         cmocka_unit_test(test_samples_csv_options),

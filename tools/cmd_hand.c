@@ -118,18 +118,9 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
     const char *pairs_text = cli_get(cmd, args, "pairs");
     if (!samples_path && !pairs_text) return 0;
     if (!samples_path || !pairs_text) return cli_fail(CLI_EXIT_USAGE, "--samples and --pairs go together");
-    long long resolution;
-    double weight;
-    int rc = cli_get_int(cmd, args, "lut-resolution", 100, 8, 1024, &resolution);
-    if (rc == 0) rc = cli_get_double(cmd, args, "lut-weight", 1.0, 1e-6, 1e6, &weight);
+    sk_hand_lut_desc desc;
+    int rc = hand_lut_options(cmd, args, &desc);
     if (rc) return rc;
-    sk_hand_lut_desc desc = {0};
-    desc.resolution = (int)resolution;
-    desc.weight = weight;
-    const char *interp = cli_get(cmd, args, "lut-interp");
-    if (interp && strcmp(interp, "bilinear") == 0) desc.interp = SK_HAND_LUT_INTERP_BILINEAR;
-    else if (interp && strcmp(interp, "hermite") != 0)
-        return cli_fail(CLI_EXIT_USAGE, "--lut-interp '%s' must be hermite or bilinear", interp);
     sk_error err = {0};
     int pairs[16][2], n = 0;
     if (sk_hand_parse_pairs(pairs_text, pairs, 16, &n, &err) != SK_OK) {
@@ -162,23 +153,6 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
 }
 
 /* ------------------------------------------------------------ hand pose */
-
-/* The equilibrium of a calibrated potential (hand calibrate) for the inputs. */
-static int pose_with_potential(const sk_hand_skeleton *skel, const char *path, const sk_hand_input *in, double *q,
-                               sk_hand_solve_info *info)
-{
-    sk_error err = {0};
-    sk_hand_potential pot;
-    if (sk_hand_potential_load_file(path, skel, &pot, &err) != SK_OK) return cli_fail_error(&err);
-    sk_hand_potential_solver *ps = NULL;
-    int rc = 0;
-    if (sk_hand_potential_solver_create(&ps, skel, &pot, NULL, &err) != SK_OK ||
-        sk_hand_potential_solve(ps, in, q, info, NULL, &err) != SK_OK)
-        rc = cli_fail_error(&err);
-    sk_hand_potential_solver_destroy(ps);
-    sk_hand_potential_free(&pot);
-    return rc;
-}
 
 static const cli_option pose_options[] = {
     {"pin", 0, "DOF=DEG", "hold a DOF at an angle in degrees (mm for wrist.tx/ty/tz), |value| <= 1e6; once per DOF", true},
@@ -221,35 +195,24 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     sk_output_set *written = NULL;
     if ((rc = cli_reserve_outputs(outputs, 4, &written))) return rc;
     const char *set = cli_get(cmd, args, "constraints");
-    sk_hand_constraints *c = malloc(sizeof *c);
-    if (!c) {
-        sk_output_set_abort(written);
-        return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
-    }
-    rc = hand_load_constraints(set ? set : "natural", &skel, c);
     sk_hand_input in = {0};
     if (!rc) rc = hand_parse_inputs(cmd, args, &in);
     sk_hand_lut luts[16];
     int lut_count = 0;
     if (!rc) rc = build_luts(cmd, args, luts, &lut_count);
-    sk_hand_solver *solver = NULL;
     sk_error err = {0};
     double q[SK_HAND_DOF_COUNT];
     sk_hand_solve_info info;
     const char *potential = cli_get(cmd, args, "potential");
     if (!rc && potential && (set || lut_count > 0))
         rc = cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints or --samples");
-    if (!rc && potential) {
-        rc = pose_with_potential(&skel, potential, &in, q, &info);
-    } else {
-        if (!rc && sk_hand_solver_create(&solver, &skel, c, luts, lut_count, NULL, &err) != SK_OK)
-            rc = cli_fail_error(&err);
-        if (!rc && sk_hand_solve(solver, &in, q, &info, &err) != SK_OK) rc = cli_fail_error(&err);
-    }
+    hand_poser poser = {0};
+    if (!rc) rc = hand_poser_open(&poser, &skel, potential, set ? set : "natural", luts, lut_count);
+    if (!rc) rc = hand_poser_solve(&poser, &in, q, &info);
     if (!rc && info.pins_clamped > 0)
         fprintf(stderr, "shitsukan: note: %d pinned value(s) were outside the joint limits and were clamped\n",
                 info.pins_clamped);
-    if (!rc && lut_count > 0 && !info.converged)
+    if (!rc && !info.converged)
         fprintf(stderr, "shitsukan: note: the iterative solve stopped at residual %.3g after %d steps\n",
                 info.residual, info.newton_iterations);
     sk_hand_draw_desc draw;
@@ -270,9 +233,8 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
             printf("%-11s %10.4f%s\n", sk_hand_dof(i)->name, sk_hand_dof(i)->translation ? q[i] : q[i] * SK_RAD_TO_DEG,
                    sk_hand_dof(i)->translation ? " mm" : "");
     }
-    sk_hand_solver_destroy(solver);
+    hand_poser_close(&poser);
     for (int i = 0; i < lut_count; i++) sk_hand_lut_free(&luts[i]);
-    free(c);
     return rc;
 }
 
@@ -308,6 +270,7 @@ static const cli_option animate_options[] = {
     {"positions", 0, "FILE", "write joint positions of every frame (.csv or .json)", false},
     {"angles", 0, "FILE", "write the joint angles of every frame as CSV (degrees)", false},
     {"constraints", 0, "SET", "override the file's constraint set (natural, yasumuro-table-3.2, none, FILE)", false},
+    {"potential", 0, "FILE", "a calibrated potential (hand calibrate) instead of the file's constraint set", false},
     {"side", 0, "SIDE", "override the file's side: right or left", false},
     {"hand-length", 0, "MM", "override the hand length", false},
     {"hand-breadth", 0, "MM", "override the hand breadth", false},
@@ -445,18 +408,17 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     sk_output_set *written = NULL;
     sk_error err = {0};
     sk_hand_animation *anim = malloc(sizeof *anim);
-    sk_hand_constraints *c = malloc(sizeof *c);
     double *dofs = NULL;
-    sk_hand_solver *solver = NULL;
+    hand_poser poser = {0};
     int rc = 0;
-    if (!anim || !c) rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    if (!anim) rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     const char *path = args->positional[0];
     if (!rc && sk_hand_animation_load_file(path, anim, &err) != SK_OK) rc = cli_fail_error(&err);
     sk_hand_skeleton skel;
     if (!rc) rc = hand_build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm, &skel);
-    const char *set = cli_get(cmd, args, "constraints");
-    if (!rc) rc = hand_load_constraints(set ? set : anim->constraints, &skel, c);
-    if (!rc && sk_hand_solver_create(&solver, &skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
+    const char *set = cli_get(cmd, args, "constraints"), *potential = cli_get(cmd, args, "potential");
+    if (!rc && set && potential) rc = cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints");
+    if (!rc) rc = hand_poser_open(&poser, &skel, potential, set ? set : anim->constraints, NULL, 0);
     int frames = rc ? 0 : sk_hand_animation_frame_count(anim);
     if (!rc) {
         /* the solved angles, and the frame pictures being drawn (one per thread) */
@@ -481,14 +443,19 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     sk_progress_bar bar;
     bool bar_begun = !rc;
     if (bar_begun) sk_progress_bar_begin(&bar, "hand animate", !args->common.quiet);
+    int unconverged = 0;
     for (int f = 0; f < frames && !rc; f++) {
         sk_hand_input in;
+        sk_hand_solve_info info;
         sk_hand_animation_input(anim, f, &in);
-        if (sk_hand_solve(solver, &in, dofs + (size_t)f * SK_HAND_DOF_COUNT, NULL, &err) != SK_OK)
-            rc = cli_fail_error(&err);
+        rc = hand_poser_solve(&poser, &in, dofs + (size_t)f * SK_HAND_DOF_COUNT, &info);
+        unconverged += !rc && !info.converged;
         sk_progress_bar_update(&bar, (f + 1.0) / frames);
     }
     if (bar_begun) sk_progress_bar_end(&bar);
+    if (!rc && unconverged > 0)
+        fprintf(stderr, "shitsukan: warning: %d of %d frames did not converge (their last iterates are kept)\n",
+                unconverged, frames);
     double frame_time = rc ? 0 : 1.0 / anim->fps;
     if (!rc && bvh && sk_hand_bvh_write(&skel, dofs, frames, frame_time, bvh, &err) != SK_OK) rc = cli_fail_error(&err);
     if (!rc && positions) rc = write_positions(&skel, dofs, frames, positions);
@@ -500,10 +467,9 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (written) rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
     hand_animate_surface_free(&surface);
-    sk_hand_solver_destroy(solver);
+    hand_poser_close(&poser);
     free(dofs);
     free(anim);
-    free(c);
     return rc;
 }
 
@@ -518,8 +484,10 @@ const cli_command cmd_hand_animate = {
         "curves (thesis 4.2.2) or Catmull-Rom, solves the natural posture at every frame and\n"
         "writes BVH (root with 6 channels, joints Zrotation Yrotation Xrotation, offsets in\n"
         "mm), joint positions and joint angles, a joint-angle plot, and stick-figure frames\n"
-        "(dorsal and radial views by default). Shipped examples: presets/hand/little-mcp.json\n"
-        "(Fig. 4.19), little-dip.json (Fig. 4.20), piano-key.json.",
+        "(dorsal and radial views by default). --potential poses with a calibrated potential\n"
+        "(hand calibrate) instead of the file's constraint set; with a mixture, pins and\n"
+        "torques choose the blend of its components. Shipped examples:\n"
+        "presets/hand/little-mcp.json (Fig. 4.19), little-dip.json (Fig. 4.20), piano-key.json.",
     .examples = "  shitsukan hand animate presets/hand/little-mcp.json --bvh little-mcp.bvh\n"
                 "  shitsukan hand animate presets/hand/piano-key.json --positions keys.json --side left\n"
                 "  shitsukan hand animate presets/hand/little-dip.json --plot angles.png --frames-dir frames",
@@ -535,8 +503,12 @@ const cli_command cmd_hand_animate = {
 
 static const cli_option calibrate_options[] = {
     {"pairs", 0, "A:B,...", "fit the thesis's pair lines y = A x + b instead (constraint rows file)", false},
-    {"weights", 0, "RULE", "pair lines: thesis (eq. 3.18, default) or inverse-variance", false},
-    {"method", 0, "METHOD", "potential: mixture (default; components chosen on held-out samples) or gaussian", false},
+    {"weights", 0, "RULE", "pair lines: thesis (eq. 3.18, default) or inverse-variance (default of --method pairs)", false},
+    {"method", 0, "METHOD", "potential: mixture (default; components chosen on held-out samples), gaussian, or pairs "
+                            "(the thesis's form: relaxed posture measured, pair rows and weight scale chosen on "
+                            "held-out samples, --pairs the candidates)", false},
+    {"weight-scale", 0, "S", "--method pairs: multiplies the fitted weights (default: chosen)", false},
+    {"max-pairs", 0, "N", "--method pairs: fitted rows at most (default 16)", false},
     {"components", 0, "N", "potential: fixed mixture component count (default: chosen)", false},
     {"prior-strength", 0, "S", "potential: pseudo-samples of the base set's Gaussian (default: chosen; 0 = none)", false},
     {"base", 0, "SET", "potential: set kept outside the samples' DOFs and shrunk toward (default natural)", false},
@@ -548,6 +520,12 @@ static const cli_option calibrate_options[] = {
 static int run_calibrate(const cli_command *cmd, const cli_args *args)
 {
     const char *pairs_text = cli_get(cmd, args, "pairs");
+    const char *method = cli_get(cmd, args, "method");
+    if (method && strcmp(method, "pairs") == 0) return hand_calibrate_potential(cmd, args);
+    static const char *const selection_only[] = {"weight-scale", "max-pairs", NULL};
+    for (int i = 0; selection_only[i]; i++)
+        if (cli_has(cmd, args, selection_only[i]))
+            return cli_fail(CLI_EXIT_USAGE, "--%s needs --method pairs", selection_only[i]);
     if (!pairs_text) {
         static const char *const pair_only[] = {"weights", NULL};
         int rc = require_option(cmd, args, "pairs", pair_only);
@@ -558,11 +536,9 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
         if (cli_has(cmd, args, potential_only[i]))
             return cli_fail(CLI_EXIT_USAGE, "--%s is for the potential; it does not go with --pairs", potential_only[i]);
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o rows.json is required");
-    sk_hand_weight_rule rule = SK_HAND_WEIGHT_THESIS;
-    const char *w = cli_get(cmd, args, "weights");
-    if (w && strcmp(w, "inverse-variance") == 0) rule = SK_HAND_WEIGHT_INVERSE_VARIANCE;
-    else if (w && strcmp(w, "thesis") != 0)
-        return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
+    sk_hand_weight_rule rule;
+    int rule_rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_THESIS, &rule);
+    if (rule_rc) return rule_rc;
     sk_error err = {0};
     int pairs[64][2], n = 0;
     if (sk_hand_parse_pairs(pairs_text, pairs, 64, &n, &err) != SK_OK) {
@@ -594,7 +570,7 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
 const cli_command cmd_hand_calibrate = {
     .name = "hand calibrate",
     .summary = "fit the natural-posture potential (or the thesis's pair rows) to joint-angle samples (3.2.2)",
-    .usage = "shitsukan hand calibrate SAMPLES.csv -o potential.json [--method mixture|gaussian]\n"
+    .usage = "shitsukan hand calibrate SAMPLES.csv -o potential.json [--method mixture|gaussian|pairs]\n"
              "       shitsukan hand calibrate SAMPLES.csv --pairs A:B[,C:D...] -o rows.json",
     .description =
         "Reads measured joint angles (a CSV with a header of DOF names and one sample per\n"
@@ -602,11 +578,15 @@ const cli_command cmd_hand_calibrate = {
         "are not DOFs). Without --pairs it fits the whole potential of eq. 3.17: the relaxed\n"
         "posture is the samples' mean and K + A'WA their precision (springs and coupling rows),\n"
         "shrunk toward the base set, as a mixture of such Gaussians where held-out samples\n"
-        "say it helps; use it with hand pose --potential. With --pairs it fits one\n"
+        "say it helps; use it with hand pose --potential. --method pairs keeps the thesis's\n"
+        "form instead: the relaxed posture from the samples, the base set's springs, and the\n"
+        "pair rows (of --pairs, default every pair) and their weight scale chosen by the\n"
+        "held-out error, starting from the base set's rows. With --pairs alone it fits one\n"
         "least-squares line y = A x + b per pair and weights it by the spread about the line,\n"
         "w = mean l^2 / max over the pairs (eq. 3.18: the loosest pair weighs most), or by\n"
         "inverse variance; the result is a constraint file for --constraints.",
     .examples = "  shitsukan hand calibrate glove.csv --group person -o potential.json\n"
+                "  shitsukan hand calibrate glove.csv --group person --method pairs -o potential.json\n"
                 "  shitsukan hand calibrate glove.csv --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex -o rows.json",
     .options = calibrate_options,
     .option_count = (int)(sizeof calibrate_options / sizeof calibrate_options[0]),

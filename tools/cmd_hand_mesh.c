@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cmd_hand_prior.h"
 #include "cmd_hand_surface.h"
 #include "hand_args.h"
 #include "shitsukan/hand.h"
@@ -18,6 +19,7 @@ static const cli_option mesh_options[] = {
     {"pose", 0, "FILE", "pose JSON ({\"dofs\": {...}} in degrees, as `hand pose -o` writes)", false},
     {"pin", 0, "DOF=DEG", "hold a DOF at an absolute angle (the others follow the natural coupling); repeatable", true},
     {"constraints", 0, "SET", "coupling of --pin: natural (default), yasumuro-table-3.2, none, or a JSON file", false},
+    {"potential", 0, "FILE", "coupling of --pin: a calibrated potential (hand calibrate) instead of --constraints", false},
     {"skinning", 0, "METHOD", "rigid (the thesis: nearest link), lbs or dqs (default)", false},
     {"lod", 0, "N", "level of detail: 0 = 8000 triangles (default), 1 = 2000, 2 = 500", false},
     {"left", 0, NULL, "a left hand (the exact mirror image)", false},
@@ -29,29 +31,19 @@ static const cli_option mesh_options[] = {
 };
 
 /* --pin solved with the coupling of --constraints ("natural", "yasumuro-table-3.2", "none"
-   or a file). */
+   or a file) or a calibrated --potential. */
 static int solve_pins(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel, double *q)
 {
     sk_hand_input in;
     int rc = hand_parse_inputs(cmd, args, &in);
     if (rc) return rc;
-    const char *set = cli_get(cmd, args, "constraints");
-    if (!set) set = "natural";
-    sk_hand_constraints *c = calloc(1, sizeof *c);
-    if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
-    sk_error err = {0};
-    if (strcmp(set, "none") != 0) {
-        char path[PATH_MAX];
-        if (strchr(set, '/') || strstr(set, ".json")) snprintf(path, sizeof path, "%s", set);
-        else if (!cli_find_preset("hand", set, path, sizeof path))
-            rc = cli_fail(CLI_EXIT_USAGE, "--constraints '%s': no such set (natural, yasumuro-table-3.2, none, or a JSON file)", set);
-        if (!rc && sk_hand_constraints_load_file(path, skel, c, &err) != SK_OK) rc = cli_fail_error(&err);
-    }
-    sk_hand_solver *solver = NULL;
-    if (!rc && sk_hand_solver_create(&solver, skel, c, NULL, 0, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
-    if (!rc && sk_hand_solve(solver, &in, q, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
-    sk_hand_solver_destroy(solver);
-    free(c);
+    const char *set = cli_get(cmd, args, "constraints"), *potential = cli_get(cmd, args, "potential");
+    if (set && potential) return cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints");
+    hand_poser poser;
+    rc = hand_poser_open(&poser, skel, potential, set ? set : "natural", NULL, 0);
+    sk_hand_solve_info info;
+    if (!rc) rc = hand_poser_solve(&poser, &in, q, &info);
+    hand_poser_close(&poser);
     return rc;
 }
 

@@ -55,15 +55,82 @@ int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_han
     return 0;
 }
 
-/* --method, --components, --prior-strength, --seed into a potential desc. */
-static int potential_options(const cli_command *cmd, const cli_args *args, sk_hand_potential_desc *d)
+int hand_lut_options(const cli_command *cmd, const cli_args *args, sk_hand_lut_desc *out)
+{
+    memset(out, 0, sizeof *out);
+    long long resolution;
+    int rc = cli_get_int(cmd, args, "lut-resolution", 100, 8, 1024, &resolution);
+    if (rc == 0) rc = cli_get_double(cmd, args, "lut-weight", 1.0, 1e-6, 1e6, &out->weight);
+    if (rc) return rc;
+    out->resolution = (int)resolution;
+    const char *interp = cli_get(cmd, args, "lut-interp");
+    if (interp && strcmp(interp, "bilinear") == 0) out->interp = SK_HAND_LUT_INTERP_BILINEAR;
+    else if (interp && strcmp(interp, "hermite") != 0)
+        return cli_fail(CLI_EXIT_USAGE, "--lut-interp '%s' must be hermite or bilinear", interp);
+    return 0;
+}
+
+/* --weights: thesis or inverse-variance (`fallback` when absent). */
+int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weight_rule fallback,
+                     sk_hand_weight_rule *out)
+{
+    const char *w = cli_get(cmd, args, "weights");
+    *out = fallback;
+    if (w && strcmp(w, "thesis") == 0) *out = SK_HAND_WEIGHT_THESIS;
+    else if (w && strcmp(w, "inverse-variance") == 0) *out = SK_HAND_WEIGHT_INVERSE_VARIANCE;
+    else if (w) return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
+    return 0;
+}
+
+int hand_poser_open(hand_poser *poser, const sk_hand_skeleton *skel, const char *potential_path, const char *set_name,
+                    const sk_hand_lut *luts, int lut_count)
+{
+    memset(poser, 0, sizeof *poser);
+    sk_error err = {0};
+    if (potential_path) {
+        sk_hand_potential pot;
+        if (sk_hand_potential_load_file(potential_path, skel, &pot, &err) != SK_OK) return cli_fail_error(&err);
+        sk_result r = sk_hand_potential_solver_create(&poser->potential, skel, &pot, NULL, &err);
+        sk_hand_potential_free(&pot);
+        return r == SK_OK ? 0 : cli_fail_error(&err);
+    }
+    sk_hand_constraints *c = malloc(sizeof *c);
+    if (!c) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
+    int rc = hand_load_constraints(set_name, skel, c);
+    if (!rc && sk_hand_solver_create(&poser->solver, skel, c, luts, lut_count, NULL, &err) != SK_OK)
+        rc = cli_fail_error(&err);
+    free(c);
+    return rc;
+}
+
+int hand_poser_solve(hand_poser *poser, const sk_hand_input *in, double *q, sk_hand_solve_info *info)
+{
+    sk_error err = {0};
+    sk_result r = poser->potential ? sk_hand_potential_solve(poser->potential, in, q, info, NULL, &err)
+                                   : sk_hand_solve(poser->solver, in, q, info, &err);
+    return r == SK_OK ? 0 : cli_fail_error(&err);
+}
+
+void hand_poser_close(hand_poser *poser)
+{
+    sk_hand_solver_destroy(poser->solver);
+    sk_hand_potential_solver_destroy(poser->potential);
+    memset(poser, 0, sizeof *poser);
+}
+
+/* --method, --components, --prior-strength, --seed and, for --method pairs, --pairs (the
+ * candidates, parsed into `pairs`), --weights, --weight-scale, --max-pairs into a
+ * potential desc. */
+static int potential_options(const cli_command *cmd, const cli_args *args, sk_hand_potential_desc *d,
+                             int (*pairs)[2])
 {
     memset(d, 0, sizeof *d);
     const char *method = cli_get(cmd, args, "method");
     if (!method || strcmp(method, "mixture") == 0) d->method = SK_HAND_POTENTIAL_MIXTURE;
     else if (strcmp(method, "gaussian") == 0) d->method = SK_HAND_POTENTIAL_GAUSSIAN;
-    else return cli_fail(CLI_EXIT_USAGE, "--method '%s' must be mixture or gaussian", method);
-    long long comps = 0;
+    else if (strcmp(method, "pairs") == 0) d->method = SK_HAND_POTENTIAL_PAIRS;
+    else return cli_fail(CLI_EXIT_USAGE, "--method '%s' must be mixture, gaussian or pairs", method);
+    long long comps = 0, max_pairs = 0;
     double strength = 0.0;
     int rc = cli_get_int(cmd, args, "components", 0, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS, &comps);
     if (!rc && cli_has(cmd, args, "prior-strength")) {
@@ -74,7 +141,35 @@ static int potential_options(const cli_command *cmd, const cli_args *args, sk_ha
     d->components = (int)comps;
     d->prior_strength = strength;
     d->seed = args->common.has_seed ? args->common.seed : 1;
+    if (d->method != SK_HAND_POTENTIAL_PAIRS) {
+        if (cli_has(cmd, args, "max-pairs")) return cli_fail(CLI_EXIT_USAGE, "--max-pairs needs --method pairs");
+        return 0;
+    }
+    if (comps > 1) return cli_fail(CLI_EXIT_USAGE, "--components does not go with --method pairs (one component)");
+    rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_INVERSE_VARIANCE, &d->weight_rule);
+    if (!rc) rc = cli_get_double(cmd, args, "weight-scale", 0.0, 1e-6, 1e6, &d->weight_scale);
+    if (!rc) rc = cli_get_int(cmd, args, "max-pairs", 16, 1, 64, &max_pairs);
+    if (rc) return rc;
+    d->max_pairs = (int)max_pairs;
+    const char *text = cli_get(cmd, args, "pairs");
+    if (text) {
+        sk_error err = {0};
+        if (sk_hand_parse_pairs(text, pairs, 64, &d->pair_count, &err) != SK_OK) {
+            sk_error_prefix(&err, err.result, "--pairs");
+            return cli_fail_error(&err);
+        }
+        d->pairs = (const int(*)[2])pairs;
+    }
     return 0;
+}
+
+/* The fitted pair rows of a PAIRS potential, one line each. */
+static void print_pair_rows(const sk_hand_potential *pot)
+{
+    const sk_hand_constraints *c = &pot->component[0].constraints;
+    printf("weight scale %g; fitted rows:\n", pot->weight_scale);
+    for (int k = c->row_count - pot->pair_count; k < c->row_count; k++)
+        printf("  %-24s A %7.4f  W %.4g\n", c->rows[k].label, c->rows[k].coeff[0], c->rows[k].weight);
 }
 
 int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
@@ -82,7 +177,8 @@ int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
     const char *path = args->positional[0];
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o potential.json is required");
     sk_hand_potential_desc desc;
-    int rc = potential_options(cmd, args, &desc);
+    int pairs[64][2];
+    int rc = potential_options(cmd, args, &desc, pairs);
     if (rc) return rc;
     sk_hand_skeleton skel;
     sk_error err = {0};
@@ -99,14 +195,21 @@ int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
         sk_error_prefix(&err, err.result, "%s", path);
         rc = cli_fail_error(&err);
     }
-    char note[600];
-    snprintf(note, sizeof note, "fitted from %d samples of %s (prior strength %g, %d component%s, base set %s)",
-             samples.count, path, pot.prior_strength, pot.component_count, pot.component_count == 1 ? "" : "s",
-             base_name ? base_name : "natural");
+    char note[700];
+    if (desc.method == SK_HAND_POTENTIAL_PAIRS)
+        snprintf(note, sizeof note,
+                 "fitted from %d samples of %s (prior strength %g, %d pair rows chosen on held-out samples, weight "
+                 "scale %g, base set %s)",
+                 samples.count, path, pot.prior_strength, pot.pair_count, pot.weight_scale, base_name ? base_name : "natural");
+    else
+        snprintf(note, sizeof note, "fitted from %d samples of %s (prior strength %g, %d component%s, base set %s)",
+                 samples.count, path, pot.prior_strength, pot.component_count, pot.component_count == 1 ? "" : "s",
+                 base_name ? base_name : "natural");
     if (!rc && sk_hand_potential_write_json(&pot, note, args->common.output, &err) != SK_OK) rc = cli_fail_error(&err);
     if (!rc && !args->common.quiet)
         printf("%d DOFs from %d samples: %d component%s, prior strength %g, scale %.4g\n", pot.dof_count, samples.count,
                pot.component_count, pot.component_count == 1 ? "" : "s", pot.prior_strength, pot.scale);
+    if (!rc && !args->common.quiet && desc.method == SK_HAND_POTENTIAL_PAIRS) print_pair_rows(&pot);
     sk_hand_potential_free(&pot);
     sk_hand_samples_free(&samples);
     free(base);
@@ -121,16 +224,21 @@ static const cli_option evaluate_options[] = {
     {"group", 0, "COLUMN", "hold out whole groups: the CSV column naming the trial or person of each sample", false},
     {"units", 0, "UNIT", "angles of the CSV: deg (default) or rad", false},
     {"ignore-columns", 0, "A,B", "CSV columns to skip (besides frame and time)", false},
-    {"model", 0, "MODEL", "calibrated (default), pairs (eq. 3.18 lines of --pairs), or a fixed set: natural, "
-                          "yasumuro-table-3.2, none, FILE",
+    {"model", 0, "MODEL", "calibrated (default), pairs (eq. 3.18 lines of --pairs), lookup-tables (3.2.3: tables of "
+                          "--pairs added to --base), or a fixed set: natural, yasumuro-table-3.2, none, FILE",
      false},
-    {"method", 0, "METHOD", "calibrated model: mixture (default; components chosen on held-out samples) or gaussian", false},
+    {"lut-resolution", 0, "N", "lookup-tables: grid nodes per axis (default 100)", false},
+    {"lut-weight", 0, "W", "lookup-tables: weight of each table (default 1)", false},
+    {"lut-interp", 0, "MODE", "lookup-tables: hermite (default) or bilinear", false},
+    {"method", 0, "METHOD", "calibrated model: mixture (default; components chosen on held-out samples), gaussian, "
+                            "or pairs (the thesis's form: pair rows and weight scale chosen on held-out samples)", false},
+    {"max-pairs", 0, "N", "--method pairs: fitted rows at most (default 16)", false},
     {"components", 0, "N", "calibrated mixture: fixed component count (default: chosen)", false},
     {"prior-strength", 0, "S", "pseudo-samples of the base set's Gaussian (default: chosen; 0 = none)", false},
     {"base", 0, "SET", "base set: shrinkage target, springs of the pair model (default natural)", false},
-    {"pairs", 0, "A:B,...", "pair model: the DOF pairs of its lines", false},
-    {"weights", 0, "RULE", "pair model: thesis (eq. 3.18, default) or inverse-variance", false},
-    {"weight-scale", 0, "S", "pair model: multiplies every weight (default 1)", false},
+    {"pairs", 0, "A:B,...", "pair model: the DOF pairs of its lines; --method pairs: the candidates (default all)", false},
+    {"weights", 0, "RULE", "pair model: thesis (eq. 3.18, default) or inverse-variance (default of --method pairs)", false},
+    {"weight-scale", 0, "S", "pair model: multiplies every weight (default 1; --method pairs: chosen)", false},
     {"pca-k", 0, "K", "components of the PCA prior baseline (default 6)", false},
     {"report", 0, "FILE.json", "write the results as JSON (one entry per pin set)", false},
     {"plot", 0, "FILE.png", "bar chart of the per-joint errors, one panel per pin set", false},
@@ -145,7 +253,7 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args, const 
     const char *base_name = cli_get(cmd, args, "base");
     int rc = hand_load_constraints(base_name ? base_name : "natural", skel, base);
     if (rc) return rc;
-    rc = potential_options(cmd, args, &d->potential);
+    rc = potential_options(cmd, args, &d->potential, pairs);
     if (rc) return rc;
     d->potential.base = base;
     *model_name = "model";
@@ -153,21 +261,26 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args, const 
         d->model = SK_HAND_EVAL_MODEL_CALIBRATED;
         return 0;
     }
-    if (strcmp(model, "pairs") == 0) {
+    if (d->potential.method == SK_HAND_POTENTIAL_PAIRS)
+        return cli_fail(CLI_EXIT_USAGE, "--method is for --model calibrated");
+    bool tables = strcmp(model, "lookup-tables") == 0;
+    if (strcmp(model, "pairs") == 0 || tables) {
         const char *text = cli_get(cmd, args, "pairs");
-        if (!text) return cli_fail(CLI_EXIT_USAGE, "--model pairs needs --pairs");
+        if (!text) return cli_fail(CLI_EXIT_USAGE, "--model %s needs --pairs", model);
         sk_error err = {0};
         if (sk_hand_parse_pairs(text, pairs, 64, &d->pair_count, &err) != SK_OK) {
             sk_error_prefix(&err, err.result, "--pairs");
             return cli_fail_error(&err);
         }
         d->pairs = (const int(*)[2])pairs;
+        if (tables) {
+            d->model = SK_HAND_EVAL_MODEL_LUT;
+            *model_name = "tables";
+            return hand_lut_options(cmd, args, &d->lut);
+        }
         d->model = SK_HAND_EVAL_MODEL_PAIRS;
-        const char *w = cli_get(cmd, args, "weights");
-        if (!w || strcmp(w, "thesis") == 0) d->weight_rule = SK_HAND_WEIGHT_THESIS;
-        else if (strcmp(w, "inverse-variance") == 0) d->weight_rule = SK_HAND_WEIGHT_INVERSE_VARIANCE;
-        else return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
-        rc = cli_get_double(cmd, args, "weight-scale", 1.0, 1e-6, 1e6, &d->weight_scale);
+        rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_THESIS, &d->weight_rule);
+        if (!rc) rc = cli_get_double(cmd, args, "weight-scale", 1.0, 1e-6, 1e6, &d->weight_scale);
         *model_name = "pairs";
         return rc;
     }
@@ -239,6 +352,12 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
             sk_image_free(&img);
         }
     }
+    for (int p = 0; !rc && p < eval->pin_set_count; p++)
+        if (eval->result[p].unconverged > 0)
+            fprintf(stderr,
+                    "shitsukan: warning: %d of %d solves did not converge (largest residual %.2g); their last "
+                    "iterates are counted\n",
+                    eval->result[p].unconverged, eval->result[p].solves, eval->result[p].max_residual);
     rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet) {
         sk_hand_evaluation_print(eval, model_name, stdout);
@@ -265,8 +384,11 @@ const cli_command cmd_hand_evaluate = {
         "other DOFs in the CSV is compared with the measurement. Baselines on the same folds:\n"
         "the training mean, linear regression and a PCA prior with k components. Prints the RMS\n"
         "error per joint and overall (degrees); --report writes it as JSON, --plot as bars.\n"
+        "--method pairs keeps the thesis's form (pair rows and weight scale chosen per fold).\n"
         "--model natural (or any set) evaluates a fixed set instead; --model pairs the thesis's\n"
-        "pair lines refitted per fold (eq. 3.18 weights).",
+        "pair lines refitted per fold (eq. 3.18 weights); --model lookup-tables the tables of\n"
+        "3.2.3 built per fold. Every solve either converges or is counted as not converged\n"
+        "(the table's last line, the report's \"solves\", a warning).",
     .examples = "  shitsukan hand evaluate glove.csv --pins I.MCP.flex,I.PIP.flex --pins L.MCP.flex --group person\n"
                 "  shitsukan hand evaluate glove.csv --pins M.MCP.flex,M.PIP.flex --folds 10 --report eval.json --plot eval.png\n"
                 "  shitsukan hand evaluate glove.csv --pins L.MCP.flex --model natural --ignore-columns trial",

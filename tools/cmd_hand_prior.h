@@ -11,8 +11,25 @@
 int hand_read_samples(const cli_command *cmd, const cli_args *args, const char *path, sk_hand_samples *out);
 /* "natural", "yasumuro-table-3.2", "none" or a file (`out` is zeroed for "none"). */
 int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out);
+/* --weights: thesis or inverse-variance (`fallback` when absent). */
+int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weight_rule fallback,
+                     sk_hand_weight_rule *out);
+/* --lut-resolution, --lut-weight, --lut-interp into a lookup-table desc. */
+int hand_lut_options(const cli_command *cmd, const cli_args *args, sk_hand_lut_desc *out);
 /* `hand calibrate` without --pairs: the whole potential (--method, --components,
  * --prior-strength, --base, --seed). */
 int hand_calibrate_potential(const cli_command *cmd, const cli_args *args);
+
+/* The posture solver of a command: a calibrated potential (--potential FILE of hand
+ * calibrate) or a constraint set by name with lookup tables (which must outlive it). */
+typedef struct hand_poser {
+    sk_hand_solver *solver;
+    sk_hand_potential_solver *potential;
+} hand_poser;
+/* potential_path NULL: the set `set_name` ("natural", a preset, "none" or a file). */
+int hand_poser_open(hand_poser *poser, const sk_hand_skeleton *skel, const char *potential_path,
+                    const char *set_name, const sk_hand_lut *luts, int lut_count);
+int hand_poser_solve(hand_poser *poser, const sk_hand_input *in, double *q, sk_hand_solve_info *info);
+void hand_poser_close(hand_poser *poser);
 
 #endif

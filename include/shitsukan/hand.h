@@ -407,13 +407,19 @@ typedef struct sk_hand_pin_set {
 typedef enum sk_hand_potential_method {
     SK_HAND_POTENTIAL_DEFAULT = 0, /* = MIXTURE */
     SK_HAND_POTENTIAL_GAUSSIAN,    /* one Gaussian */
-    SK_HAND_POTENTIAL_MIXTURE      /* 1..max_components Gaussians, the count chosen by
+    SK_HAND_POTENTIAL_MIXTURE,     /* 1..max_components Gaussians, the count chosen by
                                       held-out likelihood (1 where more do not help) */
+    SK_HAND_POTENTIAL_PAIRS        /* the thesis's form with pair rows (3.2.2): the relaxed
+                                      posture from the samples, the base set's springs, and
+                                      the pair rows and weight scale chosen on held-out
+                                      samples (starting from the base set's rows, which
+                                      are kept unless dropping them helps) */
 } sk_hand_potential_method;
 
 typedef struct sk_hand_potential_desc {
     sk_hand_potential_method method; /* 0 = mixture */
-    int max_components;    /* mixture: 0 = 6; range [1, 16] */
+    int max_components;    /* mixture: 0 = 12; range [1, 16]; counts tried: 1, 2, 3, 4, 6,
+                              8, 12, 16 up to it */
     int components;        /* mixture: 0 = chosen on held-out samples; else fixed [1, 16] */
     double prior_strength; /* pseudo-samples of the base set's Gaussian that the mean and
                               covariance shrink toward; 0 = chosen by held-out
@@ -426,6 +432,17 @@ typedef struct sk_hand_potential_desc {
        for: pin these DOFs, predict the others. NULL = every calibrated DOF alone. */
     const sk_hand_pin_set *pin_sets;
     int pin_set_count;      /* range [0, 16] */
+    /* PAIRS: the candidate pairs X:Y (row y = A x + b, fitted on the samples' moments
+       shrunk toward the base set's Gaussian); NULL = every ordered pair of calibrated DOFs */
+    const int (*pairs)[2];
+    int pair_count;          /* range [0, 256] */
+    sk_hand_weight_rule weight_rule; /* of the fitted rows; 0 = INVERSE_VARIANCE read in
+                                        stiffness units (a row whose spread about its line
+                                        is a spring's, 20 degrees, weighs 1); THESIS = eq.
+                                        3.18 over the chosen rows */
+    double weight_scale;     /* multiplies the fitted rows' weights; 0 = chosen on held-out
+                                samples from 1/4, 1/2, 1, ..., 64; range [0, 1e6] */
+    int max_pairs;           /* fitted rows at most; 0 = 16; range [1, 64] */
 } sk_hand_potential_desc;
 
 typedef struct sk_hand_potential_component {
@@ -443,6 +460,9 @@ typedef struct sk_hand_potential {
                                       that torques keep the base set's units */
     int sample_count;              /* samples fitted */
     double prior_strength;         /* resolved (pseudo-samples) */
+    double weight_scale;           /* PAIRS: resolved scale of the fitted rows; else 0 */
+    int pair_count;                /* PAIRS: fitted rows (in component 0, after the base
+                                      rows kept) */
     int component_count;
     sk_hand_potential_component *component; /* allocated */
 } sk_hand_potential;
@@ -497,9 +517,13 @@ typedef enum sk_hand_eval_model {
     SK_HAND_EVAL_MODEL_CALIBRATED,  /* sk_hand_potential_fit on each training fold */
     SK_HAND_EVAL_MODEL_FIXED,       /* a given constraint set, not refitted (the
                                        built-in relaxed posture) */
-    SK_HAND_EVAL_MODEL_PAIRS        /* the thesis's pair lines (3.2.2) fitted on each
+    SK_HAND_EVAL_MODEL_PAIRS,       /* the thesis's pair lines (3.2.2) fitted on each
                                        training fold, weights by `weight_rule` times
                                        `weight_scale`, added to the base set's springs */
+    SK_HAND_EVAL_MODEL_LUT          /* lookup-table potentials (3.2.3) of `pairs` built
+                                       from each training fold (`lut`), added to the
+                                       base set (`potential.base`: springs and rows)
+                                       around the built-in relaxed posture */
 } sk_hand_eval_model;
 
 
@@ -513,8 +537,9 @@ typedef struct sk_hand_evaluation_desc {
     sk_hand_eval_model model;
     sk_hand_potential_desc potential;     /* CALIBRATED */
     const sk_hand_constraints *fixed;     /* FIXED (NULL = springs only) */
-    const int (*pairs)[2];                /* PAIRS */
+    const int (*pairs)[2];                /* PAIRS, LUT: at most 64 */
     int pair_count;
+    sk_hand_lut_desc lut;                 /* LUT */
     sk_hand_weight_rule weight_rule;      /* PAIRS */
     double weight_scale;                  /* PAIRS: 0 = 1; range (0, 1e6] */
     const sk_hand_solver_desc *solver;    /* NULL = defaults */
@@ -529,7 +554,8 @@ typedef struct sk_hand_pin_result {
     double model[SK_HAND_DOF_COUNT], mean[SK_HAND_DOF_COUNT], linear[SK_HAND_DOF_COUNT],
         pca[SK_HAND_DOF_COUNT];
     double model_all, mean_all, linear_all, pca_all;
-    int solves, unconverged;         /* model solves and those that did not converge */
+    int solves, unconverged;         /* model solves and those that did not converge
+                                        (their result is kept: the last iterate) */
     double max_residual;
 } sk_hand_pin_result;
 
@@ -551,7 +577,8 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skeleton, const sk_hand_sampl
 sk_result sk_hand_parse_pin_set(const char *text, sk_hand_pin_set *out, sk_error *err);
 /* The report: a list, one entry per pin set: {"pins": [...], "model_rms_deg": x,
  * "per_joint": {name: x, ...}, "baselines": {"mean": x, "linear": x,
- * "pca": {"k": k, "rms_deg": x}}} (degrees). */
+ * "pca": {"k": k, "rms_deg": x}}, "solves": {"count": n, "not_converged": n,
+ * "largest_residual": x}} (degrees). */
 sk_result sk_hand_evaluation_write_json(const sk_hand_evaluation *eval, const char *path,
                                         sk_error *err);
 /* The table: per pin set, every joint's RMS for the model and the baselines (degrees). */
@@ -566,8 +593,10 @@ sk_result sk_hand_plot_evaluation(const sk_hand_evaluation *eval, const char *mo
  * little: MCP, PIP, DIP), made to stand in for real recordings where none can be shipped:
  * several people each grasp ten object types (power, precision, hook, pointing, flat,
  * fist, ...) in a few trials of reach, hold and release. Per grasp type an aperture varies
- * the PIPs of all fingers together and each MCP on its own (neighbouring PIPs strongly
- * coupled, MCP and PIP of one finger weakly); the DIP follows its PIP along a curve (no
+ * the PIPs of all fingers together and each MCP partly with its neighbour (neighbouring
+ * PIPs strongly coupled, neighbouring MCPs moderately, MCP and PIP of one finger weakly);
+ * on the way to an object the hand opens beyond the grasp (pre-shaping); the DIP follows
+ * its PIP along a curve (no
  * DIP flexion below about 20 degrees of PIP), with a person's own gain; people differ in
  * their relaxed posture and range; glove noise of about 2 degrees per sample and a
  * calibration offset per trial; angles stay within the joint limits. CSV columns:

@@ -11,6 +11,7 @@
 
 #define D_MAX SK_HAND_DOF_COUNT
 #define NP_MAX SK_HAND_EVAL_MAX_PIN_SETS
+#define SK_HAND_EVAL_MAX_LUTS 64
 
 sk_result sk_hand_parse_pin_set(const char *text, sk_hand_pin_set *out, sk_error *err)
 {
@@ -150,6 +151,29 @@ static sk_result fold_model(const sk_hand_skeleton *skel, const sk_hand_samples 
     return r;
 }
 
+/* The lookup tables of a fold (3.2.3): one per pair, from the training samples. */
+static sk_result fold_luts(const sk_hand_samples *s, const int *train, int nt, const sk_hand_evaluation_desc *desc,
+                           sk_hand_lut *luts, int *count, sk_error *err)
+{
+    *count = 0;
+    double *xs = malloc(sizeof(double) * (size_t)nt * 2);
+    if (!xs) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    sk_result r = SK_OK;
+    for (int k = 0; k < desc->pair_count && r == SK_OK; k++) {
+        int x = desc->pairs[k][0], y = desc->pairs[k][1];
+        for (int i = 0; i < nt; i++) {
+            xs[i] = s->column[x][train[i]];
+            xs[nt + i] = s->column[y][train[i]];
+        }
+        r = sk_hand_lut_build(&luts[k], x, y, xs, xs + nt, nt, &desc->lut, err);
+        if (r == SK_OK) (*count)++;
+    }
+    free(xs);
+    if (r != SK_OK)
+        for (int k = 0; k < *count; k++) sk_hand_lut_free(&luts[k]);
+    return r;
+}
+
 /* Squared-error sums of one pin set, per joint (index among the calibrated DOFs). */
 typedef struct sums {
     double model[D_MAX], mean[D_MAX], linear[D_MAX], pca[D_MAX];
@@ -167,10 +191,14 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
     if (desc_in) desc = *desc_in;
     if (desc.model == SK_HAND_EVAL_MODEL_DEFAULT) desc.model = SK_HAND_EVAL_MODEL_CALIBRATED;
     if (desc.model != SK_HAND_EVAL_MODEL_CALIBRATED && desc.model != SK_HAND_EVAL_MODEL_FIXED &&
-        desc.model != SK_HAND_EVAL_MODEL_PAIRS)
+        desc.model != SK_HAND_EVAL_MODEL_PAIRS && desc.model != SK_HAND_EVAL_MODEL_LUT)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "model = %d is not a model", (int)desc.model);
-    if (desc.model == SK_HAND_EVAL_MODEL_PAIRS && (desc.pair_count < 1 || !desc.pairs))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the pair model needs pairs");
+    bool with_pairs = desc.model == SK_HAND_EVAL_MODEL_PAIRS || desc.model == SK_HAND_EVAL_MODEL_LUT;
+    if (with_pairs && (desc.pair_count < 1 || !desc.pairs))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the %s model needs pairs",
+                       desc.model == SK_HAND_EVAL_MODEL_LUT ? "lookup-table" : "pair");
+    if (with_pairs && desc.pair_count > SK_HAND_EVAL_MAX_LUTS)
+        return sk_fail(err, SK_ERROR_LIMIT, "%d pairs; at most %d", desc.pair_count, SK_HAND_EVAL_MAX_LUTS);
     if (desc.folds == 0 && !desc.by_group) desc.folds = 5;
     if (desc.pca_components == 0) desc.pca_components = 6;
     sk_result r = sk_check_range_i(err, "folds", desc.folds, desc.by_group ? 0 : 2, 1000);
@@ -201,6 +229,13 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
         if (pin_sets[p].count >= d)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pin set %d pins every calibrated DOF", p + 1);
     }
+    for (int k = 0; with_pairs && k < desc.pair_count; k++)
+        for (int e = 0; e < 2; e++) {
+            int dd = desc.pairs[k][e];
+            if (!sk_hand_dof(dd) || at[dd] < 0)
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair %d: %s is not a joint-angle column of the samples",
+                               k + 1, sk_hand_dof(dd) ? sk_hand_dof(dd)->name : "?");
+        }
     /* folds */
     int n = s->count;
     int *fold = malloc(sizeof(int) * (size_t)n);
@@ -242,9 +277,16 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
             break;
         }
         sk_hand_potential pot;
-        r = fold_model(skel, s, dof, d, train, nt, &desc, &pot, err);
+        sk_hand_lut luts[SK_HAND_EVAL_MAX_LUTS];
+        int lut_count = 0;
+        if (desc.model == SK_HAND_EVAL_MODEL_LUT) {
+            memset(&pot, 0, sizeof pot);
+            r = fold_luts(s, train, nt, &desc, luts, &lut_count, err);
+        } else {
+            r = fold_model(skel, s, dof, d, train, nt, &desc, &pot, err);
+        }
         if (r != SK_OK) break;
-        components += pot.component_count;
+        components += lut_count > 0 ? 1 : pot.component_count;
         folds_done++;
         /* model solves: independent per held-out sample, one solver per thread */
         int failed = 0;
@@ -252,8 +294,11 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
 #pragma omp parallel
         {
             sk_hand_potential_solver *ps = NULL;
+            sk_hand_solver *ls = NULL;
             sk_error e = {0};
-            bool ok = sk_hand_potential_solver_create(&ps, skel, &pot, desc.solver, &e) == SK_OK;
+            bool ok = lut_count > 0
+                          ? sk_hand_solver_create(&ls, skel, desc.potential.base, luts, lut_count, desc.solver, &e) == SK_OK
+                          : sk_hand_potential_solver_create(&ps, skel, &pot, desc.solver, &e) == SK_OK;
 #pragma omp for schedule(dynamic, 64)
             for (int k = 0; k < ne; k++) {
                 if (!ok) continue;
@@ -265,7 +310,9 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
                         in.pin_value[dd] = s->column[dd][test[k]];
                     }
                     double *q = pred + ((size_t)k * pin_set_count + p) * SK_HAND_DOF_COUNT;
-                    if (sk_hand_potential_solve(ps, &in, q, &infos[(size_t)k * pin_set_count + p], NULL, &e) != SK_OK)
+                    sk_hand_solve_info *info = &infos[(size_t)k * pin_set_count + p];
+                    if ((ls ? sk_hand_solve(ls, &in, q, info, &e) : sk_hand_potential_solve(ps, &in, q, info, NULL, &e)) !=
+                        SK_OK)
                         ok = false;
                 }
             }
@@ -277,8 +324,10 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
                 }
             }
             sk_hand_potential_solver_destroy(ps);
+            sk_hand_solver_destroy(ls);
         }
         sk_hand_potential_free(&pot);
+        for (int k = 0; k < lut_count; k++) sk_hand_lut_free(&luts[k]);
         if (failed) {
             if (err) *err = thread_err;
             r = thread_err.result != SK_OK ? thread_err.result : SK_ERROR_NUMERIC;

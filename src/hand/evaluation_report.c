@@ -34,6 +34,11 @@ sk_result sk_hand_evaluation_write_json(const sk_hand_evaluation *eval, const ch
         if (!pca) break;
         cJSON_AddNumberToObject(pca, "k", eval->pca_k);
         cJSON_AddNumberToObject(pca, "rms_deg", deg(res->pca_all));
+        cJSON *solves = cJSON_AddObjectToObject(o, "solves");
+        if (!solves) break;
+        cJSON_AddNumberToObject(solves, "count", res->solves);
+        cJSON_AddNumberToObject(solves, "not_converged", res->unconverged);
+        cJSON_AddNumberToObject(solves, "largest_residual", res->max_residual);
     }
     char *text = cJSON_Print(root);
     cJSON_Delete(root);

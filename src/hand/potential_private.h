@@ -20,4 +20,40 @@ sk_result sk_hand__constraints_from_json(const cJSON *object, const char *path,
  * overflow are errors ("line N: ..."). */
 sk_result sk_hand__json_parse_strict(const char *text, size_t length, cJSON **out, sk_error *err);
 
+/* -------------------------------------------- fitting (potential_fit.c) */
+
+/* A spring of stiffness 1 alone spreads a DOF by this much when the base set is read as a
+ * Gaussian (its temperature is the square). */
+#define SK_HAND__PRIOR_SPREAD (20.0 * SK_DEG_TO_RAD)
+#define SK_HAND__FIT_MAX_MASKS (SK_HAND_EVAL_MAX_PIN_SETS > SK_HAND_DOF_COUNT ? SK_HAND_EVAL_MAX_PIN_SETS : SK_HAND_DOF_COUNT)
+
+/* What every calibration method starts from: the samples split into a training and a
+ * validation part, the pin patterns of the held-out choices, the base set's Gaussian,
+ * the prior strength and the shrunk moments. */
+typedef struct sk_hand__fit_data {
+    int d, dof[SK_HAND_DOF_COUNT];
+    bool masks[SK_HAND__FIT_MAX_MASKS][SK_HAND_DOF_COUNT]; /* true: pinned in pattern p */
+    int mask_count;
+    double *x;        /* n x d rows (radians): the training part first, validation after */
+    int n, n_train, n_val;
+    bool can_validate;
+    double mu0[SK_HAND_DOF_COUNT], sigma0[SK_HAND_DOF_COUNT * SK_HAND_DOF_COUNT]; /* base set */
+    double base_diag[SK_HAND_DOF_COUNT]; /* K + A'WA of the base set on the diagonal */
+    double nu;        /* prior strength, resolved */
+    double mu[SK_HAND_DOF_COUNT], sigma[SK_HAND_DOF_COUNT * SK_HAND_DOF_COUNT]; /* shrunk, all */
+    double mu_train[SK_HAND_DOF_COUNT], sigma_train[SK_HAND_DOF_COUNT * SK_HAND_DOF_COUNT];
+} sk_hand__fit_data;
+
+/* Checks the desc's common fields, splits the samples and chooses the prior strength.
+ * Free with sk_hand__fit_data_free. */
+sk_result sk_hand__fit_prepare(sk_hand__fit_data *fd, const sk_hand_skeleton *skeleton,
+                               const sk_hand_samples *samples, const int *idx, int n,
+                               const sk_hand_potential_desc *desc, sk_error *err);
+void sk_hand__fit_data_free(sk_hand__fit_data *fd);
+
+/* The PAIRS method (pair_select.c): fills `out` (one component). */
+sk_result sk_hand__pairs_fit(sk_hand_potential *out, const sk_hand_skeleton *skeleton,
+                             const sk_hand__fit_data *fd, const sk_hand_potential_desc *desc,
+                             sk_error *err);
+
 #endif

@@ -1,7 +1,10 @@
 /* Posing with a calibrated potential: each component is a thesis-form set with its own
  * relaxed posture (eqs. 3.7, 3.17), solved within the joint limits by the equilibrium
  * solver; with a mixture the components' equilibria are blended by the probability of
- * the pinned values under each component (the grasp type the pins suggest). */
+ * the pinned values under each component (the grasp type the pins suggest). Torques on
+ * free DOFs tilt the components' Gaussians (the energy minus the torques' work, read as
+ * a density at the potential's temperature `scale`), which moves the probabilities
+ * toward the components the torques push into (limits left out of the probabilities). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,12 +17,14 @@
 
 struct sk_hand_potential_solver {
     int m, d;
+    double temperature; /* the potential's scale: K + A'WA = scale x precision */
     int dof[D_MAX];
     int at[SK_HAND_DOF_COUNT]; /* index among the calibrated DOFs, or -1 */
     double min[SK_HAND_DOF_COUNT], max[SK_HAND_DOF_COUNT];
     double log_weight[M_MAX];
     double mean[M_MAX][D_MAX];
     double cov[M_MAX][D_MAX * D_MAX];
+    double prec[M_MAX][D_MAX * D_MAX];
     sk_hand_solver *solver[M_MAX];
 };
 
@@ -41,6 +46,7 @@ sk_result sk_hand_potential_solver_create(sk_hand_potential_solver **out, const 
     if (!ps) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     ps->m = p->component_count;
     ps->d = p->dof_count;
+    ps->temperature = p->scale;
     memcpy(ps->dof, p->dof, sizeof(int) * (size_t)p->dof_count);
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
         ps->at[i] = -1;
@@ -53,6 +59,9 @@ sk_result sk_hand_potential_solver_create(sk_hand_potential_solver **out, const 
         const sk_hand_potential_component *comp = &p->component[c];
         ps->log_weight[c] = log(comp->weight);
         r = sk_hand_potential_gaussian(p, c, ps->mean[c], ps->cov[c], err);
+        memcpy(ps->prec[c], ps->cov[c], sizeof(double) * (size_t)ps->d * ps->d);
+        if (r == SK_OK && !sk_hand__spd_inverse(ps->prec[c], ps->d))
+            r = sk_fail(err, SK_ERROR_NUMERIC, "component %d: the covariance is not positive definite", c);
         /* the component's relaxed posture replaces the skeleton's (eq. 3.7) */
         sk_hand_skeleton own = *skel;
         for (int i = 0; i < SK_HAND_DOF_COUNT; i++) own.dof[i].relaxed = comp->relaxed[i];
@@ -66,10 +75,43 @@ sk_result sk_hand_potential_solver_create(sk_hand_potential_solver **out, const 
     return SK_OK;
 }
 
+/* log of the tilt of component c by torques t = tau / temperature on the free calibrated
+ * DOFs u given the pins p: log E[exp(t'x_u) | x_p] = t'mu_u|p + t'Sigma_u|p t / 2, with
+ * Sigma_u|p = P_uu^-1 and mu_u|p = mu_u - P_uu^-1 P_up (x_p - mu_p). */
+static double tilt(const sk_hand_potential_solver *ps, int c, const sk_hand_input *in)
+{
+    int d = ps->d, u[D_MAX], nu = 0;
+    double t[D_MAX], z[D_MAX], rr[D_MAX], puu[D_MAX * D_MAX];
+    for (int a = 0; a < d; a++)
+        if (!in->pinned[ps->dof[a]]) u[nu++] = a;
+    double result = 0.0;
+    for (int i = 0; i < nu; i++) {
+        int a = u[i];
+        t[i] = in->torque[ps->dof[a]] / ps->temperature;
+        rr[i] = 0.0;
+        for (int b = 0; b < d; b++) {
+            int dof = ps->dof[b];
+            if (!in->pinned[dof]) continue;
+            double v = sk_clampd(in->pin_value[dof], ps->min[dof], ps->max[dof]);
+            rr[i] += ps->prec[c][b * d + a] * (v - ps->mean[c][b]);
+        }
+        for (int j = 0; j < nu; j++) puu[j * nu + i] = ps->prec[c][u[j] * d + a];
+        result += t[i] * ps->mean[c][a];
+    }
+    if (nu == 0 || !sk_hand__cholesky(puu, nu)) return 0.0;
+    memcpy(z, t, sizeof(double) * (size_t)nu);
+    sk_hand__cholesky_solve(puu, nu, z, 1);
+    for (int i = 0; i < nu; i++) result += z[i] * (0.5 * t[i] - rr[i]);
+    return result;
+}
+
 /* Probability of each component given the pinned calibrated DOFs (their marginal
- * Gaussian under the component times its weight); the prior weights without pins. */
+ * Gaussian under the component times its weight) and tilted by the torques; the prior
+ * weights without inputs. */
 static void responsibilities(const sk_hand_potential_solver *ps, const sk_hand_input *in, double *resp)
 {
+    bool torques = false;
+    for (int a = 0; a < ps->d; a++) torques |= !in->pinned[ps->dof[a]] && in->torque[ps->dof[a]] != 0.0;
     int pin[D_MAX], np = 0;
     double v[D_MAX];
     for (int a = 0; a < ps->d; a++) {
@@ -90,6 +132,7 @@ static void responsibilities(const sk_hand_potential_solver *ps, const sk_hand_i
             if (sk_hand__cholesky(s, np)) l[c] += sk_hand__gauss_logpdf(v, mu, s, sk_hand__cholesky_logdet(s, np), np);
             else l[c] = -INFINITY;
         }
+        if (torques && isfinite(l[c])) l[c] += tilt(ps, c, in);
         top = fmax(top, l[c]);
     }
     double sum = 0.0;

@@ -43,7 +43,9 @@ async function filePixels(page, file) {
   }, b64);
 }
 
-const canvasPixels = (page, id) => page.evaluate((id) => {
+// (the skin panel's maps once its last render is shown)
+const canvasPixels = (page, id) => page.evaluate(async (id) => {
+  if (id.startsWith('skin-')) await window.studio.panels.skin.idle();
   const c = document.getElementById(id);
   return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
 }, id);
@@ -326,9 +328,17 @@ test('a preset change updates the maps, equal to the command line', async ({ pag
   // speed: the shaded preview at 512 x 512 (skin built and rendered), best of 5
   await page.selectOption('#skin-preset', 'back-of-hand');
   await page.waitForTimeout(300);
-  const t = await page.evaluate(() => { const s = window.studio.panels.skin, r = []; for (let k = 0; k < 3; k++) r.push(s.timePreview(512)); return r; });
-  speed.skin_preview_512_ms = Math.min(...t);
-  console.log(`skin preview 512x512 (back-of-hand): best ${speed.skin_preview_512_ms.toFixed(1)} ms of ${t.map((x) => x.toFixed(0)).join(', ')}`);
+  await page.evaluate(() => window.studio.panels.skin.idle());
+  const t = await page.evaluate(async () => {
+    const s = window.studio.panels.skin, r = { workers: [], one: [], count: s.workers.count };
+    for (let k = 0; k < 5; k++) r.workers.push(await s.timePreview(512));
+    for (let k = 0; k < 3; k++) r.one.push(s.timePreviewOneThread(512));
+    return r;
+  });
+  speed.skin_preview_512_ms = Math.min(...t.workers);
+  speed.skin_preview_512_workers = t.count;
+  speed.skin_preview_512_one_thread_ms = Math.min(...t.one);
+  console.log(`skin preview 512x512 (back-of-hand): ${t.count} workers best ${speed.skin_preview_512_ms.toFixed(1)} ms of ${t.workers.map((x) => x.toFixed(0)).join(', ')}; one thread best ${speed.skin_preview_512_one_thread_ms.toFixed(1)} ms`);
   expect(errors).toEqual([]);
 });
 
@@ -427,5 +437,139 @@ test('exports the map sets as files the library reads', async ({ page }) => {
   await Promise.all(saved);
   for (const n of ['cut.png', 'albedo.png', 'pores.png', 'fibre.png', 'cut.exr']) expect(names).toContain(`wood-${n}`);
   shitsukan('sheet', path.join(dir, 'wood-cut.exr'), path.join(dir, 'wood-fibre.png'), '-o', path.join(TMP, 'export-wood.png'), '--quiet');
+  expect(errors).toEqual([]);
+});
+
+// The skin's frames in a point cache (PC2: header of 32 bytes, then float32 x y z).
+function pc2Frames(file) {
+  const buf = fs.readFileSync(file);
+  expect(buf.toString('latin1', 0, 11)).toBe('POINTCACHE2');
+  const points = buf.readInt32LE(16), samples = buf.readInt32LE(28);
+  const frames = [];
+  for (let s = 0; s < samples; s++) {
+    const f = new Float32Array(points * 3);
+    for (let i = 0; i < points * 3; i++) f[i] = buf.readFloatLE(32 + 4 * (s * points * 3 + i));
+    frames.push(f);
+  }
+  return { points, frames };
+}
+
+const maxDiff = (a, b) => a.reduce((m, v, i) => Math.max(m, Math.abs(v - b[i])), 0);
+
+test('the tissue panel plays a motion on the arm as tissue run does', async ({ page }) => {
+  test.setTimeout(180000); // the shipped arm simulates at about half real time on one core
+  await open(page);
+  await page.click('#tabs button[data-tab=tissue]');
+  await page.waitForFunction(() => window.studio.panels.tissue.builds >= 1 && window.studio.panels.tissue.duration > 0, null, { timeout: 30000 });
+  const tissue = (fn, arg) => page.evaluate(fn, arg);
+  speed.tissue_build_ms = await tissue(() => window.studio.panels.tissue.timings.build_ms);
+  // playing moves the skin
+  await page.waitForFunction(() => window.studio.panels.tissue.time > 0.6, null, { timeout: 30000 });
+  const moved = await tissue(() => {
+    const t = window.studio.panels.tissue, a = t.mesh.geometry.attributes.position.array;
+    return t.rest.reduce((m, v, i) => Math.max(m, Math.abs(v - a[i])), 0);
+  });
+  expect(moved).toBeGreaterThan(5); // mm
+  speed.tissue_realtime_factor = await tissue(() => window.studio.panels.tissue.timings.realtime_factor);
+  // the character saved as the file tissue run reads; the first frames equal its point cache
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('#tissue-save')]);
+  const character = path.join(TMP, 'arm-saved.json');
+  await dl.saveAs(character);
+  const frames = 6, fps = 30;
+  const mine = await tissue(async ([n, fps]) => {
+    const t = window.studio.panels.tissue;
+    await t.startMotion(false);
+    const out = [];
+    for (let f = 0; f < n; f++) out.push(Array.from(t.skinAt(f / fps)));
+    return out;
+  }, [frames, fps]);
+  const dir = path.join(TMP, 'tissue-run');
+  shitsukan('tissue', 'run', '--character', character, '--motion', 'curl', '--fps', String(fps), '--frames', `0:${frames - 1}`, '--no-glb', '--quiet', '-o', dir);
+  const native = pc2Frames(path.join(dir, 'skin.pc2'));
+  expect(native.frames.length).toBe(frames);
+  expect(native.points * 3).toBe(mine[0].length);
+  let worst = 0;
+  for (let f = 0; f < frames; f++) worst = Math.max(worst, maxDiff(mine[f], native.frames[f]));
+  console.log(`tissue: first ${frames} frames at ${fps} fps, ${native.points} skin points: largest difference from tissue run's point cache ${worst.toExponential(2)} mm`);
+  expect(worst).toBeLessThan(1e-3);
+  expect(maxDiff(mine[frames - 1], mine[0])).toBeGreaterThan(0.01);
+  // the picture: the shipped arm in the curl, the jiggle tinted
+  await tissue(() => {
+    const t = window.studio.panels.tissue;
+    document.getElementById('tissue-tint').click();
+    t.show(t.skinAt(1.5));
+  });
+  await shot(page, 'tissue');
+  // a coarser grid (faster), then a slider (the fat's stiffness) changes the motion
+  let builds = await tissue(() => window.studio.panels.tissue.builds);
+  await page.selectOption('#tissue-grid', '10');
+  await page.waitForFunction((b) => window.studio.panels.tissue.builds > b, builds);
+  const grid = await tissue(() => { const t = window.studio.panels.tissue; return { spacing: t.stats.spacing_mm, k: t.tree.material.fat_stiffness, r: t.tree.skin.dilation_radius_mm }; });
+  expect(grid).toEqual({ spacing: 10, k: 4, r: 15 }); // the material kept: stiffness and reach per spacing
+  const at = 1.0;
+  const before = await tissue(async (s) => { const t = window.studio.panels.tissue; await t.startMotion(false); return Array.from(t.skinAt(s)); }, at);
+  builds = await tissue(() => window.studio.panels.tissue.builds);
+  const k = page.locator('#tissue-sliders .ctl[data-key="material.fat_stiffness"] input[type=number]');
+  await k.fill('1');
+  await k.dispatchEvent('change');
+  await page.waitForFunction((b) => window.studio.panels.tissue.builds > b, builds);
+  const after = await tissue(async (s) => { const t = window.studio.panels.tissue; await t.startMotion(false); return Array.from(t.skinAt(s)); }, at);
+  expect(await tissue(() => window.studio.panels.tissue.tree.material.fat_stiffness)).toBe(1);
+  const change = maxDiff(before, after);
+  console.log(`tissue (10 mm grid): fat stiffness 4 -> 1 N/m moves the skin at ${at} s by up to ${change.toFixed(2)} mm`);
+  expect(change).toBeGreaterThan(0.1);
+  // a user's BVH file (the walk, whose right arm binds the arm's joints by name)
+  const walk = path.join(TMP, 'my-walk.bvh');
+  shitsukan('tissue', 'motion', 'walk', '-o', walk);
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser'), page.selectOption('#tissue-motion', 'file')]);
+  await chooser.setFiles(walk);
+  await page.waitForFunction(() => window.studio.panels.tissue.motion === 'my-walk.bvh' && window.studio.panels.tissue.time > 0.1, null, { timeout: 30000 });
+  expect(await tissue(() => window.studio.panels.tissue.duration)).toBeGreaterThan(4);
+  expect(errors).toEqual([]);
+});
+
+test('the skin material on the hand: the atlas baked as hand mesh --texture bakes it', async ({ page }) => {
+  test.setTimeout(180000); // three bakes in the page and one on the command line
+  await open(page);
+  await page.waitForFunction(() => window.studio.panels.hand.model.surface);
+  await page.selectOption('#hand-texture-size', '256');
+  await page.selectOption('#hand-material', 'baked');
+  await page.waitForFunction(() => window.studio.panels.hand.texture && window.studio.panels.hand.texture.size === 256, null, { timeout: 30000 });
+  speed.hand_texture_bake_256_ms = await page.evaluate(() => window.studio.panels.hand.timings.texture_bake_ms);
+  const tex = await page.evaluate(() => { const t = window.studio.panels.hand.texture; return { albedo: Array.from(t.albedo), normal: Array.from(t.normal) }; });
+  const dir = path.join(TMP, 'hand-texture');
+  fs.mkdirSync(dir, { recursive: true });
+  shitsukan('hand', 'mesh', '-o', path.join(dir, 'hand.obj'), '--texture', path.join(dir, 'skin'), '--texture-size', '256', '--quiet');
+  for (const k of ['albedo', 'normal']) {
+    const c = compare(tex[k], await filePixels(page, path.join(dir, `skin-${k}.png`)));
+    console.log(`hand atlas ${k} 256: max difference ${c.max} codes, ${c.off} of ${c.count} beyond 1`);
+    expect(c.max).toBeLessThanOrEqual(1);
+  }
+  const drawn = await page.evaluate(() => {
+    const m = window.studio.panels.hand.model.surfaceMesh;
+    return { map: !!m.material.map, normalMap: !!m.material.normalMap, uvs: m.geometry.attributes.uv.count };
+  });
+  expect([drawn.map, drawn.normalMap]).toEqual([true, true]);
+  expect(drawn.uvs).toBeGreaterThan(4002); // the seam's vertices split
+  // a close view of the back of the hand in a pose, the atlas at 512
+  await page.selectOption('#hand-texture-size', '512');
+  await page.waitForFunction(() => window.studio.panels.hand.texture.size === 512, null, { timeout: 30000 });
+  await page.evaluate(() => {
+    const h = window.studio.panels.hand;
+    h.setSlider('I.PIP.flex', 35);
+    window.studio.view.setContent(h.root, { distance: 2.2, target: [0, 0.9, 0], direction: [0.25, 0.35, 1] });
+  });
+  await shot(page, 'hand-skin');
+  // the skin panel's skin on the back: another preset there gives another normal map
+  await page.click('#tabs button[data-tab=skin]');
+  await page.selectOption('#skin-size', '128');
+  await page.selectOption('#skin-preset', 'fig13a');
+  await page.waitForTimeout(300);
+  await page.click('#tabs button[data-tab=hand]');
+  await page.evaluate(() => { window.studio.panels.hand.textureSize = 256; document.getElementById('hand-texture-size').value = '256'; });
+  await page.selectOption('#hand-material', 'skin-panel');
+  await page.waitForFunction(() => window.studio.panels.hand.texture.size === 256, null, { timeout: 30000 });
+  const other = await page.evaluate(() => Array.from(window.studio.panels.hand.texture.normal));
+  expect(compare(other, tex.normal).off).toBeGreaterThan(1000);
   expect(errors).toEqual([]);
 });

@@ -22,4 +22,8 @@ struct sk_schema;
 sk_result studio_bind_json(const char *json, const struct sk_schema *schema, void *desc,
                            sk_error *err);
 
+/* A tissue character file's text resolved (every default filled in), as JSON
+ * (studio_tissue.c); NULL with the error on a bad file. */
+char *studio_tissue_resolved(const char *json, sk_error *err);
+
 #endif

@@ -6,6 +6,7 @@
 #include "shitsukan/image.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/skin.h"
+#include "shitsukan/tissue.h"
 #include "shitsukan/wood.h"
 #include "studio.h"
 
@@ -29,10 +30,11 @@ static const sk_schema *schema_of(const char *module)
 {
     if (strcmp(module, "skin") == 0) return &sk_skin_schema;
     if (strcmp(module, "wood") == 0) return &sk_wood_schema;
+    if (strcmp(module, "tissue") == 0) return &sk_tissue_character_schema;
     return NULL;
 }
 
-/* The schema of "skin" or "wood" as JSON (sk_schema_describe_json). */
+/* The schema of "skin", "wood" or "tissue" (a character file) as JSON (sk_schema_describe_json). */
 STUDIO_API char *studio_schema(const char *module)
 {
     const sk_schema *schema = schema_of(module);
@@ -59,7 +61,8 @@ STUDIO_API char *studio_resolved(const char *module, const char *json, sk_error 
         if (sk_wood_desc_validate(&r, err) != SK_OK) return NULL;
         return sk_schema_to_json(&sk_wood_schema, &r);
     }
-    sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "unknown module '%s' (skin, wood)", module);
+    if (strcmp(module, "tissue") == 0) return studio_tissue_resolved(json, err);
+    sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "unknown module '%s' (skin, wood, tissue)", module);
     return NULL;
 }
 

@@ -13,6 +13,11 @@ const el = (tag, props = {}, ...kids) => {
   return e;
 };
 
+// The surface's material: a plain colour, or the atlas baked with the skin presets'
+// microrelief (back-of-hand on the back, palm on the palm, as `hand mesh --texture`), or
+// with the skin panel's current skin on the back.
+const MATERIALS = [['plain', 'plain colour'], ['baked', 'skin texture (back-of-hand, palm)'], ['skin-panel', 'skin panel\'s skin on the back']];
+
 const SETS = [['natural', 'natural (published couplings)'], ['yasumuro-table-3.2', 'thesis Table 3.2'], ['file', 'calibrated file…']];
 
 export class HandPanel {
@@ -26,6 +31,9 @@ export class HandPanel {
     this.setChoice = 'natural';
     this.keys = [];
     this.timings = {};
+    this.materialChoice = 'plain';
+    this.textureSize = 512;
+    this.presetTrees = {};
     this.root = new THREE.Group(); // whole-hand rotation
     this.scaled = new THREE.Group();
     this.scaled.scale.setScalar(0.01);
@@ -81,6 +89,7 @@ export class HandPanel {
           const t0 = performance.now();
           this.model.buildSurface();
           this.timings.surface_build_ms = performance.now() - t0;
+          if (this.materialChoice !== 'plain') this.useMaterial(this.materialChoice);
         }
         this.model.showSurface(surface.checked);
         skinning.disabled = !surface.checked;
@@ -88,12 +97,22 @@ export class HandPanel {
       this.app.view.render();
     };
     skinning.onchange = () => { this.model.skinning = Number(skinning.value); this.model.deformSurface(); this.app.view.render(); };
+    // the skin material on the surface: the atlas's texture baked by the library
+    const material = el('select', { id: 'hand-material', disabled: !this.model.surfaceAvailable() });
+    for (const [v, t] of MATERIALS) material.append(el('option', { value: v, textContent: t }));
+    material.onchange = () => this.useMaterial(material.value);
+    const texSize = el('select', { id: 'hand-texture-size', disabled: !this.model.surfaceAvailable() });
+    for (const n of [256, 512, 1024]) texSize.append(el('option', { value: n, textContent: `${n}²`, selected: n === this.textureSize }));
+    texSize.onchange = () => { this.textureSize = Number(texSize.value); this.useMaterial(this.materialChoice); };
+    this.app.on('skin-updated', () => { if (this.materialChoice === 'skin-panel') this.textureDirty = true; });
     // shown by default once the page is up (building it takes about a second)
     if (this.model.surfaceAvailable()) setTimeout(() => { surface.checked = true; surface.onchange(); }, 0);
     c.append(el('div', { className: 'row' }, 'constraints ', setSel),
       el('div', { className: 'row' }, el('label', {}, coupling, ' coupling'), release),
       el('div', { className: 'row', title: this.model.surfaceAvailable() ? 'the skin surface of thesis 4.1, deformed by the library' : 'this build of the library has no hand surface yet' },
         el('label', {}, surface, ' skin surface'), skinning),
+      el('div', { className: 'row', title: 'the atlas texture baked by the library (sk_hand_texture_bake): skin colour and the microrelief of the skin presets in the normal map' },
+        'material ', material, texSize),
       el('p', { className: 'note', textContent: 'Moving a slider pins that joint (bold); the others settle by the natural coupling (green: moved by it). Drag a fingertip in the view to pin its finger there.' }),
       this.errorLine);
     // whole-hand rotation (the thesis GUI's object rotation)
@@ -153,6 +172,47 @@ export class HandPanel {
       el('p', { className: 'note', textContent: 'A key holds the pins (and torques) set when it was taken. Saved files are what shitsukan hand animate FILE reads.' }));
     c.append(kf);
     this.setupDrag();
+  }
+
+  async skinTree(name) {
+    if (!this.presetTrees[name]) this.presetTrees[name] = await (await fetch(`presets/skin/${name}.json`)).json();
+    return this.presetTrees[name];
+  }
+
+  // The surface's material (MATERIALS): the atlas's texture baked by the library with the
+  // chosen skins, its albedo as the colour map and its normal map bending the shading.
+  async useMaterial(choice) {
+    this.materialChoice = choice;
+    this.textureDirty = false;
+    const model = this.model;
+    if (!model.surface) return;
+    if (choice === 'plain') {
+      model.surfaceMesh.material = model.plainMaterial;
+      this.app.view.render();
+      return;
+    }
+    const back = choice === 'skin-panel' ? this.app.panels.skin.tree : await this.skinTree('back-of-hand');
+    const palm = await this.skinTree('palm');
+    const n = this.textureSize, t0 = performance.now();
+    let tex;
+    try { tex = model.bakeTexture(n, back, palm); } catch (e) { this.errorLine.textContent = e.message; return; }
+    this.timings.texture_bake_ms = performance.now() - t0;
+    this.texture = { size: n, ...tex };
+    const canvasOf = (rgba) => {
+      const c = document.createElement('canvas');
+      c.width = c.height = n;
+      c.getContext('2d').putImageData(new ImageData(rgba, n, n), 0, 0);
+      return c;
+    };
+    const map = new THREE.CanvasTexture(canvasOf(tex.albedo));
+    map.colorSpace = THREE.SRGBColorSpace;
+    const normalMap = new THREE.CanvasTexture(canvasOf(tex.normal));
+    normalMap.colorSpace = THREE.NoColorSpace;
+    for (const t of [map, normalMap]) t.anisotropy = 4;
+    if (this.skinMaterial) { this.skinMaterial.map.dispose(); this.skinMaterial.normalMap.dispose(); this.skinMaterial.dispose(); }
+    this.skinMaterial = new THREE.MeshStandardMaterial({ map, normalMap, roughness: 0.62, metalness: 0 });
+    model.surfaceMesh.material = this.skinMaterial;
+    this.app.view.render();
   }
 
   // A key of the animation format: pins in degrees (mm for translations), torques.
@@ -301,6 +361,7 @@ export class HandPanel {
 
   activate(view) {
     this.active = true;
+    if (this.textureDirty) this.useMaterial(this.materialChoice);
     this.root.rotation.set(Number(document.getElementById('hand-rotate-x').value) * DEG, Number(document.getElementById('hand-rotate-y').value) * DEG, 0);
     this.root.position.set(0, 0, 0);
     this.scaled.rotation.set(0, Math.PI, 0); // the back of the hand toward the camera

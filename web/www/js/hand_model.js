@@ -46,11 +46,20 @@ export class HandModel {
     this.surfaceTriangles = nt;
     this.surfacePos = this.lib.alloc(nv * 12);
     this.surfaceNrm = this.lib.alloc(nv * 12);
+    // drawn as the atlas mesh (vertices on the atlas's seam split, with UVs), so the baked
+    // skin texture can go on it; exportMap: the surface vertex of each drawn vertex
+    const atlas = m._studio_surface_atlas(s, this.lib.err);
+    if (!atlas) throw new Error(this.lib.errorMessage());
+    const na = m._studio_mesh_vertex_count(atlas);
+    this.exportMap = new Uint32Array(this.lib.u32(m._studio_surface_export_map(s), na));
     const g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(nv * 3), 3));
-    g.setAttribute('normal', new THREE.BufferAttribute(new Float32Array(nv * 3), 3));
-    g.setIndex(new THREE.BufferAttribute(new Uint32Array(this.lib.u32(m._studio_surface_indices(s), nt * 3)), 1));
-    this.surfaceMesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ color: 0xd9a58a }));
+    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(na * 3), 3));
+    g.setAttribute('normal', new THREE.BufferAttribute(new Float32Array(na * 3), 3));
+    g.setAttribute('uv', new THREE.BufferAttribute(new Float32Array(this.lib.f32(m._studio_mesh_uvs(atlas), na * 2)), 2));
+    g.setIndex(new THREE.BufferAttribute(new Uint32Array(this.lib.u32(m._studio_mesh_indices(atlas), nt * 3)), 1));
+    m._studio_mesh_destroy(atlas);
+    this.plainMaterial = new THREE.MeshLambertMaterial({ color: 0xd9a58a });
+    this.surfaceMesh = new THREE.Mesh(g, this.plainMaterial);
     this.surfaceMesh.frustumCulled = false;
     this.group.add(this.surfaceMesh);
     this.deformSurface();
@@ -61,10 +70,33 @@ export class HandModel {
     if (!this.surface) return;
     const m = this.lib.m, nv = this.surfaceVertices;
     m._studio_surface_deform(this.surface, this.ptr, this.skinning, this.surfacePos, this.surfaceNrm);
-    const g = this.surfaceMesh.geometry;
-    g.attributes.position.array.set(this.lib.f32(this.surfacePos, nv * 3));
-    g.attributes.normal.array.set(this.lib.f32(this.surfaceNrm, nv * 3));
+    const g = this.surfaceMesh.geometry, map = this.exportMap;
+    const pos = this.lib.f32(this.surfacePos, nv * 3), nrm = this.lib.f32(this.surfaceNrm, nv * 3);
+    const gp = g.attributes.position.array, gn = g.attributes.normal.array;
+    for (let e = 0; e < map.length; e++) {
+      const v = 3 * map[e];
+      gp[3 * e] = pos[v]; gp[3 * e + 1] = pos[v + 1]; gp[3 * e + 2] = pos[v + 2];
+      gn[3 * e] = nrm[v]; gn[3 * e + 1] = nrm[v + 1]; gn[3 * e + 2] = nrm[v + 2];
+    }
     g.attributes.position.needsUpdate = g.attributes.normal.needsUpdate = true;
+  }
+
+  // The atlas's skin texture baked by the library at size x size (sk_hand_texture_bake):
+  // the microrelief of the skin preset trees `back` and `palm` (null: none) in the normal
+  // map, the generated skin colour in the albedo. Returns RGBA bytes of both as the PNG
+  // files hold them (albedo sRGB, normal map linear), top row first.
+  bakeTexture(size, back, palm) {
+    const lib = this.lib, n = size * size;
+    const a = lib.alloc(n * 12), nm = lib.alloc(n * 12);
+    try {
+      const r = lib.withStrings([back ? JSON.stringify(back) : null, palm ? JSON.stringify(palm) : null],
+        (b, p) => lib.m._studio_surface_texture(this.surface, size, b, p, a, nm, lib.err));
+      if (r !== 0) throw new Error(lib.errorMessage());
+      return { albedo: lib.rgba(a, n, 3, true), normal: lib.rgba(nm, n, 3, false) };
+    } finally {
+      lib.free(a);
+      lib.free(nm);
+    }
   }
 
   showSurface(on) {

@@ -1,4 +1,5 @@
-// The studio page: loads the library (WebAssembly), the presets index and the panels.
+// The studio page: loads the library (WebAssembly), the presets index, the arm character
+// and the panels.
 import { Library } from './wasm.js';
 import { View } from './view.js';
 import { SkinPanel } from './skin.js';
@@ -10,7 +11,7 @@ import { TissuePanel } from './tissue.js';
 const status = document.getElementById('status');
 
 class App {
-  constructor(lib, presets) {
+  constructor(lib, presets, character) {
     this.lib = lib;
     this.presets = presets;
     this.listeners = {};
@@ -22,7 +23,7 @@ class App {
     this.panels.piano = new PianoPanel(this, panel('piano'), this.panels.hand);
     this.panels.skin = new SkinPanel(this, panel('skin'));
     this.panels.wood = new WoodPanel(this, panel('wood'));
-    this.panels.tissue = new TissuePanel(this, panel('tissue'));
+    this.panels.tissue = new TissuePanel(this, panel('tissue'), character);
     for (const b of document.querySelectorAll('#tabs button')) b.onclick = () => this.show(b.dataset.tab);
     this.show('hand');
   }
@@ -42,8 +43,10 @@ class App {
 
 async function start() {
   try {
-    const [lib, presets] = await Promise.all([Library.load(), fetch('presets/index.json').then((r) => r.json())]);
-    const app = new App(lib, presets);
+    const json = (url) => fetch(url).then((r) => r.json());
+    // the tissue panel starts on the arm character
+    const [lib, presets, arm] = await Promise.all([Library.load(), json('presets/index.json'), json('presets/tissue/arm.json')]);
+    const app = new App(lib, presets, arm);
     window.studio = app;
     status.textContent = 'ready';
     document.body.dataset.ready = '1';

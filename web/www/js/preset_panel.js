@@ -1,6 +1,7 @@
-// What the skin and wood panels share: a module's preset tree (the JSON the command
-// line reads) with a control per schema key, a shipped-preset menu, saving and loading
-// the tree as a file, an export size, and the library's codes for pictures and files.
+// What the skin, wood and tissue panels share: a module's preset tree (the JSON the
+// command line reads) with a control per schema key, a shipped-preset menu, saving and
+// loading the tree as a file, an export size (panels with maps), and the library's codes
+// for pictures and files.
 import { SchemaForm } from './schema_form.js';
 import { download, jsonBlob, pickFile } from './files.js';
 
@@ -11,10 +12,12 @@ export const el = (tag, props = {}, ...kids) => {
 };
 
 export class PresetPanel {
-  // module: "skin" or "wood"; note: a line on the keys and the command that reads them.
-  constructor(app, container, module, note) {
+  // module: "skin", "wood" or "tissue"; note: a line on the keys and the command that
+  // reads them; options.maps: false for a panel without map export; options.tree: the
+  // tree to start from (default {}).
+  constructor(app, container, module, note, options = {}) {
     Object.assign(this, { app, lib: app.lib, container, module });
-    this.tree = {};
+    this.tree = options.tree || {};
     this.timings = {};
     this.schema = this.lib.schema(module);
     this.select = el('select', { id: `${module}-preset` });
@@ -32,9 +35,10 @@ export class PresetPanel {
     this.errorLine = el('div', { className: 'error-line' });
     this.info = el('div', { className: 'note' });
     this.formBox = el('div');
-    container.append(this.presetRow, el('div', { className: 'row' }, save, load),
-      el('div', { className: 'row' }, 'export ', this.exportSize, ' px ', exp),
-      el('p', { className: 'note', textContent: note }), this.errorLine, this.info, this.formBox);
+    this.fileRow = el('div', { className: 'row' }, save, load);
+    container.append(...[this.presetRow, this.fileRow,
+      options.maps === false ? null : el('div', { className: 'row' }, 'export ', this.exportSize, ' px ', exp),
+      el('p', { className: 'note', textContent: note }), this.errorLine, this.info, this.formBox].filter((x) => x));
     this.resolvedTree = this.lib.resolved(module, this.tree);
     this.form = new SchemaForm(this.formBox, this.schema, () => this.tree, () => this.resolvedTree,
       (path, structural) => this.edited(path, structural));

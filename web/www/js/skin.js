@@ -1,14 +1,21 @@
 // Skin panel (Ishii et al. 1991): every key of the skin preset schema as a control, the
-// map set rendered live by the library at preview resolution, the material on a board,
-// and the full-resolution map set of `shitsukan skin maps` exported as files.
+// map set rendered live by the library at preview resolution (in bands of rows over
+// Web Workers, one per core), the material on a board, and the full-resolution map set
+// of `shitsukan skin maps` exported as files.
 import * as THREE from 'three';
 import { PresetPanel, el } from './preset_panel.js';
 import { download, canvasPng, png16, exrFloat } from './files.js';
+import { SkinWorkers } from './skin_workers.js';
+
+// Workers rendering the live maps (one per core the browser reports, at most 4).
+const WORKERS = Math.max(1, Math.min(4, navigator.hardwareConcurrency || 1));
 
 export class SkinPanel extends PresetPanel {
   constructor(app, container) {
     super(app, container, 'skin', 'Every key of the skin presets (shitsukan skin maps --help-keys). Files saved here are presets the command line reads: shitsukan skin maps --preset FILE.');
     this.size = 512;
+    this.workers = new SkinWorkers(WORKERS);
+    this.rendering = Promise.resolve();
     this.build();
   }
 
@@ -94,16 +101,26 @@ export class SkinPanel extends PresetPanel {
     return e;
   }
 
+  // Renders the live maps (the workers) and shows them; a later edit supersedes a render
+  // still running. idle() resolves when the last one is shown.
   update() {
+    const token = (this.token = (this.token || 0) + 1);
+    this.rendering = this.show(token);
+  }
+
+  idle() { return this.rendering; }
+
+  async show(token) {
     const w = this.size, h = this.size;
     const t0 = performance.now();
     let r;
     try {
-      r = this.renderMaps(w, h, ['preview', 'height', 'normal', 'furrow', 'cells']);
+      r = await this.workers.render(this.tree, w, h, ['preview', 'height', 'normal', 'furrow', 'cells']);
     } catch (e) {
-      this.errorLine.textContent = e.message;
+      if (token === this.token) this.errorLine.textContent = e.message;
       return;
     }
+    if (token !== this.token) return;
     const t1 = performance.now();
     const e = this.encoded(r, w, h);
     const channels = { preview: 3, height: 1, normal: 3, furrow: 1, cells: 3 };
@@ -119,8 +136,15 @@ export class SkinPanel extends PresetPanel {
     this.app.emit('skin-updated', this.timings);
   }
 
-  // Only the shaded preview at n x n: build + render, for the speed figure.
-  timePreview(n) {
+  // Only the shaded preview at n x n, built and rendered, for the speed figures: by the
+  // workers (as the live maps are) and on the page's own thread (one instance).
+  async timePreview(n) {
+    const t0 = performance.now();
+    await this.workers.render(this.tree, n, n, ['preview']);
+    return performance.now() - t0;
+  }
+
+  timePreviewOneThread(n) {
     const t0 = performance.now();
     this.renderMaps(n, n, ['preview']);
     return performance.now() - t0;
