@@ -597,7 +597,7 @@ static void test_potential_file_round_trip_and_errors(void **state)
         const char *text, *needle;
     } bad[] = {
         {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": []} x", "text after the JSON value"},
-        {"{\"dofs\": [\"I.MCP.flex\"], \"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": []}", "appears twice"},
+        {"{\"dofs\": [\"I.MCP.flex\"], \"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": []}", "given twice"},
         {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1e999, \"components\": []}", "too large"},
         {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [], \"extra\": 1}", "extra: unknown key"},
         {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": []}", "components: 0 entries"},

@@ -157,7 +157,7 @@ static void test_bind_errors_name_key_path(void **state)
          "levels[0].profile[0].points[2][0] = 12 is out of range [0, 10]"},
         {"{\"levels\": [{\"jiter\": 0.5}]}", "levels[0].jiter: unknown key (did you mean 'jitter'?)"},
         {"{\"zzzzzzzzz\": 1}", "zzzzzzzzz: unknown key; accepted keys: seed, tile, name, light"},
-        {"{\"levels\": [{\"jitter\": \"high\"}]}", "levels[0].jitter: expected a number, got a string"},
+        {"{\"levels\": [{\"jitter\": \"high\"}]}", "levels[0].jitter: expected a number, got the string \"high\""},
         {"{\"levels\": [{\"jitter\": 1e999}]}", "levels[0].jitter is not a finite number"},
         {"{\"levels\": []}", "levels: array length 0 is out of range [1, 3]"},
         {"{\"levels\": [{}, {}, {}, {}]}", "levels: array length 4 is out of range [1, 3]"},

@@ -350,7 +350,7 @@ static void test_errors_and_cli(void **state)
     assert_int_equal(sk_test_cli(&run, "render '%s' --export '%s' -q", scene_path(),
                                  sk_test_path("export/x.stl")),
                      2);
-    assert_non_null(strstr(run.err, ".glb or .obj"));
+    assert_non_null(strstr(run.err, ".glb, .obj"));
     assert_int_equal(
         sk_test_cli(&run, "render '%s' --export '%s' --texture-size 5 -q", scene_path(), glb), 2);
     assert_non_null(strstr(run.err, "texture-size"));

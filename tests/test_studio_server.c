@@ -176,7 +176,7 @@ static void test_cli_errors(void **state)
     (void)state;
     sk_test_run run;
     assert_int_equal(sk_test_cli(&run, "studio --root /nonexistent-folder"), 2);
-    assert_non_null(strstr(run.err, "no index.html"));
+    assert_non_null(strstr(run.err, "must be a folder"));
     assert_int_equal(sk_test_cli(&run, "studio --port 70000"), 2);
     assert_int_equal(sk_test_cli(&run, "studio --help"), 0);
     assert_non_null(strstr(run.out, "--port"));

@@ -175,7 +175,9 @@ static void test_shipped_motions_are_generated(void **state)
     sk_test_run *run = malloc(sizeof *run);
     static const char *const kinds[] = {"curl", "jump", "walk"};
     for (int i = 0; i < 3; i++) {
-        const char *made = sk_test_path(kinds[i]);
+        char name[64];
+        snprintf(name, sizeof name, "%s.bvh", kinds[i]);
+        const char *made = sk_test_path(name);
         char shipped[1024];
         snprintf(shipped, sizeof shipped, "%s/tissue/%s.bvh", SK_TEST_PRESET_DIR, kinds[i]);
         assert_int_equal(sk_test_cli(run, "tissue motion %s -o '%s'", kinds[i], made), 0);

@@ -3,12 +3,15 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
+#include "shitsukan/io.h"
+
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -47,6 +50,47 @@ int cli_fail_error(const sk_error *err)
                     err->message[0] ? err->message : sk_result_string(err->result));
 }
 
+/* ------------------------------------------------------------------ groups */
+
+bool cli_is_group(const char *group)
+{
+    size_t n = strlen(group);
+    for (int i = 0; cli_commands[i]; i++) {
+        const char *name = cli_commands[i]->name;
+        if (strncmp(name, group, n) == 0 && name[n] == ' ') return true;
+    }
+    return false;
+}
+
+/* The subcommands of `group` from the command table, one line each. */
+static void print_subcommands(const char *group, FILE *out)
+{
+    size_t n = strlen(group);
+    for (int i = 0; cli_commands[i]; i++) {
+        const char *name = cli_commands[i]->name;
+        if (strncmp(name, group, n) == 0 && name[n] == ' ')
+            fprintf(out, "  %-16s %s\n", name, cli_commands[i]->summary);
+    }
+}
+
+void cli_group_subcommands(const char *group, char *out, size_t size)
+{
+    size_t n = strlen(group), used = 0;
+    out[0] = '\0';
+    for (int i = 0; cli_commands[i] && used < size; i++) {
+        const char *name = cli_commands[i]->name;
+        if (strncmp(name, group, n) == 0 && name[n] == ' ')
+            used += (size_t)snprintf(out + used, size - used, "%s%s", used ? ", " : "", name + n + 1);
+    }
+}
+
+void cli_print_group_help(const char *group, FILE *out)
+{
+    fprintf(out, "usage: shitsukan %s <subcommand> [options]\n\nsubcommands:\n", group);
+    print_subcommands(group, out);
+    fprintf(out, "\n'shitsukan %s <subcommand> --help' shows a subcommand's options.\n", group);
+}
+
 /* ---------------------------------------------------------- common options */
 
 typedef struct common_option {
@@ -66,8 +110,16 @@ static const common_option k_common[] = {
     {CLI_COMMON_SEED, "seed", 0, "N", "random seed, an integer in [0, 2^53]"},
     {CLI_COMMON_THREADS, "threads", 0, "N", "threads to use; 0 = all cores (default)"},
     {CLI_COMMON_QUIET, "quiet", 'q', NULL, "no progress output"},
+    {CLI_COMMON_MEMORY, "max-memory", 0, "SIZE",
+     "refuse work planned to need more memory, e.g. 16G; default 8G"},
 };
 #define COMMON_COUNT ((int)(sizeof k_common / sizeof k_common[0]))
+
+/* The common options a command takes: its mask, and --max-memory always. */
+static unsigned common_mask(const cli_command *command)
+{
+    return command->common | CLI_COMMON_MEMORY;
+}
 
 static void print_option_line(FILE *out, char short_name, const char *name, const char *arg,
                               const char *help)
@@ -95,13 +147,18 @@ void cli_print_help(const cli_command *command, FILE *out)
     }
     fprintf(out, "common options:\n");
     for (int i = 0; i < COMMON_COUNT; i++)
-        if (command->common & k_common[i].bit)
+        if (common_mask(command) & k_common[i].bit)
             print_option_line(out, k_common[i].short_name, k_common[i].name, k_common[i].arg_name,
                               k_common[i].help);
     print_option_line(out, 'h', "help", NULL, "show this help and exit");
     if (command->schema)
         print_option_line(out, 0, "help-keys", NULL, "list every preset key with its range");
     if (command->examples) fprintf(out, "\nexamples:\n%s\n", command->examples);
+    /* a command that also names a group (e.g. "skin" and "skin maps") lists the group */
+    if (!strchr(command->name, ' ') && cli_is_group(command->name)) {
+        fprintf(out, "\nsubcommands (see 'shitsukan %s <subcommand> --help'):\n", command->name);
+        print_subcommands(command->name, out);
+    }
 }
 
 /* ------------------------------------------------------------------ parsing */
@@ -120,7 +177,7 @@ static int find_option(const cli_command *command, const char *name, size_t len,
 static int find_common(const cli_command *command, const char *name, size_t len, char short_name)
 {
     for (int i = 0; i < COMMON_COUNT; i++) {
-        if (!(command->common & k_common[i].bit)) continue;
+        if (!(common_mask(command) & k_common[i].bit)) continue;
         if (short_name ? k_common[i].short_name == short_name
                        : (strlen(k_common[i].name) == len &&
                           strncmp(k_common[i].name, name, len) == 0))
@@ -166,6 +223,12 @@ static int apply_common(const cli_command *command, int which, const char *value
         break;
     }
     case CLI_COMMON_QUIET: c->quiet = true; break;
+    case CLI_COMMON_MEMORY:
+        if (!cli_parse_memory_size(value, &c->max_memory))
+            return cli_fail(CLI_EXIT_USAGE,
+                            "--max-memory '%s' must be a size in [1M, 1P], e.g. 512M or 16G",
+                            value);
+        break;
     }
     return 0;
 }
@@ -190,6 +253,7 @@ static int store_option(const cli_command *command, int i, const char *value, cl
 int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args)
 {
     memset(args, 0, sizeof *args);
+    args->common.max_memory = CLI_DEFAULT_MAX_MEMORY;
     bool only_positional = false;
     for (int k = 0; k < argc; k++) {
         const char *a = argv[k];
@@ -285,6 +349,11 @@ bool cli_has(const cli_command *command, const cli_args *args, const char *name)
     return args->count[option_index(command, name)] > 0;
 }
 
+bool cli_takes(const cli_command *command, const char *name)
+{
+    return find_option(command, name, strlen(name), 0) >= 0;
+}
+
 int cli_get_all(const cli_command *command, const cli_args *args, const char *name,
                 const char **out, int max)
 {
@@ -312,6 +381,31 @@ int cli_get_int(const cli_command *command, const cli_args *args, const char *na
     return 0;
 }
 
+bool cli_parse_decimal(const char *text, double *out)
+{
+    /* [+-]digits[.digits][(e|E)[+-]digits], at least one digit before the exponent */
+    const char *p = text;
+    if (*p == '+' || *p == '-') p++;
+    int digits = 0;
+    while (*p >= '0' && *p <= '9') p++, digits++;
+    if (*p == '.') {
+        p++;
+        while (*p >= '0' && *p <= '9') p++, digits++;
+    }
+    if (digits == 0) return false;
+    if (*p == 'e' || *p == 'E') {
+        p++;
+        if (*p == '+' || *p == '-') p++;
+        if (!(*p >= '0' && *p <= '9')) return false;
+        while (*p >= '0' && *p <= '9') p++;
+    }
+    if (*p != '\0') return false;
+    double x = strtod(text, NULL);
+    if (!isfinite(x)) return false;
+    *out = x;
+    return true;
+}
+
 int cli_get_double(const cli_command *command, const cli_args *args, const char *name,
                    double fallback, double lo, double hi, double *out)
 {
@@ -320,9 +414,8 @@ int cli_get_double(const cli_command *command, const cli_args *args, const char 
         *out = fallback;
         return 0;
     }
-    char *end;
-    double x = strtod(v, &end);
-    if (!v[0] || *end || !isfinite(x) || x < lo || x > hi)
+    double x;
+    if (!cli_parse_decimal(v, &x) || x < lo || x > hi)
         return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be a number in [%g, %g]", name, v, lo, hi);
     *out = x;
     return 0;
@@ -356,24 +449,169 @@ int cli_get_size(const cli_command *command, const cli_args *args, const char *n
 
 int cli_parse_region(const char *text, int width, int height, int region[4])
 {
-    long v[4];
+    long long v[4];
     const char *p = text;
     for (int i = 0; i < 4; i++) {
-        char *end;
+        char *end = NULL;
         errno = 0;
-        v[i] = strtol(p, &end, 10);
-        if (end == p || errno || (i < 3 ? *end != ',' : *end != '\0'))
+        bool digit = (*p >= '0' && *p <= '9') || (*p == '-' && p[1] >= '0' && p[1] <= '9');
+        if (digit) v[i] = strtoll(p, &end, 10);
+        if (!digit || errno || (i < 3 ? *end != ',' : *end != '\0'))
             return cli_fail(CLI_EXIT_USAGE, "--region '%s' must be x,y,w,h (integers)", text);
         p = end + 1;
     }
-    if (v[0] < 0 || v[1] < 0 || v[2] < 1 || v[3] < 1 || v[0] + v[2] > width ||
-        v[1] + v[3] > height)
+    /* each term is bounded before the sums, so no sum can overflow */
+    if (v[0] < 0 || v[1] < 0 || v[2] < 1 || v[3] < 1 || v[0] > width || v[1] > height ||
+        v[2] > width - v[0] || v[3] > height - v[1])
         return cli_fail(CLI_EXIT_USAGE,
                         "--region '%s' must lie inside the %dx%d image (x, y >= 0, w, h >= 1, "
                         "x + w <= %d, y + h <= %d)",
                         text, width, height, width, height);
     for (int i = 0; i < 4; i++) region[i] = (int)v[i];
     return 0;
+}
+
+int cli_parse_numbers(const char *option, const char *text, int count, double *out)
+{
+    const char *p = text;
+    for (int i = 0; i < count; i++) {
+        size_t n = strcspn(p, ",");
+        char item[64];
+        bool last = i == count - 1;
+        bool ok = n < sizeof item && (last ? p[n] == '\0' : p[n] == ',');
+        if (ok) {
+            memcpy(item, p, n);
+            item[n] = '\0';
+            ok = cli_parse_decimal(item, &out[i]);
+        }
+        if (!ok)
+            return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be %d comma-separated numbers", option,
+                            text, count);
+        p += n + 1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------ memory, formats */
+
+bool cli_parse_memory_size(const char *text, uint64_t *bytes)
+{
+    char number[64];
+    size_t n = strspn(text, "0123456789.eE+");
+    if (n == 0 || n >= sizeof number) return false;
+    memcpy(number, text, n);
+    number[n] = '\0';
+    double v;
+    if (!cli_parse_decimal(number, &v)) return false;
+    static const struct {
+        const char *suffix;
+        double scale;
+    } units[] = {{"", 1},           {"B", 1},           {"K", 1024.0},      {"KB", 1024.0},
+                 {"KiB", 1024.0},   {"M", 1048576.0},   {"MB", 1048576.0},  {"MiB", 1048576.0},
+                 {"G", 1073741824.0}, {"GB", 1073741824.0}, {"GiB", 1073741824.0},
+                 {"T", 1099511627776.0}, {"TB", 1099511627776.0}, {"TiB", 1099511627776.0},
+                 {"P", 1125899906842624.0}, {"PB", 1125899906842624.0}, {"PiB", 1125899906842624.0}};
+    for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
+        if (strcasecmp(text + n, units[i].suffix) != 0) continue;
+        double b = v * units[i].scale;
+        if (!(b >= 1048576.0 && b <= 1125899906842624.0)) return false;
+        *bytes = (uint64_t)b;
+        return true;
+    }
+    return false;
+}
+
+double cli_image_bytes(double width, double height, double bytes_per_pixel)
+{
+    return width * height * bytes_per_pixel;
+}
+
+int cli_check_memory(const cli_args *args, double bytes, const char *driver)
+{
+    double cap = (double)args->common.max_memory;
+    if (bytes <= cap) return 0;
+    /* GiB with a decimal, or MiB below 1 GiB */
+    const double gib = 1073741824.0, mib = 1048576.0;
+    bool small = cap < gib;
+    return cli_fail(CLI_EXIT_USAGE,
+                    "%s needs about %.*f %s of memory, more than the cap of %.*f %s (make it "
+                    "smaller, or raise the cap with --max-memory)",
+                    driver, small ? 0 : 1, bytes / (small ? mib : gib), small ? "MiB" : "GiB",
+                    small ? 0 : 1, cap / (small ? mib : gib), small ? "MiB" : "GiB");
+}
+
+int cli_check_image(int width, int height, int channels, const char *driver)
+{
+    double bytes = cli_image_bytes(width, height, 4.0 * channels);
+    if (bytes <= (double)SK_IMAGE_MAX_BYTES) return 0;
+    return cli_fail(CLI_EXIT_USAGE,
+                    "%s of %d float channel(s) needs %.1f GiB, more than the %.0f GiB an image may "
+                    "hold (make it smaller, or render parts with --region)",
+                    driver, channels, bytes / 1073741824.0, (double)SK_IMAGE_MAX_BYTES / 1073741824.0);
+}
+
+int cli_output_format(const char *option, const char *path, const char *const *accepted,
+                      int *format)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = strrchr(base, '.');
+    /* a device or FIFO (-o /dev/stdout, a named pipe) without a known extension gets the
+       first format */
+    struct stat st;
+    bool stream = stat(path, &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
+    char list[128] = "";
+    size_t used = 0;
+    for (int i = 0; accepted[i]; i++) {
+        if (dot && dot != base && strcasecmp(dot, accepted[i]) == 0) {
+            *format = i;
+            return 0;
+        }
+        int k = snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", accepted[i]);
+        if (k > 0 && (size_t)k < sizeof list - used) used += (size_t)k;
+    }
+    if (stream) {
+        *format = 0;
+        return 0;
+    }
+    bool image = strcmp(accepted[0], ".png") == 0 || strcmp(accepted[0], ".exr") == 0;
+    return cli_fail(CLI_EXIT_USAGE, "%s '%s': unknown %s type (the name must end in %s)", option,
+                    path, image ? "image" : "file", list);
+}
+
+int cli_reserve_outputs(const cli_output *list, int count, sk_output_set **set)
+{
+    *set = NULL;
+    int format;
+    for (int i = 0; i < count; i++)
+        if (*list[i].path && list[i].formats) {
+            int status = cli_output_format(list[i].option, *list[i].path, list[i].formats, &format);
+            if (status) return status;
+        }
+    sk_error err = {0};
+    sk_result r = sk_output_set_create(set, &err);
+    for (int i = 0; i < count && r == SK_OK; i++) {
+        if (!*list[i].path) continue;
+        r = list[i].folder ? sk_output_set_folder(*set, *list[i].path, list[i].path, &err)
+                           : sk_output_set_file(*set, *list[i].path, list[i].path, &err);
+        if (r != SK_OK) sk_error_prefix(&err, r, "%s", list[i].option);
+    }
+    if (r != SK_OK) {
+        sk_output_set_abort(*set);
+        *set = NULL;
+        return cli_fail_error(&err);
+    }
+    return 0;
+}
+
+int cli_finish_outputs(sk_output_set *set, int status)
+{
+    if (status) {
+        sk_output_set_abort(set);
+        return status;
+    }
+    sk_error err = {0};
+    return sk_output_set_commit(set, &err) == SK_OK ? 0 : cli_fail_error(&err);
 }
 
 /* ------------------------------------------------------------------ presets */

@@ -10,6 +10,7 @@
 
 #include "shitsukan/core.h"
 #include "shitsukan/image.h"
+#include "shitsukan/io.h"
 #include "shitsukan/preset.h"
 
 /* Exit status: 0 success, 1 runtime failure (e.g. a write failed), 2 bad usage or input. */
@@ -36,8 +37,12 @@ enum {
     CLI_COMMON_SEED = 1 << 3,    /* --seed N */
     CLI_COMMON_THREADS = 1 << 4, /* --threads N */
     CLI_COMMON_QUIET = 1 << 5,   /* -q, --quiet */
-    CLI_COMMON_ALL = 0x3f
+    CLI_COMMON_MEMORY = 1 << 6,  /* --max-memory SIZE: taken by every command */
+    CLI_COMMON_ALL = 0x7f
 };
+
+/* The memory a command may plan to use unless --max-memory says otherwise. */
+#define CLI_DEFAULT_MAX_MEMORY ((uint64_t)8 << 30)
 
 typedef struct cli_common {
     const char *output;
@@ -48,6 +53,7 @@ typedef struct cli_common {
     bool has_seed;
     int threads; /* 0 = all cores */
     bool quiet;
+    uint64_t max_memory; /* bytes; CLI_DEFAULT_MAX_MEMORY unless --max-memory is given */
 } cli_common;
 
 #define CLI_MAX_VALUES 256
@@ -100,10 +106,19 @@ int cli_fail_error(const sk_error *err);
  * (exit 0); on bad usage prints one line and returns 2; otherwise 0. */
 int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args);
 void cli_print_help(const cli_command *command, FILE *out);
+/* Groups: the first word of two-word commands ("hand" of "hand pose"). cli_is_group says
+ * whether `word` is one; cli_print_group_help lists its subcommands from the table, so a
+ * new group has its help without code of its own. */
+bool cli_is_group(const char *word);
+void cli_print_group_help(const char *group, FILE *out);
+/* The group's subcommand names, comma-separated ("pose, animate, calibrate"). */
+void cli_group_subcommands(const char *group, char *out, size_t size);
 
 /* Option access by long name (the name must be one of the command's options). */
 const char *cli_get(const cli_command *command, const cli_args *args, const char *name);
 bool cli_has(const cli_command *command, const cli_args *args, const char *name);
+/* Whether the command has option --name at all (for helpers shared by commands). */
+bool cli_takes(const cli_command *command, const char *name);
 /* Values of a repeatable option, in order; returns how many were written (<= max). */
 int cli_get_all(const cli_command *command, const cli_args *args, const char *name,
                 const char **out, int max);
@@ -114,9 +129,14 @@ int cli_get_int(const cli_command *command, const cli_args *args, const char *na
                 long long fallback, long long lo, long long hi, long long *out);
 int cli_get_double(const cli_command *command, const cli_args *args, const char *name,
                    double fallback, double lo, double hi, double *out);
+/* A whole decimal number ("12", "-0.5", "1e-3"; no hexadecimal, "inf" or "nan", no
+ * leading or trailing text) that is finite: true and *out, else false. */
+bool cli_parse_decimal(const char *text, double *out);
 /* "N" (square) or "WxH", each in [1, max]. */
 int cli_get_size(const cli_command *command, const cli_args *args, const char *name,
                  int fallback_w, int fallback_h, int max, int *w, int *h);
+/* Parses `count` comma-separated decimal numbers ("X,Y,Z") of option --`option`. */
+int cli_parse_numbers(const char *option, const char *text, int count, double *out);
 /* Parses "x,y,w,h" (a sub-rectangle of a width x height image). */
 int cli_parse_region(const char *text, int width, int height, int region[4]);
 
@@ -131,6 +151,43 @@ bool cli_find_preset(const char *module, const char *name, char *path, size_t si
 bool cli_executable_dir(char *out, size_t size);
 /* The preset folders searched, in order; returns how many were written (<= max). */
 int cli_preset_dirs(const char **out, int max);
+
+/* Parses a memory size: bytes, or a number with K, M, G or T (binary multiples; "KiB",
+ * "GB" and the like read the same), in [1 MiB, 1 PiB]. */
+bool cli_parse_memory_size(const char *text, uint64_t *bytes);
+/* The memory cap: refuses (exit 2, one line) a plan of `bytes` above --max-memory,
+ * naming what drives it (`driver`, e.g. "--size 20000x20000" or "--tile-size 16384 for
+ * 2 images"). Every command calls it with its estimate before allocating. */
+int cli_check_memory(const cli_args *args, double bytes, const char *driver);
+/* The library's cap on one image (SK_IMAGE_MAX_BYTES of float samples), checked up front
+ * so the message names what drives it (`driver`, e.g. "a 65536 x 65536 map (--size)"). */
+int cli_check_image(int width, int height, int channels, const char *driver);
+/* Pixel buffers of `bytes_per_pixel` bytes for a w x h image (as a double: no overflow). */
+double cli_image_bytes(double width, double height, double bytes_per_pixel);
+
+/* The output's format by its extension (case-insensitive), one of `accepted` (e.g.
+ * {".png", ".exr", NULL}): its index in *format, or the one-line error (exit 2) naming the
+ * option and the accepted extensions. A character device or FIFO (-o /dev/stdout) takes
+ * the first format whatever its name. Called before any work, so a wrong name costs
+ * nothing. */
+int cli_output_format(const char *option, const char *path, const char *const *accepted,
+                      int *format);
+
+/* All-or-nothing outputs (sk_output_set in shitsukan/io.h) for a command's table of
+ * outputs: each entry names its option (for messages), points at its path (NULL when the
+ * option was not given; replaced by the staged path to write once reserved), lists the
+ * accepted extensions (NULL = any) and says whether it is a folder. cli_reserve_outputs
+ * checks every name and reserves every output before any work (one-line error and its exit
+ * status on failure, with nothing left behind); cli_finish_outputs commits them after a
+ * successful run (`status` 0) or removes them, and returns the final status. */
+typedef struct cli_output {
+    const char *option;
+    const char **path;
+    const char *const *formats;
+    bool folder;
+} cli_output;
+int cli_reserve_outputs(const cli_output *list, int count, sk_output_set **set);
+int cli_finish_outputs(sk_output_set *set, int status);
 
 /* Applies --threads (0 = all cores) to the library's parallel loops. */
 void cli_apply_threads(const cli_args *args);

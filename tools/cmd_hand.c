@@ -2,6 +2,7 @@
  * coupling (Yasumuro 2000, ch. 3), keyframe animation to BVH and joint positions, and
  * calibration of constraint rows from measured samples. Argument parsing only; the model
  * is in the library (include/shitsukan/hand.h). */
+#define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -13,8 +14,7 @@
 #include "cmd_hand_prior.h"
 #include "hand_args.h"
 #include "shitsukan/hand.h"
-
-#define MAX_PINS 64
+#include "shitsukan/io.h"
 
 /* ------------------------------------------------------------ helpers */
 
@@ -38,6 +38,9 @@ static int require_option(const cli_command *cmd, const cli_args *args, const ch
         if (cli_has(cmd, args, options[i])) return cli_fail(CLI_EXIT_USAGE, "--%s needs --%s", options[i], needed);
     return 0;
 }
+
+static const char *const k_png_format[] = {".png", NULL};
+static const char *const k_positions_formats[] = {".csv", ".json", NULL};
 
 /* --views, --png-size and --labels into a picture desc. */
 static int parse_draw_options(const cli_command *cmd, const cli_args *args, sk_hand_draw_desc *d)
@@ -152,8 +155,8 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
 /* ------------------------------------------------------------ hand pose */
 
 static const cli_option pose_options[] = {
-    {"pin", 0, "DOF=DEG", "hold a DOF at an absolute angle in degrees (mm for wrist.tx/ty/tz); repeatable", true},
-    {"torque", 0, "DOF=T", "directed input torque on a DOF (stiffness x radians); repeatable", true},
+    {"pin", 0, "DOF=DEG", "hold a DOF at an angle in degrees (mm for wrist.tx/ty/tz), |value| <= 1e6; once per DOF", true},
+    {"torque", 0, "DOF=T", "directed input torque on a DOF (stiffness x radians), |T| <= 1e6; once per DOF", true},
     {"constraints", 0, "SET", "natural (default), yasumuro-table-3.2, none, or a constraint JSON file", false},
     {"potential", 0, "FILE", "a calibrated potential (hand calibrate) instead of --constraints", false},
     {"samples", 0, "CSV", "joint-angle samples (header of DOF names, degrees) for lookup-table potentials", false},
@@ -180,29 +183,20 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     static const char *const picture_options[] = {"views", "png-size", "labels", "bare", "caption", NULL};
     int rc = require_option(cmd, args, "png", picture_options);
     if (rc) return rc;
+    const char *png = cli_get(cmd, args, "png"), *out = args->common.output;
+    const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
+    const cli_output outputs[] = {{"--png", &png, k_png_format, false},
+                                   {"-o", &out, NULL, false},
+                                   {"--bvh", &bvh, NULL, false},
+                                   {"--positions", &positions, k_positions_formats, false}};
     sk_hand_skeleton skel;
     rc = hand_build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
+    sk_output_set *written = NULL;
+    if ((rc = cli_reserve_outputs(outputs, 4, &written))) return rc;
     const char *set = cli_get(cmd, args, "constraints");
     sk_hand_input in = {0};
-    const char *values[MAX_PINS];
-    int n = rc ? 0 : cli_get_all(cmd, args, "pin", values, MAX_PINS);
-    for (int i = 0; i < n && !rc; i++) {
-        int dof;
-        double v;
-        rc = hand_parse_assignment("pin", values[i], &dof, &v);
-        if (!rc) {
-            in.pinned[dof] = true;
-            in.pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
-        }
-    }
-    n = rc ? 0 : cli_get_all(cmd, args, "torque", values, MAX_PINS);
-    for (int i = 0; i < n && !rc; i++) {
-        int dof;
-        double v;
-        rc = hand_parse_assignment("torque", values[i], &dof, &v);
-        if (!rc) in.torque[dof] = v;
-    }
+    if (!rc) rc = hand_parse_inputs(cmd, args, &in);
     sk_hand_lut luts[16];
     int lut_count = 0;
     if (!rc) rc = build_luts(cmd, args, luts, &lut_count);
@@ -223,7 +217,6 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
                 info.residual, info.newton_iterations);
     sk_hand_draw_desc draw;
     char caption[512];
-    const char *png = cli_get(cmd, args, "png");
     if (!rc && png && !(rc = parse_draw_options(cmd, args, &draw))) {
         const char *given = cli_get(cmd, args, "caption");
         if (given || draw.hide_cues) snprintf(caption, sizeof caption, "%s", given ? given : "");
@@ -231,12 +224,10 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
         draw.caption = caption;
         rc = write_pose_png(&skel, q, &draw, png);
     }
-    const char *out = args->common.output;
     if (!rc && out && sk_hand_pose_write_json(&skel, q, &info, out, &err) != SK_OK) rc = cli_fail_error(&err);
-    const char *bvh = cli_get(cmd, args, "bvh");
     if (!rc && bvh && sk_hand_bvh_write(&skel, q, 1, 1.0 / 30.0, bvh, &err) != SK_OK) rc = cli_fail_error(&err);
-    const char *positions = cli_get(cmd, args, "positions");
     if (!rc && positions) rc = write_positions(&skel, q, 1, positions);
+    rc = cli_finish_outputs(written, rc);
     if (!rc && !out) {
         for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
             printf("%-11s %10.4f%s\n", sk_hand_dof(i)->name, sk_hand_dof(i)->translation ? q[i] : q[i] * SK_RAD_TO_DEG,
@@ -394,6 +385,27 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!draw_rc) draw_rc = require_option(cmd, args, "plot", plot_options);
     if (!draw_rc) draw_rc = parse_draw_options(cmd, args, &draw);
     if (draw_rc) return draw_rc;
+    static const char *const surface_options[] = {"skinning", "triangles", "flesh", NULL};
+    static const char *const mesh_options[] = {"mesh-frames", "texture", NULL};
+    if (!cli_has(cmd, args, "glb") && !cli_has(cmd, args, "meshes-dir"))
+        draw_rc = require_option(cmd, args, "glb", surface_options);
+    if (!draw_rc) draw_rc = require_option(cmd, args, "meshes-dir", mesh_options);
+    if (!draw_rc) draw_rc = require_option(cmd, args, "glb", (const char *const[]){"material", NULL});
+    if (!draw_rc && cli_has(cmd, args, "texture-size") && !cli_has(cmd, args, "glb") && !cli_has(cmd, args, "texture"))
+        draw_rc = cli_fail(CLI_EXIT_USAGE, "--texture-size needs --glb or --texture");
+    if (draw_rc) return draw_rc;
+    hand_animate_surface surface;
+    memset(&surface, 0, sizeof surface);
+    static const char *const k_glb_format[] = {".glb", NULL};
+    const cli_output outputs[] = {{"--bvh", &bvh, NULL, false},
+                                   {"--positions", &positions, k_positions_formats, false},
+                                   {"--angles", &angles, NULL, false},
+                                   {"--plot", &plot, k_png_format, false},
+                                   {"--frames-dir", &frames_dir, NULL, true},
+                                   {"--glb", &surface.glb, k_glb_format, false},
+                                   {"--landmarks", &surface.landmarks, k_positions_formats, false},
+                                   {"--meshes-dir", &surface.meshes_dir, NULL, true}};
+    sk_output_set *written = NULL;
     sk_error err = {0};
     sk_hand_animation *anim = malloc(sizeof *anim);
     double *dofs = NULL;
@@ -408,10 +420,29 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!rc && set && potential) rc = cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints");
     if (!rc) rc = hand_poser_open(&poser, &skel, potential, set ? set : anim->constraints, NULL, 0);
     int frames = rc ? 0 : sk_hand_animation_frame_count(anim);
+    if (!rc) {
+        /* the solved angles, and the frame pictures being drawn (one per thread) */
+        char driver[128];
+        snprintf(driver, sizeof driver, "%d frames ((keys - 1) x steps of %s)", frames, path);
+        double picture = frames_dir ? cli_image_bytes(draw.width > 0 ? draw.width : 1600,
+                                                      draw.height > 0 ? draw.height : 480, 8) *
+                                          sk_threads_max()
+                                    : 0;
+        rc = cli_check_memory(args, (double)frames * SK_HAND_DOF_COUNT * sizeof *dofs * 2 + picture,
+                              driver);
+    }
+    /* the surface outputs' options, memory and texture files */
+    if (!rc && surface_outputs) rc = hand_animate_surface_parse(cmd, args, frames, &surface);
+    if (!rc && (surface.glb || surface.meshes_dir))
+        rc = hand_surface_plan_check_memory(args, &surface.plan, &skel, surface.glb || surface.plan.texture,
+                                            surface.glb ? SK_HAND_LOD_COUNT : 1);
+    if (!rc) rc = cli_reserve_outputs(outputs, 8, &written);
+    if (!rc && surface_outputs) rc = hand_surface_plan_reserve(&surface.plan, written, NULL);
     if (!rc && !(dofs = malloc((size_t)frames * SK_HAND_DOF_COUNT * sizeof *dofs)))
         rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     sk_progress_bar bar;
-    if (!rc) sk_progress_bar_begin(&bar, "hand animate", !args->common.quiet);
+    bool bar_begun = !rc;
+    if (bar_begun) sk_progress_bar_begin(&bar, "hand animate", !args->common.quiet);
     int unconverged = 0;
     for (int f = 0; f < frames && !rc; f++) {
         sk_hand_input in;
@@ -421,7 +452,7 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         unconverged += !rc && !info.converged;
         sk_progress_bar_update(&bar, (f + 1.0) / frames);
     }
-    if (frames > 0) sk_progress_bar_end(&bar);
+    if (bar_begun) sk_progress_bar_end(&bar);
     if (!rc && unconverged > 0)
         fprintf(stderr, "shitsukan: warning: %d of %d frames did not converge (their last iterates are kept)\n",
                 unconverged, frames);
@@ -432,8 +463,10 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
         rc = cli_fail_error(&err);
     if (!rc && plot) rc = write_angle_plot(cmd, args, anim, dofs, frames, plot);
     if (!rc && frames_dir) rc = write_frames(&skel, anim, dofs, frames, &draw, frames_dir, args->common.quiet);
-    if (!rc && surface_outputs) rc = hand_animate_surface_outputs(cmd, args, &skel, dofs, frames, anim->fps);
+    if (!rc && surface_outputs) rc = hand_animate_surface_write(&surface, &skel, dofs, frames, anim->fps);
+    if (written) rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet) fprintf(stderr, "shitsukan: %d frames from %d keys\n", frames, anim->key_count);
+    hand_animate_surface_free(&surface);
     hand_poser_close(&poser);
     free(dofs);
     free(anim);

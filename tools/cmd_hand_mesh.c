@@ -1,6 +1,7 @@
 /* `shitsukan hand mesh`: the hand's skin surface (Yasumuro 2000, sec. 4.1) in a pose, as
  * OBJ, PLY or glTF binary. Argument parsing only; the model is in the library
  * (include/shitsukan/hand.h, section "hand surface"). */
+#define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -11,9 +12,8 @@
 #include "cli.h"
 #include "cmd_hand_prior.h"
 #include "cmd_hand_surface.h"
+#include "hand_args.h"
 #include "shitsukan/hand.h"
-
-#define MAX_PINS 64
 
 static const cli_option mesh_options[] = {
     {"pose", 0, "FILE", "pose JSON ({\"dofs\": {...}} in degrees, as `hand pose -o` writes)", false},
@@ -30,78 +30,17 @@ static const cli_option mesh_options[] = {
     {"material", 0, "KIND", ".glb material: blend (the thesis's 0.3 lit : 0.7 unlit texture, default) or pbr", false},
 };
 
-int hand_parse_skinning(const char *text, sk_hand_skinning *out)
-{
-    if (!text || strcmp(text, "dqs") == 0) *out = SK_HAND_SKINNING_DQS;
-    else if (strcmp(text, "lbs") == 0) *out = SK_HAND_SKINNING_LBS;
-    else if (strcmp(text, "rigid") == 0) *out = SK_HAND_SKINNING_RIGID;
-    else return cli_fail(CLI_EXIT_USAGE, "--skinning '%s' must be rigid, lbs or dqs", text);
-    return 0;
-}
-
-static bool has_suffix(const char *s, const char *suffix)
-{
-    size_t a = strlen(s), b = strlen(suffix);
-    return a >= b && strcmp(s + a - b, suffix) == 0;
-}
-
-int hand_build_surface(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel, int lod,
-                       sk_hand_surface **out)
-{
-    *out = NULL;
-    long long triangles;
-    int rc = cli_get_int(cmd, args, "triangles", 8000, 500, 200000, &triangles);
-    if (rc) return rc;
-    sk_error err = {0};
-    sk_hand_flesh flesh;
-    sk_hand_surface_desc desc = {.triangles = (int)triangles};
-    const char *flesh_path = cli_get(cmd, args, "flesh");
-    if (flesh_path) {
-        if (sk_hand_flesh_load_file(flesh_path, &flesh, &err) != SK_OK) return cli_fail_error(&err);
-        desc.flesh = &flesh;
-    }
-    sk_hand_surface *base;
-    if (sk_hand_surface_create(&base, skel, &desc, &err) != SK_OK) return cli_fail_error(&err);
-    if (lod == 0) {
-        *out = base;
-        return 0;
-    }
-    sk_hand_surface *coarse;
-    sk_result r = sk_hand_surface_simplify(&coarse, base, sk_hand_lod_triangles[lod], &err);
-    sk_hand_surface_destroy(base);
-    if (r != SK_OK) return cli_fail_error(&err);
-    *out = coarse;
-    return 0;
-}
-
-/* "natural", "yasumuro-table-3.2", "none" or a file; solved with the pins. */
+/* --pin solved with the coupling of --constraints ("natural", "yasumuro-table-3.2", "none"
+   or a file) or a calibrated --potential. */
 static int solve_pins(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel, double *q)
 {
-    const char *values[MAX_PINS];
-    int n = cli_get_all(cmd, args, "pin", values, MAX_PINS);
-    sk_hand_input in = {0};
-    for (int i = 0; i < n; i++) {
-        const char *eq = strchr(values[i], '=');
-        char name[64];
-        size_t len = eq ? (size_t)(eq - values[i]) : 0;
-        if (!eq || len >= sizeof name)
-            return cli_fail(CLI_EXIT_USAGE, "--pin '%s': expected DOF=value, e.g. L.MCP.flex=60", values[i]);
-        memcpy(name, values[i], len);
-        name[len] = '\0';
-        int dof = sk_hand_dof_find(name);
-        if (dof < 0) return cli_fail(CLI_EXIT_USAGE, "--pin '%s': unknown DOF \"%s\"", values[i], name);
-        char *end;
-        errno = 0;
-        double v = strtod(eq + 1, &end);
-        if (!eq[1] || *end || errno == ERANGE || !isfinite(v) || fabs(v) > 1e6)
-            return cli_fail(CLI_EXIT_USAGE, "--pin '%s': \"%s\" is not a finite number", values[i], eq + 1);
-        in.pinned[dof] = true;
-        in.pin_value[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
-    }
+    sk_hand_input in;
+    int rc = hand_parse_inputs(cmd, args, &in);
+    if (rc) return rc;
     const char *set = cli_get(cmd, args, "constraints"), *potential = cli_get(cmd, args, "potential");
     if (set && potential) return cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints");
     hand_poser poser;
-    int rc = hand_poser_open(&poser, skel, potential, set ? set : "natural", NULL, 0);
+    rc = hand_poser_open(&poser, skel, potential, set ? set : "natural", NULL, 0);
     sk_hand_solve_info info;
     if (!rc) rc = hand_poser_solve(&poser, &in, q, &info);
     hand_poser_close(&poser);
@@ -112,15 +51,23 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
 {
     const char *out = args->common.output;
     if (!out) return cli_fail(CLI_EXIT_USAGE, "-o hand.obj|hand.ply|hand.glb is required");
-    bool glb = has_suffix(out, ".glb");
-    if (!glb && !has_suffix(out, ".obj") && !has_suffix(out, ".ply"))
-        return cli_fail(CLI_EXIT_USAGE, "-o '%s': the extension must be .obj, .ply or .glb", out);
+    static const char *const k_formats[] = {".obj", ".ply", ".glb", NULL};
+    int format;
+    int rc = cli_output_format("-o", out, k_formats, &format);
+    if (rc) return rc;
+    bool glb = format == 2;
     if (cli_has(cmd, args, "pose") && cli_has(cmd, args, "pin"))
         return cli_fail(CLI_EXIT_USAGE, "give --pose or --pin, not both");
-    sk_hand_skinning method;
+    if (glb && cli_has(cmd, args, "texture"))
+        return cli_fail(CLI_EXIT_USAGE, "--texture is for .obj and .ply: a .glb holds its texture");
+    if (!glb && cli_has(cmd, args, "material"))
+        return cli_fail(CLI_EXIT_USAGE, "--material is for a .glb");
+    if (!glb && !cli_has(cmd, args, "texture") && cli_has(cmd, args, "texture-size"))
+        return cli_fail(CLI_EXIT_USAGE, "--texture-size needs --texture (or a .glb)");
     long long lod;
-    int rc = hand_parse_skinning(cli_get(cmd, args, "skinning"), &method);
-    if (!rc) rc = cli_get_int(cmd, args, "lod", 0, 0, SK_HAND_LOD_COUNT - 1, &lod);
+    hand_surface_plan plan;
+    rc = cli_get_int(cmd, args, "lod", 0, 0, SK_HAND_LOD_COUNT - 1, &lod);
+    if (!rc) rc = hand_surface_plan_parse(cmd, args, &plan);
     if (rc) return rc;
     sk_error err = {0};
     sk_hand_skeleton skel;
@@ -130,15 +77,24 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
     const char *pose = cli_get(cmd, args, "pose");
     if (pose && sk_hand_pose_load_file(pose, &skel, q, &err) != SK_OK) return cli_fail_error(&err);
     if (!pose && (rc = solve_pins(cmd, args, &skel, q))) return rc;
-    sk_hand_surface *surface;
-    if ((rc = hand_build_surface(cmd, args, &skel, (int)lod, &surface))) return rc;
     /* a .glb holds all three levels of detail, unless --lod chose one */
-    if (glb) rc = hand_write_glb(cmd, args, surface, q, 1, 30.0, false, cli_has(cmd, args, "lod") ? 1 : SK_HAND_LOD_COUNT, method, out);
-    else rc = hand_write_posed_mesh(cmd, args, surface, q, method, out);
+    int lod_count = glb && !cli_has(cmd, args, "lod") ? SK_HAND_LOD_COUNT : 1;
+    if ((rc = hand_surface_plan_check_memory(args, &plan, &skel, glb || plan.texture, lod > 0 ? 2 : lod_count)))
+        return rc;
+    /* the mesh, its MTL and textures appear together or not at all */
+    const cli_output outputs[] = {{"-o", &out, k_formats, false}};
+    sk_output_set *written = NULL;
+    if ((rc = cli_reserve_outputs(outputs, 1, &written))) return rc;
+    rc = hand_surface_plan_reserve(&plan, written, glb || format == 1 ? NULL : args->common.output);
+    sk_hand_surface *surface = NULL;
+    if (!rc) rc = hand_build_surface(&plan, &skel, (int)lod, &surface);
+    if (!rc && glb) rc = hand_write_glb(&plan, surface, q, 1, 30.0, false, lod_count, out);
+    else if (!rc) rc = hand_write_posed_mesh(&plan, surface, q, out);
+    rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet)
         fprintf(stderr, "shitsukan: %zu vertices, %zu triangles (%s skinning)\n", sk_hand_surface_mesh(surface)->vertex_count,
                 sk_hand_surface_mesh(surface)->triangle_count,
-                method == SK_HAND_SKINNING_RIGID ? "rigid" : method == SK_HAND_SKINNING_LBS ? "lbs" : "dqs");
+                plan.method == SK_HAND_SKINNING_RIGID ? "rigid" : plan.method == SK_HAND_SKINNING_LBS ? "lbs" : "dqs");
     sk_hand_surface_destroy(surface);
     return rc;
 }

@@ -2,6 +2,7 @@
  * calibrate`: the whole potential of eq. 3.17 fitted to joint-angle samples (thesis 3.2.2),
  * its held-out evaluation against the mean, linear regression and a PCA prior, and the
  * synthetic recordings the demonstration uses. Argument parsing only. */
+#define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -316,6 +317,12 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
     desc.pca_components = (int)k;
     sk_hand_skeleton skel;
     if (sk_hand_skeleton_init(&skel, NULL, &err) != SK_OK) return cli_fail_error(&err);
+    /* the report and the plot appear together at the end, or neither */
+    const char *report = cli_get(cmd, args, "report"), *plot = cli_get(cmd, args, "plot");
+    static const char *const k_json[] = {".json", NULL}, *const k_png[] = {".png", NULL};
+    const cli_output outputs[] = {{"--report", &report, k_json, false}, {"--plot", &plot, k_png, false}};
+    sk_output_set *written = NULL;
+    if ((rc = cli_reserve_outputs(outputs, 2, &written))) return rc;
     sk_hand_constraints *fixed = malloc(sizeof *fixed), *base = malloc(sizeof *base);
     sk_hand_evaluation *eval = malloc(sizeof *eval);
     int pairs[64][2];
@@ -335,7 +342,6 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
             rc = cli_fail_error(&err);
         }
     }
-    const char *report = cli_get(cmd, args, "report"), *plot = cli_get(cmd, args, "plot");
     if (!rc && report && sk_hand_evaluation_write_json(eval, report, &err) != SK_OK) rc = cli_fail_error(&err);
     if (!rc && plot) {
         sk_plot_desc pd = {.title = cli_get(cmd, args, "plot-title")};
@@ -352,6 +358,7 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
                     "shitsukan: warning: %d of %d solves did not converge (largest residual %.2g); their last "
                     "iterates are counted\n",
                     eval->result[p].unconverged, eval->result[p].solves, eval->result[p].max_residual);
+    rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet) {
         sk_hand_evaluation_print(eval, model_name, stdout);
         if (desc.model == SK_HAND_EVAL_MODEL_CALIBRATED)

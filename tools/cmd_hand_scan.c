@@ -2,17 +2,18 @@
  * simulated range scans of the hand (or of a user's mesh), registration by the markers,
  * slices, polygons, 96 Bezier patches and Table 4.1 - writing its pictures and files into
  * a folder. Argument parsing only; the pipeline is in the library. */
+#define _POSIX_C_SOURCE 200809L
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli.h"
 #include "hand_args.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/io.h"
-
-#define MAX_PINS 64
 
 static const cli_option scan_options[] = {
     {"input", 0, "FILE", "a mesh to scan like the cast, or a point cloud taken as the registered data "
@@ -35,22 +36,45 @@ static const cli_option scan_options[] = {
 
 static int fail_error(const sk_error *err) { return cli_fail_error(err); }
 
-/* The pose from --pose (or the cast's open hand), then --pin. */
+/* The pose from --pose (or the cast's open hand), then --pin (each DOF at most once). */
 static int read_pose(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel, double *q)
 {
     sk_hand_scan_cast_pose(skel, q);
+    bool given[SK_HAND_DOF_COUNT];
+    double value[SK_HAND_DOF_COUNT];
+    int rc = hand_parse_dof_values(cmd, args, "pin", given, value);
+    if (rc) return rc;
     const char *pose = cli_get(cmd, args, "pose");
     sk_error err = {0};
     if (pose && sk_hand_pose_load_file(pose, skel, q, &err) != SK_OK) return cli_fail_error(&err);
-    const char *values[MAX_PINS];
-    int n = cli_get_all(cmd, args, "pin", values, MAX_PINS);
-    for (int i = 0; i < n; i++) {
-        int dof;
-        double v;
-        int rc = hand_parse_assignment("pin", values[i], &dof, &v);
-        if (rc) return rc;
-        q[dof] = sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
+    for (int dof = 0; dof < SK_HAND_DOF_COUNT; dof++)
+        if (given[dof]) q[dof] = value[dof];
+    return 0;
+}
+
+/* --bend (each DOF at most once), or the default curl: radians (mm) added to the cast's pose
+   for patches-posed.png. */
+static int parse_bend(const cli_command *cmd, const cli_args *args, double bend[SK_HAND_DOF_COUNT])
+{
+    bool given[SK_HAND_DOF_COUNT];
+    int rc = hand_parse_dof_values(cmd, args, "bend", given, bend);
+    if (rc) return rc;
+    bool any = false;
+    for (int dof = 0; dof < SK_HAND_DOF_COUNT; dof++) {
+        if (!given[dof]) bend[dof] = 0;
+        any |= given[dof];
     }
+    if (any) return 0;
+    static const char *const fingers[] = {"I", "M", "R", "L"};
+    static const char *const joints[] = {"MCP", "PIP", "DIP"};
+    static const double degrees[] = {40, 60, 30};
+    for (int f = 0; f < 4; f++)
+        for (int j = 0; j < 3; j++) {
+            char name[32];
+            snprintf(name, sizeof name, "%s.%s.flex", fingers[f], joints[j]);
+            int dof = sk_hand_dof_find(name);
+            if (dof >= 0) bend[dof] = degrees[j] * SK_DEG_TO_RAD;
+        }
     return 0;
 }
 
@@ -86,27 +110,11 @@ static int mesh_picture(const sk_mesh *m, const char *title, const char *attr, c
 }
 
 /* patches-posed.png: the patches moved to the cast's pose plus --bend (4.1.5). */
-static int posed_picture(const cli_command *cmd, const cli_args *args, const sk_hand_scan_result *res,
-                         const sk_hand_skeleton *skel, const double *q, const sk_hand_surface *surface, const char *dir)
+static int posed_picture(const double *bend, const sk_hand_scan_result *res, const sk_hand_skeleton *skel,
+                         const double *q, const sk_hand_surface *surface, const char *dir)
 {
     double bent[SK_HAND_DOF_COUNT];
-    memcpy(bent, q, sizeof bent);
-    const char *values[MAX_PINS];
-    int n = cli_get_all(cmd, args, "bend", values, MAX_PINS);
-    if (n == 0) {
-        static const char *const curl[] = {"I.MCP.flex=40", "I.PIP.flex=60", "I.DIP.flex=30", "M.MCP.flex=40",
-                                           "M.PIP.flex=60", "M.DIP.flex=30", "R.MCP.flex=40", "R.PIP.flex=60",
-                                           "R.DIP.flex=30", "L.MCP.flex=40", "L.PIP.flex=60", "L.DIP.flex=30"};
-        n = (int)(sizeof curl / sizeof curl[0]);
-        for (int i = 0; i < n; i++) values[i] = curl[i];
-    }
-    for (int i = 0; i < n; i++) {
-        int dof;
-        double v;
-        int rc = hand_parse_assignment("bend", values[i], &dof, &v);
-        if (rc) return rc;
-        bent[dof] += sk_hand_dof(dof)->translation ? v : v * SK_DEG_TO_RAD;
-    }
+    for (int dof = 0; dof < SK_HAND_DOF_COUNT; dof++) bent[dof] = q[dof] + bend[dof];
     sk_hand_clamp_to_limits(skel, bent);
     sk_hand_frames pose;
     sk_hand_forward(skel, bent, &pose);
@@ -221,6 +229,9 @@ static void print_summary(const sk_hand_scan_result *res)
            tm->simulate, tm->register_, tm->segment, tm->resample, tm->fit, tm->measure, tm->total);
 }
 
+static int scan(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *pose_skel, const double *q,
+                const sk_hand_scan_desc *scan_desc, const double *bend, const char *dir);
+
 static int run_scan(const cli_command *cmd, const cli_args *args)
 {
     const char *dir = args->common.output;
@@ -232,8 +243,10 @@ static int run_scan(const cli_command *cmd, const cli_args *args)
     sk_hand_scan_desc d = {0};
     long long lines = 512, points = 512, slices = 75;
     double noise = 0.05;
-    if (!rc) rc = cli_get_int(cmd, args, "lines", 512, 8, 4096, &lines);
-    if (!rc) rc = cli_get_int(cmd, args, "points", 512, 8, 4096, &points);
+    /* the markers are 3 sample spacings wide, at most 10 mm: a coarsest scan follows */
+    sk_hand_scanner_desc scanner = sk_hand_scanner_desc_resolved(&d.scanner);
+    if (!rc) rc = cli_get_int(cmd, args, "lines", 512, (long long)ceil(0.3 * scanner.size_x_mm), 4096, &lines);
+    if (!rc) rc = cli_get_int(cmd, args, "points", 512, (long long)ceil(0.3 * scanner.size_y_mm), 4096, &points);
     if (!rc) rc = cli_get_int(cmd, args, "slices", 75, 2, 2000, &slices);
     if (!rc) rc = cli_get_double(cmd, args, "noise", 0.05, 0, 10, &noise);
     if (rc) return rc;
@@ -244,6 +257,35 @@ static int run_scan(const cli_command *cmd, const cli_args *args)
     d.slices.count = (int)slices;
     d.seed = args->common.has_seed ? args->common.seed : 0;
     const char *input = cli_get(cmd, args, "input");
+    bool pictures = !cli_has(cmd, args, "no-pictures");
+    double bend[SK_HAND_DOF_COUNT];
+    if (!pictures && cli_has(cmd, args, "bend"))
+        return cli_fail(CLI_EXIT_USAGE, "--bend poses patches-posed.png: not with --no-pictures");
+    if ((rc = parse_bend(cmd, args, bend))) return rc;
+    /* the scans and slices, and the cast's surface or the input mesh (16 bytes per byte of
+       its file, as the renderer counts) */
+    struct stat st;
+    double bytes = sk_hand_scan_memory(&d) +
+                   (input ? (stat(input, &st) == 0 ? 16.0 * (double)st.st_size : 0) : sk_hand_surface_memory(&skel, NULL));
+    if ((rc = cli_check_memory(args, bytes, input ? "hand scan (--lines x --points, --slices, and --input's mesh)"
+                                                   : "hand scan (--lines x --points, --slices, and the cast's surface)")))
+        return rc;
+    /* every file appears in DIR at the end, or none */
+    const cli_output outputs[] = {{"-o", &dir, NULL, true}};
+    sk_output_set *written = NULL;
+    if ((rc = cli_reserve_outputs(outputs, 1, &written))) return rc;
+    rc = scan(cmd, args, &skel, q, &d, bend, dir);
+    return cli_finish_outputs(written, rc);
+}
+
+/* The pipeline, writing into `dir` (the staged folder). */
+static int scan(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *pose_skel, const double *q,
+                const sk_hand_scan_desc *scan_desc, const double *bend, const char *dir)
+{
+    const char *input = cli_get(cmd, args, "input");
+    sk_hand_skeleton skel = *pose_skel;
+    sk_hand_scan_desc d = *scan_desc;
+    int rc = 0;
     sk_error err = {0};
     sk_mesh mesh = {0};
     sk_hand_scan_target *target = NULL;
@@ -271,7 +313,6 @@ static int run_scan(const cli_command *cmd, const cli_args *args)
         }
     }
     t_surface = sk_time_seconds() - t_surface;
-    if (sk_make_dirs(dir, &err) != SK_OK) rc = fail_error(&err);
     sk_hand_scan_result res;
     sk_progress_bar bar;
     if (!rc) {
@@ -293,8 +334,7 @@ static int run_scan(const cli_command *cmd, const cli_args *args)
     rc = tessellate(&res, &patch_mesh);
     if (!rc) rc = write_files(&res, &patch_mesh, surface, dir);
     if (!rc && !cli_has(cmd, args, "no-pictures")) rc = write_pictures(&res, &patch_mesh, dir);
-    if (!rc && !cli_has(cmd, args, "no-pictures"))
-        rc = posed_picture(cmd, args, &res, in.skeleton, q, surface, dir);
+    if (!rc && !cli_has(cmd, args, "no-pictures")) rc = posed_picture(bend, &res, in.skeleton, q, surface, dir);
     if (!rc && !args->common.quiet) {
         if (!input) printf("hand surface (the cast) meshed in %.2f s\n", t_surface);
         print_summary(&res);

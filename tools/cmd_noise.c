@@ -36,6 +36,15 @@ static int run_noise(const cli_command *command, const cli_args *args)
     const char *region_text = cli_get(command, args, "region");
     if (region_text && (status = cli_parse_region(region_text, desc.width, desc.height, region)))
         return status;
+    static const char *const k_formats[] = {".png", ".exr", NULL};
+    int format;
+    if ((status = cli_output_format("-o", output, k_formats, &format))) return status;
+    char driver[96];
+    snprintf(driver, sizeof driver, "a %d x %d map (--size, --region)", region[2], region[3]);
+    /* the float map and its encoding */
+    if ((status = cli_check_image(region[2], region[3], 1, driver)) ||
+        (status = cli_check_memory(args, cli_image_bytes(region[2], region[3], 12), driver)))
+        return status;
 
     sk_image image = {0};
     if (sk_image_create(&image, region[2], region[3], 1, &err) != SK_OK) return cli_fail_error(&err);
@@ -50,8 +59,7 @@ static int run_noise(const cli_command *command, const cli_args *args)
         snprintf(value, sizeof value, "%llu", (unsigned long long)desc.seed);
         sk_image_metadata_set(&meta, "shitsukan:seed", value, NULL);
         sk_image_metadata_set(&meta, "shitsukan:command", "noise", NULL);
-        size_t len = strlen(output);
-        if (len > 4 && strcmp(output + len - 4, ".exr") == 0) {
+        if (format == 1) {
             sk_exr_write_desc exr = {.metadata = &meta};
             r = sk_image_write_exr(&image, output, &exr, &err);
         } else {

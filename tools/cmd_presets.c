@@ -101,7 +101,19 @@ static int run_presets(const cli_command *command, const cli_args *args)
         char folder[PATH_MAX];
         snprintf(folder, sizeof folder, "%s/%s", root, args->positional[0]);
         DIR *d = opendir(folder);
-        if (!d) return cli_fail(CLI_EXIT_USAGE, "no preset module '%s'", args->positional[0]);
+        if (!d) {
+            /* name the modules there are */
+            char **modules;
+            int n = list_entries(root, NULL, &modules);
+            char names[512] = "";
+            size_t used = 0;
+            for (int i = 0; i < n && used < sizeof names; i++)
+                used += (size_t)snprintf(names + used, sizeof names - used, "%s%s", i ? ", " : "",
+                                         modules[i]);
+            free_entries(modules, n);
+            return cli_fail(CLI_EXIT_USAGE, "no preset module '%s' (modules: %s)",
+                            args->positional[0], names);
+        }
         closedir(d);
         list_module(root, args->positional[0]);
         return CLI_EXIT_OK;

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "shitsukan/io.h"
 #include "shitsukan/render.h"
 
 static const cli_option k_options[] = {
@@ -88,16 +89,20 @@ static int write_image(const sk_image *image, const sk_render_film_desc *film, c
     return 0;
 }
 
-/* --export: the scene's geometry for other tools (texture size checked before the scene
- * is built). */
+/* --export: the scene's geometry for other tools, its files reserved in the run's output
+ * set (they appear with the image, or nothing does), its memory checked first. */
 static int export_scene(const cli_command *command, const cli_args *args, const sk_render_scene *scene,
-                        long long size)
+                        long long size, sk_output_set *outputs)
 {
-    sk_progress_bar bar;
-    sk_progress_bar_begin(&bar, "export", !args->common.quiet);
     sk_render_export_desc desc = {.texture_size = (int)size,
                                   .no_textures = cli_has(command, args, "no-textures"),
-                                  .progress = sk_progress_bar_sink(&bar)};
+                                  .outputs = outputs};
+    int status = cli_check_memory(args, sk_render_scene_export_memory(scene, &desc),
+                                  "--export (its textures: --texture-size; and the scene's meshes)");
+    if (status) return status;
+    sk_progress_bar bar;
+    sk_progress_bar_begin(&bar, "export", !args->common.quiet);
+    desc.progress = sk_progress_bar_sink(&bar);
     sk_error err = {0};
     sk_result r = sk_render_scene_export(scene, cli_get(command, args, "export"), &desc, &err);
     sk_progress_bar_end(&bar);
@@ -113,6 +118,23 @@ static int run_render(const cli_command *command, const cli_args *args)
                                         "(see 'shitsukan presets scenes')");
     long long texture_size = 0;
     int status;
+    const char *export_path = cli_get(command, args, "export");
+    static const char *const k_export[] = {".glb", ".obj", NULL};
+    int export_format;
+    if (!export_path && (cli_has(command, args, "texture-size") || cli_has(command, args, "no-textures")))
+        return cli_fail(CLI_EXIT_USAGE, "--%s needs --export",
+                        cli_has(command, args, "texture-size") ? "texture-size" : "no-textures");
+    if (export_path && !args->common.output && cli_get(command, args, "exr"))
+        return cli_fail(CLI_EXIT_USAGE, "--exr with --export needs -o (without -o, --export renders no image)");
+    if (export_path && (status = cli_output_format("--export", export_path, k_export, &export_format)))
+        return status;
+    if (export_path) {
+        sk_error check = {0};
+        if (sk_output_check(export_path, &check) != SK_OK) {
+            sk_error_prefix(&check, check.result, "--export");
+            return cli_fail_error(&check);
+        }
+    }
     if (cli_has(command, args, "texture-size") &&
         (status = cli_get_int(command, args, "texture-size", 1024, 16, 8192, &texture_size)))
         return status;
@@ -141,17 +163,57 @@ static int run_render(const cli_command *command, const cli_args *args)
     sk_render_load_desc load = {.scene_path = scene_path, .find_preset = find_preset};
     sk_result r = sk_render_scene_desc_bind(tree, &load, desc, &err);
     sk_preset_free(tree);
+    /* every output is checked and reserved before the scene is built */
+    char output[PATH_MAX];
+    if (args->common.output)
+        snprintf(output, sizeof output, "%s", args->common.output);
+    else
+        default_output(scene_path, output, sizeof output);
+    const char *exr = cli_get(command, args, "exr");
+    static const char *const k_formats[] = {".png", ".exr", NULL}, *const k_exr[] = {".exr", NULL};
+    int format;
+    if (r == SK_OK && ((status = cli_output_format("-o", output, k_formats, &format)) ||
+                       (exr && (status = cli_output_format("--exr", exr, k_exr, &format))))) {
+        free(desc);
+        return status;
+    }
+    if (r == SK_OK) {
+        int largest;
+        double bytes = sk_render_scene_desc_memory(desc, &largest);
+        char driver[160];
+        if (largest >= 0)
+            snprintf(driver, sizeof driver,
+                     "the scene (%d objects, the largest objects[%d]: its segments, rings or "
+                     "mesh file; and image.width x height)",
+                     desc->object_count, largest);
+        else
+            snprintf(driver, sizeof driver, "the image (image.width x height, --size)");
+        if ((status = cli_check_memory(args, bytes, driver))) {
+            free(desc);
+            return status;
+        }
+    }
+    /* with --export and no -o, no image is rendered */
+    bool image_wanted = args->common.output || !export_path;
+    sk_output_set *outputs = NULL;
+    const char *staged_output = NULL, *staged_exr = NULL;
+    if (r == SK_OK) r = sk_output_set_create(&outputs, &err);
+    if (r == SK_OK && image_wanted) r = sk_output_set_file(outputs, output, &staged_output, &err);
+    if (r == SK_OK && exr) r = sk_output_set_file(outputs, exr, &staged_exr, &err);
     sk_render_scene *scene = NULL;
     if (r == SK_OK) r = sk_render_scene_create(desc, &scene, &err);
     free(desc);
-    if (r != SK_OK) return cli_fail_error(&err);
+    if (r != SK_OK) {
+        sk_output_set_abort(outputs);
+        return cli_fail_error(&err);
+    }
 
     const sk_render_scene_desc *d = sk_render_scene_get_desc(scene);
-    if (cli_has(command, args, "export")) {
-        status = export_scene(command, args, scene, texture_size);
-        if (status || !args->common.output) {
+    if (export_path) {
+        status = export_scene(command, args, scene, texture_size, outputs);
+        if (status || !image_wanted) {
             sk_render_scene_destroy(scene);
-            return status;
+            return cli_finish_outputs(outputs, status);
         }
     }
     sk_progress_bar bar;
@@ -164,16 +226,14 @@ static int run_render(const cli_command *command, const cli_args *args)
     sk_progress_bar_end(&bar);
     if (r != SK_OK) {
         sk_render_scene_destroy(scene);
+        sk_output_set_abort(outputs);
         return cli_fail_error(&err);
     }
-    char output[PATH_MAX];
-    if (args->common.output)
-        snprintf(output, sizeof output, "%s", args->common.output);
-    else
-        default_output(scene_path, output, sizeof output);
-    status = write_image(&image, &d->film, output, scene_path, d->image.samples);
-    const char *exr = cli_get(command, args, "exr");
-    if (!status && exr) status = write_image(&image, &d->film, exr, scene_path, d->image.samples);
+    status = write_image(&image, &d->film, staged_output, scene_path, d->image.samples);
+    if (!status && exr)
+        status = write_image(&image, &d->film, staged_exr, scene_path, d->image.samples);
+    if (!status && sk_output_set_commit(outputs, &err) != SK_OK) status = cli_fail_error(&err);
+    else if (status) sk_output_set_abort(outputs);
     if (!status && options.timing) {
         double busy = stats.intersect_seconds + stats.shade_seconds;
         fprintf(stderr,

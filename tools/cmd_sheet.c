@@ -59,15 +59,41 @@ static int run_sheet(const cli_command *command, const cli_args *args)
         if ((status = cli_get_size(command, args, "repeat", 2, 2, 64, &rep_c, &rep_r))) return status;
     }
 
+    static const char *const k_formats[] = {".png", ".exr", NULL};
+    int format;
+    if ((status = cli_output_format("-o", output, k_formats, &format))) return status;
+    if (tile_size > 0) {
+        /* every tile scaled to tile_size^2 (float RGBA) and the sheet that holds them */
+        char driver[96];
+        snprintf(driver, sizeof driver, "--tile-size %lld for %d image(s)", tile_size, count);
+        if ((status = cli_check_memory(args, 2.0 * count * cli_image_bytes(tile_size, tile_size, 16),
+                                       driver)))
+            return status;
+    }
     sk_error err = {0};
     sk_image *images = calloc((size_t)count, sizeof *images);
     const sk_image **tiles = calloc((size_t)count, sizeof *tiles);
     sk_image sheet = {0};
     sk_result r = images && tiles ? SK_OK : SK_ERROR_OUT_OF_MEMORY;
     if (r != SK_OK) sk_fail(&err, r, "out of memory");
+    double input_bytes = 0;
     for (int i = 0; i < count && r == SK_OK; i++) {
         r = read_image(args->positional[i], &images[i], &err);
         tiles[i] = &images[i];
+        if (r != SK_OK) break;
+        /* the inputs, the sheet (or the repeat) and its encoding, as the inputs come in */
+        input_bytes += cli_image_bytes(images[i].width, images[i].height, 4.0 * images[i].channels);
+        double plan = rep_c > 0 ? input_bytes * (1.0 + 1.25 * rep_c * rep_r) : 3.0 * input_bytes;
+        char driver[96];
+        snprintf(driver, sizeof driver, "%s %d input image(s)", rep_c > 0 ? "--repeat of" : "a sheet of",
+                 i + 1);
+        if ((status = cli_check_memory(args, plan, driver))) break;
+    }
+    if (status) {
+        for (int i = 0; i < count; i++) sk_image_free(&images[i]);
+        free(images);
+        free(tiles);
+        return status;
     }
     if (r == SK_OK && rep_c > 0) {
         r = repeat_image(&images[0], rep_c, rep_r, &sheet, &err);

@@ -68,6 +68,24 @@ static int load_desc(const cli_command *command, const cli_args *args, int defau
         desc->size_mm[0] = (float)(mm * *width);
         desc->size_mm[1] = (float)(mm * *height);
     }
+    /* the cells get what the cap leaves (the images are checked by the caller) */
+    desc->max_memory = (double)args->common.max_memory;
+    return 0;
+}
+
+/* The images of a w x h region of `bytes_per_pixel`, against the cap; the rest of the cap
+   is left to the skin's cells. */
+static int check_image_memory(const cli_args *args, int w, int h, double bytes_per_pixel,
+                              sk_skin_desc *desc)
+{
+    double bytes = cli_image_bytes(w, h, bytes_per_pixel);
+    char driver[96];
+    snprintf(driver, sizeof driver, "a %d x %d image (--size, --region)", w, h);
+    int status = cli_check_image(w, h, 3, driver);
+    if (!status) status = cli_check_memory(args, bytes, driver);
+    if (status) return status;
+    desc->max_memory -= bytes;
+    if (desc->max_memory < 1.0) desc->max_memory = 1.0;
     return 0;
 }
 
@@ -132,6 +150,11 @@ static int run_preview(const cli_command *command, const cli_args *args)
     if ((status = load_desc(command, args, SKIN_DEFAULT_SIZE, &desc, &w, &h))) return status;
     if ((status = get_region(command, args, w, h, region))) return status;
     if ((status = cli_get_int(command, args, "samples", 1, 1, 8, &samples))) return status;
+    int format;
+    static const char *const k_png[] = {".png", NULL};
+    if ((status = cli_output_format("-o", output, k_png, &format))) return status;
+    /* float RGB and its 8-bit encoding */
+    if ((status = check_image_memory(args, region[2], region[3], 16, &desc))) return status;
     phase_times times = {.start = sk_time_seconds()};
     sk_skin *skin;
     if ((status = make_skin(&desc, args, &skin))) return status;
@@ -427,32 +450,38 @@ static int run_maps(const cli_command *command, const cli_args *args)
     if ((status = cli_get_int(command, args, "id-level", 1, 1, SK_SKIN_MAX_LEVELS, &id_level)))
         return status;
     bool edges = cli_has(command, args, "edges"), directx = cli_has(command, args, "directx");
+    /* All maps are held in memory until written (the maps as stored, one RGB float image,
+       and the encodings being written): split a huge map with --region. */
+    bool own_preview = samples > 1; /* else shaded from the kept normals */
+    double per_px = 14 + 12.0 * own_preview + 12.0 * edges + 12; /* + one RGB float image */
+    if ((status = check_image_memory(args, region[2], region[3], per_px + 16, &desc)))
+        return status;
     phase_times times = {.start = sk_time_seconds()};
+    /* the folder is reserved first: its files appear together at the end, or none */
+    sk_error err = {0};
+    sk_output_set *outputs = NULL;
+    const char *staged = NULL;
+    if (sk_output_set_create(&outputs, &err) != SK_OK ||
+        sk_output_set_folder(outputs, dir, &staged, &err) != SK_OK) {
+        sk_output_set_abort(outputs);
+        return cli_fail_error(&err);
+    }
     sk_skin *skin;
-    if ((status = make_skin(&desc, args, &skin))) return status;
+    if ((status = make_skin(&desc, args, &skin))) {
+        sk_output_set_abort(outputs);
+        return status;
+    }
     times.model = sk_time_seconds();
     const sk_skin_desc *rd_desc = sk_skin_get_desc(skin);
-    sk_error err = {0};
     sk_result r = SK_OK;
     int level_count = rd_desc->level_count;
     if (furrow_level > level_count || id_level > level_count) {
         sk_skin_destroy(skin);
+        sk_output_set_abort(outputs);
         return cli_fail(CLI_EXIT_USAGE,
                         "--furrow-level and --id-level must be at most %d (the "
                         "skin's levels)",
                         level_count);
-    }
-    /* All maps are held in memory until written: refuse sizes beyond 8 GiB (split the map
-       with --region instead). */
-    bool own_preview = samples > 1; /* else shaded from the kept normals */
-    double per_px = 14 + 12.0 * own_preview + 12.0 * edges + 12; /* + one RGB float image */
-    double bytes = (double)region[2] * region[3] * per_px;
-    if (bytes > 8.0 * (1 << 30)) {
-        sk_skin_destroy(skin);
-        return cli_fail(CLI_EXIT_USAGE,
-                        "a %d x %d region needs %.1f GiB for its maps; at most 8 GiB (render "
-                        "parts with --region)",
-                        region[2], region[3], bytes / (1 << 30));
     }
     int rw = region[2], rh = region[3];
     map_store m = {.w = rw, .h = rh, .n = (size_t)rw * (size_t)rh};
@@ -466,7 +495,6 @@ static int run_maps(const cli_command *command, const cli_args *args)
     }
     if (r == SK_OK && own_preview) r = sk_image_create(&m.preview, rw, rh, 3, &err);
     if (r == SK_OK && edges) r = sk_image_create(&m.edges, rw, rh, 3, &err);
-    if (r == SK_OK) r = sk_make_dirs(dir, &err);
     /* furrow.png spans half the furrow level's spacing: the whole ridge, centre to edge */
     float furrow_max = 0.5f * rd_desc->levels[furrow_level - 1].spacing_mm;
     sk_progress_bar bar;
@@ -477,7 +505,10 @@ static int run_maps(const cli_command *command, const cli_args *args)
     sk_progress_bar_end(&bar);
     times.shading = sk_time_seconds();
     if (r == SK_OK)
-        r = write_maps(skin, &m, dir, w, h, directx, edges, (int)furrow_level, furrow_max, &err);
+        r = write_maps(skin, &m, staged, w, h, directx, edges, (int)furrow_level, furrow_max,
+                       &err);
+    if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
+    else sk_output_set_abort(outputs);
     times.files = sk_time_seconds();
     if (r == SK_OK && !args->common.quiet) {
         float lo, hi;

@@ -2,6 +2,7 @@
  * the page drawn with three.js; built by `make studio`) on a local HTTP server and
  * prints its address. Finding the folder and the options only; the server is http.h. */
 #define _POSIX_C_SOURCE 200809L
+#include <arpa/inet.h>
 #include <limits.h>
 #include <signal.h>
 #include <stdio.h>
@@ -70,11 +71,17 @@ static int run_studio(const cli_command *command, const cli_args *args)
     if (status) return status;
     const char *host = cli_get(command, args, "host");
     if (!host) host = "127.0.0.1";
+    struct in_addr address;
+    if (inet_pton(AF_INET, host, &address) != 1)
+        return cli_fail(CLI_EXIT_USAGE, "--host '%s' must be an IPv4 address such as 127.0.0.1", host);
     char root[PATH_MAX];
     const char *given = cli_get(command, args, "root");
     if (given) {
         snprintf(root, sizeof root, "%s", given);
-        if (!has_page(root)) return cli_fail(CLI_EXIT_USAGE, "--root %s: no index.html there", given);
+        struct stat st;
+        if (stat(root, &st) != 0 || !S_ISDIR(st.st_mode))
+            return cli_fail(CLI_EXIT_USAGE, "--root '%s' must be a folder", given);
+        if (!has_page(root)) return cli_fail(CLI_EXIT_USAGE, "--root '%s': no index.html there", given);
     } else if (!find_root(root, sizeof root)) {
         return cli_fail(CLI_EXIT_USAGE,
                         "the studio is not built: run 'make studio' (needs emscripten), or give --root DIR");

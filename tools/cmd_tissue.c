@@ -22,26 +22,33 @@ static int run_skin(const cli_command *cmd, const cli_args *args)
 {
     if (!args->common.output && !cli_has(cmd, args, "layers"))
         return cli_fail(CLI_EXIT_USAGE, "nothing to write: give -o rest.obj and/or --layers DIR");
-    sk_tissue_model *model = NULL;
-    int status = tissue_cli_build(cmd, args, &model);
+    /* the rest skin, the layers and the stats appear together, or none */
+    static const char *const k_mesh[] = {".obj", ".ply", NULL}, *const k_json[] = {".json", NULL};
+    const char *out = args->common.output, *layers = cli_get(cmd, args, "layers"), *stats = cli_get(cmd, args, "stats");
+    const cli_output outputs[] = {{"-o", &out, k_mesh, false}, {"--layers", &layers, NULL, true},
+                                  {"--stats", &stats, k_json, false}};
+    sk_output_set *written = NULL;
+    int status = cli_reserve_outputs(outputs, 3, &written);
     if (status) return status;
+    sk_tissue_model *model = NULL;
+    status = tissue_cli_build(cmd, args, &model);
+    if (status) return cli_finish_outputs(written, status);
     sk_error err = {0};
     sk_result r = SK_OK;
-    if (args->common.output) {
+    if (out) {
         sk_mesh skin;
         r = sk_tissue_model_rest_skin(model, &skin, &err);
         if (r == SK_OK) {
-            r = sk_mesh_write(&skin, args->common.output, &err);
+            r = sk_mesh_write(&skin, out, &err);
             sk_mesh_free(&skin);
         }
     }
-    const char *layers = cli_get(cmd, args, "layers");
     if (r == SK_OK && layers) r = sk_tissue_write_layers(model, layers, &err);
-    const char *stats = cli_get(cmd, args, "stats");
     if (r == SK_OK && stats) r = sk_tissue_write_model_stats(model, stats, &err);
-    if (r == SK_OK && !args->common.quiet) tissue_cli_print_model(model);
+    status = cli_finish_outputs(written, r == SK_OK ? 0 : cli_fail_error(&err));
+    if (!status && !args->common.quiet) tissue_cli_print_model(model);
     sk_tissue_model_destroy(model);
-    return r == SK_OK ? 0 : cli_fail_error(&err);
+    return status;
 }
 
 const cli_command cmd_tissue_skin = {

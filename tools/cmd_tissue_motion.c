@@ -15,6 +15,10 @@ static int run_motion(const cli_command *cmd, const cli_args *args)
         if (strcmp(name, sk_tissue_motion_kind_names[k]) == 0) kind = k;
     if (kind < 0) return cli_fail(CLI_EXIT_USAGE, "motion '%s' must be curl, jump or walk", name);
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o FILE.bvh is required");
+    static const char *const k_bvh[] = {".bvh", NULL};
+    int format;
+    int status = cli_output_format("-o", args->common.output, k_bvh, &format);
+    if (status) return status;
     sk_error err = {0};
     sk_bvh *b = malloc(sizeof *b);
     if (!b) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");

@@ -99,6 +99,19 @@ static int run_run(const cli_command *cmd, const cli_args *args)
         free(bvh);
         return cli_fail_error(&err);
     }
+    /* the folder, the plot and the saved state appear together at the end, or none */
+    static const char *const k_png[] = {".png", NULL};
+    const char *plot = desc.plot, *state = desc.save_state;
+    const cli_output outputs[] = {
+        {"-o", &desc.output_dir, NULL, true}, {"--plot", &plot, k_png, false}, {"--save-state", &state, NULL, false}};
+    sk_output_set *written = NULL;
+    if ((status = cli_reserve_outputs(outputs, 3, &written))) {
+        sk_bvh_free(bvh);
+        free(bvh);
+        return status;
+    }
+    desc.plot = plot;
+    desc.save_state = state;
     sk_tissue_model *model = NULL;
     status = tissue_cli_build(cmd, args, &model);
     sk_tissue_bvh_motion *bm = NULL;
@@ -116,6 +129,7 @@ static int run_run(const cli_command *cmd, const cli_args *args)
         sk_progress_bar_end(&bar);
         if (r != SK_OK) status = cli_fail_error(&err);
     }
+    status = cli_finish_outputs(written, status);
     if (!status && !args->common.quiet) {
         tissue_cli_print_model(model);
         printf("%d frames at %d fps (%.2f s of motion, %lld steps): %.1f simulated frames per second; largest skin "

@@ -1,5 +1,6 @@
 /* Helpers of the `shitsukan tissue` commands (see cmd_tissue.h). */
 #define _POSIX_C_SOURCE 200809L
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,10 @@ int tissue_cli_build(const cli_command *cmd, const cli_args *args, sk_tissue_mod
     *out = NULL;
     const char *character = cli_get(cmd, args, "character");
     if (!character) return cli_fail(CLI_EXIT_USAGE, "--character is required (arm, body or a JSON file)");
+    char found[PATH_MAX];
+    if (!strchr(character, '/') && !strstr(character, ".json") && !cli_find_preset("tissue", character, found, sizeof found))
+        return cli_fail(CLI_EXIT_USAGE, "--character '%s': no such character (arm, body or a JSON file; see 'shitsukan presets tissue')",
+                        character);
     /* the character is a preset of the tissue module: reuse the preset loading with --set */
     cli_args *copy = malloc(sizeof *copy);
     if (!copy) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
@@ -31,6 +36,21 @@ int tissue_cli_build(const cli_command *cmd, const cli_args *args, sk_tissue_mod
     if (r != SK_OK) {
         free(desc);
         return cli_fail(cli_exit_status(r), "--character %s: %s", character, err.message);
+    }
+    /* the grid's memory, before anything is allocated for it */
+    double bytes = 0;
+    int grid[3] = {0};
+    r = sk_tissue_model_memory(desc, &bytes, grid, &err);
+    if (r != SK_OK) {
+        free(desc);
+        return cli_fail(cli_exit_status(r), "--character %s: %s", character, err.message);
+    }
+    char driver[160];
+    snprintf(driver, sizeof driver, "--character %s (skin.spacing_mm = %g: a grid of %d x %d x %d points)", character,
+             desc->skin.spacing_mm > 0 ? desc->skin.spacing_mm : 4.0, grid[0], grid[1], grid[2]);
+    if ((status = cli_check_memory(args, bytes, driver))) {
+        free(desc);
+        return status;
     }
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "skin", !args->common.quiet);

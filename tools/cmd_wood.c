@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "cli.h"
 #include "shitsukan/io.h"
@@ -54,14 +55,8 @@ static const cli_option k_sweep_options[] = {
 static int parse_vec3(const char *option, const char *text, sk_vec3f *out)
 {
     double v[3];
-    const char *p = text;
-    for (int i = 0; i < 3; i++) {
-        char *end;
-        v[i] = strtod(p, &end);
-        if (end == p || !isfinite(v[i]) || (i < 2 ? *end != ',' : *end != '\0'))
-            return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be X,Y,Z (three numbers)", option, text);
-        p = end + 1;
-    }
+    int status = cli_parse_numbers(option, text, 3, v);
+    if (status) return status;
     *out = sk_v3f((float)v[0], (float)v[1], (float)v[2]);
     return 0;
 }
@@ -171,6 +166,18 @@ static int prepare(const cli_command *command, const cli_args *args, int default
     return 0;
 }
 
+/* The image buffers of a job (`bytes_per_pixel` over its region) against the cap. */
+static int check_memory(const cli_args *args, const wood_job *job, double bytes_per_pixel)
+{
+    char driver[96];
+    snprintf(driver, sizeof driver, "a %d x %d image (--size, --region)", job->region[2],
+             job->region[3]);
+    int status = cli_check_image(job->region[2], job->region[3], 3, driver);
+    if (status) return status;
+    return cli_check_memory(args, cli_image_bytes(job->region[2], job->region[3], bytes_per_pixel),
+                            driver);
+}
+
 static void describe(const wood_job *job, const char *command, sk_image_metadata *meta)
 {
     char value[128];
@@ -190,17 +197,14 @@ static void describe(const wood_job *job, const char *command, sk_image_metadata
     sk_image_metadata_set(meta, "shitsukan:plane_axis", value, NULL);
 }
 
-static bool ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && strcmp(s + n - k, suffix) == 0;
-}
+static const char *const k_color_formats[] = {".png", ".exr", NULL};
 
 /* A colour image: float EXR for .exr, else an 8-bit sRGB PNG. */
 static sk_result write_color(const sk_image *image, const char *path,
                              const sk_image_metadata *meta, sk_error *err)
 {
-    if (ends_with(path, ".exr")) {
+    size_t n = strlen(path);
+    if (n >= 4 && strcasecmp(path + n - 4, ".exr") == 0) {
         sk_exr_write_desc exr = {.metadata = meta};
         return sk_image_write_exr(image, path, &exr, err);
     }
@@ -239,14 +243,26 @@ static int run_cut(const cli_command *command, const cli_args *args)
 {
     const char *output = args->common.output;
     if (!output) return cli_fail(CLI_EXIT_USAGE, "wood cut: -o/--output is required");
-    wood_job job;
-    int status = prepare(command, args, 1024, true, &job);
+    int format;
+    int status = cli_output_format("-o", output, k_color_formats, &format);
     if (status) return status;
+    wood_job job;
+    if ((status = prepare(command, args, 1024, true, &job))) return status;
     const char *maps = cli_get(command, args, "maps");
+    /* float images (shaded; albedo, fibre, pores with --maps) and their encodings */
+    if ((status = check_memory(args, &job, maps ? 48 : 16))) {
+        sk_wood_destroy(job.wood);
+        return status;
+    }
     sk_image shaded = {0}, albedo = {0}, fibre = {0}, pores = {0};
     sk_error err = {0};
     int w = job.region[2], h = job.region[3];
-    sk_result r = maps ? sk_make_dirs(maps, &err) : SK_OK;
+    /* the picture and the maps folder appear together at the end, or neither */
+    sk_output_set *outputs = NULL;
+    const char *staged_output = NULL, *staged_maps = NULL;
+    sk_result r = sk_output_set_create(&outputs, &err);
+    if (r == SK_OK) r = sk_output_set_file(outputs, output, &staged_output, &err);
+    if (r == SK_OK && maps) r = sk_output_set_folder(outputs, maps, &staged_maps, &err);
     if (r == SK_OK) r = sk_image_create(&shaded, w, h, 3, &err);
     if (r == SK_OK && maps) r = sk_image_create(&albedo, w, h, 3, &err);
     if (r == SK_OK && maps) r = sk_image_create(&fibre, w, h, 3, &err);
@@ -265,9 +281,11 @@ static int run_cut(const cli_command *command, const cli_args *args)
     if (r == SK_OK) {
         sk_image_metadata meta = {0};
         describe(&job, "wood cut", &meta);
-        r = write_color(&shaded, output, &meta, &err);
+        r = write_color(&shaded, staged_output, &meta, &err);
     }
-    if (r == SK_OK && maps) r = write_maps(&job, maps, &albedo, &fibre, &pores, &err);
+    if (r == SK_OK && maps) r = write_maps(&job, staged_maps, &albedo, &fibre, &pores, &err);
+    if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
+    else sk_output_set_abort(outputs);
     sk_image_free(&shaded);
     sk_image_free(&albedo);
     sk_image_free(&fibre);
@@ -289,9 +307,18 @@ static int run_sweep(const cli_command *command, const cli_args *args)
         return status;
     wood_job job;
     if ((status = prepare(command, args, 512, false, &job))) return status;
+    /* one float frame and its encoding */
+    if ((status = check_memory(args, &job, 16))) {
+        sk_wood_destroy(job.wood);
+        return status;
+    }
     sk_error err = {0};
     sk_image frame = {0};
-    sk_result r = sk_make_dirs(output, &err);
+    /* the frames appear together at the end, or none */
+    sk_output_set *outputs = NULL;
+    const char *staged = NULL;
+    sk_result r = sk_output_set_create(&outputs, &err);
+    if (r == SK_OK) r = sk_output_set_folder(outputs, output, &staged, &err);
     if (r == SK_OK) r = sk_image_create(&frame, job.region[2], job.region[3], 3, &err);
     job.cut.shaded = frame.data;
     sk_progress_bar bar;
@@ -306,11 +333,13 @@ static int run_sweep(const cli_command *command, const cli_args *args)
         char value[32], path[PATH_MAX];
         snprintf(value, sizeof value, "%.4f", delta);
         sk_image_metadata_set(&meta, "shitsukan:light_deg", value, NULL);
-        snprintf(path, sizeof path, "%s/frame_%04lld.png", output, f + 1);
+        snprintf(path, sizeof path, "%s/frame_%04lld.png", staged, f + 1);
         r = write_color(&frame, path, &meta, &err);
         sk_progress_bar_update(&bar, (double)(f + 1) / (double)frames);
     }
     sk_progress_bar_end(&bar);
+    if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
+    else sk_output_set_abort(outputs);
     sk_image_free(&frame);
     sk_wood_destroy(job.wood);
     return r == SK_OK ? CLI_EXIT_OK : cli_fail_error(&err);

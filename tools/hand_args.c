@@ -41,6 +41,10 @@ int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_si
     return 0;
 }
 
+/* Largest magnitude of a --pin or --torque value (degrees, mm or stiffness x radians):
+   pins beyond a joint's limits are clamped to them, so any larger value means nothing. */
+#define INPUT_VALUE_MAX 1e6
+
 int hand_parse_assignment(const char *option, const char *text, int *dof, double *value)
 {
     const char *eq = strchr(text, '=');
@@ -54,11 +58,51 @@ int hand_parse_assignment(const char *option, const char *text, int *dof, double
     if (*dof < 0)
         return cli_fail(CLI_EXIT_USAGE, "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)",
                         option, text, name);
-    char *end;
-    errno = 0;
-    *value = strtod(eq + 1, &end);
-    if (!eq[1] || *end || errno == ERANGE || !isfinite(*value) || fabs(*value) > 1e6)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': \"%s\" is not a finite number", option, text, eq + 1);
+    if (!cli_parse_decimal(eq + 1, value) || fabs(*value) > INPUT_VALUE_MAX)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': the value must be a decimal number in [%.0f, %.0f]", option,
+                        text, -INPUT_VALUE_MAX, INPUT_VALUE_MAX);
     return 0;
 }
 
+/* The values of repeatable option `option` ("DOF=value" each), in model units when
+   `angles` (degrees to radians; mm stay mm), as given otherwise. `taken[dof]` names the
+   option that already set a DOF (shared between the options of one input). */
+static int parse_dof_option(const cli_command *cmd, const cli_args *args, const char *option, bool angles,
+                            const char *taken[SK_HAND_DOF_COUNT], bool given[SK_HAND_DOF_COUNT],
+                            double value[SK_HAND_DOF_COUNT])
+{
+    if (!cli_takes(cmd, option)) return 0;
+    const char *values[CLI_MAX_VALUES];
+    int n = cli_get_all(cmd, args, option, values, CLI_MAX_VALUES);
+    for (int i = 0; i < n; i++) {
+        int dof = 0;
+        double v = 0.0;
+        int rc = hand_parse_assignment(option, values[i], &dof, &v);
+        if (rc) return rc;
+        if (taken[dof])
+            return cli_fail(CLI_EXIT_USAGE, "--%s '%s': %s already has --%s (one value per DOF)", option,
+                            values[i], sk_hand_dof(dof)->name, taken[dof]);
+        taken[dof] = option;
+        given[dof] = true;
+        value[dof] = angles && !sk_hand_dof(dof)->translation ? v * SK_DEG_TO_RAD : v;
+    }
+    return 0;
+}
+
+int hand_parse_inputs(const cli_command *cmd, const cli_args *args, sk_hand_input *in)
+{
+    const char *taken[SK_HAND_DOF_COUNT] = {0};
+    bool torqued[SK_HAND_DOF_COUNT] = {0};
+    memset(in, 0, sizeof *in);
+    int rc = parse_dof_option(cmd, args, "pin", true, taken, in->pinned, in->pin_value);
+    if (!rc) rc = parse_dof_option(cmd, args, "torque", false, taken, torqued, in->torque);
+    return rc;
+}
+
+int hand_parse_dof_values(const cli_command *cmd, const cli_args *args, const char *option,
+                          bool given[SK_HAND_DOF_COUNT], double value[SK_HAND_DOF_COUNT])
+{
+    const char *taken[SK_HAND_DOF_COUNT] = {0};
+    memset(given, 0, SK_HAND_DOF_COUNT * sizeof *given);
+    return parse_dof_option(cmd, args, option, true, taken, given, value);
+}

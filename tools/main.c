@@ -19,30 +19,6 @@ static void print_tool_help(FILE *out)
                  "Exit status: 0 success, 1 runtime failure, 2 bad usage or input.\n");
 }
 
-/* Whether `word` is the first word of two-word commands (a group such as "hand"). */
-static bool is_group(const char *word)
-{
-    size_t n = strlen(word);
-    for (int i = 0; cli_commands[i]; i++) {
-        const char *space = strchr(cli_commands[i]->name, ' ');
-        if (space && (size_t)(space - cli_commands[i]->name) == n && strncmp(cli_commands[i]->name, word, n) == 0)
-            return true;
-    }
-    return false;
-}
-
-static void print_group_help(FILE *out, const char *group)
-{
-    size_t n = strlen(group);
-    fprintf(out, "usage: shitsukan %s <command> [options]\n\ncommands:\n", group);
-    for (int i = 0; cli_commands[i]; i++) {
-        const char *name = cli_commands[i]->name;
-        if (strncmp(name, group, n) == 0 && (name[n] == ' ' || name[n] == '\0'))
-            fprintf(out, "  %-16s %s\n", name, cli_commands[i]->summary);
-    }
-    fprintf(out, "\n'shitsukan %s <command> --help' shows a command's options.\n", group);
-}
-
 /* The command whose name matches argv[1] (and argv[2] for two-word names). */
 static const cli_command *find_command(int argc, char **argv, int *words)
 {
@@ -82,14 +58,19 @@ int main(int argc, char **argv)
     }
     int words;
     const cli_command *command = find_command(argc, argv, &words);
-    /* a group's own help: "shitsukan tissue --help" (or the group alone, as usage) */
-    if (!command && is_group(argv[1])) {
-        bool asked = argc > 2 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0);
-        if (asked || argc == 2) {
-            print_group_help(asked ? stdout : stderr, argv[1]);
-            return asked ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+    if (!command && cli_is_group(argv[1])) {
+        /* a group word alone, with --help, or with an unknown subcommand */
+        if (argc > 2 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0)) {
+            cli_print_group_help(argv[1], stdout);
+            return CLI_EXIT_OK;
         }
-        return cli_fail(CLI_EXIT_USAGE, "unknown command '%s %s' (see 'shitsukan %s --help')", argv[1], argv[2], argv[1]);
+        if (argc > 2 && argv[2][0] != '-')
+            return cli_fail(CLI_EXIT_USAGE, "unknown command '%s %s' (see 'shitsukan %s --help')",
+                            argv[1], argv[2], argv[1]);
+        char names[256];
+        cli_group_subcommands(argv[1], names, sizeof names);
+        return cli_fail(CLI_EXIT_USAGE, "'%s' needs a subcommand: %s (see 'shitsukan %s --help')",
+                        argv[1], names, argv[1]);
     }
     if (!command)
         return cli_fail(CLI_EXIT_USAGE, "unknown command '%s' (see 'shitsukan --help')", argv[1]);

@@ -77,6 +77,11 @@ sk_result sk_check_range_f(sk_error *err, const char *name, double value, double
 sk_result sk_check_range_i(sk_error *err, const char *name, long long value, long long lo,
                            long long hi);
 sk_result sk_check_finite(sk_error *err, const char *name, double value);
+/* The test of sk_check_range_f: finite and within [lo, hi]. Most values are stored as
+ * float while their bounds are written as decimals (0.01, 0.99), so a value that equals a
+ * bound once both are rounded to float counts as the bound (a stored 0.99f is accepted
+ * for a documented maximum of 0.99). */
+bool sk_in_range_f(double value, double lo, double hi);
 
 /* Overflow-checked size arithmetic: returns false (and leaves *out untouched) on overflow. */
 bool sk_size_mul(size_t a, size_t b, size_t *out);

@@ -138,7 +138,16 @@ typedef struct sk_obj_write_desc {
     int material_count;
     const sk_obj_group *groups;
     int group_count;
+    /* Where the MTL file goes and the name the OBJ's mtllib gives it, for writing under
+       names other than the final ones (the staged files of an sk_output_set): NULL =
+       sk_obj_mtl_path(path), and that file's base name. */
+    const char *mtl_path;
+    const char *mtl_name;
 } sk_obj_write_desc;
+
+/* The MTL file sk_mesh_write_obj writes beside `obj_path`: "dir/name.obj" -> "dir/name.mtl"
+ * (the extension replaced, or appended if none). NULL when out of memory; free with free(). */
+char *sk_obj_mtl_path(const char *obj_path);
 
 /* Writes v/vt/vn/f (attributes and colours are not representable in OBJ and are
  * skipped, except vertex colours as the common "v x y z r g b" extension, sRGB-encoded).

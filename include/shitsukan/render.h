@@ -29,6 +29,7 @@
 
 #include "shitsukan/core.h"
 #include "shitsukan/image.h"
+#include "shitsukan/io.h"
 #include "shitsukan/mesh.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/skin.h"
@@ -369,6 +370,12 @@ sk_result sk_render_scene_desc_load(const char *path, sk_render_scene_desc *desc
 
 typedef struct sk_render_scene sk_render_scene;
 
+/* About how many bytes sk_render_scene_create and the render will need (an upper bound
+ * from the objects' tessellation, mesh file sizes and the image size), for refusing a
+ * scene before building it. *largest_object (if not NULL) is the object that needs the
+ * most, to name in a message. Skin and wood materials are not counted. */
+double sk_render_scene_desc_memory(const sk_render_scene_desc *desc, int *largest_object);
+
 /* Builds the scene: meshes (files read, primitives tessellated, tangents computed),
  * textures, materials' solid textures and the Embree acceleration structure. Errors name
  * the key path (e.g. "objects[1].file = \"arm.obj\": ..."). */
@@ -467,12 +474,19 @@ typedef struct sk_render_export_desc {
                              object's texture; 0 = 1024; [16, 8192] */
     bool no_textures;     /* bake nothing: wood gets its mean albedo, skin no normal map */
     sk_progress progress; /* fraction of the baking done */
+    /* NULL: the export's files (the .glb; or the .obj, its .mtl and textures) appear all
+       together or none. Given: they are reserved in this set and written under its staged
+       names, and appear when the caller commits it (with the run's other outputs). */
+    sk_output_set *outputs;
 } sk_render_export_desc;
 
-/* Writes the export by the path's extension (.glb or .obj; atomically, like every file).
- * `desc` may be NULL. */
+/* Writes the export by the path's extension (.glb or .obj; all files or none, each
+ * atomically). The output paths are checked before the baking. `desc` may be NULL. */
 sk_result sk_render_scene_export(const sk_render_scene *scene, const char *path,
                                  const sk_render_export_desc *desc, sk_error *err);
+/* The memory the export peaks at beyond the scene's (bytes): the meshes copied, and the
+ * textures baked at texture_size (12 bytes a texel, 20 while the wood is baked). */
+double sk_render_scene_export_memory(const sk_render_scene *scene, const sk_render_export_desc *desc);
 
 /* ------------------------------------------------------------------ primitives */
 

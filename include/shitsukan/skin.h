@@ -134,7 +134,14 @@ typedef struct sk_skin_desc {
     sk_skin_pores pores;
     sk_skin_shading shading;
     sk_progress progress;   /* progress of sk_skin_create (not part of presets) */
+    double max_memory;      /* bytes the cells may take (estimated at SK_SKIN_BYTES_PER_CELL
+                               before building); 0 = no cap but SK_SKIN_MAX_CELLS (not part
+                               of presets) */
 } sk_skin_desc;
+
+/* Memory of one cell of any level, all its structures together (peak resident memory
+ * over the cell count, measured on large skins; docs/robustness.md). */
+#define SK_SKIN_BYTES_PER_CELL 1600.0
 
 /* The desc with every zero field replaced by its default (the values the model uses). */
 sk_skin_desc sk_skin_desc_resolved(const sk_skin_desc *desc);
@@ -149,7 +156,8 @@ extern const sk_schema sk_skin_schema;
 typedef struct sk_skin sk_skin;
 
 /* Builds the cell hierarchy. Fails with SK_ERROR_INVALID_ARGUMENT for a bad desc,
- * SK_ERROR_LIMIT when it would have more than SK_SKIN_MAX_CELLS cells. */
+ * SK_ERROR_LIMIT when it would have more than SK_SKIN_MAX_CELLS cells or, with
+ * desc->max_memory, need more memory than that (both checked before building). */
 sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err);
 void sk_skin_destroy(sk_skin *skin);
 

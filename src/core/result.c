@@ -1,5 +1,6 @@
 /* Results, error details and range checks shared by every module (CONVENTIONS.md,
  * "Errors and files"). */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -76,11 +77,26 @@ sk_result sk_check_finite(sk_error *err, const char *name, double value)
     return SK_OK;
 }
 
+/* a == b at float precision (only where both are within the float range) */
+static bool same_as_float(double a, double b)
+{
+    return fabs(a) <= FLT_MAX && fabs(b) <= FLT_MAX && (float)a == (float)b;
+}
+
+bool sk_in_range_f(double value, double lo, double hi)
+{
+    if (!isfinite(value)) return false;
+    if (value < lo && !same_as_float(value, lo)) return false;
+    if (value > hi && !same_as_float(value, hi)) return false;
+    return true;
+}
+
 sk_result sk_check_range_f(sk_error *err, const char *name, double value, double lo, double hi)
 {
-    sk_result r = sk_check_finite(err, name, value);
-    if (r != SK_OK) return r;
-    if (value < lo || value > hi)
+    if (!isfinite(value))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s is not a finite number (got %g; accepted: [%g, %g])",
+                       name, value, lo, hi);
+    if (!sk_in_range_f(value, lo, hi))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %g is out of range [%g, %g]", name,
                        value, lo, hi);
     return SK_OK;

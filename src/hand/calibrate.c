@@ -66,6 +66,15 @@ sk_result sk_hand_calibrate(const double *const columns[SK_HAND_DOF_COUNT], int 
         else
             fits[k].weight = fmax(min_ms, floor_ms) / fmax(ms, floor_ms);
     }
+    /* sums of huge samples overflow: a row that is not finite would be written as null */
+    for (int k = 0; k < pair_count; k++) {
+        const sk_hand_fit *f = &fits[k];
+        if (!isfinite(f->slope) || !isfinite(f->intercept) || !isfinite(f->mean_sq_distance) ||
+            !isfinite(f->weight))
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "pair %s:%s: the fit overflows (samples too large to square)",
+                           sk_hand_dof(f->dof_x)->name, sk_hand_dof(f->dof_y)->name);
+    }
     return SK_OK;
 }
 

@@ -1,5 +1,6 @@
 /* Stick-figure frames of an animation (thesis 4.2.2-4.2.3): one layout fitted over every
  * frame so the frames line up, drawn and written in parallel as numbered PNG files. */
+#define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>

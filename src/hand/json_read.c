@@ -1,26 +1,21 @@
 /* Strict JSON reading for the hand's data files (constraint sets, anatomy, keyframes):
- * unknown keys, wrong types and out-of-range numbers are errors naming the key path. */
+ * the library's one JSON reader (io/json_strict.h: trailing text, repeated keys and
+ * inexact integers refused), then unknown keys, wrong types and out-of-range numbers are
+ * errors naming the key path. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "hand/hand_private.h"
+#include "io/json_strict.h"
 #include "shitsukan/io.h"
 
 sk_result sk_hand__json_parse(const char *text, size_t length, const char *source_name,
                               cJSON **out, sk_error *err)
 {
-    const char *end = NULL;
-    cJSON *root = cJSON_ParseWithLengthOpts(text, length, &end, false);
-    if (!root) {
-        int line = 1;
-        const char *stop = end && end >= text && end <= text + length ? end : text;
-        for (const char *c = text; c < stop; c++) line += *c == '\n';
-        (void)source_name;
-        return sk_fail(err, SK_ERROR_PARSE, "line %d: malformed JSON", line);
-    }
-    *out = root;
-    return SK_OK;
+    /* the callers prefix errors with the source name */
+    (void)source_name;
+    return sk__json_parse(text, length, NULL, out, err);
 }
 
 sk_result sk_hand__json_check_keys(const cJSON *object, const char *path,
@@ -98,8 +93,7 @@ sk_result sk_hand__write_text_file(const char *path, const char *text, sk_error 
     if (r != SK_OK) return r;
     size_t n = strlen(text);
     if (fwrite(text, 1, n, file.fp) != n) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+        return sk_atomic_file_write_failed(&file, err);
     }
     return sk_atomic_file_commit(&file, err);
 }

@@ -53,9 +53,6 @@ sk_result sk_hand_landmarks_write(const sk_hand_skeleton *s, const double *dofs,
         if (json) ok &= fprintf(fp, "]%s\n", f + 1 < frame_count ? "," : "") > 0;
     }
     if (json) ok &= fprintf(fp, " ]}\n") > 0;
-    if (!ok) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
-    }
+    if (!ok) return sk_atomic_file_write_failed(&file, err);
     return sk_atomic_file_commit(&file, err);
 }

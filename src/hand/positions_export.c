@@ -49,8 +49,7 @@ sk_result sk_hand_positions_write(const sk_hand_skeleton *s, const double *dofs,
     r = format == SK_HAND_POSITIONS_JSON ? write_json(file.fp, s, dofs, frames)
                                          : write_csv(file.fp, s, dofs, frames);
     if (r != SK_OK) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+        return sk_atomic_file_write_failed(&file, err);
     }
     return sk_atomic_file_commit(&file, err);
 }
@@ -72,8 +71,7 @@ sk_result sk_hand_angles_write_csv(const double *dofs, int frames, double frame_
         fputc('\n', file.fp);
     }
     if (ferror(file.fp)) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+        return sk_atomic_file_write_failed(&file, err);
     }
     return sk_atomic_file_commit(&file, err);
 }

@@ -122,6 +122,37 @@ sk_result sk_hand__surface_finish(sk_hand_surface *s, sk_error *err)
     return SK_OK;
 }
 
+/* The meshing grid step: 2 mm at the default hand size resolves the gaps between the
+   fingers; finer for meshes denser than the default. */
+static double grid_step(const sk_hand_skeleton *right, const sk_hand_surface_desc *d, int triangles)
+{
+    if (d->cell_mm != 0.0) return d->cell_mm;
+    double cell = 2.0 * right->hand_breadth_mm / 85.0 * fmin(1.0, sqrt(8000.0 / triangles));
+    return fmax(cell, 0.35);
+}
+
+/* Bytes per unit of hand length x breadth / cell^2 (mm^2 / mm^2), and the fixed part:
+   fitted to the peak resident memory of 8000, 50000 and 200000 triangles (29, 132 and
+   500 MB at 190 x 85 mm), rounded up. */
+#define SURFACE_BYTES_PER_AREA_CELL 5200.0
+#define SURFACE_BYTES_FIXED (16.0 * 1048576.0)
+
+double sk_hand_surface_memory(const sk_hand_skeleton *skeleton, const sk_hand_surface_desc *desc)
+{
+    sk_hand_surface_desc d = {0};
+    if (desc) d = *desc;
+    int triangles = d.triangles > 0 ? d.triangles : 8000;
+    sk_hand_skeleton fallback;
+    if (!skeleton) {
+        if (sk_hand_skeleton_init(&fallback, NULL, NULL) != SK_OK) return SURFACE_BYTES_FIXED;
+        skeleton = &fallback;
+    }
+    double cell = grid_step(skeleton, &d, triangles);
+    if (!(cell > 0)) cell = 0.2;
+    return SURFACE_BYTES_FIXED +
+           SURFACE_BYTES_PER_AREA_CELL * skeleton->hand_length_mm * skeleton->hand_breadth_mm / (cell * cell);
+}
+
 sk_result sk_hand_surface_create(sk_hand_surface **out, const sk_hand_skeleton *skeleton,
                                  const sk_hand_surface_desc *desc, sk_error *err)
 {
@@ -145,13 +176,7 @@ sk_result sk_hand_surface_create(sk_hand_surface **out, const sk_hand_skeleton *
     s->right = *skeleton;
     s->right.side = SK_HAND_SIDE_RIGHT;
     sk_hand__field_build(&s->field, &s->right, &s->flesh);
-    /* 2 mm at the default hand size resolves the gaps between the fingers; finer for
-       meshes denser than the default */
-    double cell = d.cell_mm;
-    if (cell == 0.0) {
-        cell = 2.0 * s->right.hand_breadth_mm / 85.0 * fmin(1.0, sqrt(8000.0 / triangles));
-        cell = fmax(cell, 0.35);
-    }
+    double cell = grid_step(&s->right, &d, triangles);
     sk_hand__trimesh tm;
     r = sk_hand__extract(&s->field, cell, &tm, err);
     if (r == SK_OK) r = sk_hand__simplify(&tm, (size_t)triangles, err);

@@ -103,6 +103,13 @@ typedef struct texel {
     double nail;
 } texel;
 
+double sk_hand_texture_memory(const sk_hand_texture_desc *desc)
+{
+    double n = desc && desc->size > 0 ? desc->size : 1024;
+    /* the texels being baked, the height field, the albedo and the normal map */
+    return n * n * (double)(sizeof(texel) + sizeof(float) + 2 * 3 * sizeof(float));
+}
+
 sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_desc *desc, sk_image *albedo,
                                sk_image *normal_map, sk_error *err)
 {

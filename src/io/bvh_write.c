@@ -136,9 +136,6 @@ sk_result sk_bvh_write(const sk_bvh *b, const char *path, sk_error *err)
     sk_atomic_file file;
     sk_result r = sk_atomic_file_open(&file, path, err);
     if (r != SK_OK) return r;
-    if (sk_bvh_write_stream(b, file.fp) != SK_OK) {
-        sk_atomic_file_abort(&file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
-    }
+    if (sk_bvh_write_stream(b, file.fp) != SK_OK) return sk_atomic_file_write_failed(&file, err);
     return sk_atomic_file_commit(&file, err);
 }

@@ -8,12 +8,18 @@
 
 #include "io/exr_internal.h"
 
+/* The I/O state of the context this thread set up last. The error handler cannot ask the
+   context for its user data: OpenEXRCore reports write errors with the context's lock held,
+   and exr_get_user_data takes that lock again (a deadlock on a full disk). Every context is
+   made from sk__exr_initializer on the thread that uses it, so this names its state. */
+static _Thread_local sk__exr_io *t_io;
+
 static void on_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
 {
+    (void)ctxt;
     (void)code;
-    void *user = NULL;
-    if (exr_get_user_data(ctxt, &user) != EXR_ERR_SUCCESS || !user) return;
-    sk__exr_io *io = user;
+    sk__exr_io *io = t_io;
+    if (!io) return;
     /* The first message names the root cause; later ones only echo the failure. */
     if (!io->message[0]) snprintf(io->message, sizeof io->message, "%s", msg ? msg : "");
 }
@@ -66,6 +72,7 @@ static int64_t io_write(exr_const_context_t ctxt, void *user, const void *buffer
 exr_context_initializer_t sk__exr_initializer(sk__exr_io *io, bool writing)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    t_io = io;
     init.error_handler_fn = on_error;
     init.user_data = io;
     if (writing) {

@@ -264,7 +264,7 @@ sk_result sk_image_read_exr(sk_image *image, const char *path, sk_image_metadata
     struct stat st;
     if (fstat(r.io.fd, &st) != 0 || !S_ISREG(st.st_mode)) {
         close(r.io.fd);
-        return sk_fail(err, SK_ERROR_IO, "%s: not a regular file", path);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: not a regular file", path);
     }
     r.io.size = (int64_t)st.st_size;
     exr_context_initializer_t init = sk__exr_initializer(&r.io, false);

@@ -19,7 +19,7 @@ sk_result sk_read_file(const char *path, size_t max_bytes, char **out_data, size
     struct stat st;
     if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode)) {
         fclose(fp);
-        return sk_fail(err, SK_ERROR_IO, "%s: not a regular file", path);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: not a regular file", path);
     }
     if ((unsigned long long)st.st_size > (unsigned long long)max_bytes) {
         fclose(fp);

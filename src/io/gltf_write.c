@@ -381,8 +381,7 @@ sk_result sk_gltf_write_glb(const sk_gltf *gltf, const char *path, const sk_gltf
     sk_atomic_file file;
     if ((r = sk_atomic_file_open(&file, path, err)) == SK_OK) {
         if (fwrite(data, 1, size, file.fp) != size) {
-            sk_atomic_file_abort(&file);
-            r = sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+            r = sk_atomic_file_write_failed(&file, err);
         } else {
             r = sk_atomic_file_commit(&file, err);
         }

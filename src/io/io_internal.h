@@ -8,6 +8,7 @@
 #include <stdarg.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "shitsukan/core.h"
 
@@ -35,5 +36,34 @@ void sk__c_locale_pop(sk__c_locale *state);
 bool sk__parse_double(const char *token, size_t len, double *out);
 /* Parses a whole token as a signed decimal integer in [INT64_MIN, INT64_MAX]. */
 bool sk__parse_int64(const char *token, size_t len, long long *out);
+
+/* ----- outputs (atomic_file.c, output_set.c, signal_cleanup.c) ----- */
+
+/* What an output path names once symbolic links are followed. */
+typedef enum sk__output_kind {
+    SK__OUTPUT_FILE,  /* a regular file or nothing yet: written beside it, renamed onto it */
+    SK__OUTPUT_STREAM /* a character device or FIFO (/dev/null, a pipe): written in place */
+} sk__output_kind;
+
+/* Resolves `path` for writing: a symbolic link is followed to its target (so the link is
+ * kept and the target replaced); folders, block devices and sockets are refused
+ * (SK_ERROR_INVALID_ARGUMENT). Writes the path to write (malloc'd) and its kind. */
+sk_result sk__output_resolve(const char *path, char **resolved, sk__output_kind *kind,
+                             sk_error *err);
+/* SK_ERROR_IO "<path>: cannot create file (<reason>)" unless the folder of `path` exists. */
+sk_result sk__output_folder_exists(const char *path, sk_error *err);
+
+/* A hidden sibling name of `path` for staging: "<dir>/.<name>.<8 hex digits><suffix>",
+ * the name shortened so that it fits NAME_MAX however long `path`'s last component is.
+ * `salt` picks the hex digits. Returns a malloc'd string or NULL. */
+char *sk__sibling_name(const char *path, const char *suffix, uint64_t salt);
+
+/* Registers a path to remove if SIGINT, SIGTERM or SIGHUP stops the process (a folder:
+ * its files and itself). The string must stay valid until unregistered. Returns the slot
+ * (-1 when the table is full), for sk__cleanup_unregister. */
+int sk__cleanup_register(const char *path, bool folder);
+void sk__cleanup_unregister(int slot);
+/* Removes every registered path now (what the signal handler does). */
+void sk__cleanup_now(void);
 
 #endif

@@ -15,8 +15,7 @@ sk_result sk__json_write_file(cJSON *root, const char *path, sk_error *err)
     sk_result r = sk_atomic_file_open(&file, path, err);
     if (r == SK_OK) {
         if (fputs(text, file.fp) < 0 || fputc('\n', file.fp) == EOF) {
-            sk_atomic_file_abort(&file);
-            r = sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+            r = sk_atomic_file_write_failed(&file, err);
         } else {
             r = sk_atomic_file_commit(&file, err);
         }

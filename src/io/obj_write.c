@@ -10,8 +10,7 @@
 #include "shitsukan/io.h"
 #include "shitsukan/mesh.h"
 
-/* "dir/name.obj" -> "dir/name.mtl" (the extension replaced, or appended if none). */
-static char *mtl_path_for(const char *obj_path)
+char *sk_obj_mtl_path(const char *obj_path)
 {
     const char *ext = sk__path_extension(obj_path);
     size_t stem = strlen(obj_path) - strlen(ext);
@@ -159,10 +158,12 @@ sk_result sk_mesh_write_obj(const sk_mesh *mesh, const char *path, const sk_obj_
         d.material_count = 1;
     }
     bool with_mtl = d.material_count > 0;
-    char *mtl_path = with_mtl ? mtl_path_for(path) : NULL;
+    if (d.mtl_name && (!d.mtl_name[0] || has_space_or_newline(d.mtl_name, false)))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "mtl_name must be non-empty and on one line");
+    char *mtl_path = with_mtl ? (d.mtl_path ? strdup(d.mtl_path) : sk_obj_mtl_path(path)) : NULL;
     if (with_mtl && !mtl_path) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     const char *slash = mtl_path ? strrchr(mtl_path, '/') : NULL;
-    const char *mtl_name = mtl_path ? (slash ? slash + 1 : mtl_path) : NULL;
+    const char *mtl_name = !mtl_path ? NULL : d.mtl_name ? d.mtl_name : slash ? slash + 1 : mtl_path;
     sk_atomic_file obj = {0}, mtl = {0};
     res = sk_atomic_file_open(&obj, path, err);
     if (res == SK_OK && mtl_path) res = sk_atomic_file_open(&mtl, mtl_path, err);

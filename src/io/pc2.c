@@ -51,10 +51,7 @@ sk_result sk_pc2_open(sk_pc2_writer *w, const char *path, int points, float star
     put_f32(h + 20, start_frame);
     put_f32(h + 24, sample_rate);
     put_u32(h + 28, (uint32_t)samples);
-    if (fwrite(h, 1, sizeof h, w->file.fp) != sizeof h) {
-        sk_atomic_file_abort(&w->file);
-        return sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
-    }
+    if (fwrite(h, 1, sizeof h, w->file.fp) != sizeof h) return sk_atomic_file_write_failed(&w->file, err);
     w->points = points;
     w->samples = samples;
     return SK_OK;
@@ -75,8 +72,7 @@ sk_result sk_pc2_append(sk_pc2_writer *w, const float *xyz, sk_error *err)
                                (i + k) / 3);
             put_f32(buf + 4 * k, xyz[i + k]);
         }
-        if (fwrite(buf, 4, chunk, w->file.fp) != chunk)
-            return sk_fail(err, SK_ERROR_IO, "%s: write failed", w->file.final_path);
+        if (fwrite(buf, 4, chunk, w->file.fp) != chunk) return sk_atomic_file_write_failed(&w->file, err);
         i += chunk;
     }
     w->written++;

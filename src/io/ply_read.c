@@ -4,6 +4,7 @@
  * checked against the file size and the read cap before anything is allocated. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -541,7 +542,7 @@ static sk_result read_value(ply_reader *r, ply_type t, bool first, double *out)
             *out = (double)v;
         } else if (!sk__parse_double(tok, len, out)) {
             return fail_record(r, SK_ERROR_PARSE, "number expected");
-        } else if (t == T_FLOAT32 && isfinite(*out) && !isfinite((float)*out)) {
+        } else if (t == T_FLOAT32 && isfinite(*out) && fabs(*out) > FLT_MAX) {
             return fail_record(r, SK_ERROR_PARSE, "value out of float range");
         }
         return SK_OK;
@@ -584,6 +585,12 @@ static sk_result store_vertex_value(ply_reader *r, const ply_property *p, size_t
     if (!isfinite(v)) {
         char what[96];
         snprintf(what, sizeof what, "%s is not a finite number", p->name);
+        return fail_record(r, SK_ERROR_PARSE, what);
+    }
+    /* every value is stored as float: a double beyond its range would become inf */
+    if (fabs(v) > FLT_MAX) {
+        char what[96];
+        snprintf(what, sizeof what, "%s is out of float range", p->name);
         return fail_record(r, SK_ERROR_PARSE, what);
     }
     switch (p->role) {
@@ -805,7 +812,7 @@ sk_result sk_mesh_read_ply(sk_mesh *mesh, const char *path, const sk_mesh_read_d
     struct stat st;
     if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode)) {
         fclose(fp);
-        return sk_fail(err, SK_ERROR_IO, "%s: not a regular file", path);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: not a regular file", path);
     }
     ply_reader *r = calloc(1, sizeof *r);
     if (!r) {

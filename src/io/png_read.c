@@ -219,6 +219,11 @@ sk_result sk_image_read_png(sk_image *image, const char *path, const sk_png_read
     if (!fp)
         return sk_fail(err, errno == ENOENT ? SK_ERROR_NOT_FOUND : SK_ERROR_IO,
                        "%s: cannot open (%s)", path, strerror(errno));
+    struct stat st;
+    if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode)) {
+        fclose(fp);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: not a regular file", path);
+    }
     unsigned char signature[8];
     size_t got = fread(signature, 1, sizeof signature, fp);
     if (got != sizeof signature || png_sig_cmp(signature, 0, sizeof signature) != 0) {
@@ -233,11 +238,10 @@ sk_result sk_image_read_png(sk_image *image, const char *path, const sk_png_read
         fclose(fp);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     }
-    struct stat st;
     r->path = path;
     r->err = err;
     r->fp = fp;
-    r->file_size = fstat(fileno(fp), &st) == 0 ? (long long)st.st_size : 0;
+    r->file_size = (long long)st.st_size;
     r->encoding = encoding;
     r->image = image;
     r->metadata = metadata;

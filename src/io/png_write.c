@@ -430,6 +430,7 @@ sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_p
     if (r != SK_OK) return r;
     sk__png_sink sink = {file_write, file.fp};
     r = encode(image, &d, &sink, path, err);
+    if (r == SK_ERROR_IO && ferror(file.fp)) return sk_atomic_file_write_failed(&file, err); /* names the reason */
     if (r != SK_OK) {
         sk_atomic_file_abort(&file);
         return r;

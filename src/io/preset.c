@@ -1,12 +1,13 @@
 /* Presets: JSON parameter trees (cJSON), loading with line/column errors, and "--set
  * key.path=value" edits applied before the tree is bound to a desc. */
 #define _POSIX_C_SOURCE 200809L
-#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
+#include "io/json_strict.h"
 #include "io/preset_tree.h"
 #include "shitsukan/io.h"
 
@@ -39,46 +40,14 @@ void sk_preset_free(sk_preset *preset)
     free(preset);
 }
 
-/* Line and column (1-based) of byte `offset` in text. */
-static void line_col(const char *text, size_t offset, int *line, int *col)
-{
-    *line = 1;
-    *col = 1;
-    for (size_t i = 0; i < offset && text[i]; i++) {
-        if (text[i] == '\n') {
-            (*line)++;
-            *col = 1;
-        } else {
-            (*col)++;
-        }
-    }
-}
-
 sk_result sk_preset_parse(sk_preset **out, const char *text, size_t length,
                           const char *source_name, sk_error *err)
 {
     *out = NULL;
     const char *name = source_name ? source_name : "preset";
-    if (memchr(text, '\0', length))
-        return sk_fail(err, SK_ERROR_PARSE, "%s: contains a NUL byte", name);
-    const char *end = NULL;
-    cJSON *root = cJSON_ParseWithLengthOpts(text, length, &end, false);
-    if (!root) {
-        size_t offset = end && end >= text ? (size_t)(end - text) : 0;
-        int line, col;
-        line_col(text, offset, &line, &col);
-        return sk_fail(err, SK_ERROR_PARSE, "%s:%d:%d: malformed JSON", name, line, col);
-    }
-    /* only white space may follow the value */
-    for (const char *c = end; c && c < text + length; c++) {
-        if (!isspace((unsigned char)*c)) {
-            int line, col;
-            line_col(text, (size_t)(c - text), &line, &col);
-            cJSON_Delete(root);
-            return sk_fail(err, SK_ERROR_PARSE, "%s:%d:%d: unexpected text after the JSON value",
-                           name, line, col);
-        }
-    }
+    cJSON *root = NULL;
+    sk_result r = sk__json_parse(text, length, name, &root, err);
+    if (r != SK_OK) return r;
     if (!cJSON_IsObject(root)) {
         cJSON_Delete(root);
         return sk_fail(err, SK_ERROR_PARSE, "%s: the top level must be a JSON object", name);
@@ -169,16 +138,33 @@ static sk_result parse_path(const char *path, size_t len, path_step *steps, int 
     return SK_OK;
 }
 
-/* Parses the value of an assignment: JSON if it is JSON, else a number (so "nan" and
- * "inf" reach the binder, which names the key), else a plain string. */
-static cJSON *parse_value(const char *text)
+/* "nan", "inf", "-Infinity", ...: not JSON, but parsed as numbers so that the binder
+   names the key in its "not a finite number" error. */
+static bool is_non_finite_word(const char *text)
 {
-    cJSON *v = cJSON_Parse(text);
-    if (v) return v;
-    char *endp;
-    double d = strtod(text, &endp);
-    if (endp != text && *endp == '\0') return cJSON_CreateNumber(d);
-    return cJSON_CreateString(text);
+    static const char *const words[] = {"nan", "inf", "infinity", NULL};
+    const char *t = (text[0] == '-' || text[0] == '+') ? text + 1 : text;
+    for (int i = 0; words[i]; i++)
+        if (strcasecmp(t, words[i]) == 0) return true;
+    return false;
+}
+
+/* Parses the value of an assignment: the whole text as JSON (a number, true/false, null,
+ * array, object or quoted string), else a non-finite number word, else a plain string
+ * (so "5junk" or "0x10" reach the binder as strings, which names the key and the type it
+ * expects). JSON that is refused (an inexact integer, a repeated key) is an error. */
+static sk_result parse_value(const char *assignment, const char *text, cJSON **out, sk_error *err)
+{
+    sk_error parse_err = {0};
+    sk_result r = sk__json_parse(text, strlen(text), "", out, &parse_err);
+    if (r == SK_OK) return SK_OK;
+    if (r != SK_ERROR_PARSE) {
+        return sk_fail(err, r, "--set '%s': %s", assignment, parse_err.message);
+    }
+    *out = is_non_finite_word(text) ? cJSON_CreateNumber(strtod(text, NULL))
+                                    : cJSON_CreateString(text);
+    if (!*out) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    return SK_OK;
 }
 
 sk_result sk_preset_set(sk_preset *preset, const char *assignment, sk_error *err)
@@ -191,8 +177,9 @@ sk_result sk_preset_set(sk_preset *preset, const char *assignment, sk_error *err
     int count;
     sk_result r = parse_path(assignment, (size_t)(eq - assignment), steps, &count, err);
     if (r != SK_OK) return r;
-    cJSON *value = parse_value(eq + 1);
-    if (!value) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    cJSON *value = NULL;
+    r = parse_value(assignment, eq + 1, &value, err);
+    if (r != SK_OK) return r;
     bool remove = cJSON_IsNull(value);
 
     cJSON *node = preset->root;

@@ -38,6 +38,9 @@ static const char *json_type_name(const cJSON *item)
 static sk_result type_error(sk_error *err, const char *path, const char *expected,
                             const cJSON *item)
 {
+    if (cJSON_IsString(item))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: expected %s, got the string \"%.64s\"",
+                       path, expected, item->valuestring);
     return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: expected %s, got %s", path, expected,
                    json_type_name(item));
 }

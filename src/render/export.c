@@ -195,6 +195,38 @@ sk_result sk__export_build(const sk_render_scene *scene, const sk_render_export_
     return SK_OK;
 }
 
+/* Bytes of an export copy of a mesh of v vertices and t triangles: positions, normals,
+   uvs and tangents, and the indices. */
+static double mesh_bytes(double v, double t) { return v * (12 + 12 + 8 + 16) + t * 12; }
+
+double sk_render_scene_export_memory(const sk_render_scene *scene, const sk_render_export_desc *desc)
+{
+    double size = desc && desc->texture_size > 0 ? desc->texture_size : DEFAULT_TEXTURE_SIZE;
+    bool textures = !(desc && desc->no_textures);
+    double texels = size * size, bytes = 0;
+    for (int i = 0; i < scene->instance_count; i++) {
+        const sk__instance *in = &scene->instances[i];
+        const sk_mesh *m = &scene->meshes[in->mesh].mesh;
+        double v = (double)m->vertex_count, t = (double)m->triangle_count;
+        if (textures && scene->materials[in->material].wood)
+            /* unwelded onto the atlas; the texture and the texel owners while baking */
+            bytes += mesh_bytes(3 * t, t) + texels * (12 + 8);
+        else
+            bytes += mesh_bytes(v, t);
+    }
+    for (int k = 0; textures && k < scene->material_count; k++) {
+        const sk__material *m = &scene->materials[k];
+        if (m->skin) bytes += texels * (12 + 16); /* the normal tile and the skin's pixels */
+        int maps[2] = {m->albedo_texture, m->normal_map};
+        for (int j = 0; j < 2 && !m->skin; j++)
+            if (maps[j] >= 0)
+                bytes += 12.0 * scene->textures[maps[j]].image.width * scene->textures[maps[j]].image.height;
+    }
+    /* the writers put the meshes together once more (one OBJ mesh, the GLB buffer), with the
+       encoded textures */
+    return 2 * bytes;
+}
+
 sk_result sk_render_scene_export(const sk_render_scene *scene, const char *path,
                                  const sk_render_export_desc *desc, sk_error *err)
 {
@@ -205,11 +237,24 @@ sk_result sk_render_scene_export(const sk_render_scene *scene, const char *path,
                        "%s: the export format follows the extension, .glb or .obj", path);
     sk_render_export_desc d = {0};
     if (desc) d = *desc;
+    /* the files are reserved (their paths checked) before the baking */
+    sk_output_set *own = NULL, *set = d.outputs;
+    sk_result r = set ? SK_OK : sk_output_set_create(&own, err);
+    if (!set) set = own;
+    sk__export_files files = {.set = set, .path = path};
+    if (r == SK_OK) r = sk_output_set_file(set, path, &files.staged, err);
+    char *mtl = obj && r == SK_OK ? sk_obj_mtl_path(path) : NULL;
+    if (obj && r == SK_OK && !mtl) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    if (mtl && r == SK_OK) r = sk_output_set_file(set, mtl, &files.staged_mtl, err);
+    files.mtl = mtl;
     sk__export e;
-    sk_result r = sk__export_build(scene, &d, &e, err);
-    if (r != SK_OK) return r;
-    r = glb ? sk__export_write_glb(scene, &e, path, err)
-            : sk__export_write_obj(scene, &e, path, err);
-    sk__export_free(&e);
+    if (r == SK_OK && (r = sk__export_build(scene, &d, &e, err)) == SK_OK) {
+        r = glb ? sk__export_write_glb(scene, &e, files.staged, err)
+                : sk__export_write_obj(scene, &e, &files, err);
+        sk__export_free(&e);
+    }
+    free(mtl);
+    if (own && r == SK_OK) r = sk_output_set_commit(own, err);
+    else if (own) sk_output_set_abort(own);
     return r;
 }

@@ -79,7 +79,14 @@ sk_vec3f sk__export_wood_mean(const sk_render_scene *scene, int object);
 /* ---- writers */
 sk_result sk__export_write_glb(const sk_render_scene *scene, const sk__export *e, const char *path,
                                sk_error *err);
-sk_result sk__export_write_obj(const sk_render_scene *scene, const sk__export *e, const char *path,
-                               sk_error *err);
+/* The OBJ export's files in an output set: the OBJ and its MTL reserved (final and staged
+   names), the textures reserved by the writer beside the OBJ. */
+typedef struct sk__export_files {
+    sk_output_set *set;
+    const char *path, *staged;    /* the .obj */
+    const char *mtl, *staged_mtl; /* its .mtl */
+} sk__export_files;
+sk_result sk__export_write_obj(const sk_render_scene *scene, const sk__export *e,
+                               const sk__export_files *files, sk_error *err);
 
 #endif

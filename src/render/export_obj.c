@@ -62,9 +62,10 @@ static void texture_names(const char *obj_path, const char *material, char *path
     snprintf(path, path_size, "%.*s%s", (int)(base - obj_path), obj_path, name);
 }
 
-sk_result sk__export_write_obj(const sk_render_scene *scene, const sk__export *e, const char *path,
-                               sk_error *err)
+sk_result sk__export_write_obj(const sk_render_scene *scene, const sk__export *e,
+                               const sk__export_files *files, sk_error *err)
 {
+    const char *path = files->path;
     size_t nv = 0, nt = 0;
     bool normals = true, uvs = false;
     for (int i = 0; i < e->object_count; i++) {
@@ -107,17 +108,22 @@ sk_result sk__export_write_obj(const sk_render_scene *scene, const sk__export *e
             material_names[k], {m->base_color[0], m->base_color[1], m->base_color[2]}, NULL};
         if (!m->base_texture.data) continue;
         char file[4096];
+        const char *staged = NULL;
         texture_names(path, material_names[k], file, sizeof file, texture_files[k],
                       sizeof texture_files[k]);
         materials[k].texture_path = texture_files[k];
-        r = sk_image_write_png(&m->base_texture, file, NULL, err);
+        r = sk_output_set_file(files->set, file, &staged, err);
+        if (r == SK_OK) r = sk_image_write_png(&m->base_texture, staged, NULL, err);
     }
     if (r == SK_OK) {
+        const char *slash = strrchr(files->mtl, '/');
         sk_obj_write_desc d = {.materials = materials,
                                .material_count = e->material_count,
                                .groups = groups,
-                               .group_count = e->object_count};
-        r = sk_mesh_write_obj(&world, path, &d, err);
+                               .group_count = e->object_count,
+                               .mtl_path = files->staged_mtl,
+                               .mtl_name = slash ? slash + 1 : files->mtl};
+        r = sk_mesh_write_obj(&world, files->staged, &d, err);
     }
     free(materials);
     free(groups);

@@ -78,7 +78,7 @@ static sk_result check_f(sk_error *err, double v, double lo, double hi, const ch
     __attribute__((format(printf, 5, 6)));
 static sk_result check_f(sk_error *err, double v, double lo, double hi, const char *fmt, ...)
 {
-    if (isfinite(v) && v >= lo && v <= hi) return SK_OK;
+    if (sk_in_range_f(v, lo, hi)) return SK_OK;
     char name[PATH];
     va_list ap;
     va_start(ap, fmt);

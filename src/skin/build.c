@@ -110,6 +110,15 @@ sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
                         SK_SKIN_MAX_CELLS);
             goto fail;
         }
+        if (desc->max_memory > 0 && estimate * SK_SKIN_BYTES_PER_CELL > desc->max_memory) {
+            r = sk_fail(err, SK_ERROR_LIMIT,
+                        "levels[%d].spacing_mm = %g on a %g x %g mm tile (size_mm) makes about "
+                        "%.3g cells needing about %.1f GiB, more than the memory cap of %.1f GiB",
+                        k, lv->spacing_mm, skin->period[0], skin->period[1], estimate,
+                        estimate * SK_SKIN_BYTES_PER_CELL / 1073741824.0,
+                        desc->max_memory / 1073741824.0);
+            goto fail;
+        }
     }
 
     size_t total = 0;

@@ -205,6 +205,34 @@ sk_result sk_tissue_model_build(const sk_tissue_character_desc *desc, const sk_t
     return SK_OK;
 }
 
+sk_result sk_tissue_model_memory(const sk_tissue_character_desc *desc, double *bytes, int grid[3], sk_error *err)
+{
+    *bytes = 0;
+    if (!desc) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "character desc is NULL");
+    sk_tissue_model *m = calloc(1, sizeof *m);
+    sk__tissue_shapes *shapes = malloc(sizeof *shapes);
+    sk_result r = m && shapes ? SK_OK : sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    if (r == SK_OK) {
+        m->desc = *desc;
+        sk_tissue_character_desc_resolve(&m->desc);
+        r = sk_tissue_character_desc_validate(&m->desc, err);
+    }
+    if (r == SK_OK) r = sk__skeleton_build(&m->desc, &m->skeleton, err);
+    if (r == SK_OK) r = sk__bones_build(&m->desc, &m->skeleton, m->bones, err);
+    if (r == SK_OK) r = sk__muscles_build(&m->desc, &m->skeleton, m->bones, m->muscles, err);
+    if (r == SK_OK) {
+        rest_shapes(m, shapes);
+        r = make_grid(m, shapes, &m->grid, err);
+    }
+    if (r == SK_OK) {
+        *bytes = SK_TISSUE_BYTES_PER_GRID_POINT * (double)m->grid.count;
+        for (int k = 0; grid && k < 3; k++) grid[k] = m->grid.n[k];
+    }
+    free(shapes);
+    sk_tissue_model_destroy(m);
+    return r;
+}
+
 void sk_tissue_model_destroy(sk_tissue_model *m)
 {
     if (!m) return;

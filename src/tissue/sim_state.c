@@ -105,8 +105,7 @@ sk_result sk_tissue_sim_save_state_file(const sk_tissue_sim *s, const char *path
     if (r == SK_OK) r = sk_atomic_file_open(&f, path, err);
     if (r == SK_OK) {
         if (fwrite(buf, 1, size, f.fp) != size) {
-            sk_atomic_file_abort(&f);
-            r = sk_fail(err, SK_ERROR_IO, "%s: write failed", path);
+            r = sk_atomic_file_write_failed(&f, err);
         } else {
             r = sk_atomic_file_commit(&f, err);
         }

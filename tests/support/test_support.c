@@ -48,8 +48,10 @@ int sk_test_cli(sk_test_run *run, const char *args_fmt, ...)
     snprintf(out_path, sizeof out_path, "%s/cli-%d.out", SK_TEST_TMP_DIR, (int)getpid());
     snprintf(err_path, sizeof err_path, "%s/cli-%d.err", SK_TEST_TMP_DIR, (int)getpid());
     char cmd[12288];
-    snprintf(cmd, sizeof cmd, "'%s' %s >'%s' 2>'%s' </dev/null", SK_TEST_CLI, args, out_path,
-             err_path);
+    /* SK_TEST_CLI_WRAPPER (e.g. valgrind and its options) runs the command under a tool */
+    const char *wrapper = getenv("SK_TEST_CLI_WRAPPER");
+    snprintf(cmd, sizeof cmd, "%s '%s' %s >'%s' 2>'%s' </dev/null", wrapper ? wrapper : "",
+             SK_TEST_CLI, args, out_path, err_path);
     int status = system(cmd);
     run->status = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
     read_all(out_path, run->out, sizeof run->out);

@@ -17,7 +17,8 @@ const char *sk_test_path(const char *name);
 
 /* Runs the shitsukan command with a shell-quoted argument string (e.g. "skin --help"),
  * captures stdout and stderr (each truncated to the buffer size) and returns the exit
- * status (or -1 if it did not exit normally). */
+ * status (or -1 if it did not exit normally). $SK_TEST_CLI_WRAPPER, if set, is put before
+ * the command (make test-valgrind runs it under valgrind this way). */
 typedef struct sk_test_run {
     int status;
     char out[65536];
