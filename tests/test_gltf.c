@@ -14,6 +14,7 @@
 
 #include <cjson/cJSON.h>
 
+#include "gltf_read_back.h"
 #include "gltf_samples.h"
 #include "shitsukan/gltf.h"
 #include "shitsukan/image.h"
@@ -47,33 +48,7 @@ static void make_grid(sk_mesh *m)
         }
 }
 
-static sk_gltf_doc *write_and_read(const sk_gltf *g, uint8_t **bytes, size_t *size)
-{
-    uint8_t *data;
-    size_t n;
-    SK_ASSERT_OK(sk_gltf_write_glb_memory(g, NULL, &data, &n, &e_));
-    sk_gltf_doc *doc = NULL;
-    SK_ASSERT_OK(sk_gltf_read_glb_memory(&doc, data, n, NULL, &e_));
-    if (bytes) {
-        *bytes = data;
-        *size = n;
-    } else {
-        free(data);
-    }
-    return doc;
-}
 
-static float *accessor(const sk_gltf_doc *doc, int index, size_t want_count, int want_components)
-{
-    float *v = NULL;
-    size_t count = 0;
-    int components = 0;
-    assert_true(index >= 0);
-    SK_ASSERT_OK(sk_gltf_doc_read_accessor(doc, index, &v, &count, &components, &e_));
-    assert_int_equal(count, want_count);
-    assert_int_equal(components, want_components);
-    return v;
-}
 
 static void assert_floats_equal(const float *a, const float *b, size_t n)
 {
@@ -217,7 +192,7 @@ static void test_static_roundtrip(void **state)
 
     uint8_t *bytes, *again, *file_bytes;
     size_t size, again_size, file_size;
-    sk_gltf_doc *doc = write_and_read(g, &bytes, &size);
+    sk_gltf_doc *doc = sk_test_gltf_read_back(g, &bytes, &size);
     /* deterministic: the same document gives the same bytes, in memory and in a file */
     SK_ASSERT_OK(sk_gltf_write_glb_memory(g, NULL, &again, &again_size, &e_));
     assert_int_equal(size, again_size);
@@ -248,25 +223,25 @@ static void test_static_roundtrip(void **state)
     assert_int_equal(dn.mesh, mesh);
     assert_true(dn.rotation[3] == 1 && dn.scale[0] == 1);
 
-    float *p = accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "POSITION"), 9, 3);
+    float *p = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "POSITION"), 9, 3);
     assert_floats_equal(p, grid.positions, 27);
-    float *nn = accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "NORMAL"), 9, 3);
+    float *nn = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "NORMAL"), 9, 3);
     assert_floats_equal(nn, grid.normals, 27);
-    float *col = accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "COLOR_0"), 9, 3);
+    float *col = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "COLOR_0"), 9, 3);
     assert_floats_equal(col, grid.colors, 27);
-    float *uv = accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "TEXCOORD_0"), 9, 2);
+    float *uv = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "TEXCOORD_0"), 9, 2);
     for (int v = 0; v < 9; v++) {
         assert_true(uv[2 * v] == grid.uvs[2 * v]);
         assert_true(uv[2 * v + 1] == 1.0f - grid.uvs[2 * v + 1]); /* glTF's top-left origin */
     }
-    float *tan = accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "TANGENT"), 9, 4);
+    float *tan = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "TANGENT"), 9, 4);
     for (int v = 0; v < 9; v++) {
         assert_true(fabsf(tan[4 * v + 3]) == 1.0f);
         float len = sqrtf(tan[4 * v] * tan[4 * v] + tan[4 * v + 1] * tan[4 * v + 1] +
                           tan[4 * v + 2] * tan[4 * v + 2]);
         assert_true(fabsf(len - 1.0f) < 1e-6f);
     }
-    float *ix = accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "indices"), 24, 1);
+    float *ix = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "indices"), 24, 1);
     for (int i = 0; i < 24; i++) assert_true(ix[i] == (float)grid.indices[i]);
     assert_int_equal(sk_gltf_doc_mesh_accessor(doc, mesh, "JOINTS_0"), -1);
     assert_int_equal(sk_gltf_doc_mesh_target_count(doc, mesh), 0);
@@ -376,14 +351,14 @@ static void test_skin_roundtrip(void **state)
                                      SK_GLTF_INTERPOLATION_STEP, times, 3, move, &e_));
     SK_ASSERT_OK(sk_gltf_add_channel(c.g, c.anim, c.joints[2], SK_GLTF_PATH_SCALE,
                                      SK_GLTF_INTERPOLATION_LINEAR, other_times, 2, grow, &e_));
-    sk_gltf_doc *doc = write_and_read(c.g, NULL, NULL);
+    sk_gltf_doc *doc = sk_test_gltf_read_back(c.g, NULL, NULL);
     assert_int_equal(sk_gltf_doc_count(doc).skins, 1);
     const int *joints;
     int joint_count, ibm;
     SK_ASSERT_OK(sk_gltf_doc_get_skin(doc, 0, &joints, &joint_count, &ibm, &e_));
     assert_int_equal(joint_count, 3);
     for (int k = 0; k < 3; k++) assert_int_equal(joints[k], c.joints[k]);
-    float *m = accessor(doc, ibm, 3, 16);
+    float *m = sk_test_gltf_accessor(doc, ibm, 3, 16);
     /* inverse bind matrix x world transform of the joint (composed here from the read
        nodes' TRS) is the identity */
     for (int k = 0; k < 3; k++) {
@@ -408,8 +383,8 @@ static void test_skin_roundtrip(void **state)
     SK_ASSERT_OK(sk_gltf_doc_get_node(doc, c.body, &body, &e_));
     assert_int_equal(body.skin, 0);
     assert_int_equal(body.mesh, c.mesh);
-    float *jw = accessor(doc, sk_gltf_doc_mesh_accessor(doc, c.mesh, "JOINTS_0"), 9, 4);
-    float *ww = accessor(doc, sk_gltf_doc_mesh_accessor(doc, c.mesh, "WEIGHTS_0"), 9, 4);
+    float *jw = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, c.mesh, "JOINTS_0"), 9, 4);
+    float *ww = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, c.mesh, "WEIGHTS_0"), 9, 4);
     for (int v = 0; v < 9; v++) {
         float sum = 0.0f; /* summed in float, in slot order, as the validator does */
         for (int k = 0; k < 4; k++) {
@@ -438,13 +413,13 @@ static void test_skin_roundtrip(void **state)
     /* identical key times share one accessor */
     assert_int_equal(ch[0].input_accessor, ch[1].input_accessor);
     assert_true(ch[2].input_accessor != ch[0].input_accessor);
-    float *tt = accessor(doc, ch[0].input_accessor, 3, 1);
+    float *tt = sk_test_gltf_accessor(doc, ch[0].input_accessor, 3, 1);
     assert_floats_equal(tt, times, 3);
-    float *rv = accessor(doc, ch[0].output_accessor, 3, 4);
+    float *rv = sk_test_gltf_accessor(doc, ch[0].output_accessor, 3, 4);
     assert_floats_equal(rv, rot, 12);
-    float *mv = accessor(doc, ch[1].output_accessor, 3, 3);
+    float *mv = sk_test_gltf_accessor(doc, ch[1].output_accessor, 3, 3);
     assert_floats_equal(mv, move, 9);
-    float *gv = accessor(doc, ch[2].output_accessor, 2, 3);
+    float *gv = sk_test_gltf_accessor(doc, ch[2].output_accessor, 2, 3);
     assert_floats_equal(gv, grow, 6);
     free(m), free(jw), free(ww), free(tt), free(rv), free(mv), free(gv);
     sk_gltf_doc_free(doc);
@@ -458,9 +433,9 @@ static void test_skin_roundtrip(void **state)
     make_chain(&d, given);
     SK_ASSERT_OK(sk_gltf_add_channel(d.g, d.anim, d.joints[0], SK_GLTF_PATH_ROTATION, 0, times, 1,
                                      rot, &e_));
-    doc = write_and_read(d.g, NULL, NULL);
+    doc = sk_test_gltf_read_back(d.g, NULL, NULL);
     SK_ASSERT_OK(sk_gltf_doc_get_skin(doc, 0, &joints, &joint_count, &ibm, &e_));
-    m = accessor(doc, ibm, 3, 16);
+    m = sk_test_gltf_accessor(doc, ibm, 3, 16);
     assert_floats_equal(m, given, 48);
     free(m);
     sk_gltf_doc_free(doc);
@@ -503,11 +478,11 @@ static void test_morph_roundtrip(void **state)
                                      SK_GLTF_INTERPOLATION_STEP, times, 3, w, &e_));
     uint8_t *bytes;
     size_t size;
-    sk_gltf_doc *doc = write_and_read(g, &bytes, &size);
+    sk_gltf_doc *doc = sk_test_gltf_read_back(g, &bytes, &size);
     assert_int_equal(sk_gltf_doc_mesh_target_count(doc, mesh), 2);
     for (int t = 0; t < 2; t++) {
-        float *tp = accessor(doc, sk_gltf_doc_mesh_target_accessor(doc, mesh, t, "POSITION"), 9, 3);
-        float *tn = accessor(doc, sk_gltf_doc_mesh_target_accessor(doc, mesh, t, "NORMAL"), 9, 3);
+        float *tp = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_target_accessor(doc, mesh, t, "POSITION"), 9, 3);
+        float *tn = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_target_accessor(doc, mesh, t, "NORMAL"), 9, 3);
         assert_floats_equal(tp, targets + 27 * t, 27);
         assert_floats_equal(tn, normals + 27 * t, 27);
         free(tp), free(tn);
@@ -521,7 +496,7 @@ static void test_morph_roundtrip(void **state)
         assert_int_equal(ch.node, node);
         assert_int_equal(ch.interpolation,
                          a == 0 ? SK_GLTF_INTERPOLATION_LINEAR : SK_GLTF_INTERPOLATION_STEP);
-        float *wv = accessor(doc, ch.output_accessor, 6, 1); /* one scalar per target per key */
+        float *wv = sk_test_gltf_accessor(doc, ch.output_accessor, 6, 1); /* one scalar per target per key */
         assert_floats_equal(wv, w, 6);
         free(wv);
     }
@@ -540,7 +515,7 @@ static void test_samples_read_back(void **state)
     for (int k = 0; k < SK_TEST_GLTF_KIND_COUNT; k++) {
         sk_test_gltf_sample s;
         SK_ASSERT_OK(sk_test_gltf_sample_make((sk_test_gltf_kind)k, &s, &e_));
-        sk_gltf_doc *doc = write_and_read(s.gltf, NULL, NULL);
+        sk_gltf_doc *doc = sk_test_gltf_read_back(s.gltf, NULL, NULL);
         sk_gltf_doc_counts c = sk_gltf_doc_count(doc);
         assert_int_equal(c.meshes, s.meshes);
         assert_int_equal(c.animations, s.animations);

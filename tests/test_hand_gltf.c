@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gltf_read_back.h"
 #include "shitsukan/gltf.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/io.h"
@@ -77,28 +78,11 @@ static sk_gltf_doc *write_and_read(const sk_hand_gltf_desc *d, uint8_t **bytes, 
     sk_gltf *g;
     SK_ASSERT_OK(sk_gltf_create(&g, &e_));
     SK_ASSERT_OK(sk_hand_gltf_add(g, d, &e_));
-    uint8_t *data;
-    size_t n;
-    SK_ASSERT_OK(sk_gltf_write_glb_memory(g, NULL, &data, &n, &e_));
+    sk_gltf_doc *doc = sk_test_gltf_read_back(g, bytes, size);
     sk_gltf_destroy(g);
-    sk_gltf_doc *doc;
-    SK_ASSERT_OK(sk_gltf_read_glb_memory(&doc, data, n, NULL, &e_));
-    if (bytes) *bytes = data, *size = n;
-    else free(data);
     return doc;
 }
 
-static float *accessor(const sk_gltf_doc *doc, int index, size_t want_count, int want_components)
-{
-    float *v = NULL;
-    size_t count = 0;
-    int components = 0;
-    assert_true(index >= 0);
-    SK_ASSERT_OK(sk_gltf_doc_read_accessor(doc, index, &v, &count, &components, &e_));
-    assert_int_equal(count, want_count);
-    assert_int_equal(components, want_components);
-    return v;
-}
 
 /* Rotation matrix of a unit quaternion (x, y, z, w). */
 static sk_mat3d quat_matrix(const double q[4])
@@ -176,7 +160,7 @@ static void test_animation_reads_back(void **state)
     }
     sk_hand_relaxed(&fx->right, rest);
     assert_joints_match(&fx->right, rest, (const double (*)[3])t, (const double (*)[4])q);
-    float *inv = accessor(doc, ibm, SK_HAND_LINK_COUNT, 16);
+    float *inv = sk_test_gltf_accessor(doc, ibm, SK_HAND_LINK_COUNT, 16);
     sk_hand_frames bind;
     sk_hand_forward(&fx->right, rest, &bind);
     for (int j = 0; j < SK_HAND_LINK_COUNT; j++) {
@@ -201,7 +185,7 @@ static void test_animation_reads_back(void **state)
         sk_gltf_doc_channel ch;
         SK_ASSERT_OK(sk_gltf_doc_get_channel(doc, 0, k, &ch, &e_));
         assert_int_equal(ch.interpolation, SK_GLTF_INTERPOLATION_LINEAR);
-        float *times = accessor(doc, ch.input_accessor, FRAMES, 1);
+        float *times = sk_test_gltf_accessor(doc, ch.input_accessor, FRAMES, 1);
         for (int f = 0; f < FRAMES; f++) assert_float_equal(times[f], f / FPS, 1e-6);
         free(times);
         int j = -1;
@@ -210,11 +194,11 @@ static void test_animation_reads_back(void **state)
         assert_true(j >= 0);
         if (ch.path == SK_GLTF_PATH_ROTATION) {
             assert_null(rot[j]);
-            rot[j] = accessor(doc, ch.output_accessor, FRAMES, 4);
+            rot[j] = sk_test_gltf_accessor(doc, ch.output_accessor, FRAMES, 4);
         } else {
             assert_int_equal(ch.path, SK_GLTF_PATH_TRANSLATION);
             assert_int_equal(j, 0);
-            root = accessor(doc, ch.output_accessor, FRAMES, 3);
+            root = sk_test_gltf_accessor(doc, ch.output_accessor, FRAMES, 3);
         }
     }
     assert_non_null(root);
@@ -242,9 +226,9 @@ static void test_animation_reads_back(void **state)
         const float *w;
         sk_hand_surface_weights(lods[l], SK_HAND_WEIGHTS_SMOOTH, &links, &w);
         const sk_mesh *m = sk_hand_surface_mesh(lods[l]);
-        float *pos = accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "POSITION"), n, 3);
-        float *jw = accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "JOINTS_0"), n, 4);
-        float *ww = accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "WEIGHTS_0"), n, 4);
+        float *pos = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "POSITION"), n, 3);
+        float *jw = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "JOINTS_0"), n, 4);
+        float *ww = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "WEIGHTS_0"), n, 4);
         for (size_t e = 0; e < n; e++) {
             size_t v = map[e];
             for (int k = 0; k < 3; k++) assert_float_equal(pos[3 * e + k], m->positions[3 * v + k] * 1e-3, 1e-9);
@@ -288,8 +272,8 @@ static void test_posed_left_hand_and_material(void **state)
     const uint32_t *map = sk_hand_surface_export_map(fx->mirror, &n);
     const uint16_t *nearest;
     sk_hand_surface_weights(fx->mirror, SK_HAND_WEIGHTS_NEAREST, &nearest, NULL);
-    float *jw = accessor(doc, sk_gltf_doc_mesh_accessor(doc, 0, "JOINTS_0"), n, 4);
-    float *ww = accessor(doc, sk_gltf_doc_mesh_accessor(doc, 0, "WEIGHTS_0"), n, 4);
+    float *jw = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, 0, "JOINTS_0"), n, 4);
+    float *ww = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, 0, "WEIGHTS_0"), n, 4);
     for (size_t e = 0; e < n; e++) {
         assert_true(ww[4 * e] == 1.0f && ww[4 * e + 1] == 0.0f);
         assert_int_equal((int)jw[4 * e], nearest[4 * map[e]]);
@@ -400,7 +384,7 @@ static void test_commands(void **state)
     assert_int_equal(sk_gltf_doc_count(doc).animations, 1);
     sk_gltf_doc_channel ch;
     SK_ASSERT_OK(sk_gltf_doc_get_channel(doc, 0, 0, &ch, &e_));
-    float *times = accessor(doc, ch.input_accessor, (size_t)b.frame_count, 1);
+    float *times = sk_test_gltf_accessor(doc, ch.input_accessor, (size_t)b.frame_count, 1);
     assert_float_equal(times[b.frame_count - 1], (b.frame_count - 1) * b.frame_time, 1e-5);
     free(times);
     sk_gltf_doc_free(doc);

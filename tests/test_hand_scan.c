@@ -512,6 +512,38 @@ static void tube_folds(double noise, sk_hand_resample_stats st[2])
     sk_hand_cloud_free(&c);
 }
 
+/* Slices the cloud (10 slices) over its link geometry, resamples it with the neighbouring
+ * slices and checks what both joins below must give: 5 rings and 10 arcs, a manifold (no
+ * edge twice in one direction), every face outward, and triangles that cross y = 20 (no
+ * gap where the two kinds of section meet). Frees the cloud. */
+static void assert_joined_at_y20(sk_hand_cloud *cloud, const sk_hand_link_geometry *geometry)
+{
+    sk_hand_cloud c = *cloud;
+    sk_hand_link_geometry g = *geometry;
+    sk_hand_slices_desc sd = {.count = 10};
+    sk_hand_slices sl;
+    sk_error err;
+    assert_int_equal(sk_hand_slices_build(&c, &g, &sd, &sl, &err), SK_OK);
+    sk_mesh m;
+    sk_hand_resample_stats st;
+    assert_int_equal(sk_hand_resample(&sl, &g, NULL, &m, &st, &err), SK_OK);
+    assert_int_equal(st.rings, 5);
+    assert_int_equal(st.arcs, 10);
+    size_t ne;
+    edge_count *e = count_edges(&m, &ne);
+    for (size_t i = 0; i < ne; i++) assert_true(e[i].forward <= 1 && e[i].backward <= 1);
+    free(e);
+    bool joined = false;
+    for (size_t t = 0; t < m.triangle_count; t++) {
+        float y0 = m.positions[3 * m.indices[3 * t] + 1], y1 = m.positions[3 * m.indices[3 * t + 1] + 1];
+        joined = joined || (y0 < 20.0f && y1 > 20.0f) || (y0 > 20.0f && y1 < 20.0f);
+    }
+    assert_true(joined);
+    sk_mesh_free(&m);
+    sk_hand_slices_free(&sl);
+    sk_hand_cloud_free(&c);
+}
+
 /* A palm link (the carpus) whose points surround it on some slices and lie on two sides
  * on others: rings joined to arcs, still a manifold with every face outward. */
 static void test_rings_join_arcs_as_a_manifold(void **state)
@@ -531,30 +563,7 @@ static void test_rings_join_arcs_as_a_manifold(void **state)
     c.count = n;
     sk_hand_link_geometry g = single_link(sk_v3d(1000, 0, 0), sk_v3d(1000, 1, 0));
     g.a[0] = sk_v3d(0, -5, 0), g.b[0] = sk_v3d(0, 45, 0);
-    sk_hand_slices_desc sd = {.count = 10};
-    sk_hand_slices sl;
-    sk_error err;
-    assert_int_equal(sk_hand_slices_build(&c, &g, &sd, &sl, &err), SK_OK);
-    sk_mesh m;
-    sk_hand_resample_stats st;
-    assert_int_equal(sk_hand_resample(&sl, &g, NULL, &m, &st, &err), SK_OK);
-    assert_int_equal(st.rings, 5);
-    assert_int_equal(st.arcs, 10);
-    size_t ne;
-    edge_count *e = count_edges(&m, &ne);
-    for (size_t i = 0; i < ne; i++) assert_true(e[i].forward <= 1 && e[i].backward <= 1);
-    free(e);
-    /* faces outward; no gap between the last ring and the first arcs */
-    assert_faces_away_from_the_y_axis(&m);
-    bool joined = false;
-    for (size_t t = 0; t < m.triangle_count; t++) {
-        float y0 = m.positions[3 * m.indices[3 * t] + 1], y1 = m.positions[3 * m.indices[3 * t + 1] + 1];
-        joined = joined || (y0 < 20.0f && y1 > 20.0f) || (y0 > 20.0f && y1 < 20.0f);
-    }
-    assert_true(joined);
-    sk_mesh_free(&m);
-    sk_hand_slices_free(&sl);
-    sk_hand_cloud_free(&c);
+    assert_joined_at_y20(&c, &g);
 }
 
 /* Where a finger's metacarpal strips end and its phalanx's tube begins, the two join: one
@@ -576,29 +585,7 @@ static void test_finger_joins_its_metacarpal(void **state)
     c.count = n;
     sk_hand_link_geometry g = single_link(sk_v3d(0, 20, 0), sk_v3d(0, 45, 0)); /* link 5: index proximal */
     g.a[4] = sk_v3d(0, -5, 0), g.b[4] = sk_v3d(0, 20, 0);                    /* link 4: its metacarpal */
-    sk_hand_slices_desc sd = {.count = 10};
-    sk_hand_slices sl;
-    sk_error err;
-    assert_int_equal(sk_hand_slices_build(&c, &g, &sd, &sl, &err), SK_OK);
-    sk_mesh m;
-    sk_hand_resample_stats st;
-    assert_int_equal(sk_hand_resample(&sl, &g, NULL, &m, &st, &err), SK_OK);
-    assert_int_equal(st.rings, 5);
-    assert_int_equal(st.arcs, 10);
-    size_t ne;
-    edge_count *e = count_edges(&m, &ne);
-    for (size_t i = 0; i < ne; i++) assert_true(e[i].forward <= 1 && e[i].backward <= 1);
-    free(e);
-    assert_faces_away_from_the_y_axis(&m);
-    bool joined = false;
-    for (size_t t = 0; t < m.triangle_count; t++) {
-        float y0 = m.positions[3 * m.indices[3 * t] + 1], y1 = m.positions[3 * m.indices[3 * t + 1] + 1];
-        joined = joined || (y0 < 20.0f && y1 > 20.0f) || (y0 > 20.0f && y1 < 20.0f);
-    }
-    assert_true(joined);
-    sk_mesh_free(&m);
-    sk_hand_slices_free(&sl);
-    sk_hand_cloud_free(&c);
+    assert_joined_at_y20(&c, &g);
 }
 
 /* Two metacarpals side by side under one flat section: each link's points are an arc, and
