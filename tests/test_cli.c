@@ -305,6 +305,10 @@ static const bad_case k_bad_cases[] = {
      "file", "SKTSTATE"},
     {"tissue motion dance -o OUT.bvh", "dance", "curl, jump or walk"},
     {"tissue motion curl -o OUT.txt", "-o", ".bvh"},
+    /* showcase */
+    {"showcase --melody DIR/melody.txt --max-memory 64M -o OUT", "--hand-triangles", "--max-memory"},
+    {"showcase --melody DIR/melody.txt --spp 0 -o OUT", "--spp", "[1, 1024]"},
+    {"showcase midi --melody DIR/melody.txt -o OUT.jpg", "-o", ".mid"},
     /* studio */
     {"studio --port 70000", "--port", "[0, 65535]"},
     {"studio --port x", "--port", "[0, 65535]"},
@@ -424,6 +428,9 @@ static void make_inputs(const char *dir)
                        "\"oak\", \"type\": \"wood\", \"wood_preset\": \"oak\"}], \"objects\": [{\"shape\": "
                        "\"sphere\", \"material\": \"oak\"}]}";
     sk_test_write_file(path, wood, strlen(wood));
+    snprintf(path, sizeof path, "%s/melody.txt", dir);
+    const char *melody = "C4 0 0.5\nE4 0.5 0.5\n";
+    sk_test_write_file(path, melody, strlen(melody));
 }
 
 /* Replaces OUT and DIR in `text`. */

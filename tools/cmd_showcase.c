@@ -142,6 +142,28 @@ static void run_state_free(run_state *s)
     sk_melody_free(&s->melody);
 }
 
+/* Refuses (exit 2) a run whose largest parts need more than --max-memory, before any work:
+ * the hand surface (--hand-triangles) and its baked texture (--texture-size), the
+ * forearm's tissue grid (its character's skin.spacing_mm) and a frame's render buffers
+ * (--size; 32 bytes a pixel: radiance, samples and the 8-bit image). */
+static int check_memory(const cli_args *args, const sk_hand_skeleton *skeleton,
+                        const sk_tissue_character_desc *forearm, int width, int height, int texture, int triangles)
+{
+    sk_hand_surface_desc surface = {.triangles = triangles};
+    sk_hand_texture_desc bake = {.size = texture};
+    double bytes = sk_hand_surface_memory(skeleton, &surface) + sk_hand_texture_memory(&bake) +
+                   cli_image_bytes(width, height, 32);
+    if (forearm) {
+        double tissue = 0;
+        sk_error err = {0};
+        if (sk_tissue_model_memory(forearm, &tissue, NULL, &err) != SK_OK) return cli_fail_error(&err);
+        bytes += tissue;
+    }
+    return cli_check_memory(args, bytes,
+                            "the showcase (--hand-triangles, --texture-size, --size and the forearm's "
+                            "skin.spacing_mm)");
+}
+
 static int run(const cli_command *command, const cli_args *args, run_state *s)
 {
     const char *melody_path = cli_get(command, args, "melody");
@@ -173,6 +195,8 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     long long texture, triangles;
     if ((status = cli_get_int(command, args, "texture-size", 1024, 64, 8192, &texture)) ||
         (status = cli_get_int(command, args, "hand-triangles", 8000, 500, 200000, &triangles)))
+        return status;
+    if ((status = check_memory(args, &skeleton, s->forearm, width, height, (int)texture, (int)triangles)))
         return status;
     if ((status = hand_load_skin("back-of-hand", &s->back_skin)) || (status = hand_load_skin("palm", &s->palm_skin)))
         return status;
@@ -269,8 +293,12 @@ static int run_midi(const cli_command *command, const cli_args *args)
     const char *melody_path = cli_get(command, args, "melody");
     if (!melody_path) return cli_fail(CLI_EXIT_USAGE, "no melody: give --melody FILE");
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "no output: give -o FILE.mid");
+    static const char *const midi_extensions[] = {".mid", ".midi", NULL};
+    int format;
+    int status = cli_output_format("-o", args->common.output, midi_extensions, &format);
+    if (status) return status;
     sk_melody melody;
-    int status = load_melody(melody_path, 0, &melody);
+    status = load_melody(melody_path, 0, &melody);
     if (status) return status;
     sk_error err = {0};
     sk_result r = sk_melody_write_midi(&melody, args->common.output, &err);
