@@ -544,6 +544,21 @@ static void assert_joined_at_y20(sk_hand_cloud *cloud, const sk_hand_link_geomet
     sk_hand_cloud_free(&c);
 }
 
+/* Drops the cloud's points in two side bands (within 0.6 rad of the +x and -x directions
+ * about the y axis) beyond y = 20 (`above`) or below it. */
+static void drop_side_bands(sk_hand_cloud *c, bool above)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < c->count; i++) {
+        sk_vec3d p = c->position[i];
+        double th = atan2(p.z, p.x);
+        if ((above ? p.y > 20.0 : p.y < 20.0) && (fabs(th) < 0.6 || fabs(th) > SK_PI - 0.6)) continue;
+        c->position[n] = p;
+        c->side[n++] = c->side[i];
+    }
+    c->count = n;
+}
+
 /* A palm link (the carpus) whose points surround it on some slices and lie on two sides
  * on others: rings joined to arcs, still a manifold with every face outward. */
 static void test_rings_join_arcs_as_a_manifold(void **state)
@@ -552,15 +567,7 @@ static void test_rings_join_arcs_as_a_manifold(void **state)
     sk_hand_cloud c;
     cylinder_cloud(15.0, 40.0, 0.0, 0.0, &c);
     /* the far half loses two side bands (as where the metacarpals' points take over) */
-    size_t n = 0;
-    for (size_t i = 0; i < c.count; i++) {
-        sk_vec3d p = c.position[i];
-        double th = atan2(p.z, p.x);
-        if (p.y > 20.0 && (fabs(th) < 0.6 || fabs(th) > SK_PI - 0.6)) continue;
-        c.position[n] = p;
-        c.side[n++] = c.side[i];
-    }
-    c.count = n;
+    drop_side_bands(&c, true);
     sk_hand_link_geometry g = single_link(sk_v3d(1000, 0, 0), sk_v3d(1000, 1, 0));
     g.a[0] = sk_v3d(0, -5, 0), g.b[0] = sk_v3d(0, 45, 0);
     assert_joined_at_y20(&c, &g);
@@ -574,15 +581,7 @@ static void test_finger_joins_its_metacarpal(void **state)
     sk_hand_cloud c;
     cylinder_cloud(10.0, 40.0, 0.0, 0.0, &c);
     /* below y = 20 (the metacarpal) the sides are unseen, as between the palm's strips */
-    size_t n = 0;
-    for (size_t i = 0; i < c.count; i++) {
-        sk_vec3d p = c.position[i];
-        double th = atan2(p.z, p.x);
-        if (p.y < 20.0 && (fabs(th) < 0.6 || fabs(th) > SK_PI - 0.6)) continue;
-        c.position[n] = p;
-        c.side[n++] = c.side[i];
-    }
-    c.count = n;
+    drop_side_bands(&c, false);
     sk_hand_link_geometry g = single_link(sk_v3d(0, 20, 0), sk_v3d(0, 45, 0)); /* link 5: index proximal */
     g.a[4] = sk_v3d(0, -5, 0), g.b[4] = sk_v3d(0, 20, 0);                    /* link 4: its metacarpal */
     assert_joined_at_y20(&c, &g);
