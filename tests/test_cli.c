@@ -309,6 +309,25 @@ static const bad_case k_bad_cases[] = {
     {"showcase --melody DIR/melody.txt --max-memory 64M -o OUT", "--hand-triangles", "--max-memory"},
     {"showcase --melody DIR/melody.txt --spp 0 -o OUT", "--spp", "[1, 1024]"},
     {"showcase midi --melody DIR/melody.txt -o OUT.jpg", "-o", ".mid"},
+    {"showcase midi --melody DIR/bad-note.txt -o OUT.mid", "bad-note.txt:2", "key number 21..108"},
+    {"showcase --melody DIR/melody.txt --frames 5:2 -o OUT", "--frames", "A <= B"},
+    {"showcase --melody DIR/melody.txt --frames 0:99999 -o OUT", "--frames", "frames 0:"},
+    {"showcase --melody DIR/melody.txt --fps nan -o OUT", "--fps", "[1, 240]"},
+    {"showcase --melody DIR/melody.txt --size 99999x2 -o OUT", "--size", "[1, 8192]"},
+    {"showcase --melody DIR/melody.txt --size 8x8 -o OUT", "--size", "at least 16x16"},
+    {"showcase --melody DIR/melody.txt --duration -1 -o OUT", "--duration", "[0.001, 3600]"},
+    {"showcase --melody DIR/melody.txt --texture-size 3 -o OUT", "--texture-size", "[64, 8192]"},
+    {"showcase --melody DIR/melody.txt --hand-triangles 10 -o OUT", "--hand-triangles", "[500, 200000]"},
+    {"showcase --melody DIR/melody.txt --forearm nobody -o OUT", "--forearm", "no such preset"},
+    {"showcase --melody DIR/melody.txt --forearm DIR/garbage.json -o OUT", "garbage.json", "unexpected text"},
+    {"showcase --melody DIR/melody.txt --constraints nobody -o OUT", "--constraints", "no such preset"},
+    {"showcase --melody DIR/melody.txt --set film.exposure=99 -o OUT", "film.exposure", "[-30, 30]"},
+    {"showcase --melody DIR/melody.txt --ffmpeg DIR/no-such-ffmpeg -o OUT", "no-such-ffmpeg", "--no-video"},
+    {"showcase --melody DIR/melody.txt -o DIR/file", "file", "not a folder"},
+    {"showcase --melody DIR/bad-note.txt -o OUT", "bad-note.txt:2", "key number 21..108"},
+    {"showcase --melody DIR/bad.mid -o OUT", "bad.mid: byte 0", "MThd"},
+    {"showcase --melody DIR/folder.png -o OUT", "folder.png", "not a regular file"},
+    {"showcase --melody DIR/no-such.txt -o OUT", "no-such.txt", "cannot open"},
     /* studio */
     {"studio --port 70000", "--port", "[0, 65535]"},
     {"studio --port x", "--port", "[0, 65535]"},
@@ -431,6 +450,11 @@ static void make_inputs(const char *dir)
     snprintf(path, sizeof path, "%s/melody.txt", dir);
     const char *melody = "C4 0 0.5\nE4 0.5 0.5\n";
     sk_test_write_file(path, melody, strlen(melody));
+    snprintf(path, sizeof path, "%s/bad-note.txt", dir);
+    const char *bad_note = "C4 0 0.5\nQ9 0.5 0.5\n";
+    sk_test_write_file(path, bad_note, strlen(bad_note));
+    snprintf(path, sizeof path, "%s/bad.mid", dir);
+    sk_test_write_file(path, "MThd\0\0\0\6\0\0\0\1\0", 13);
 }
 
 /* Replaces OUT and DIR in `text`. */

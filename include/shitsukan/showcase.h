@@ -389,6 +389,11 @@ typedef struct sk_showcase_run_desc {
     sk_progress progress;    /* fraction of the frames done */
 } sk_showcase_run_desc;
 
+/* Checks a run's outputs before any work: the output folder, if it exists, is a folder,
+ * and an ffmpeg named in desc->ffmpeg runs (unless no_video). The default ffmpeg on the
+ * PATH may be absent (the run then notes that it made no MP4). sk_showcase_run calls it. */
+sk_result sk_showcase_check_output(const sk_showcase_run_desc *desc, sk_error *err);
+
 /* Renders the frames first_frame..last_frame into the folder, writes the WAV and the
  * fingering, and once every frame of the piece is in the folder (from this run or earlier
  * ones, e.g. split with first/last_frame), encodes the MP4 (H.264 yuv420p, odd sizes

@@ -34,14 +34,29 @@ sk_result sk_showcase_write_wav(const sk_showcase *sc, const char *path, sk_erro
     return r;
 }
 
+sk_result sk_showcase_check_output(const sk_showcase_run_desc *desc, sk_error *err)
+{
+    if (!desc || !desc->output_dir || !desc->output_dir[0])
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase run: no output folder");
+    struct stat st;
+    if (stat(desc->output_dir, &st) == 0 && !S_ISDIR(st.st_mode))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: exists and is not a folder (the output is a folder)",
+                       desc->output_dir);
+    if (desc->ffmpeg && !desc->no_video && !sk__ffmpeg_available(desc->ffmpeg))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "ffmpeg '%s' does not run ('%s -version' failed): give a working ffmpeg or --no-video",
+                       desc->ffmpeg, desc->ffmpeg);
+    return SK_OK;
+}
+
 sk_result sk_showcase_run(sk_showcase *sc, const sk_showcase_run_desc *desc, sk_showcase_stats *stats,
                           sk_error *err)
 {
     sk_showcase_stats local;
     if (!stats) stats = &local;
     memset(stats, 0, sizeof *stats);
-    if (!desc || !desc->output_dir || !desc->output_dir[0])
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase run: no output folder");
+    sk_result checked = sk_showcase_check_output(desc, err);
+    if (checked != SK_OK) return checked;
     int first = desc->first_frame, last = desc->last_frame < 0 ? sc->frame_count - 1 : desc->last_frame;
     if (first < 0 || first >= sc->frame_count || last < first || last >= sc->frame_count)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frames %d:%d are out of range: the piece has frames 0:%d",
