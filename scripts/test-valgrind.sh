@@ -21,8 +21,14 @@ vg="valgrind --tool=memcheck --error-exitcode=99 --leak-check=full --errors-for-
 #   studio_browser  drives headless Chromium against the served page for minutes; the
 #                   server's request parser is replayed by fuzz_http_request and its
 #                   end-to-end test (test_studio_server) runs here.
+#   gltf_validator, gltf_blender_import, tissue_blender_pc2, docs_links,
+#   lint_posix_source
+#                   run another program (the Khronos validator in node, Blender, shell
+#                   checks of the sources) on files: none of our code runs in them. The
+#                   commands that write their files (render_export_*, hand_export_*,
+#                   tissue_export_*) do run here.
 # Those run under ASan + UBSan in make test-asan.
-skip='^(test_render_.*|test_skin|test_wood|test_noise_map|install_package|studio_browser)$'
+skip='^(test_render_.*|test_skin|test_wood|test_noise_map|install_package|studio_browser|gltf_validator|gltf_blender_import|tissue_blender_pc2|docs_links|lint_posix_source)$'
 export SK_TEST_SANITIZED=1 OMP_NUM_THREADS=2
 export SK_TEST_CLI_WRAPPER="$vg"
 mapfile -t tests < <(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p')
