@@ -1,6 +1,7 @@
 /* Tests of sk_skin_reprofile: a built skin given new profiles, roundness, normal model,
  * pores and shading renders the same bytes as a skin built from that desc; a key that
- * places the cells is refused by name and a bad desc by its range, the skin unchanged. */
+ * places the cells is refused by name and a bad desc by its range, the skin unchanged;
+ * sk_skin_desc_changes names what an edit changes, and the maps it does not name stay. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -96,9 +97,14 @@ static void expect_same(const maps *a, const maps *b, const char *what)
 }
 
 /* A skin built from `a` and re-profiled to `b` renders every map as the skin built from
- * `b` does, bit for bit; re-profiled back, as the skin built from `a`. */
-static void check_round_trip(const char *name, const sk_skin_desc *a, const sk_skin_desc *b)
+ * `b` does, bit for bit; re-profiled back, as the skin built from `a`. The descs differ by
+ * `changes` (sk_skin_desc_changes), and the maps those do not name are the same bytes. */
+static void check_round_trip(const char *name, const sk_skin_desc *a, const sk_skin_desc *b,
+                             unsigned changes)
 {
+    if (sk_skin_desc_changes(a, b) != changes || sk_skin_desc_changes(b, a) != changes)
+        fail_msg("%s: changes %u / %u, want %u", name, sk_skin_desc_changes(a, b),
+                 sk_skin_desc_changes(b, a), changes);
     maps *got = malloc(sizeof *got), *want = malloc(sizeof *want);
     sk_skin *fresh_a = make(a), *fresh_b = make(b), *edited = make(a);
     sk_error err = {0};
@@ -114,6 +120,21 @@ static void check_round_trip(const char *name, const sk_skin_desc *a, const sk_s
     /* the cells are the ones the keys place: the cells map and the furrow are the same */
     assert_memory_equal(before->ids, want->ids, sizeof want->ids);
     assert_memory_equal(before->furrow, want->furrow, sizeof want->furrow);
+    if (!(changes & SK_SKIN_CHANGE_RELIEF)) {
+        /* a shading edit: the same normals, and the preview is their shading */
+        assert_memory_equal(before->height, want->height, sizeof want->height);
+        assert_memory_equal(before->normal, want->normal, sizeof want->normal);
+        for (int i = 0; i < W * H; i++) {
+            const float *n = &before->normal[3 * i];
+            sk_vec3f c = sk_skin_shade(fresh_b, (sk_vec3f){n[0], n[1], n[2]});
+            if (memcmp(&c.x, &want->preview[3 * i], sizeof(float)) ||
+                memcmp(&c.y, &want->preview[3 * i + 1], sizeof(float)) ||
+                memcmp(&c.z, &want->preview[3 * i + 2], sizeof(float)))
+                fail_msg("%s: pixel %d shaded from the normals differs from the render", name, i);
+        }
+    } else {
+        assert_true(memcmp(before->normal, want->normal, sizeof want->normal) != 0);
+    }
     if (sk_skin_reprofile(edited, a, &err) != SK_OK) fail_msg("%s back: %s", name, err.message);
     render(edited, level, got);
     expect_same(got, before, name);
@@ -136,7 +157,7 @@ static void test_reprofile_equals_build(void **state)
         a.size_mm[0] = fminf(a.size_mm[0] ? a.size_mm[0] : 10, 3.0f);
         a.size_mm[1] = fminf(a.size_mm[1] ? a.size_mm[1] : 10, 2.5f);
         sk_skin_desc b = reprofiled(&a);
-        check_round_trip(names[i], &a, &b);
+        check_round_trip(names[i], &a, &b, SK_SKIN_CHANGE_RELIEF | SK_SKIN_CHANGE_SHADING);
     }
 }
 
@@ -149,14 +170,28 @@ static void test_reprofile_single_keys(void **state)
     sk_skin_desc shading = sk_skin_desc_resolved(&a);
     shading.shading.no_specular = true;
     shading.shading.light_azimuth = -0.4f;
-    check_round_trip("shading", &a, &shading);
+    check_round_trip("shading", &a, &shading, SK_SKIN_CHANGE_SHADING);
     sk_skin_desc profile = sk_skin_desc_resolved(&a);
     profile.levels[1].segments[0].points[1][1] = 3.4f;
-    check_round_trip("levels[1] profile", &a, &profile);
+    check_round_trip("levels[1] profile", &a, &profile, SK_SKIN_CHANGE_RELIEF);
+    sk_skin_desc model = sk_skin_desc_resolved(&a);
+    model.normal_model = SK_SKIN_NORMAL_PROFILE;
+    model.levels[2].roundness = 0.7f;
+    check_round_trip("normal model and roundness", &a, &model, SK_SKIN_CHANGE_RELIEF);
     sk_skin_desc pores = sk_skin_desc_resolved(&a);
     pores.pores.hair.density = 1.0f;
     pores.pores.sweat.depth_mm = 0.0f;
-    check_round_trip("pores", &a, &pores);
+    check_round_trip("pores", &a, &pores, SK_SKIN_CHANGE_RELIEF);
+    /* keys that change nothing: the same desc, resolved or not; a pore kind that digs
+       nowhere; the control points past the profile's segments */
+    sk_skin_desc same = sk_skin_desc_resolved(&a);
+    assert_int_equal(sk_skin_desc_changes(&a, &same), 0);
+    same.pores.sweat.depth_mm = 0;
+    sk_skin_desc same2 = same;
+    same2.pores.sweat.radius_mm = 0.5f;
+    same2.pores.sweat.density = 1.0f;
+    same2.levels[0].segments[5].points[2][1] = 7.0f;
+    assert_int_equal(sk_skin_desc_changes(&same, &same2), 0);
 }
 
 /* A desc that differs in a key placing the cells is refused by name, and the skin renders
@@ -192,6 +227,7 @@ static void test_reprofile_refuses_cell_keys(void **state)
         sk_error err = {0};
         /* a profile edit beside it is not applied either */
         cases[i].d.levels[0].roundness = 0.9f;
+        assert_int_equal(sk_skin_desc_changes(&a, &cases[i].d), SK_SKIN_CHANGE_CELLS);
         assert_int_equal(sk_skin_reprofile(skin, &cases[i].d, &err), SK_ERROR_UNSUPPORTED);
         char want[96];
         snprintf(want, sizeof want, "%s differs", cases[i].key);

@@ -172,6 +172,20 @@ void sk_skin_destroy(sk_skin *skin);
  * bad desc fails as in sk_skin_create. On failure the skin is unchanged. */
 sk_result sk_skin_reprofile(sk_skin *skin, const sk_skin_desc *desc, sk_error *err);
 
+/* What sets two descs apart, as the maps see it (the flags of sk_skin_desc_changes). */
+typedef enum sk_skin_change {
+    SK_SKIN_CHANGE_CELLS = 1,   /* a key that places the cells: every map may change (and
+                                   sk_skin_reprofile refuses it) */
+    SK_SKIN_CHANGE_RELIEF = 2,  /* the profiles, roundness, normal model or pores: the
+                                   height, normal and shaded maps; the cell ids and furrow
+                                   distances stay the same bytes */
+    SK_SKIN_CHANGE_SHADING = 4  /* the shading: the shaded preview only (the normals stay) */
+} sk_skin_change;
+/* The changes (sk_skin_change flags; 0 for descs that give the same maps) between two
+ * valid descs, compared as resolved. A map a change does not name renders the same
+ * bytes for both. */
+unsigned sk_skin_desc_changes(const sk_skin_desc *a, const sk_skin_desc *b);
+
 /* The resolved desc the skin was built from (or last re-profiled to). */
 const sk_skin_desc *sk_skin_get_desc(const sk_skin *skin);
 

@@ -124,6 +124,40 @@ static sk_result replace_pores(sk_skin *skin, sk_error *err)
     return r;
 }
 
+/* The relief keys of the cells' levels: section profiles, roundness, the normal model. */
+static bool same_relief(const sk_skin_desc *a, const sk_skin_desc *b)
+{
+    if (!SAME(a->normal_model, b->normal_model)) return false;
+    for (int k = 0; k < a->level_count; k++) {
+        const sk_skin_level *p = &a->levels[k], *q = &b->levels[k];
+        if (!SAME(p->segment_count, q->segment_count) || !SAME(p->roundness, q->roundness))
+            return false;
+        if (memcmp(p->segments, q->segments, sizeof p->segments[0] * (size_t)p->segment_count))
+            return false;
+    }
+    return true;
+}
+
+static bool same_shading(const sk_skin_shading *a, const sk_skin_shading *b)
+{
+    return SAME(a->light_azimuth, b->light_azimuth) &&
+           SAME(a->light_elevation, b->light_elevation) && SAME(a->albedo, b->albedo) &&
+           SAME(a->sun_fraction, b->sun_fraction) && SAME(a->specular, b->specular) &&
+           SAME(a->shininess, b->shininess) && SAME(a->no_specular, b->no_specular);
+}
+
+unsigned sk_skin_desc_changes(const sk_skin_desc *a, const sk_skin_desc *b)
+{
+    sk_skin_desc ra = sk_skin_desc_resolved(a), rb = sk_skin_desc_resolved(b);
+    char name[64];
+    if (cell_key_differing(&ra, &rb, name)) return SK_SKIN_CHANGE_CELLS;
+    unsigned changes = 0;
+    if (!same_relief(&ra, &rb) || !same_pores(&ra.pores, &rb.pores))
+        changes |= SK_SKIN_CHANGE_RELIEF;
+    if (!same_shading(&ra.shading, &rb.shading)) changes |= SK_SKIN_CHANGE_SHADING;
+    return changes;
+}
+
 sk_result sk_skin_reprofile(sk_skin *skin, const sk_skin_desc *desc, sk_error *err)
 {
     if (!skin) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "sk_skin_reprofile: skin is NULL");
