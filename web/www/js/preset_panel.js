@@ -44,8 +44,11 @@ export class PresetPanel {
       (path, structural) => this.edited(path, structural));
   }
 
+  // (a preset chosen while an earlier one is still on its way wins)
   async loadPreset(name) {
-    this.setTree(name ? await (await fetch(`presets/${this.module}/${name}.json`)).json() : {}, name);
+    const ticket = (this.presetTicket = (this.presetTicket || 0) + 1);
+    const tree = name ? await (await fetch(`presets/${this.module}/${name}.json`)).json() : {};
+    if (ticket === this.presetTicket) this.setTree(tree, name);
   }
 
   setTree(tree, name) {
@@ -54,8 +57,9 @@ export class PresetPanel {
     this.edited('', true);
   }
 
-  // After an edit: the values the model uses (or the library's message), the controls
-  // when the tree's shape changed, then the panel's pictures.
+  // After an edit: the values the model uses (or the library's message), the panel's
+  // pictures (started first: the skin panel's workers render while the controls are
+  // made), then the controls when the tree's shape changed.
   edited(path, structural) {
     try {
       this.resolvedTree = this.lib.resolved(this.module, this.tree);
@@ -64,8 +68,8 @@ export class PresetPanel {
       this.errorLine.textContent = e.message;
       return;
     }
-    if (structural) this.form.render();
     this.update();
+    if (structural) this.form.render();
   }
 
   // RGBA bytes of float samples with the PNG writer's codes.
