@@ -435,6 +435,9 @@ test('skin speed: a preset change and a profile or shading edit to the updated m
       canvas_ms: stats(mine.map((x) => x.draw_ms)),
       worker_update_ms: stats(mine.map((x) => Math.max(...x.workers.map((w) => w.update_ms)))),
       worker_maps_ms: stats(mine.map((x) => Math.max(...x.workers.map((w) => w.maps_ms)))),
+      // the split's own cost: the messages, the pixels copied out of the workers' memory
+      // and moved over, the strips put together (the page's time beyond the slowest worker's)
+      split_overhead_ms: stats(mine.map((x) => x.model_ms - Math.max(...x.workers.map((w) => w.update_ms + w.maps_ms)))),
       worker_cpu_ms: stats(mine.map((x) => x.worker_cpu_ms[0] || 0)),
       worker_cpu_each_ms: mine.map((x) => x.worker_cpu_ms),
       main_cpu_ms: stats(mine.map((x) => x.main_cpu_ms)),
@@ -443,7 +446,7 @@ test('skin speed: a preset change and a profile or shading edit to the updated m
       load_average: [load, loadAverage()],
     };
     const f = figures[kind];
-    console.log(`skin ${kind} edit at 512x512 (back-of-hand, ${f.workers} workers, load ${f.load_average[0][0]}-${f.load_average[1][0]}): input to the maps on the canvases best ${f.wall_ms.best.toFixed(1)} ms, median ${f.wall_ms.median.toFixed(1)} ms (next frame: best ${f.frame_ms.best.toFixed(1)}); in the workers (their clock) update ${f.worker_update_ms.median.toFixed(1)} + maps ${f.worker_maps_ms.median.toFixed(1)} ms; CPU per worker thread (kernel, slowest) best ${f.worker_cpu_ms.best.toFixed(1)} ms, median ${f.worker_cpu_ms.median.toFixed(1)} ms; page's main thread CPU median ${f.main_cpu_ms.median.toFixed(1)} ms, GPU process ${f.gpu_cpu_ms.median.toFixed(1)} ms`);
+    console.log(`skin ${kind} edit at 512x512 (back-of-hand, ${f.workers} workers, load ${f.load_average[0][0]}-${f.load_average[1][0]}): input to the maps on the canvases best ${f.wall_ms.best.toFixed(1)} ms, median ${f.wall_ms.median.toFixed(1)} ms (next frame: best ${f.frame_ms.best.toFixed(1)}); in the workers (their clock) update ${f.worker_update_ms.median.toFixed(1)} + maps ${f.worker_maps_ms.median.toFixed(1)} ms, the split's overhead ${f.split_overhead_ms.median.toFixed(1)} ms, the canvases ${f.canvas_ms.median.toFixed(1)} ms; CPU per worker thread (kernel, slowest) best ${f.worker_cpu_ms.best.toFixed(1)} ms, median ${f.worker_cpu_ms.median.toFixed(1)} ms; page's main thread CPU median ${f.main_cpu_ms.median.toFixed(1)} ms, GPU process ${f.gpu_cpu_ms.median.toFixed(1)} ms`);
   }
   speed.skin_live_512 = figures;
   // the preview on the page's own thread (one instance: the skin built and the preview rendered)

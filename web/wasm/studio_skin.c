@@ -143,19 +143,9 @@ STUDIO_API int studio_skin_live_rgba(const sk_skin *skin, int width, int height,
             sk_vec3f c = sk_skin_shade(skin, (sk_vec3f){normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]});
             colour[3 * i] = c.x, colour[3 * i + 1] = c.y, colour[3 * i + 2] = c.z;
         }
-    else {
-        sk_skin_render_desc rd = {
-            .width = width,
-            .height = height,
-            .region = {0, y0, width, rows},
-            .height_mm = height_mm,
-            .normal = normal,
-            .furrow = furrow,
-            .cell_id = cells,
-            .preview = want[LIVE_PREVIEW] ? colour : NULL,
-        };
-        r = (int)sk_skin_render(skin, &rd, err);
-    }
+    else
+        r = studio_skin_render(skin, width, height, y0, rows, height_mm, normal, furrow, cells,
+                               want[LIVE_PREVIEW] ? colour : NULL, 1, 1, err);
     if (r == 0 && want[LIVE_PREVIEW]) studio_rgba8(colour, (int)n, 3, 1, scratch, rgba[LIVE_PREVIEW]);
     if (r == 0 && (want[LIVE_HEIGHT] || want[LIVE_NORMAL] || want[LIVE_FURROW])) {
         float lo, hi;
