@@ -44,11 +44,13 @@ export class PresetPanel {
       (path, structural) => this.edited(path, structural));
   }
 
-  // (a preset chosen while an earlier one is still on its way wins)
+  // A shipped preset's file is fetched once (its text kept: each choice parses a fresh
+  // tree to edit); a preset chosen while an earlier one is still on its way wins.
   async loadPreset(name) {
     const ticket = (this.presetTicket = (this.presetTicket || 0) + 1);
-    const tree = name ? await (await fetch(`presets/${this.module}/${name}.json`)).json() : {};
-    if (ticket === this.presetTicket) this.setTree(tree, name);
+    this.presetTexts ||= new Map();
+    if (name && !this.presetTexts.has(name)) this.presetTexts.set(name, await (await fetch(`presets/${this.module}/${name}.json`)).text());
+    if (ticket === this.presetTicket) this.setTree(name ? JSON.parse(this.presetTexts.get(name)) : {}, name);
   }
 
   setTree(tree, name) {
