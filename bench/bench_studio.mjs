@@ -1,8 +1,8 @@
 // The studio's WebAssembly build timed in node (the V8 of Chromium, without drawing):
-// the skin preview at 512 x 512 (skin built from a preset and rendered) and a hand
-// slider's solve, in wall and CPU time, best of several runs; the preview's split over
-// the page's workers (each building the skin and rendering a band of rows) as CPU time
-// per worker. The page's own figures
+// the skin preview at 512 x 512 (skin built from a preset and rendered), the live maps
+// after a preset change, a profile edit and a shading edit split over the page's workers
+// (CPU time per worker), a hand slider's solve and the tissue arm, in wall and CPU time, best of
+// several runs. The page's own figures
 // (drawing included) come from the browser tests (studio-speed.json).
 //
 //   node bench/bench_studio.mjs [build-wasm/www]
@@ -29,9 +29,40 @@ function time(fn, runs) {
 }
 
 console.log(`wasm ${fs.statSync(path.resolve(www, 'wasm/studio.wasm')).size} bytes; load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')}`);
+// The skin panel's live maps (the five maps as canvas pixels, studio_skin_live_rgba), in
+// strips of 16 rows dealt to the workers in turn as the page does: after a preset change
+// (each worker builds the skin and makes every map), a profile edit (each re-profiles the
+// skin it holds, sk_skin_reprofile, and renders the preview, height and normal maps) and
+// a shading edit (each shades its held normals again). The slowest worker's CPU time is
+// the preview's time on idle cores.
+const ALL = 31, RELIEF = 7, RESHADE = 1 | 32, STRIP = 16;
+function liveRgba(skin, n, strips, out, normals, flags) {
+  const ptrs = m._malloc(20);
+  let done = 0;
+  for (const [y0, rows] of strips) {
+    for (let i = 0; i < 5; i++) m.HEAPU32[(ptrs >> 2) + i] = out + i * n * STRIP * 4;
+    if (m._studio_skin_live_rgba(skin, n, n, y0, rows, flags, ptrs, normals + n * done * 12, err) !== 0) throw new Error('render');
+    done += rows;
+  }
+  m._free(ptrs);
+}
+function stripsOf(n, workers) {
+  const s = Array.from({ length: workers }, () => []);
+  for (let y0 = 0, k = 0; y0 < n; y0 += STRIP, k++) s[k % workers].push([y0, Math.min(STRIP, n - y0)]);
+  return s;
+}
+// The preset edited in a key that leaves the cells: level 1's roundness, or the light.
+function edited(tree, kind, k) {
+  const t = structuredClone(tree);
+  if (kind === 'profile') t.levels[0].roundness = 0.2 + 0.05 * (k % 4);
+  else t.shading = { ...(t.shading || {}), light_azimuth_deg: 30 + 10 * (k % 4) };
+  return str(JSON.stringify(t));
+}
+const flag = m._malloc(4);
 for (const [preset, n] of [['back-of-hand', 512], ['back-of-hand', 256], ['fig13a', 512]]) {
-  const json = str(fs.readFileSync(path.resolve(www, `presets/skin/${preset}.json`), 'utf8'));
-  const buf = m._malloc(n * n * 12);
+  const text = fs.readFileSync(path.resolve(www, `presets/skin/${preset}.json`), 'utf8');
+  const json = str(text), tree = JSON.parse(text);
+  const buf = m._malloc(n * n * 12), out = m._malloc(5 * n * STRIP * 4), normals = m._malloc(n * n * 12);
   const build = time(() => { const s = m._studio_skin_create(json, err); m._studio_skin_destroy(s); }, 5);
   const whole = time(() => {
     const s = m._studio_skin_create(json, err);
@@ -39,21 +70,35 @@ for (const [preset, n] of [['back-of-hand', 512], ['back-of-hand', 256], ['fig13
     m._studio_skin_destroy(s);
   }, 5);
   console.log(`skin preview ${n}x${n} (${preset}): ${whole.wall.toFixed(1)} ms wall, ${whole.cpu.toFixed(1)} ms CPU (of which the cell build ${build.cpu.toFixed(1)} ms CPU)`);
-  // the page's live maps: one worker per core, each building the skin and rendering its
-  // band of rows; the slowest worker's CPU time is the preview's time on idle cores
+  let held = m._studio_skin_create(json, err), k = 0;
+  const edits = { profile: [], shading: [] };
+  for (const kind of Object.keys(edits)) for (let i = 0; i < 4; i++) edits[kind].push(edited(tree, kind, i));
+  const update = (kind) => {
+    held = m._studio_skin_update(held, edits[kind][k++ % 4], flag, err);
+    if (!held || m.HEAPU32[flag >> 2] & 1) throw new Error('reprofile');
+  };
+  const reprofile = time(() => update('profile'), 5);
+  const one = stripsOf(n, 1)[0];
+  const live = time(() => liveRgba(held, n, one, out, normals, ALL), 3);
+  console.log(`  live maps (five, as canvas pixels) on one thread: ${live.cpu.toFixed(1)} ms CPU; re-profiling the built skin ${reprofile.cpu.toFixed(2)} ms CPU`);
   for (const workers of [2, 4]) {
-    const bands = [];
-    for (let i = 0; i < workers; i++) {
-      const y0 = Math.floor((n * i) / workers), y1 = Math.floor((n * (i + 1)) / workers);
-      bands.push(time(() => {
+    const shares = stripsOf(n, workers), list = (v) => v.map((b) => b.toFixed(1)).join(', ');
+    const figures = {
+      'preset change (build + every map)': shares.map((share) => time(() => {
         const s = m._studio_skin_create(json, err);
-        if (m._studio_skin_render(s, n, n, y0, y1 - y0, 0, 0, 0, 0, buf, 1, 1, err) !== 0) throw new Error('render');
+        liveRgba(s, n, share, out, normals, ALL);
         m._studio_skin_destroy(s);
-      }, 5).cpu);
-    }
-    console.log(`  in ${workers} workers (build + a band of rows each): slowest ${Math.max(...bands).toFixed(1)} ms CPU (bands ${bands.map((b) => b.toFixed(1)).join(', ')})`);
+      }, 3).cpu),
+      'profile edit (re-profile + preview, height, normal)': shares.map((share) => time(() => { update('profile'); liveRgba(held, n, share, out, normals, RELIEF); }, 3).cpu),
+      'shading edit (re-profile + preview shaded from the held normals)': shares.map((share) => time(() => { update('shading'); liveRgba(held, n, share, out, normals, RESHADE); }, 3).cpu),
+    };
+    console.log(`  in ${workers} workers, CPU of the slowest worker: ${Object.entries(figures).map(([what, v]) => `${what} ${Math.max(...v).toFixed(1)} ms (${list(v)})`).join('; ')}`);
   }
+  m._studio_skin_destroy(held);
+  for (const e of [...edits.profile, ...edits.shading]) m._free(e);
   m._free(buf);
+  m._free(out);
+  m._free(normals);
   m._free(json);
 }
 const hand = m._studio_hand_create(1, err);

@@ -8,7 +8,8 @@
  * tile; its top row is at y = height. Levels are numbered from 1 (the paper's first, the
  * largest ridges) to level_count; desc.levels[0] describes level 1.
  *
- * Thread-safety: sk_skin_create / sk_skin_destroy need exclusive access to their skin;
+ * Thread-safety: sk_skin_create / sk_skin_reprofile / sk_skin_destroy need exclusive access
+ * to their skin;
  * every other function only reads the skin and may be called from any number of threads
  * at once (sk_skin_eval is allocation-free). */
 #ifndef SHITSUKAN_SKIN_H
@@ -161,7 +162,31 @@ typedef struct sk_skin sk_skin;
 sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err);
 void sk_skin_destroy(sk_skin *skin);
 
-/* The resolved desc the skin was built from. */
+/* Gives a built skin the section profiles, roundness, normal model, pores and shading of
+ * `desc` without building its cells again (an edit of those keys costs a render, not a
+ * build): afterwards the skin renders the same bytes as sk_skin_create gives for `desc`.
+ * The keys that place the cells (seed, size_mm, aperiodic, the number of levels and each
+ * level's layout, jitter, jitter_rate, spacing_mm, perturb_rate, perturb_decay,
+ * perturb_depth, stretch, stretch_angle) must resolve to the skin's own; where one
+ * differs it fails with SK_ERROR_UNSUPPORTED naming the key (build a new skin then); a
+ * bad desc fails as in sk_skin_create. On failure the skin is unchanged. */
+sk_result sk_skin_reprofile(sk_skin *skin, const sk_skin_desc *desc, sk_error *err);
+
+/* What sets two descs apart, as the maps see it (the flags of sk_skin_desc_changes). */
+typedef enum sk_skin_change {
+    SK_SKIN_CHANGE_CELLS = 1,   /* a key that places the cells: every map may change (and
+                                   sk_skin_reprofile refuses it) */
+    SK_SKIN_CHANGE_RELIEF = 2,  /* the profiles, roundness, normal model or pores: the
+                                   height, normal and shaded maps; the cell ids and furrow
+                                   distances stay the same bytes */
+    SK_SKIN_CHANGE_SHADING = 4  /* the shading: the shaded preview only (the normals stay) */
+} sk_skin_change;
+/* The changes (sk_skin_change flags; 0 for descs that give the same maps) between two
+ * valid descs, compared as resolved. A map a change does not name renders the same
+ * bytes for both. */
+unsigned sk_skin_desc_changes(const sk_skin_desc *a, const sk_skin_desc *b);
+
+/* The resolved desc the skin was built from (or last re-profiled to). */
 const sk_skin_desc *sk_skin_get_desc(const sk_skin *skin);
 
 /* Height (mm above the furrow floor of the paper's profiles; the sum over levels, minus

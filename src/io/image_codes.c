@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "io/image_internal.h"
+#include "io/png_quantize.h"
 
 static unsigned linear_code(double v, unsigned max_code)
 {
@@ -20,31 +21,14 @@ static bool is_alpha(int channel, int channels)
 void sk_image_codes8(const float *samples, size_t pixels, int channels, sk_png_encoding encoding,
                      uint8_t *codes)
 {
-    /* code k + 1 starts at linear value threshold[k], straight from the curve in double,
-       so a binary search gives the code nearest to 255 * srgb(v) */
-    double threshold[255];
-    bool srgb = encoding != SK_PNG_ENCODING_LINEAR;
-    if (srgb)
-        for (int k = 0; k < 255; k++) threshold[k] = sk__srgb_decode((k + 0.5) / 255.0);
-    size_t n = pixels * (size_t)channels;
-    for (size_t i = 0; i < n; i++) {
-        float v = samples[i];
-        int c = (int)(i % (size_t)channels);
-        if (!srgb || is_alpha(c, channels)) {
-            codes[i] = (uint8_t)linear_code(v, 255);
-            continue;
-        }
-        if (!(v > 0.0f)) {
-            codes[i] = 0;
-            continue;
-        }
-        unsigned lo = 0, hi = 255;
-        while (lo < hi) {
-            unsigned mid = (lo + hi + 1) / 2;
-            if ((double)v >= threshold[mid - 1]) lo = mid;
-            else hi = mid - 1;
-        }
-        codes[i] = (uint8_t)lo;
+    /* the writer's own quantiser (its exact sRGB table), row by row of at most 2^20 pixels */
+    sk__png_quantizer q;
+    sk__png_quantizer_init(&q, channels, 8, encoding);
+    const size_t row = (size_t)1 << 20;
+    for (size_t done = 0; done < pixels; done += row) {
+        size_t n = pixels - done < row ? pixels - done : row;
+        sk__png_quantize_row(&q, samples + done * (size_t)channels, (int)n,
+                             codes + done * (size_t)channels);
     }
 }
 

@@ -18,55 +18,8 @@ static void level_setup(sk_skin *skin, int k)
     for (int n = 1; n <= lv->depth; n++)
         lv->amp[n] = d->perturb_rate * exp2(-n * (double)d->perturb_decay);
     lv->perturbed = d->perturb_rate > 0.0f;
-    lv->roundness = d->roundness;
     lv->spacing = d->spacing_mm;
-    /* profile z is in tenths of the nominal cell radius (spacing / 2) */
-    lv->z_scale = d->spacing_mm / 20.0f;
-    sk__profile *p = &lv->profile;
-    p->segment_count = d->segment_count;
-    p->z_min = INFINITY, p->z_max = -INFINITY;
-    for (int s = 0; s < d->segment_count; s++)
-        for (int i = 0; i < 4; i++) {
-            p->x[s][i] = d->segments[s].points[i][0];
-            p->z[s][i] = d->segments[s].points[i][1];
-            p->z_min = fminf(p->z_min, p->z[s][i]);
-            p->z_max = fmaxf(p->z_max, p->z[s][i]);
-        }
-    p->g_min = 1.0f - d->roundness;
-    sk__profile_prepare(p);
-}
-
-static void shading_setup(sk_skin *skin)
-{
-    const sk_skin_shading *sh = &skin->desc.shading;
-    double el = sh->light_elevation, az = sh->light_azimuth;
-    /* azimuth 0 = light from +y (top of the image), counter-clockwise */
-    double lx = -sin(az) * cos(el), ly = cos(az) * cos(el), lz = sin(el);
-    skin->light[0] = (float)lx, skin->light[1] = (float)ly, skin->light[2] = (float)lz;
-    double hx = lx, hy = ly, hz = lz + 1.0, hl = sqrt(hx * hx + hy * hy + hz * hz);
-    skin->half[0] = (float)(hx / hl), skin->half[1] = (float)(hy / hl),
-    skin->half[2] = (float)(hz / hl);
-    for (int i = 0; i < 3; i++) skin->albedo[i] = sh->albedo[i];
-    skin->sun = sh->sun_fraction;
-    skin->sky = 1.0f - sh->sun_fraction;
-    skin->spec = sh->no_specular ? 0.0f : sh->specular;
-    skin->shininess = sh->shininess;
-    skin->shininess_int = sh->shininess == floorf(sh->shininess) ? (int)sh->shininess : 0;
-}
-
-static void height_range(sk_skin *skin)
-{
-    float lo = 0, hi = 0;
-    for (int k = 0; k < skin->level_count; k++) {
-        const sk__level *lv = &skin->levels[k];
-        lo += lv->profile.z_min * lv->z_scale;
-        hi += lv->profile.z_max * lv->z_scale;
-    }
-    /* the profiles stay within their control points' z (a Bezier curve lies in their
-       hull); pores dig below, deeper where they overlap */
-    lo -= sk__pores_deepest(skin);
-    skin->height_min = lo;
-    skin->height_max = hi > lo ? hi : lo + 1e-6f;
+    sk__level_profile_setup(skin, k);
 }
 
 sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
@@ -152,8 +105,8 @@ sk_result sk_skin_create(sk_skin **out, const sk_skin_desc *desc, sk_error *err)
     }
     r = sk__build_pores(skin, err);
     if (r != SK_OK) goto fail;
-    height_range(skin);
-    shading_setup(skin);
+    sk__height_range(skin);
+    sk__shading_setup(skin);
     sk_progress_report(progress, 1.0);
     *out = skin;
     return SK_OK;

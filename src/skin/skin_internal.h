@@ -262,6 +262,12 @@ void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double 
 void sk__support(double ax, double ay, double bx, double by, double px, double py,
                  double *t_apex, double *h_apex);
 
+/* What a built skin can change without moving its cells (reprofile.c): level k's section
+ * profile tables and roundness, the height range (after the pores), the shading. */
+void sk__level_profile_setup(sk_skin *skin, int k);
+void sk__height_range(sk_skin *skin);
+void sk__shading_setup(sk_skin *skin);
+
 /* Level-1 lookup grid (grid.c). */
 sk_result sk__build_grid(sk_skin *skin, sk_error *err);
 /* Pores (pores.c). */

@@ -4,6 +4,8 @@
 #ifndef SK_STUDIO_H
 #define SK_STUDIO_H
 
+#include <stdint.h>
+
 #include <emscripten/emscripten.h>
 
 #include "shitsukan/core.h"
@@ -25,5 +27,10 @@ sk_result studio_bind_json(const char *json, const struct sk_schema *schema, voi
 /* A tissue character file's text resolved (every default filled in), as JSON
  * (studio_tissue.c); NULL with the error on a bad file. */
 char *studio_tissue_resolved(const char *json, sk_error *err);
+
+/* RGBA 8-bit for a canvas from 1- or 3-channel floats with the PNG writer's codes
+ * (studio_common.c). */
+void studio_rgba8(const float *samples, int pixels, int channels, int srgb, uint8_t *scratch,
+                  uint8_t *rgba);
 
 #endif

@@ -44,8 +44,13 @@ export class PresetPanel {
       (path, structural) => this.edited(path, structural));
   }
 
+  // A shipped preset's file is fetched once (its text kept: each choice parses a fresh
+  // tree to edit); a preset chosen while an earlier one is still on its way wins.
   async loadPreset(name) {
-    this.setTree(name ? await (await fetch(`presets/${this.module}/${name}.json`)).json() : {}, name);
+    const ticket = (this.presetTicket = (this.presetTicket || 0) + 1);
+    this.presetTexts ||= new Map();
+    if (name && !this.presetTexts.has(name)) this.presetTexts.set(name, await (await fetch(`presets/${this.module}/${name}.json`)).text());
+    if (ticket === this.presetTicket) this.setTree(name ? JSON.parse(this.presetTexts.get(name)) : {}, name);
   }
 
   setTree(tree, name) {
@@ -54,8 +59,9 @@ export class PresetPanel {
     this.edited('', true);
   }
 
-  // After an edit: the values the model uses (or the library's message), the controls
-  // when the tree's shape changed, then the panel's pictures.
+  // After an edit: the values the model uses (or the library's message), the panel's
+  // pictures (started first: the skin panel's workers render while the controls are
+  // made), then the controls when the tree's shape changed.
   edited(path, structural) {
     try {
       this.resolvedTree = this.lib.resolved(this.module, this.tree);
@@ -64,8 +70,8 @@ export class PresetPanel {
       this.errorLine.textContent = e.message;
       return;
     }
-    if (structural) this.form.render();
     this.update();
+    if (structural) this.form.render();
   }
 
   // RGBA bytes of float samples with the PNG writer's codes.

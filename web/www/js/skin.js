@@ -1,7 +1,10 @@
 // Skin panel (Ishii et al. 1991): every key of the skin preset schema as a control, the
-// map set rendered live by the library at preview resolution (in bands of rows over
-// Web Workers, one per core), the material on a board, and the full-resolution map set
-// of `shitsukan skin maps` exported as files.
+// map set rendered live by the library at preview resolution (in strips of rows over
+// Web Workers, one per core, each holding the skin: an edit of the profiles re-profiles
+// it and renders the maps it changes, a shading edit shades the held normals again, only
+// a key that moves the cells builds it again),
+// the material on a board, and the full-resolution map set of `shitsukan skin maps`
+// exported as files.
 import * as THREE from 'three';
 import { PresetPanel, el } from './preset_panel.js';
 import { download, canvasPng, png16, exrFloat } from './files.js';
@@ -9,6 +12,8 @@ import { SkinWorkers } from './skin_workers.js';
 
 // Workers rendering the live maps (one per core the browser reports, at most 4).
 const WORKERS = Math.max(1, Math.min(4, navigator.hardwareConcurrency || 1));
+// The live maps, as the workers name them (a canvas each).
+const LIVE_MAPS = ['preview', 'height', 'normal', 'furrow', 'cells'];
 
 export class SkinPanel extends PresetPanel {
   constructor(app, container) {
@@ -29,8 +34,8 @@ export class SkinPanel extends PresetPanel {
     this.maps = el('div', { className: 'maps-skin' });
     const big = el('div', { className: 'row' });
     const small = el('div', { className: 'row' });
-    for (const name of ['preview', 'height', 'normal', 'furrow', 'cells']) {
-      const c = el('canvas', { id: `skin-map-${name}`, title: name });
+    for (const name of LIVE_MAPS) {
+      const c = el('canvas', { id: `skin-map-${name}`, title: name, width: this.size, height: this.size });
       this.canvases[name] = c;
       (name === 'preview' ? big : small).append(c);
     }
@@ -84,12 +89,21 @@ export class SkinPanel extends PresetPanel {
   }
 
   // The maps as the files encode them (linear floats in [0, 1] per channel).
+  // (the library's scaling, studio_skin_scale_maps, as the live maps have it).
   encoded(r, w, h) {
-    const n = w * h, e = {};
+    const n = w * h, e = {}, lib = this.lib;
     if (r.maps.preview) e.preview = r.maps.preview;
-    if (r.maps.height) e.height = r.maps.height.map((v) => (v - r.lo) / (r.hi - r.lo));
-    if (r.maps.normal) e.normal = r.maps.normal.map((v) => 0.5 * v + 0.5);
-    if (r.maps.furrow) e.furrow = r.maps.furrow.map((v) => Math.min(1, v / r.furrowMax));
+    const scaled = ['height', 'normal', 'furrow'].map((k) => {
+      if (!r.maps[k]) return 0;
+      const p = lib.alloc(r.maps[k].length * 4);
+      lib.f32(p, r.maps[k].length).set(r.maps[k]);
+      return p;
+    });
+    lib.m._studio_skin_scale_maps(n, ...scaled, r.lo, r.hi, r.furrowMax);
+    ['height', 'normal', 'furrow'].forEach((k, i) => {
+      if (scaled[i]) e[k] = new Float32Array(lib.f32(scaled[i], r.maps[k].length));
+      lib.free(scaled[i]);
+    });
     if (r.maps.cells) {
       const ids = this.lib.alloc(n * 4), rgb = this.lib.alloc(n * 12);
       this.lib.u32(ids, n).set(r.maps.cells);
@@ -101,49 +115,62 @@ export class SkinPanel extends PresetPanel {
     return e;
   }
 
-  // Renders the live maps (the workers) and shows them; a later edit supersedes a render
-  // still running. idle() resolves when the last one is shown.
+  // Renders the live maps (the workers) and shows them. Edits that come while a render
+  // runs are folded into one render of the latest tree when it ends (a slider dragged
+  // does not queue a render per step); idle() resolves when the last edit is shown.
   update() {
-    const token = (this.token = (this.token || 0) + 1);
-    this.rendering = this.show(token);
+    this.dirty = true;
+    if (!this.running) this.rendering = this.renderLoop();
+  }
+
+  async renderLoop() {
+    this.running = true;
+    try {
+      while (this.dirty) {
+        this.dirty = false;
+        await this.show();
+      }
+    } finally {
+      this.running = false;
+    }
   }
 
   idle() { return this.rendering; }
 
-  async show(token) {
+  async show() {
     const w = this.size, h = this.size;
     const t0 = performance.now();
     let r;
     try {
-      r = await this.workers.render(this.tree, w, h, ['preview', 'height', 'normal', 'furrow', 'cells']);
+      r = await this.workers.render(this.tree, w, h);
     } catch (e) {
-      if (token === this.token) this.errorLine.textContent = e.message;
+      this.errorLine.textContent = e.message;
       return;
     }
-    if (token !== this.token) return;
     const t1 = performance.now();
-    const e = this.encoded(r, w, h);
-    const channels = { preview: 3, height: 1, normal: 3, furrow: 1, cells: 3 };
+    const resized = this.canvases.preview.width !== w;
     for (const [k, c] of Object.entries(this.canvases)) {
-      c.width = w;
-      c.height = h;
-      c.getContext('2d').putImageData(new ImageData(this.rgbaOf(e[k], channels[k], k === 'preview', w * h), w, h), 0, 0);
+      if (resized) c.width = c.height = w;
+      if (resized || r.changed.includes(k)) c.getContext('2d').putImageData(new ImageData(r.rgba[k], w, h), 0, 0);
     }
-    this.normalTex.needsUpdate = true;
+    // the board in the 3D view takes the new normal map at the next frame (a texture of
+    // another size is a new one for WebGL)
+    if (resized) this.normalTex.dispose();
+    if (resized || r.changed.includes('normal')) this.normalTex.needsUpdate = true;
+    if ((resized || r.changed.includes('normal')) && this.app.tab === 'skin' && !this.boardPending) {
+      this.boardPending = true;
+      requestAnimationFrame(() => { this.boardPending = false; this.app.view.render(); });
+    }
     const t2 = performance.now();
-    this.timings = { model_ms: t1 - t0, draw_ms: t2 - t1, total_ms: t2 - t0, size: w };
-    this.info.textContent = `tile ${r.tw.toFixed(2)} × ${r.th.toFixed(2)} mm, height ${r.lo.toFixed(4)}…${r.hi.toFixed(4)} mm; ${w}² maps in ${(t2 - t0).toFixed(0)} ms`;
+    const rebuilt = r.workers.some((x) => x.changes & 1);
+    this.timings = { model_ms: t1 - t0, draw_ms: t2 - t1, total_ms: t2 - t0, shown_at: t2, size: w, rebuilt, maps: r.changed, workers: r.workers };
+    const what = rebuilt ? 'cells built' : r.changed.length > 1 ? 'relief re-profiled' : r.changed.length ? 'shaded again' : 'unchanged';
+    this.info.textContent = `tile ${r.tw.toFixed(2)} × ${r.th.toFixed(2)} mm, height ${r.lo.toFixed(4)}…${r.hi.toFixed(4)} mm; ${w}² maps in ${(t2 - t0).toFixed(0)} ms (${what})`;
     this.app.emit('skin-updated', this.timings);
   }
 
-  // Only the shaded preview at n x n, built and rendered, for the speed figures: by the
-  // workers (as the live maps are) and on the page's own thread (one instance).
-  async timePreview(n) {
-    const t0 = performance.now();
-    await this.workers.render(this.tree, n, n, ['preview']);
-    return performance.now() - t0;
-  }
-
+  // Only the shaded preview at n x n, built and rendered on the page's own thread (one
+  // instance), for the speed figures.
   timePreviewOneThread(n) {
     const t0 = performance.now();
     this.renderMaps(n, n, ['preview']);

@@ -1,38 +1,86 @@
-// One skin worker (skin_workers.js): its own instance of the library; a message asks for
-// rows [y0, y0 + rows) of a preset tree's maps at w x h, the answer carries them.
+// One skin worker (skin_workers.js): its own instance of the library, holding the skin of
+// the last preset tree it was given and the normals of its last render. A message asks
+// for strips of rows of the live maps at w x h as canvas pixels. A new tree costs what it
+// changes (sk_skin_desc_changes): a key that places the cells builds the skin again and
+// renders every map; a profile, roundness, normal model or pore edit re-profiles the skin
+// held (sk_skin_reprofile) and renders the preview, height and normal maps (the cells and
+// furrows stay); a shading edit shades the held normals again, with no render. The
+// answer carries the pixels of the maps it made, its strips one after the other, and the
+// time this worker spent (performance.now() around the update and the maps).
 import createStudio from '../wasm/studio.mjs';
 
-const CHANNELS = { height: 1, normal: 3, furrow: 1, cells: 1, preview: 3 };
+const MAPS = ['preview', 'height', 'normal', 'furrow', 'cells'];
+const CELLS = 1, RELIEF = 2, SHADING = 4; // sk_skin_change
+const RESHADE = 1 << MAPS.length;
 const ready = createStudio({ locateFile: (f) => new URL('../wasm/' + f, import.meta.url).href });
+let m, err, skin = 0, json = null;
+let layout = null, normals = 0; // the strips of the last render and their float normals
+
+// The skin of `text`, the one held re-profiled or a new one; what changed.
+function update(text) {
+  if (text === json) return 0;
+  const n = m.lengthBytesUTF8(text) + 1, p = m._malloc(n), flag = m._malloc(4);
+  m.stringToUTF8(text, p, n);
+  const next = m._studio_skin_update(skin, p, flag, err);
+  const changes = m.HEAPU32[flag >> 2];
+  m._free(p);
+  m._free(flag);
+  if (!next) throw new Error(m.UTF8ToString(m._studio_error_message(err)));
+  skin = next;
+  json = text;
+  return changes;
+}
+
+// The maps an edit's changes call for: [names, the flags of studio_skin_live_rgba].
+function mapsFor(changes) {
+  if (changes & CELLS) return [MAPS, 31];
+  if (changes & RELIEF) return [['preview', 'height', 'normal'], 7];
+  if (changes & SHADING) return [['preview'], 1 | RESHADE];
+  return [[], 0];
+}
 
 self.onmessage = async (e) => {
-  const { id, json, w, h, y0, rows, wanted } = e.data;
-  const m = await ready;
-  const err = m._studio_error_new();
-  const str = (s) => { const n = m.lengthBytesUTF8(s) + 1, p = m._malloc(n); m.stringToUTF8(s, p, n); return p; };
-  const fail = () => self.postMessage({ id, error: m.UTF8ToString(m._studio_error_message(err)) });
-  const p = str(json);
-  const skin = m._studio_skin_create(p, err);
-  m._free(p);
-  if (!skin) { fail(); m._free(err); return; }
-  const info = m._malloc(6 * 8);
-  m._studio_skin_info(skin, 1, info);
-  const [lo, hi, tw, th, furrowMax] = new Float64Array(m.HEAPU8.buffer, info, 6);
-  m._free(info);
-  const ptr = {};
-  for (const k of wanted) ptr[k] = m._malloc(w * rows * CHANNELS[k] * 4);
-  const r = m._studio_skin_render(skin, w, h, y0, rows, ptr.height || 0, ptr.normal || 0, ptr.furrow || 0, ptr.cells || 0,
-    ptr.preview || 0, 1, 1, err);
-  if (r !== 0) fail();
-  else {
-    const maps = {};
-    for (const k of wanted) {
-      const n = w * rows * CHANNELS[k];
-      maps[k] = k === 'cells' ? new Uint32Array(m.HEAPU8.buffer, ptr[k], n).slice() : new Float32Array(m.HEAPU8.buffer, ptr[k], n).slice();
-    }
-    self.postMessage({ id, maps, lo, hi, tw, th, furrowMax }, Object.values(maps).map((a) => a.buffer));
+  const { id, json: text, w, h, strips, full } = e.data;
+  m = await ready;
+  if (!err) err = m._studio_error_new();
+  const t0 = performance.now();
+  let changes;
+  try { changes = update(text); } catch (x) { self.postMessage({ id, error: x.message }); return; }
+  const rows = strips.reduce((s, [, r]) => s + r, 0), key = `${w}x${h}:${strips.join(';')}`;
+  if (full || key !== layout) {
+    // new strips: every map, and room for their normals
+    changes |= CELLS;
+    m._free(normals);
+    normals = m._malloc(w * rows * 12);
+    layout = key;
   }
-  for (const k of wanted) m._free(ptr[k]);
-  m._studio_skin_destroy(skin);
-  m._free(err);
+  const t1 = performance.now();
+  const [names, flags] = mapsFor(changes), bytes = w * rows * 4;
+  const ptr = MAPS.map((k) => (names.includes(k) ? m._malloc(bytes) : 0));
+  const ptrs = m._malloc(4 * MAPS.length);
+  let done = 0, failed = null;
+  for (const [y0, r] of names.length ? strips : []) {
+    MAPS.forEach((k, i) => { m.HEAPU32[(ptrs >> 2) + i] = ptr[i] ? ptr[i] + w * done * 4 : 0; });
+    if (m._studio_skin_live_rgba(skin, w, h, y0, r, flags, ptrs, normals + w * done * 12, err) !== 0) {
+      failed = m.UTF8ToString(m._studio_error_message(err));
+      break;
+    }
+    done += r;
+  }
+  const t2 = performance.now();
+  if (failed) {
+    layout = null; // the next render makes every map again
+    self.postMessage({ id, error: failed });
+  } else {
+    const out = {};
+    MAPS.forEach((k, i) => { if (ptr[i]) out[k] = m.HEAPU8.slice(ptr[i], ptr[i] + bytes); });
+    const info = m._malloc(6 * 8);
+    m._studio_skin_info(skin, 1, info);
+    const [lo, hi, tw, th, furrowMax] = new Float64Array(m.HEAPU8.buffer, info, 6);
+    m._free(info);
+    self.postMessage({ id, maps: out, lo, hi, tw, th, furrowMax, changes, update_ms: t1 - t0, maps_ms: t2 - t1 },
+      Object.values(out).map((a) => a.buffer));
+  }
+  for (const p of ptr) if (p) m._free(p);
+  m._free(ptrs);
 };

@@ -1,9 +1,13 @@
 // The skin maps rendered by several copies of the library at once, each in its own Web
 // Worker (its own WebAssembly instance: no shared memory, so no cross-origin isolation
-// and any static server will do). Every worker builds the skin from the same preset tree
-// and renders its own band of rows; rows do not depend on one another, so the maps are
-// the same values a single render gives.
-const CHANNELS = { height: 1, normal: 3, furrow: 1, cells: 1, preview: 3 };
+// and any static server will do). Every worker holds the skin of the last preset tree
+// (re-profiled in place by an edit that leaves the cells, built again otherwise) and
+// makes its share of the rows as canvas pixels, only of the maps the edit changes. The rows go out in strips dealt in
+// turn (strip s to worker s mod n), so each worker gets rows from all over the map and
+// the shares cost about the same; rows do not depend on one another, so the maps are the
+// same pixels a single render gives.
+const STRIP_ROWS = 16;
+const MAPS = ['preview', 'height', 'normal', 'furrow', 'cells'];
 
 export class SkinWorkers {
   // count: workers (at most the cores the browser reports, at least 1).
@@ -32,17 +36,35 @@ export class SkinWorkers {
     });
   }
 
-  // The maps `wanted` of the tree at w x h, in bands of rows over the workers; the same
-  // result as SkinPanel.renderMaps.
-  async render(tree, w, h, wanted) {
-    const n = Math.min(this.count, h), json = JSON.stringify(tree);
-    const bands = [];
-    for (let i = 0; i < n; i++) bands.push([Math.floor((h * i) / n), Math.floor((h * (i + 1)) / n)]);
-    const parts = await Promise.all(bands.map(([y0, y1], i) => this.call(i, { json, w, h, y0, rows: y1 - y0, wanted })));
-    const out = {};
-    for (const k of wanted) out[k] = k === 'cells' ? new Uint32Array(w * h) : new Float32Array(w * h * CHANNELS[k]);
-    parts.forEach((p, i) => { for (const k of wanted) out[k].set(p.maps[k], w * bands[i][0] * CHANNELS[k]); });
+  // The five live maps (preview, height, normal, furrow, cells) of the tree at w x h as
+  // RGBA bytes, each w x h x 4, kept here between renders: an edit's answer brings only
+  // the maps it changed (`changed`). With the tile and ranges, and per worker what it
+  // found changed and its time updating and making the maps.
+  async render(tree, w, h) {
+    const n = Math.min(this.count, Math.ceil(h / STRIP_ROWS)), json = JSON.stringify(tree);
+    const strips = Array.from({ length: n }, () => []);
+    for (let y0 = 0, s = 0; y0 < h; y0 += STRIP_ROWS, s++) strips[s % n].push([y0, Math.min(STRIP_ROWS, h - y0)]);
+    const full = !this.held || this.held.w !== w || this.held.h !== h;
+    if (full) this.held = { w, h, rgba: Object.fromEntries(MAPS.map((k) => [k, new Uint8ClampedArray(w * h * 4)])) };
+    let parts;
+    try {
+      parts = await Promise.all(strips.map((share, i) => this.call(i, { json, w, h, strips: share, full })));
+    } catch (e) {
+      this.held = null; // the next render makes every map again
+      throw e;
+    }
+    const changed = new Set();
+    parts.forEach((p, i) => {
+      let at = 0;
+      for (const [y0, rows] of strips[i]) {
+        const len = w * rows * 4;
+        for (const [k, bytes] of Object.entries(p.maps)) this.held.rgba[k].set(bytes.subarray(at, at + len), w * y0 * 4);
+        at += len;
+      }
+      for (const k of Object.keys(p.maps)) changed.add(k);
+    });
     const { lo, hi, tw, th, furrowMax } = parts[0];
-    return { maps: out, lo, hi, tw, th, furrowMax };
+    const workers = parts.map((p) => ({ changes: p.changes, update_ms: p.update_ms, maps_ms: p.maps_ms }));
+    return { rgba: this.held.rgba, changed: MAPS.filter((k) => changed.has(k)), lo, hi, tw, th, furrowMax, workers };
   }
 }
