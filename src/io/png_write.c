@@ -261,6 +261,14 @@ static bool worker_init(strip_worker *w, const png_job *job)
     return false;
 }
 
+/* The Up filter of a row (PNG spec 9.2): its bytes minus those of the row above. */
+static void filter_up(uint8_t *restrict out, const uint8_t *restrict cur,
+                      const uint8_t *restrict above, size_t n)
+{
+#pragma omp simd
+    for (size_t i = 0; i < n; i++) out[i] = (uint8_t)(cur[i] - above[i]);
+}
+
 /* Filters and compresses strip s into out (false on allocation failure). */
 static bool encode_strip(const png_job *job, strip_worker *w, int s, strip_out *out)
 {
@@ -276,7 +284,7 @@ static bool encode_strip(const png_job *job, strip_worker *w, int s, strip_out *
         uint8_t *row = w->raw + (size_t)(y - y0) * (rb + 1);
         sk__png_quantize_row(job->quantizer, sk_image_pixel(im, 0, y), im->width, w->cur);
         row[0] = ROW_FILTER;
-        for (size_t i = 0; i < rb; i++) row[1 + i] = (uint8_t)(w->cur[i] - w->prev[i]);
+        filter_up(row + 1, w->cur, w->prev, rb);
         uint8_t *t = w->prev;
         w->prev = w->cur;
         w->cur = t;
