@@ -32,6 +32,8 @@ typedef struct sk__use {
     uint32_t edge;    /* edge record of this level, or SK__SKIN_NONE (a piece of the
                          parent's boundary, or an unpaired degenerate edge) */
     uint32_t neighbour; /* cell across the edge at this level, or SK__SKIN_NONE */
+    float bulge;      /* how far the edge's perturbed polyline strays from this line (the
+                         edge record's bulge; 0 for a straight side) */
 } sk__use;
 
 /* Per-pixel query records, one of each per use, laid out so that one record (one cache
@@ -142,6 +144,7 @@ typedef struct sk__level {
     int depth;             /* division depths; f_count = 2^depth + 1 */
     double amp[11];        /* midpoint displacement amplitude A 2^(-n h) at depth n */
     int f_count;
+    float f_step;          /* 1 / (f_count - 1): t from one f value to the next */
     bool perturbed;
     double m[2][2], minv[2][2]; /* stretch and its inverse */
     float minvf[2][2];
