@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "io/deflate_join.h"
 #include "io/image_internal.h"
@@ -22,7 +23,7 @@
 /* Raw (filtered) bytes per strip: large enough that restarting the compressor's window
  * at a strip costs little, small enough that a 2048 x 2048 RGB image has a dozen. */
 #define STRIP_BYTES ((size_t)1 << 20)
-/* Strips encoded before their chunks are written: bounds the memory held at once. */
+/* Strips encoded ahead of the first one not yet written: bounds the memory held at once. */
 #define STRIPS_IN_FLIGHT 16
 /* Filter type of every row (PNG spec 9.2): Up, the difference from the row above,
  * suits textures whose structure runs down the image (wood grain, rendered surfaces) and
@@ -333,15 +334,51 @@ static bool encode_strip(const png_job *job, strip_worker *w, int s, strip_out *
     return true;
 }
 
-/* Encodes and writes the strips as IDAT chunks, STRIPS_IN_FLIGHT at a time, in parallel
- * when there are several. */
+/* Strips in order: each is written as soon as it and every strip before it are done. */
+typedef struct strip_queue {
+    strip_out *outs; /* per strip; bytes == NULL once written */
+    bool *done;
+    int next;        /* the first strip not yet written */
+    uint32_t adler;  /* of the strips written */
+} strip_queue;
+
+/* Writes the strips from queue->next on that are done (under the caller's lock; next is
+ * also read outside it, atomically). */
+static void write_ready_strips(png_out *o, const png_job *job, strip_queue *q, bool ok)
+{
+    int next = q->next;
+    for (; next < job->strips && q->done[next]; next++) {
+        strip_out *so = &q->outs[next];
+        if (ok && o->ok) {
+            q->adler = next == 0 ? so->adler : sk__adler32_combine(q->adler, so->adler, so->raw_size);
+            if (next == job->strips - 1) {
+                put32(so->bytes + so->size, q->adler);
+                so->size += 4;
+                so->crc = chunk_crc("IDAT", so->bytes, so->size);
+            }
+            emit_chunk_crc(o, "IDAT", so->bytes, so->size, so->crc);
+        }
+        free(so->bytes);
+        so->bytes = NULL;
+    }
+#pragma omp atomic write
+    q->next = next;
+}
+
+/* Encodes the strips, in parallel when there are several, and writes them as IDAT chunks
+ * in order: a strip done before an earlier one waits in memory, and a thread does not start
+ * a strip STRIPS_IN_FLIGHT or more ahead of the first unwritten one (which bounds that
+ * memory; the strip holding it back is being encoded, so the wait is short). No barrier
+ * between strips: a thread is never idle while there are strips to encode. */
 static sk_result emit_image_data(png_out *o, const png_job *job, sk_error *err)
 {
-    int in_flight = job->strips < STRIPS_IN_FLIGHT ? job->strips : STRIPS_IN_FLIGHT;
-    strip_out *outs = calloc((size_t)in_flight, sizeof *outs);
-    if (!outs) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the PNG strips");
+    strip_queue q = {.outs = calloc((size_t)job->strips, sizeof *q.outs),
+                     .done = calloc((size_t)job->strips, sizeof *q.done), .adler = 1};
+    if (!q.outs || !q.done) {
+        free(q.outs), free(q.done);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the PNG strips");
+    }
     bool memory_ok = true;
-    uint32_t adler = 1;
     /* small images stay on the calling thread: a parallel region would cost more than
        their one strip */
 #pragma omp parallel if (job->strips > 1)
@@ -352,40 +389,37 @@ static sk_result emit_image_data(png_out *o, const png_job *job, sk_error *err)
 #pragma omp atomic write
             memory_ok = false;
         }
-        for (int g = 0; g < job->strips; g += in_flight) {
-            int count = job->strips - g < in_flight ? job->strips - g : in_flight;
 #pragma omp for schedule(dynamic, 1)
-            for (int k = 0; k < count; k++) {
-                bool ok;
+        for (int s = 0; s < job->strips; s++) {
+            for (;;) {
+                int next;
 #pragma omp atomic read
-                ok = memory_ok;
-                if (!ok || !have) continue;
-                if (!encode_strip(job, &w, g + k, &outs[k])) {
-#pragma omp atomic write
-                    memory_ok = false;
-                }
+                next = q.next;
+                if (s - next < STRIPS_IN_FLIGHT) break;
+                struct timespec pause = {0, 100000};
+                nanosleep(&pause, NULL);
             }
-#pragma omp single
+            bool ok;
+#pragma omp atomic read
+            ok = memory_ok;
+            if (ok && have && !encode_strip(job, &w, s, &q.outs[s])) {
+#pragma omp atomic write
+                memory_ok = false;
+            }
+#pragma omp critical(sk_png_strips)
             {
-                for (int k = 0; k < count; k++) {
-                    strip_out *so = &outs[k];
-                    if (memory_ok && o->ok) {
-                        adler = g + k == 0 ? so->adler : sk__adler32_combine(adler, so->adler, so->raw_size);
-                        if (g + k == job->strips - 1) {
-                            put32(so->bytes + so->size, adler);
-                            so->size += 4;
-                            so->crc = chunk_crc("IDAT", so->bytes, so->size);
-                        }
-                        emit_chunk_crc(o, "IDAT", so->bytes, so->size, so->crc);
-                    }
-                    free(so->bytes);
-                    so->bytes = NULL;
-                }
+                q.done[s] = true;
+                bool all_ok;
+#pragma omp atomic read
+                all_ok = memory_ok;
+                write_ready_strips(o, job, &q, all_ok);
             }
         }
         if (have) worker_free(&w);
     }
-    free(outs);
+    for (int s = 0; s < job->strips; s++) free(q.outs[s].bytes); /* after a failure */
+    free(q.outs);
+    free(q.done);
     if (!memory_ok) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory while compressing the PNG");
     return SK_OK;
 }
