@@ -13,7 +13,11 @@
 #include "shitsukan/skin.h"
 
 #define SKIN_DEFAULT_SIZE 400
-#define SKIN_BAND_ROWS 64
+/* Rows of a band of the maps a thread renders at a time. */
+#define SKIN_BAND_ROWS 4
+/* Maps of fewer pixel-levels (pixels x levels x samples^2) render on one thread, as the
+   renderer's own loop does: starting a second costs more than it saves. */
+#define SKIN_PARALLEL_WORK 32768
 /* Maps of at least this many pixels are written with a fast zlib level. */
 #define SKIN_FAST_PNG_PIXELS (2048 * 2048)
 
@@ -207,17 +211,6 @@ static int run_preview(const cli_command *command, const cli_args *args)
 }
 
 /* --------------------------------------------------------------------- maps */
-typedef struct band_progress {
-    sk_progress_bar *bar;
-    double base, span;
-} band_progress;
-
-static void band_progress_fn(void *user, double fraction)
-{
-    band_progress *b = user;
-    sk_progress_bar_update(b->bar, b->base + b->span * fraction);
-}
-
 /* A colour per cell id (stable for a seed): for per-ridge variation in shaders. */
 static void id_colour(uint32_t id, float rgb[3]) { sk_skin_cell_color(id, rgb); }
 
@@ -397,53 +390,79 @@ static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, 
     return write_png_file(&m->edges, &f, err);
 }
 
-/* Renders the region in bands of rows into the store. */
+/* Renders the region into the store in bands of a few rows, shared out between the
+ * threads in one parallel loop: each thread renders a band on its own (the renderer's
+ * loop inside runs on that thread) and stores it at once, so threads wait for one another
+ * only at the end. Maps of little work run on one thread. */
 static sk_result render_maps(const sk_skin *skin, map_store *m, int w, int h, const int region[4],
                              int furrow_level, int id_level, int samples, bool edges,
                              float furrow_max, sk_progress_bar *bar, sk_error *err)
 {
-    int rw = region[2], rh = region[3];
-    size_t band_px = (size_t)rw * SKIN_BAND_ROWS;
-    float *height = malloc(sizeof(float) * band_px), *normal = malloc(sizeof(float) * 3 * band_px);
-    float *furrow = malloc(sizeof(float) * band_px);
-    sk_result r = SK_OK;
-    if (!height || !normal || !furrow)
-        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a band of the maps");
-    for (int y0 = 0; r == SK_OK && y0 < rh; y0 += SKIN_BAND_ROWS) {
-        int rows = rh - y0 < SKIN_BAND_ROWS ? rh - y0 : SKIN_BAND_ROWS;
-        size_t off = (size_t)y0 * (size_t)rw;
-        band_progress bp = {bar, (double)y0 / rh, (double)rows / rh};
-        sk_skin_render_desc rd = {
-            .width = w,
-            .height = h,
-            .region = {region[0], region[1] + y0, rw, rows},
-            .height_mm = height,
-            .normal = normal,
-            .furrow = furrow,
-            .cell_id = m->ids + off,
-            .preview = m->preview.data ? m->preview.data + 3 * off : NULL,
-            .edges = edges ? m->edges.data + 3 * off : NULL,
-            .furrow_level = furrow_level,
-            .id_level = id_level,
-            .samples = samples,
-            .progress = {band_progress_fn, &bp},
-        };
-        r = sk_skin_render(skin, &rd, err);
-        if (r != SK_OK) break;
-        long band = (long)rows * rw;
-#pragma omp parallel for schedule(static)
-        for (long i = 0; i < band; i++) {
-            size_t o = off + (size_t)i;
-            m->height.data[o] = height[i];
-            for (int c = 0; c < 2; c++)
-                m->normal[2 * o + c] = (int16_t)lrintf(normal[3 * i + c] * 32767.0f);
-            /* furrow.png's code: the distance over [0, furrow_max] */
-            float d = furrow[i] / furrow_max;
-            m->furrow[o] = (uint16_t)lrint((d > 1.0f ? 1.0f : d) * 65535.0);
+    int rw = region[2], rh = region[3], bands = (rh + SKIN_BAND_ROWS - 1) / SKIN_BAND_ROWS;
+    double work = (double)rw * rh * sk_skin_get_desc(skin)->level_count * samples * samples;
+    sk_result result = SK_OK;
+    long rows_done = 0, rows_shown = 0;
+#pragma omp parallel if (work >= SKIN_PARALLEL_WORK && bands > 1)
+    {
+        size_t band_px = (size_t)rw * SKIN_BAND_ROWS;
+        float *normal = malloc(sizeof(float) * 3 * band_px), *furrow = malloc(sizeof(float) * band_px);
+        if (!normal || !furrow) {
+#pragma omp critical(skin_maps_result)
+            if (result == SK_OK)
+                result = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a band of the maps");
         }
+#pragma omp for schedule(dynamic, 1)
+        for (int b = 0; b < bands; b++) {
+            sk_result seen;
+#pragma omp atomic read
+            seen = result;
+            if (seen != SK_OK) continue;
+            int y0 = b * SKIN_BAND_ROWS, rows = rh - y0 < SKIN_BAND_ROWS ? rh - y0 : SKIN_BAND_ROWS;
+            size_t off = (size_t)y0 * (size_t)rw;
+            sk_skin_render_desc rd = {
+                .width = w,
+                .height = h,
+                .region = {region[0], region[1] + y0, rw, rows},
+                .height_mm = m->height.data + off,
+                .normal = normal,
+                .furrow = furrow,
+                .cell_id = m->ids + off,
+                .preview = m->preview.data ? m->preview.data + 3 * off : NULL,
+                .edges = edges ? m->edges.data + 3 * off : NULL,
+                .furrow_level = furrow_level,
+                .id_level = id_level,
+                .samples = samples,
+            };
+            sk_error band_err = {0};
+            sk_result r = sk_skin_render(skin, &rd, &band_err);
+            if (r != SK_OK) {
+#pragma omp critical(skin_maps_result)
+                if (result == SK_OK) {
+                    result = r;
+                    if (err) *err = band_err;
+                }
+                continue;
+            }
+            for (size_t i = 0; i < (size_t)rows * (size_t)rw; i++) {
+                size_t o = off + i;
+                for (int c = 0; c < 2; c++)
+                    m->normal[2 * o + c] = (int16_t)lrintf(normal[3 * i + c] * 32767.0f);
+                /* furrow.png's code: the distance over [0, furrow_max] */
+                float d = furrow[i] / furrow_max;
+                m->furrow[o] = (uint16_t)lrint((d > 1.0f ? 1.0f : d) * 65535.0);
+            }
+            long done;
+#pragma omp atomic capture
+            done = rows_done += rows;
+#pragma omp critical(skin_maps_progress)
+            if (done > rows_shown) { /* bands finish out of order */
+                rows_shown = done;
+                sk_progress_bar_update(bar, (double)done / rh);
+            }
+        }
+        free(normal), free(furrow);
     }
-    free(height), free(normal), free(furrow);
-    return r;
+    return result;
 }
 
 static int run_maps(const cli_command *command, const cli_args *args)
