@@ -140,7 +140,7 @@ sk_result sk__build_edges(sk_skin *skin, int level, const sk__edge_key *keys,
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %u edges", e);
     }
     /* Each edge draws its own random numbers from its key: any order, same result. */
-#pragma omp parallel for schedule(static) if (e >= SK__PARALLEL_ITEMS)
+#pragma omp parallel for schedule(dynamic, 64) if (e >= SK__PARALLEL_HEAVY_ITEMS)
     for (long q = 0; q < (long)e; q++)
         build_edge(skin, level, &keys[pairs[q].use_left], &pairs[q], (uint32_t)q, site_left_y);
     free(pairs);
