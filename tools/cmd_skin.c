@@ -390,74 +390,86 @@ static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, 
     return write_png_file(&m->edges, &f, err);
 }
 
+/* What every band of the maps shares. */
+typedef struct band_job {
+    const sk_skin *skin;
+    map_store *m;
+    int w, h, region[4], furrow_level, id_level, samples;
+    bool edges;
+    float furrow_max;
+} band_job;
+
+/* Renders band b (rows from b * SKIN_BAND_ROWS) into the store, through the thread's own
+ * normal and furrow buffers (the height goes straight into the store). */
+static sk_result render_band(const band_job *job, int b, float *normal, float *furrow, sk_error *err)
+{
+    map_store *m = job->m;
+    int rw = job->region[2], y0 = b * SKIN_BAND_ROWS;
+    int rows = job->region[3] - y0 < SKIN_BAND_ROWS ? job->region[3] - y0 : SKIN_BAND_ROWS;
+    size_t off = (size_t)y0 * (size_t)rw;
+    sk_skin_render_desc rd = {
+        .width = job->w,
+        .height = job->h,
+        .region = {job->region[0], job->region[1] + y0, rw, rows},
+        .height_mm = m->height.data + off,
+        .normal = normal,
+        .furrow = furrow,
+        .cell_id = m->ids + off,
+        .preview = m->preview.data ? m->preview.data + 3 * off : NULL,
+        .edges = job->edges ? m->edges.data + 3 * off : NULL,
+        .furrow_level = job->furrow_level,
+        .id_level = job->id_level,
+        .samples = job->samples,
+    };
+    sk_result r = sk_skin_render(job->skin, &rd, err);
+    if (r != SK_OK) return r;
+    for (size_t i = 0; i < (size_t)rows * (size_t)rw; i++) {
+        size_t o = off + i;
+        for (int c = 0; c < 2; c++)
+            m->normal[2 * o + c] = (int16_t)lrintf(normal[3 * i + c] * 32767.0f);
+        /* furrow.png's code: the distance over [0, furrow_max] */
+        float d = furrow[i] / job->furrow_max;
+        m->furrow[o] = (uint16_t)lrint((d > 1.0f ? 1.0f : d) * 65535.0);
+    }
+    return SK_OK;
+}
+
 /* Renders the region into the store in bands of a few rows, shared out between the
  * threads in one parallel loop: each thread renders a band on its own (the renderer's
  * loop inside runs on that thread) and stores it at once, so threads wait for one another
  * only at the end. Maps of little work run on one thread. */
-static sk_result render_maps(const sk_skin *skin, map_store *m, int w, int h, const int region[4],
-                             int furrow_level, int id_level, int samples, bool edges,
-                             float furrow_max, sk_progress_bar *bar, sk_error *err)
+static sk_result render_maps(const band_job *job, sk_progress_bar *bar, sk_error *err)
 {
-    int rw = region[2], rh = region[3], bands = (rh + SKIN_BAND_ROWS - 1) / SKIN_BAND_ROWS;
-    double work = (double)rw * rh * sk_skin_get_desc(skin)->level_count * samples * samples;
+    int rh = job->region[3], bands = (rh + SKIN_BAND_ROWS - 1) / SKIN_BAND_ROWS;
+    double work = (double)job->region[2] * rh * sk_skin_get_desc(job->skin)->level_count *
+                  job->samples * job->samples;
     sk_result result = SK_OK;
-    long rows_done = 0, rows_shown = 0;
+    bool failed = false;
+    long rows_done = 0;
 #pragma omp parallel if (work >= SKIN_PARALLEL_WORK && bands > 1)
     {
-        size_t band_px = (size_t)rw * SKIN_BAND_ROWS;
+        size_t band_px = (size_t)job->region[2] * SKIN_BAND_ROWS;
         float *normal = malloc(sizeof(float) * 3 * band_px), *furrow = malloc(sizeof(float) * band_px);
-        if (!normal || !furrow) {
-#pragma omp critical(skin_maps_result)
-            if (result == SK_OK)
-                result = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a band of the maps");
-        }
 #pragma omp for schedule(dynamic, 1)
         for (int b = 0; b < bands; b++) {
-            sk_result seen;
+            bool stop;
 #pragma omp atomic read
-            seen = result;
-            if (seen != SK_OK) continue;
-            int y0 = b * SKIN_BAND_ROWS, rows = rh - y0 < SKIN_BAND_ROWS ? rh - y0 : SKIN_BAND_ROWS;
-            size_t off = (size_t)y0 * (size_t)rw;
-            sk_skin_render_desc rd = {
-                .width = w,
-                .height = h,
-                .region = {region[0], region[1] + y0, rw, rows},
-                .height_mm = m->height.data + off,
-                .normal = normal,
-                .furrow = furrow,
-                .cell_id = m->ids + off,
-                .preview = m->preview.data ? m->preview.data + 3 * off : NULL,
-                .edges = edges ? m->edges.data + 3 * off : NULL,
-                .furrow_level = furrow_level,
-                .id_level = id_level,
-                .samples = samples,
-            };
+            stop = failed;
+            if (stop) continue;
             sk_error band_err = {0};
-            sk_result r = sk_skin_render(skin, &rd, &band_err);
-            if (r != SK_OK) {
-#pragma omp critical(skin_maps_result)
-                if (result == SK_OK) {
+            sk_result r = normal && furrow ? render_band(job, b, normal, furrow, &band_err)
+                                           : sk_fail(&band_err, SK_ERROR_OUT_OF_MEMORY,
+                                                     "out of memory for a band of the maps");
+#pragma omp critical(skin_maps_progress)
+            {
+                if (r != SK_OK && !failed) { /* the first failure is reported */
                     result = r;
                     if (err) *err = band_err;
+#pragma omp atomic write
+                    failed = true;
                 }
-                continue;
-            }
-            for (size_t i = 0; i < (size_t)rows * (size_t)rw; i++) {
-                size_t o = off + i;
-                for (int c = 0; c < 2; c++)
-                    m->normal[2 * o + c] = (int16_t)lrintf(normal[3 * i + c] * 32767.0f);
-                /* furrow.png's code: the distance over [0, furrow_max] */
-                float d = furrow[i] / furrow_max;
-                m->furrow[o] = (uint16_t)lrint((d > 1.0f ? 1.0f : d) * 65535.0);
-            }
-            long done;
-#pragma omp atomic capture
-            done = rows_done += rows;
-#pragma omp critical(skin_maps_progress)
-            if (done > rows_shown) { /* bands finish out of order */
-                rows_shown = done;
-                sk_progress_bar_update(bar, (double)done / rh);
+                rows_done += r == SK_OK ? SKIN_BAND_ROWS : 0;
+                if (r == SK_OK) sk_progress_bar_update(bar, (double)(rows_done < rh ? rows_done : rh) / rh);
             }
         }
         free(normal), free(furrow);
@@ -531,8 +543,11 @@ static int run_maps(const cli_command *command, const cli_args *args)
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "skin maps", !args->common.quiet);
     if (r == SK_OK)
-        r = render_maps(skin, &m, w, h, region, (int)furrow_level, (int)id_level, (int)samples,
-                        edges, furrow_max, &bar, &err);
+        r = render_maps(&(band_job){.skin = skin, .m = &m, .w = w, .h = h,
+                                    .region = {region[0], region[1], region[2], region[3]},
+                                    .furrow_level = (int)furrow_level, .id_level = (int)id_level,
+                                    .samples = (int)samples, .edges = edges, .furrow_max = furrow_max},
+                        &bar, &err);
     sk_progress_bar_end(&bar);
     times.shading = phase_now();
     if (r == SK_OK)
