@@ -342,7 +342,14 @@ static void fill_pattern(uint8_t *p, size_t n, uint64_t seed, int kind)
 {
     for (size_t i = 0; i < n; i++) {
         uint64_t h = sk_hash(seed, i / (kind == 2 ? 64 : 1), 0, 0);
-        p[i] = kind == 0 ? (uint8_t)h : kind == 1 ? (uint8_t)(i % 251 + (h & 3)) : (uint8_t)(h & 0x0f);
+        /* kind 3: byte k with probability 2^-(k+1), whose Huffman codes run to the
+           longest DEFLATE allows (the walk's second-level tables) */
+        uint8_t geometric = 0;
+        while (geometric < 40 && (h >> geometric & 1)) geometric++;
+        p[i] = kind == 0   ? (uint8_t)h
+               : kind == 1 ? (uint8_t)(i % 251 + (h & 3))
+               : kind == 2 ? (uint8_t)(h & 0x0f)
+                           : geometric;
     }
 }
 
@@ -354,7 +361,7 @@ static void test_deflate_join(void **state)
     struct libdeflate_decompressor *dec = libdeflate_alloc_decompressor();
     const size_t sizes[4] = {1, 3000, 70000, 300000};
     for (int level = 1; level <= 12; level += 3)
-        for (int kind = 0; kind < 3; kind++) {
+        for (int kind = 0; kind < 4; kind++) {
             struct libdeflate_compressor *c = libdeflate_alloc_compressor(level);
             size_t total = 0;
             for (int k = 0; k < 4; k++) total += sizes[k];
