@@ -18,7 +18,7 @@
 /* Maps of fewer pixel-levels (pixels x levels x samples^2) render on one thread, as the
    renderer's own loop does: starting a second costs more than it saves. */
 #define SKIN_PARALLEL_WORK 32768
-/* Maps of at least this many pixels are written with a fast zlib level. */
+/* Maps of at least this many pixels are written with a fast deflate level. */
 #define SKIN_FAST_PNG_PIXELS (2048 * 2048)
 
 static const cli_option k_preview_options[] = {
@@ -197,7 +197,7 @@ static int run_preview(const cli_command *command, const cli_args *args)
     if (r == SK_OK) {
         sk_image_metadata meta = {0};
         describe(skin, w, h, &meta);
-        /* zlib level 2: a shaded preview comes out about as small as at the default 6,
+        /* deflate level 2: a shaded preview comes out about as small as at the default 6,
            in half the time */
         sk_png_write_desc png = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB,
                                  .metadata = &meta, .compression_level = 2};
