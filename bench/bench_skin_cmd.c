@@ -19,6 +19,7 @@ extern char **environ;
 
 typedef struct run {
     double wall, cpu, model, shading, files;
+    double cpu_model, cpu_shading, cpu_files; /* the command's own CPU split */
     long peak_kib;
 } run;
 
@@ -76,6 +77,10 @@ static int run_cli(const char *const *argv, const char *threads, run *out)
     if (!line || sscanf(line, "timings: model %lf ms, shading %lf ms, files %lf ms",
                         &out->model, &out->shading, &out->files) != 3)
         out->model = out->shading = out->files = -1;
+    const char *cpu = line ? strstr(line, "(CPU ") : NULL;
+    if (!cpu || sscanf(cpu, "(CPU %lf, %lf, %lf ms)", &out->cpu_model, &out->cpu_shading,
+                       &out->cpu_files) != 3)
+        out->cpu_model = out->cpu_shading = out->cpu_files = -1;
     return 0;
 }
 
@@ -94,9 +99,9 @@ static int best_of(const char *const *argv, const char *threads, int runs, run *
 static void print_run(const char *label, const run *r, const char *target)
 {
     printf("    %-10s %7.1f ms wall, %7.1f ms CPU, peak %5.0f MiB   (model %.1f, shading %.1f, "
-           "files %.1f ms)%s\n",
+           "files %.1f ms; CPU %.1f, %.1f, %.1f ms)%s\n",
            label, r->wall * 1e3, r->cpu * 1e3, r->peak_kib / 1024.0, r->model, r->shading,
-           r->files, target);
+           r->files, r->cpu_model, r->cpu_shading, r->cpu_files, target);
 }
 
 int main(void)

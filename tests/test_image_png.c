@@ -234,6 +234,52 @@ static void test_png_memory_equals_file(void **state)
     sk_image_free(&im);
 }
 
+/* Rows given one at a time by a function: here the rows of an image, with the count of
+ * calls (rows may be asked for more than once, from several threads). */
+typedef struct rows_of_image {
+    const sk_image *image;
+    int calls;
+} rows_of_image;
+
+static void image_row(void *user, int y, float *row)
+{
+    rows_of_image *r = user;
+    memcpy(row, sk_image_pixel(r->image, 0, y), sizeof(float) * (size_t)r->image->width * (size_t)r->image->channels);
+#pragma omp atomic
+    r->calls++;
+}
+
+/* The rows writer gives the bytes of the image writer, for one strip and for many, at 8
+ * and 16 bits, sRGB and linear; a missing row function is refused. */
+static void test_png_rows_equal_image(void **state)
+{
+    (void)state;
+    const int shapes[3][3] = {{37, 11, 1}, {600, 900, 3}, {1000, 700, 4}}; /* one, 2 and 6 strips */
+    const char *a = sk_test_path("png/rows_image.png"), *b = sk_test_path("png/rows_rows.png");
+    for (int s = 0; s < 3; s++)
+        for (int depth = 8; depth <= 16; depth += 8) {
+            sk_image im;
+            int w = shapes[s][0], h = shapes[s][1], c = shapes[s][2];
+            SK_ASSERT_OK(sk_image_create(&im, w, h, c, &e_));
+            for (size_t i = 0; i < (size_t)w * h * c; i++) im.data[i] = test_value(21 + s, i);
+            sk_png_write_desc d = {.bit_depth = depth,
+                                   .encoding = depth == 8 ? SK_PNG_ENCODING_SRGB : SK_PNG_ENCODING_LINEAR};
+            SK_ASSERT_OK(sk_image_write_png(&im, a, &d, &e_));
+            rows_of_image user = {&im, 0};
+            sk_image_rows rows = {.width = w, .height = h, .channels = c, .get_row = image_row, .user = &user};
+            SK_ASSERT_OK(sk_image_write_png_rows(&rows, b, &d, &e_));
+            assert_true(sk_test_same_file(a, b));
+            assert_true(user.calls >= h);
+            sk_image_free(&im);
+        }
+    sk_image_rows none = {.width = 4, .height = 4, .channels = 3};
+    assert_int_equal(sk_image_write_png_rows(&none, b, NULL, NULL), SK_ERROR_INVALID_ARGUMENT);
+    rows_of_image user = {NULL, 0};
+    sk_image_rows wide = {.width = 70000, .height = 4, .channels = 3, .get_row = image_row, .user = &user};
+    assert_int_not_equal(sk_image_write_png_rows(&wide, b, NULL, NULL), SK_OK);
+    assert_int_equal(user.calls, 0);
+}
+
 static void test_png_same_bytes_any_threads(void **state)
 {
     (void)state;
@@ -296,7 +342,14 @@ static void fill_pattern(uint8_t *p, size_t n, uint64_t seed, int kind)
 {
     for (size_t i = 0; i < n; i++) {
         uint64_t h = sk_hash(seed, i / (kind == 2 ? 64 : 1), 0, 0);
-        p[i] = kind == 0 ? (uint8_t)h : kind == 1 ? (uint8_t)(i % 251 + (h & 3)) : (uint8_t)(h & 0x0f);
+        /* kind 3: byte k with probability 2^-(k+1), whose Huffman codes run to the
+           longest DEFLATE allows (the walk's second-level tables) */
+        uint8_t geometric = 0;
+        while (geometric < 40 && (h >> geometric & 1)) geometric++;
+        p[i] = kind == 0   ? (uint8_t)h
+               : kind == 1 ? (uint8_t)(i % 251 + (h & 3))
+               : kind == 2 ? (uint8_t)(h & 0x0f)
+                           : geometric;
     }
 }
 
@@ -308,7 +361,7 @@ static void test_deflate_join(void **state)
     struct libdeflate_decompressor *dec = libdeflate_alloc_decompressor();
     const size_t sizes[4] = {1, 3000, 70000, 300000};
     for (int level = 1; level <= 12; level += 3)
-        for (int kind = 0; kind < 3; kind++) {
+        for (int kind = 0; kind < 4; kind++) {
             struct libdeflate_compressor *c = libdeflate_alloc_compressor(level);
             size_t total = 0;
             for (int k = 0; k < 4; k++) total += sizes[k];
@@ -381,6 +434,7 @@ int main(void)
         cmocka_unit_test(test_png_decodes_exactly),
         cmocka_unit_test(test_png_strips_decode_exactly),
         cmocka_unit_test(test_png_memory_equals_file),
+        cmocka_unit_test(test_png_rows_equal_image),
         cmocka_unit_test(test_png_same_bytes_any_threads),
         cmocka_unit_test(test_srgb8_table_matches_curve),
         cmocka_unit_test(test_deflate_join),

@@ -6,14 +6,19 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "cli.h"
 #include "shitsukan/io.h"
 #include "shitsukan/skin.h"
 
 #define SKIN_DEFAULT_SIZE 400
-#define SKIN_BAND_ROWS 64
-/* Maps of at least this many pixels are written with a fast zlib level. */
+/* Rows of a band of the maps a thread renders at a time. */
+#define SKIN_BAND_ROWS 4
+/* Maps of fewer pixel-levels (pixels x levels x samples^2) render on one thread, as the
+   renderer's own loop does: starting a second costs more than it saves. */
+#define SKIN_PARALLEL_WORK 32768
+/* Maps of at least this many pixels are written with a fast deflate level. */
 #define SKIN_FAST_PNG_PIXELS (2048 * 2048)
 
 static const cli_option k_preview_options[] = {
@@ -126,17 +131,29 @@ static void describe(const sk_skin *skin, int w, int h, sk_image_metadata *meta)
 }
 
 /* Where the time of a command goes, printed on stderr when SHITSUKAN_TIMINGS is set (the
- * benchmarks read it): building the cells (model), rendering (shading) and the files. */
+ * benchmarks read it): building the cells (model), rendering (shading) and the files, in
+ * wall time and in the CPU time of all threads (which a loaded machine inflates less). */
+typedef struct phase_mark {
+    double wall, cpu;
+} phase_mark;
+
 typedef struct phase_times {
-    double start, model, shading, files;
+    phase_mark start, model, shading, files;
 } phase_times;
+
+static phase_mark phase_now(void)
+{
+    return (phase_mark){sk_time_seconds(), (double)clock() / CLOCKS_PER_SEC};
+}
 
 static void phase_report(const char *name, const phase_times *t)
 {
     if (!getenv("SHITSUKAN_TIMINGS")) return;
-    fprintf(stderr, "%s timings: model %.1f ms, shading %.1f ms, files %.1f ms\n", name,
-            (t->model - t->start) * 1e3, (t->shading - t->model) * 1e3,
-            (t->files - t->shading) * 1e3);
+    fprintf(stderr,
+            "%s timings: model %.1f ms, shading %.1f ms, files %.1f ms (CPU %.1f, %.1f, %.1f ms)\n",
+            name, (t->model.wall - t->start.wall) * 1e3, (t->shading.wall - t->model.wall) * 1e3,
+            (t->files.wall - t->shading.wall) * 1e3, (t->model.cpu - t->start.cpu) * 1e3,
+            (t->shading.cpu - t->model.cpu) * 1e3, (t->files.cpu - t->shading.cpu) * 1e3);
 }
 
 /* ------------------------------------------------------------------ preview */
@@ -155,10 +172,10 @@ static int run_preview(const cli_command *command, const cli_args *args)
     if ((status = cli_output_format("-o", output, k_png, &format))) return status;
     /* float RGB and its 8-bit encoding */
     if ((status = check_image_memory(args, region[2], region[3], 16, &desc))) return status;
-    phase_times times = {.start = sk_time_seconds()};
+    phase_times times = {.start = phase_now()};
     sk_skin *skin;
     if ((status = make_skin(&desc, args, &skin))) return status;
-    times.model = sk_time_seconds();
+    times.model = phase_now();
     sk_error err = {0};
     sk_image image = {0};
     sk_result r = sk_image_create(&image, region[2], region[3], 3, &err);
@@ -175,18 +192,18 @@ static int run_preview(const cli_command *command, const cli_args *args)
         r = sk_skin_render(skin, &rd, &err);
         sk_progress_bar_end(&bar);
     }
-    times.shading = sk_time_seconds();
+    times.shading = phase_now();
     sk_threads_rest(); /* one thread writes the file */
     if (r == SK_OK) {
         sk_image_metadata meta = {0};
         describe(skin, w, h, &meta);
-        /* zlib level 2: a shaded preview comes out about as small as at the default 6,
+        /* deflate level 2: a shaded preview comes out about as small as at the default 6,
            in half the time */
         sk_png_write_desc png = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB,
                                  .metadata = &meta, .compression_level = 2};
         r = sk_image_write_png(&image, output, &png, &err);
     }
-    times.files = sk_time_seconds();
+    times.files = phase_now();
     sk_image_free(&image);
     sk_skin_destroy(skin);
     if (r == SK_OK) phase_report("skin", &times);
@@ -194,17 +211,6 @@ static int run_preview(const cli_command *command, const cli_args *args)
 }
 
 /* --------------------------------------------------------------------- maps */
-typedef struct band_progress {
-    sk_progress_bar *bar;
-    double base, span;
-} band_progress;
-
-static void band_progress_fn(void *user, double fraction)
-{
-    band_progress *b = user;
-    sk_progress_bar_update(b->bar, b->base + b->span * fraction);
-}
-
 /* A colour per cell id (stable for a seed): for per-ridge variation in shaders. */
 static void id_colour(uint32_t id, float rgb[3]) { sk_skin_cell_color(id, rgb); }
 
@@ -254,36 +260,62 @@ static sk_result write_png_file(const sk_image *image, map_file *f, sk_error *er
     return sk_image_write_png(image, f->path, &f->png, err);
 }
 
-/* The 3-channel files, each expanded in turn into the same float image (the writer takes
- * floats: 12 bytes a pixel, so only one of them is held at a time). */
-enum { RGB_CELLS, RGB_NORMAL, RGB_PREVIEW, RGB_EDGES };
+/* The files made from the store, row by row as the writer asks (no float copy of a whole
+ * map is made). */
+enum { MAP_HEIGHT, MAP_FURROW, MAP_CELLS, MAP_NORMAL, MAP_PREVIEW };
 
-static void expand_rgb(const sk_skin *skin, const map_store *m, int which, bool directx,
-                       sk_image *out)
+typedef struct map_rows {
+    const sk_skin *skin;
+    const map_store *m;
+    int which;
+    bool directx;
+    float lo, span; /* height.png: value = (height - lo) / span */
+} map_rows;
+
+static void map_row(void *user, int y, float *row)
 {
-#pragma omp parallel for schedule(static)
-    for (long j = 0; j < (long)m->n; j++) {
-        size_t i = (size_t)j;
-        float *p = out->data + 3 * i;
-        if (which == RGB_CELLS) {
+    const map_rows *r = user;
+    const map_store *m = r->m;
+    size_t i0 = (size_t)y * (size_t)m->w;
+    for (int x = 0; x < m->w; x++) {
+        size_t i = i0 + (size_t)x;
+        if (r->which == MAP_HEIGHT) {
+            row[x] = (m->height.data[i] - r->lo) / r->span;
+            continue;
+        }
+        if (r->which == MAP_FURROW) {
+            row[x] = m->furrow[i] / 65535.0f;
+            continue;
+        }
+        float *p = row + 3 * x;
+        if (r->which == MAP_CELLS) {
             id_colour(m->ids[i], p);
             continue;
         }
         float nv[3];
         stored_normal(m, i, nv);
-        if (which == RGB_NORMAL) {
+        if (r->which == MAP_NORMAL) {
             /* tangent-space normals, 8-bit: OpenGL (green up) or DirectX (green down) */
-            if (directx) nv[1] = -nv[1];
+            if (r->directx) nv[1] = -nv[1];
             for (int c = 0; c < 3; c++) p[c] = 0.5f * nv[c] + 0.5f;
         } else {
-            sk_vec3f c = sk_skin_shade(skin, sk_v3f(nv[0], nv[1], nv[2]));
+            sk_vec3f c = sk_skin_shade(r->skin, sk_v3f(nv[0], nv[1], nv[2]));
             p[0] = c.x, p[1] = c.y, p[2] = c.z;
         }
     }
 }
 
-/* Writes the files: height.exr and then height.png (scaled in place) beside furrow.png,
- * then the 3-channel files one after another, freeing what each leaves unused. */
+static sk_result write_map_rows(map_rows *r, map_file *f, sk_error *err)
+{
+    sk_image_rows rows = {.width = r->m->w, .height = r->m->h,
+                          .channels = r->which == MAP_HEIGHT || r->which == MAP_FURROW ? 1 : 3,
+                          .get_row = map_row, .user = r};
+    f->png.metadata = &f->meta;
+    return sk_image_write_png_rows(&rows, f->path, &f->png, err);
+}
+
+/* Writes the files one after another (each on every thread), freeing what each leaves
+ * unused: height.exr, height.png, furrow.png, then the 3-channel files. */
 static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, int w, int h,
                             bool directx, bool edges, int furrow_level, float furrow_max,
                             sk_error *err)
@@ -293,11 +325,12 @@ static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, 
     sk_image_metadata meta = {0};
     describe(skin, w, h, &meta);
     char v[160];
-    /* Big maps spend most of their time in zlib: level 2 writes a 4096 x 4096 set about
-       three times faster than the default 6, for files 2-20 % larger; the float height
-       (noise to zlib) is stored uncompressed, 6 % larger and 40 times faster. */
+    /* Big maps spend most of their time in deflate: level 1 writes a 4096 x 4096 set in
+       about half the time of the default 6, for files 0-12 % larger (docs/skin.md); the
+       float height (noise to deflate) is stored uncompressed, 6 % larger and 40 times
+       faster. */
     bool fast = m->n >= SKIN_FAST_PNG_PIXELS;
-    int level = fast ? 2 : 0;
+    int level = fast ? 1 : 0;
     sk_png_write_desc png16 = {.bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR,
                                .compression_level = level};
     sk_png_write_desc png8 = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_LINEAR,
@@ -311,127 +344,137 @@ static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, 
     sk_image_metadata_set(&height_meta, "shitsukan:height_min_mm", v, NULL);
     snprintf(v, sizeof v, "%.9g", hi);
     sk_image_metadata_set(&height_meta, "shitsukan:height_max_mm", v, NULL);
-    map_file height_png = {.png = png16, .meta = height_meta};
-    snprintf(height_png.path, sizeof height_png.path, "%s/height.png", dir);
-    snprintf(v, sizeof v, "height_mm = %.9g + value * %.9g (value = code / 65535)", lo, hi - lo);
-    sk_image_metadata_set(&height_png.meta, "shitsukan:decode", v, NULL);
-    map_file furrow_png = {.png = png16, .meta = meta};
-    snprintf(furrow_png.path, sizeof furrow_png.path, "%s/furrow.png", dir);
-    snprintf(v, sizeof v, "%d", furrow_level);
-    sk_image_metadata_set(&furrow_png.meta, "shitsukan:furrow_level", v, NULL);
-    snprintf(v, sizeof v, "distance_mm = value * %.9g (clamped there)", furrow_max);
-    sk_image_metadata_set(&furrow_png.meta, "shitsukan:decode", v, NULL);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/height.exr", dir);
+    sk_exr_write_desc exr = {.metadata = &height_meta,
+                             .compression = fast ? SK_EXR_COMPRESSION_NONE : SK_EXR_COMPRESSION_DEFAULT};
+    sk_result r = sk_image_write_exr(&m->height, path, &exr, err);
+    if (r != SK_OK) return r;
 
-    /* Stage 1, two files side by side: the heights, and the furrow distances. */
-    sk_result results[2] = {SK_OK, SK_OK};
-    sk_error errors[2];
-    sk_error_clear(&errors[0]), sk_error_clear(&errors[1]);
-#pragma omp parallel for schedule(static, 1) num_threads(2)
-    for (int task = 0; task < 2; task++) {
-        if (task == 0) {
-            char path[4096];
-            snprintf(path, sizeof path, "%s/height.exr", dir);
-            sk_exr_write_desc exr = {.metadata = &height_meta,
-                                     .compression = fast ? SK_EXR_COMPRESSION_NONE
-                                                         : SK_EXR_COMPRESSION_DEFAULT};
-            results[0] = sk_image_write_exr(&m->height, path, &exr, &errors[0]);
-            if (results[0] != SK_OK) continue;
-            /* height.png: 16-bit over the skin's height range (the EXR keeps mm) */
-            for (size_t i = 0; i < m->n; i++)
-                m->height.data[i] = (m->height.data[i] - lo) / (hi - lo);
-            results[0] = write_png_file(&m->height, &height_png, &errors[0]);
-        } else {
-            sk_image furrow = {0};
-            results[1] = sk_image_create(&furrow, m->w, m->h, 1, &errors[1]);
-            if (results[1] != SK_OK) continue;
-            for (size_t i = 0; i < m->n; i++) furrow.data[i] = m->furrow[i] / 65535.0f;
-            results[1] = write_png_file(&furrow, &furrow_png, &errors[1]);
-            sk_image_free(&furrow);
-        }
-    }
-    for (int t = 0; t < 2; t++)
-        if (results[t] != SK_OK) {
-            if (err) *err = errors[t];
-            return results[t];
-        }
+    /* height.png: 16-bit over the skin's height range (the EXR keeps mm) */
+    map_file f = {.png = png16, .meta = height_meta};
+    snprintf(f.path, sizeof f.path, "%s/height.png", dir);
+    snprintf(v, sizeof v, "height_mm = %.9g + value * %.9g (value = code / 65535)", lo, hi - lo);
+    sk_image_metadata_set(&f.meta, "shitsukan:decode", v, NULL);
+    map_rows rows = {.skin = skin, .m = m, .which = MAP_HEIGHT, .directx = directx, .lo = lo,
+                     .span = hi - lo};
+    if ((r = write_map_rows(&rows, &f, err)) != SK_OK) return r;
     sk_image_free(&m->height);
+
+    f = (map_file){.png = png16, .meta = meta};
+    snprintf(f.path, sizeof f.path, "%s/furrow.png", dir);
+    snprintf(v, sizeof v, "%d", furrow_level);
+    sk_image_metadata_set(&f.meta, "shitsukan:furrow_level", v, NULL);
+    snprintf(v, sizeof v, "distance_mm = value * %.9g (clamped there)", furrow_max);
+    sk_image_metadata_set(&f.meta, "shitsukan:decode", v, NULL);
+    rows.which = MAP_FURROW;
+    if ((r = write_map_rows(&rows, &f, err)) != SK_OK) return r;
     free(m->furrow), m->furrow = NULL;
 
-    /* Stage 2: the 3-channel files through one float image. */
-    const char *names[4] = {"cells.png", "normal.png", "preview.png", "edges.png"};
-    sk_image rgb = {0};
-    sk_result r = SK_OK;
-    for (int which = RGB_CELLS; r == SK_OK && which <= RGB_EDGES; which++) {
-        if (which == RGB_EDGES && !edges) break;
-        map_file f = {.png = which == RGB_NORMAL || which == RGB_CELLS ? png8 : srgb,
-                      .meta = meta};
-        snprintf(f.path, sizeof f.path, "%s/%s", dir, names[which]);
-        if (which == RGB_NORMAL)
+    const char *names[3] = {"cells.png", "normal.png", "preview.png"};
+    for (int which = MAP_CELLS; which <= MAP_PREVIEW; which++) {
+        f = (map_file){.png = which == MAP_PREVIEW ? srgb : png8, .meta = meta};
+        snprintf(f.path, sizeof f.path, "%s/%s", dir, names[which - MAP_CELLS]);
+        if (which == MAP_NORMAL)
             sk_image_metadata_set(&f.meta, "shitsukan:normal_convention",
                                   directx ? "directx" : "opengl", NULL);
-        const sk_image *image = &rgb;
-        if (which == RGB_PREVIEW && m->preview.data) {
-            image = &m->preview;
-        } else if (which == RGB_EDGES) {
-            image = &m->edges;
-        } else {
-            if (!rgb.data && (r = sk_image_create(&rgb, m->w, m->h, 3, err)) != SK_OK) break;
-            expand_rgb(skin, m, which, directx, &rgb);
-        }
-        r = write_png_file(image, &f, err);
-        if (which == RGB_CELLS) free(m->ids), m->ids = NULL;
+        rows.which = which;
+        r = which == MAP_PREVIEW && m->preview.data ? write_png_file(&m->preview, &f, err)
+                                                     : write_map_rows(&rows, &f, err);
+        if (r != SK_OK) return r;
+        if (which == MAP_CELLS) free(m->ids), m->ids = NULL;
     }
-    sk_image_free(&rgb);
-    return r;
+    if (!edges) return SK_OK;
+    f = (map_file){.png = srgb, .meta = meta};
+    snprintf(f.path, sizeof f.path, "%s/edges.png", dir);
+    return write_png_file(&m->edges, &f, err);
 }
 
-/* Renders the region in bands of rows into the store. */
-static sk_result render_maps(const sk_skin *skin, map_store *m, int w, int h, const int region[4],
-                             int furrow_level, int id_level, int samples, bool edges,
-                             float furrow_max, sk_progress_bar *bar, sk_error *err)
+/* What every band of the maps shares. */
+typedef struct band_job {
+    const sk_skin *skin;
+    map_store *m;
+    int w, h, region[4], furrow_level, id_level, samples;
+    bool edges;
+    float furrow_max;
+} band_job;
+
+/* Renders band b (rows from b * SKIN_BAND_ROWS) into the store, through the thread's own
+ * normal and furrow buffers (the height goes straight into the store). */
+static sk_result render_band(const band_job *job, int b, float *normal, float *furrow, sk_error *err)
 {
-    int rw = region[2], rh = region[3];
-    size_t band_px = (size_t)rw * SKIN_BAND_ROWS;
-    float *height = malloc(sizeof(float) * band_px), *normal = malloc(sizeof(float) * 3 * band_px);
-    float *furrow = malloc(sizeof(float) * band_px);
-    sk_result r = SK_OK;
-    if (!height || !normal || !furrow)
-        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a band of the maps");
-    for (int y0 = 0; r == SK_OK && y0 < rh; y0 += SKIN_BAND_ROWS) {
-        int rows = rh - y0 < SKIN_BAND_ROWS ? rh - y0 : SKIN_BAND_ROWS;
-        size_t off = (size_t)y0 * (size_t)rw;
-        band_progress bp = {bar, (double)y0 / rh, (double)rows / rh};
-        sk_skin_render_desc rd = {
-            .width = w,
-            .height = h,
-            .region = {region[0], region[1] + y0, rw, rows},
-            .height_mm = height,
-            .normal = normal,
-            .furrow = furrow,
-            .cell_id = m->ids + off,
-            .preview = m->preview.data ? m->preview.data + 3 * off : NULL,
-            .edges = edges ? m->edges.data + 3 * off : NULL,
-            .furrow_level = furrow_level,
-            .id_level = id_level,
-            .samples = samples,
-            .progress = {band_progress_fn, &bp},
-        };
-        r = sk_skin_render(skin, &rd, err);
-        if (r != SK_OK) break;
-        long band = (long)rows * rw;
-#pragma omp parallel for schedule(static)
-        for (long i = 0; i < band; i++) {
-            size_t o = off + (size_t)i;
-            m->height.data[o] = height[i];
-            for (int c = 0; c < 2; c++)
-                m->normal[2 * o + c] = (int16_t)lrintf(normal[3 * i + c] * 32767.0f);
-            /* furrow.png's code: the distance over [0, furrow_max] */
-            float d = furrow[i] / furrow_max;
-            m->furrow[o] = (uint16_t)lrint((d > 1.0f ? 1.0f : d) * 65535.0);
-        }
+    map_store *m = job->m;
+    int rw = job->region[2], y0 = b * SKIN_BAND_ROWS;
+    int rows = job->region[3] - y0 < SKIN_BAND_ROWS ? job->region[3] - y0 : SKIN_BAND_ROWS;
+    size_t off = (size_t)y0 * (size_t)rw;
+    sk_skin_render_desc rd = {
+        .width = job->w,
+        .height = job->h,
+        .region = {job->region[0], job->region[1] + y0, rw, rows},
+        .height_mm = m->height.data + off,
+        .normal = normal,
+        .furrow = furrow,
+        .cell_id = m->ids + off,
+        .preview = m->preview.data ? m->preview.data + 3 * off : NULL,
+        .edges = job->edges ? m->edges.data + 3 * off : NULL,
+        .furrow_level = job->furrow_level,
+        .id_level = job->id_level,
+        .samples = job->samples,
+    };
+    sk_result r = sk_skin_render(job->skin, &rd, err);
+    if (r != SK_OK) return r;
+    for (size_t i = 0; i < (size_t)rows * (size_t)rw; i++) {
+        size_t o = off + i;
+        for (int c = 0; c < 2; c++)
+            m->normal[2 * o + c] = (int16_t)lrintf(normal[3 * i + c] * 32767.0f);
+        /* furrow.png's code: the distance over [0, furrow_max] */
+        float d = furrow[i] / job->furrow_max;
+        m->furrow[o] = (uint16_t)lrint((d > 1.0f ? 1.0f : d) * 65535.0);
     }
-    free(height), free(normal), free(furrow);
-    return r;
+    return SK_OK;
+}
+
+/* Renders the region into the store in bands of a few rows, shared out between the
+ * threads in one parallel loop: each thread renders a band on its own (the renderer's
+ * loop inside runs on that thread) and stores it at once, so threads wait for one another
+ * only at the end. Maps of little work run on one thread. */
+static sk_result render_maps(const band_job *job, sk_progress_bar *bar, sk_error *err)
+{
+    int rh = job->region[3], bands = (rh + SKIN_BAND_ROWS - 1) / SKIN_BAND_ROWS;
+    double work = (double)job->region[2] * rh * sk_skin_get_desc(job->skin)->level_count *
+                  job->samples * job->samples;
+    sk_result result = SK_OK;
+    bool failed = false;
+    long rows_done = 0;
+#pragma omp parallel if (work >= SKIN_PARALLEL_WORK && bands > 1)
+    {
+        size_t band_px = (size_t)job->region[2] * SKIN_BAND_ROWS;
+        float *normal = malloc(sizeof(float) * 3 * band_px), *furrow = malloc(sizeof(float) * band_px);
+#pragma omp for schedule(dynamic, 1)
+        for (int b = 0; b < bands; b++) {
+            bool stop;
+#pragma omp atomic read
+            stop = failed;
+            if (stop) continue;
+            sk_error band_err = {0};
+            sk_result r = normal && furrow ? render_band(job, b, normal, furrow, &band_err)
+                                           : sk_fail(&band_err, SK_ERROR_OUT_OF_MEMORY,
+                                                     "out of memory for a band of the maps");
+#pragma omp critical(skin_maps_progress)
+            {
+                if (r != SK_OK && !failed) { /* the first failure is reported */
+                    result = r;
+                    if (err) *err = band_err;
+#pragma omp atomic write
+                    failed = true;
+                }
+                rows_done += r == SK_OK ? SKIN_BAND_ROWS : 0;
+                if (r == SK_OK) sk_progress_bar_update(bar, (double)(rows_done < rh ? rows_done : rh) / rh);
+            }
+        }
+        free(normal), free(furrow);
+    }
+    return result;
 }
 
 static int run_maps(const cli_command *command, const cli_args *args)
@@ -450,13 +493,13 @@ static int run_maps(const cli_command *command, const cli_args *args)
     if ((status = cli_get_int(command, args, "id-level", 1, 1, SK_SKIN_MAX_LEVELS, &id_level)))
         return status;
     bool edges = cli_has(command, args, "edges"), directx = cli_has(command, args, "directx");
-    /* All maps are held in memory until written (the maps as stored, one RGB float image,
-       and the encodings being written): split a huge map with --region. */
+    /* All maps are held in memory until written (the maps as stored and the encodings
+       being written): split a huge map with --region. */
     bool own_preview = samples > 1; /* else shaded from the kept normals */
-    double per_px = 14 + 12.0 * own_preview + 12.0 * edges + 12; /* + one RGB float image */
+    double per_px = 14 + 12.0 * own_preview + 12.0 * edges;
     if ((status = check_image_memory(args, region[2], region[3], per_px + 16, &desc)))
         return status;
-    phase_times times = {.start = sk_time_seconds()};
+    phase_times times = {.start = phase_now()};
     /* the folder is reserved first: its files appear together at the end, or none */
     sk_error err = {0};
     sk_output_set *outputs = NULL;
@@ -471,7 +514,7 @@ static int run_maps(const cli_command *command, const cli_args *args)
         sk_output_set_abort(outputs);
         return status;
     }
-    times.model = sk_time_seconds();
+    times.model = phase_now();
     const sk_skin_desc *rd_desc = sk_skin_get_desc(skin);
     sk_result r = SK_OK;
     int level_count = rd_desc->level_count;
@@ -500,16 +543,19 @@ static int run_maps(const cli_command *command, const cli_args *args)
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "skin maps", !args->common.quiet);
     if (r == SK_OK)
-        r = render_maps(skin, &m, w, h, region, (int)furrow_level, (int)id_level, (int)samples,
-                        edges, furrow_max, &bar, &err);
+        r = render_maps(&(band_job){.skin = skin, .m = &m, .w = w, .h = h,
+                                    .region = {region[0], region[1], region[2], region[3]},
+                                    .furrow_level = (int)furrow_level, .id_level = (int)id_level,
+                                    .samples = (int)samples, .edges = edges, .furrow_max = furrow_max},
+                        &bar, &err);
     sk_progress_bar_end(&bar);
-    times.shading = sk_time_seconds();
+    times.shading = phase_now();
     if (r == SK_OK)
         r = write_maps(skin, &m, staged, w, h, directx, edges, (int)furrow_level, furrow_max,
                        &err);
     if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
     else sk_output_set_abort(outputs);
-    times.files = sk_time_seconds();
+    times.files = phase_now();
     if (r == SK_OK && !args->common.quiet) {
         float lo, hi;
         double tw, th;

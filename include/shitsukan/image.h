@@ -88,6 +88,21 @@ sk_result sk_image_write_png(const sk_image *image, const char *path,
 sk_result sk_image_write_png_memory(const sk_image *image, const sk_png_write_desc *desc,
                                     uint8_t **out_data, size_t *out_size, sk_error *err);
 
+/* An image given row by row, for files derived from data kept in another form (a map
+ * stored as 16-bit codes, normals shaded on the way out): no float copy of the whole
+ * image is made. get_row writes row y (top first) as width * channels floats; the writer
+ * calls it from several threads at once, for any row in any order and possibly more than
+ * once, so it must be thread-safe and give the same values each time. */
+typedef struct sk_image_rows {
+    int width, height, channels;
+    void (*get_row)(void *user, int y, float *row);
+    void *user;
+} sk_image_rows;
+
+/* The same file as sk_image_write_png of the image the rows make. */
+sk_result sk_image_write_png_rows(const sk_image_rows *rows, const char *path,
+                                  const sk_png_write_desc *desc, sk_error *err);
+
 typedef struct sk_png_read_desc {
     sk_png_encoding encoding; /* 0 = sRGB: decode 8/16-bit sRGB codes to linear floats;
                                  LINEAR: code / max_code */

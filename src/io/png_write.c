@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "io/deflate_join.h"
 #include "io/image_internal.h"
@@ -22,7 +23,7 @@
 /* Raw (filtered) bytes per strip: large enough that restarting the compressor's window
  * at a strip costs little, small enough that a 2048 x 2048 RGB image has a dozen. */
 #define STRIP_BYTES ((size_t)1 << 20)
-/* Strips encoded before their chunks are written: bounds the memory held at once. */
+/* Strips encoded ahead of the first one not yet written: bounds the memory held at once. */
 #define STRIPS_IN_FLIGHT 16
 /* Filter type of every row (PNG spec 9.2): Up, the difference from the row above,
  * suits textures whose structure runs down the image (wood grain, rendered surfaces) and
@@ -184,8 +185,8 @@ static void emit_text(png_out *o, const sk_image_metadata_entry *e)
     emit_chunk(o, ascii ? "tEXt" : "iTXt", data, n + nv);
 }
 
-static void emit_header(png_out *o, const sk_image *image, int bit_depth, sk_png_encoding encoding,
-                        const sk_image_metadata *meta)
+static void emit_header(png_out *o, const sk_image_rows *image, int bit_depth,
+                        sk_png_encoding encoding, const sk_image_metadata *meta)
 {
     static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     static const uint8_t color_types[5] = {0, 0, 4, 2, 6}; /* grey, grey+alpha, RGB, RGBA */
@@ -220,7 +221,8 @@ static void emit_header(png_out *o, const sk_image *image, int bit_depth, sk_png
 /* ------------------------------------------------------------------ image data */
 
 typedef struct png_job {
-    const sk_image *image;
+    const sk_image_rows *rows; /* the pixels */
+    const sk_image *image;     /* or NULL: rows come from rows->get_row */
     sk__png_quantizer *quantizer;
     size_t row_bytes; /* sample bytes of a row (without the filter byte) */
     int rows_per_strip, strips, level;
@@ -238,6 +240,7 @@ typedef struct strip_out {
 typedef struct strip_worker {
     struct libdeflate_compressor *compressor;
     uint8_t *prev, *cur, *raw;
+    float *samples; /* one row from get_row */
 } strip_worker;
 
 static void worker_free(strip_worker *w)
@@ -246,6 +249,7 @@ static void worker_free(strip_worker *w)
     free(w->prev);
     free(w->cur);
     free(w->raw);
+    free(w->samples);
     memset(w, 0, sizeof *w);
 }
 
@@ -256,27 +260,53 @@ static bool worker_init(strip_worker *w, const png_job *job)
     w->prev = malloc(job->row_bytes);
     w->cur = malloc(job->row_bytes);
     w->raw = malloc((size_t)job->rows_per_strip * (job->row_bytes + 1));
-    if (w->compressor && w->prev && w->cur && w->raw) return true;
+    bool samples_ok = true;
+    if (!job->image) {
+        w->samples = malloc(sizeof(float) * (size_t)job->rows->width * (size_t)job->rows->channels);
+        samples_ok = w->samples != NULL;
+    }
+    if (w->compressor && w->prev && w->cur && w->raw && samples_ok) return true;
     worker_free(w);
     return false;
+}
+
+/* Row y as PNG sample codes. */
+static void quantize_row(const png_job *job, strip_worker *w, int y, uint8_t *out)
+{
+    const float *src;
+    if (job->image) {
+        src = sk_image_pixel(job->image, 0, y);
+    } else {
+        job->rows->get_row(job->rows->user, y, w->samples);
+        src = w->samples;
+    }
+    sk__png_quantize_row(job->quantizer, src, job->rows->width, out);
+}
+
+/* The Up filter of a row (PNG spec 9.2): its bytes minus those of the row above. */
+static void filter_up(uint8_t *restrict out, const uint8_t *restrict cur,
+                      const uint8_t *restrict above, size_t n)
+{
+#pragma omp simd
+    for (size_t i = 0; i < n; i++) out[i] = (uint8_t)(cur[i] - above[i]);
 }
 
 /* Filters and compresses strip s into out (false on allocation failure). */
 static bool encode_strip(const png_job *job, strip_worker *w, int s, strip_out *out)
 {
-    const sk_image *im = job->image;
+    int height = job->rows->height;
     int y0 = s * job->rows_per_strip;
-    int y1 = y0 + job->rows_per_strip < im->height ? y0 + job->rows_per_strip : im->height;
+    int y1 = y0 + job->rows_per_strip < height ? y0 + job->rows_per_strip : height;
     size_t rb = job->row_bytes, n = (size_t)(y1 - y0) * (rb + 1);
     if (y0 > 0)
-        sk__png_quantize_row(job->quantizer, sk_image_pixel(im, 0, y0 - 1), im->width, w->prev);
+        quantize_row(job, w, y0 - 1, w->prev);
     else
         memset(w->prev, 0, rb); /* the row above the first is zeros */
     for (int y = y0; y < y1; y++) {
         uint8_t *row = w->raw + (size_t)(y - y0) * (rb + 1);
-        sk__png_quantize_row(job->quantizer, sk_image_pixel(im, 0, y), im->width, w->cur);
+        quantize_row(job, w, y, w->cur);
         row[0] = ROW_FILTER;
-        for (size_t i = 0; i < rb; i++) row[1 + i] = (uint8_t)(w->cur[i] - w->prev[i]);
+        filter_up(row + 1, w->cur, w->prev, rb);
         uint8_t *t = w->prev;
         w->prev = w->cur;
         w->cur = t;
@@ -304,15 +334,51 @@ static bool encode_strip(const png_job *job, strip_worker *w, int s, strip_out *
     return true;
 }
 
-/* Encodes and writes the strips as IDAT chunks, STRIPS_IN_FLIGHT at a time, in parallel
- * when there are several. */
+/* Strips in order: each is written as soon as it and every strip before it are done. */
+typedef struct strip_queue {
+    strip_out *outs; /* per strip; bytes == NULL once written */
+    bool *done;
+    int next;        /* the first strip not yet written */
+    uint32_t adler;  /* of the strips written */
+} strip_queue;
+
+/* Writes the strips from queue->next on that are done (under the caller's lock; next is
+ * also read outside it, atomically). */
+static void write_ready_strips(png_out *o, const png_job *job, strip_queue *q, bool ok)
+{
+    int next = q->next;
+    for (; next < job->strips && q->done[next]; next++) {
+        strip_out *so = &q->outs[next];
+        if (ok && o->ok) {
+            q->adler = next == 0 ? so->adler : sk__adler32_combine(q->adler, so->adler, so->raw_size);
+            if (next == job->strips - 1) {
+                put32(so->bytes + so->size, q->adler);
+                so->size += 4;
+                so->crc = chunk_crc("IDAT", so->bytes, so->size);
+            }
+            emit_chunk_crc(o, "IDAT", so->bytes, so->size, so->crc);
+        }
+        free(so->bytes);
+        so->bytes = NULL;
+    }
+#pragma omp atomic write
+    q->next = next;
+}
+
+/* Encodes the strips, in parallel when there are several, and writes them as IDAT chunks
+ * in order: a strip done before an earlier one waits in memory, and a thread does not start
+ * a strip STRIPS_IN_FLIGHT or more ahead of the first unwritten one (which bounds that
+ * memory; the strip holding it back is being encoded, so the wait is short). No barrier
+ * between strips: a thread is never idle while there are strips to encode. */
 static sk_result emit_image_data(png_out *o, const png_job *job, sk_error *err)
 {
-    int in_flight = job->strips < STRIPS_IN_FLIGHT ? job->strips : STRIPS_IN_FLIGHT;
-    strip_out *outs = calloc((size_t)in_flight, sizeof *outs);
-    if (!outs) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the PNG strips");
+    strip_queue q = {.outs = calloc((size_t)job->strips, sizeof *q.outs),
+                     .done = calloc((size_t)job->strips, sizeof *q.done), .adler = 1};
+    if (!q.outs || !q.done) {
+        free(q.outs), free(q.done);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the PNG strips");
+    }
     bool memory_ok = true;
-    uint32_t adler = 1;
     /* small images stay on the calling thread: a parallel region would cost more than
        their one strip */
 #pragma omp parallel if (job->strips > 1)
@@ -323,50 +389,45 @@ static sk_result emit_image_data(png_out *o, const png_job *job, sk_error *err)
 #pragma omp atomic write
             memory_ok = false;
         }
-        for (int g = 0; g < job->strips; g += in_flight) {
-            int count = job->strips - g < in_flight ? job->strips - g : in_flight;
 #pragma omp for schedule(dynamic, 1)
-            for (int k = 0; k < count; k++) {
-                bool ok;
+        for (int s = 0; s < job->strips; s++) {
+            for (;;) {
+                int next;
 #pragma omp atomic read
-                ok = memory_ok;
-                if (!ok || !have) continue;
-                if (!encode_strip(job, &w, g + k, &outs[k])) {
-#pragma omp atomic write
-                    memory_ok = false;
-                }
+                next = q.next;
+                if (s - next < STRIPS_IN_FLIGHT) break;
+                struct timespec pause = {0, 100000};
+                nanosleep(&pause, NULL);
             }
-#pragma omp single
+            bool ok;
+#pragma omp atomic read
+            ok = memory_ok;
+            if (ok && have && !encode_strip(job, &w, s, &q.outs[s])) {
+#pragma omp atomic write
+                memory_ok = false;
+            }
+#pragma omp critical(sk_png_strips)
             {
-                for (int k = 0; k < count; k++) {
-                    strip_out *so = &outs[k];
-                    if (memory_ok && o->ok) {
-                        adler = g + k == 0 ? so->adler : sk__adler32_combine(adler, so->adler, so->raw_size);
-                        if (g + k == job->strips - 1) {
-                            put32(so->bytes + so->size, adler);
-                            so->size += 4;
-                            so->crc = chunk_crc("IDAT", so->bytes, so->size);
-                        }
-                        emit_chunk_crc(o, "IDAT", so->bytes, so->size, so->crc);
-                    }
-                    free(so->bytes);
-                    so->bytes = NULL;
-                }
+                q.done[s] = true;
+                bool all_ok;
+#pragma omp atomic read
+                all_ok = memory_ok;
+                write_ready_strips(o, job, &q, all_ok);
             }
         }
         if (have) worker_free(&w);
     }
-    free(outs);
+    for (int s = 0; s < job->strips; s++) free(q.outs[s].bytes); /* after a failure */
+    free(q.outs);
+    free(q.done);
     if (!memory_ok) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory while compressing the PNG");
     return SK_OK;
 }
 
 /* The desc with its defaults filled in, checked. */
-static sk_result resolve_desc(const sk_image *image, const sk_png_write_desc *desc,
-                              sk_png_write_desc *d, sk_error *err)
+static sk_result resolve_desc(const sk_png_write_desc *desc, sk_png_write_desc *d, sk_error *err)
 {
-    sk_result r = sk__image_validate(image, err);
-    if (r != SK_OK) return r;
+    sk_result r;
     memset(d, 0, sizeof *d);
     if (desc) *d = *desc;
     if (d->bit_depth == 0) d->bit_depth = 8;
@@ -383,14 +444,31 @@ static sk_result resolve_desc(const sk_image *image, const sk_png_write_desc *de
     return check_metadata(d->metadata, err);
 }
 
+/* The image (validated) as rows: its own pixels, or those of get_row. */
+typedef struct png_source {
+    sk_image_rows rows;
+    const sk_image *image; /* NULL for rows from get_row */
+} png_source;
+
+static sk_result source_of_image(const sk_image *image, png_source *src, sk_error *err)
+{
+    sk_result r = sk__image_validate(image, err);
+    if (r != SK_OK) return r;
+    src->rows = (sk_image_rows){.width = image->width, .height = image->height,
+                                .channels = image->channels};
+    src->image = image;
+    return SK_OK;
+}
+
 /* Encodes with a resolved desc. */
-static sk_result encode(const sk_image *image, const sk_png_write_desc *d, sk__png_sink *sink,
+static sk_result encode(const png_source *src, const sk_png_write_desc *d, sk__png_sink *sink,
                         const char *name, sk_error *err)
 {
+    const sk_image_rows *image = &src->rows;
     sk__png_quantizer *q = malloc(sizeof *q);
     if (!q) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     sk__png_quantizer_init(q, image->channels, d->bit_depth, d->encoding);
-    png_job job = {.image = image, .quantizer = q, .level = d->compression_level};
+    png_job job = {.rows = image, .image = src->image, .quantizer = q, .level = d->compression_level};
     job.row_bytes = (size_t)image->width * (size_t)image->channels * (size_t)(d->bit_depth / 8);
     size_t rows = STRIP_BYTES / (job.row_bytes + 1);
     job.rows_per_strip = rows < 1 ? 1 : (rows > (size_t)image->height ? image->height : (int)rows);
@@ -408,9 +486,11 @@ static sk_result encode(const sk_image *image, const sk_png_write_desc *d, sk__p
 sk_result sk__png_encode(const sk_image *image, const sk_png_write_desc *desc, sk__png_sink *sink,
                          const char *name, sk_error *err)
 {
+    png_source src;
     sk_png_write_desc d;
-    sk_result r = resolve_desc(image, desc, &d, err);
-    return r == SK_OK ? encode(image, &d, sink, name, err) : r;
+    sk_result r = source_of_image(image, &src, err);
+    if (r == SK_OK) r = resolve_desc(desc, &d, err);
+    return r == SK_OK ? encode(&src, &d, sink, name, err) : r;
 }
 
 static bool file_write(void *context, const void *data, size_t size)
@@ -418,24 +498,44 @@ static bool file_write(void *context, const void *data, size_t size)
     return fwrite(data, 1, size, (FILE *)context) == size;
 }
 
-sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_png_write_desc *desc,
-                             sk_error *err)
+/* Encodes a checked source into a file. */
+static sk_result write_file(const png_source *src, const char *path, const sk_png_write_desc *desc,
+                            sk_error *err)
 {
     sk_png_write_desc d;
-    sk_result r = resolve_desc(image, desc, &d, err);
+    sk_result r = resolve_desc(desc, &d, err);
     if (r != SK_OK) return r;
     if (!path) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "output path is NULL");
     sk_atomic_file file;
     r = sk_atomic_file_open(&file, path, err);
     if (r != SK_OK) return r;
     sk__png_sink sink = {file_write, file.fp};
-    r = encode(image, &d, &sink, path, err);
+    r = encode(src, &d, &sink, path, err);
     if (r == SK_ERROR_IO && ferror(file.fp)) return sk_atomic_file_write_failed(&file, err); /* names the reason */
     if (r != SK_OK) {
         sk_atomic_file_abort(&file);
         return r;
     }
     return sk_atomic_file_commit(&file, err);
+}
+
+sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_png_write_desc *desc,
+                             sk_error *err)
+{
+    png_source src;
+    sk_result r = source_of_image(image, &src, err);
+    return r == SK_OK ? write_file(&src, path, desc, err) : r;
+}
+
+sk_result sk_image_write_png_rows(const sk_image_rows *rows, const char *path,
+                                  const sk_png_write_desc *desc, sk_error *err)
+{
+    if (!rows || !rows->get_row)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "rows and rows->get_row must not be NULL");
+    sk_result r = sk__image_check_size(rows->width, rows->height, rows->channels, err);
+    if (r != SK_OK) return r;
+    png_source src = {.rows = *rows, .image = NULL};
+    return write_file(&src, path, desc, err);
 }
 
 /* A growing buffer as a sink. */
@@ -470,12 +570,14 @@ sk_result sk_image_write_png_memory(const sk_image *image, const sk_png_write_de
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "out_data or out_size is NULL");
     *out_data = NULL;
     *out_size = 0;
+    png_source src;
     sk_png_write_desc d;
-    sk_result r = resolve_desc(image, desc, &d, err);
+    sk_result r = source_of_image(image, &src, err);
+    if (r == SK_OK) r = resolve_desc(desc, &d, err);
     if (r != SK_OK) return r;
     memory_sink m = {0};
     sk__png_sink sink = {memory_write, &m};
-    r = encode(image, &d, &sink, "PNG in memory", err);
+    r = encode(&src, &d, &sink, "PNG in memory", err);
     if (r == SK_ERROR_IO) /* the only way memory fails */
         r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a PNG of %dx%d", image->width,
                     image->height);

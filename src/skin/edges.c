@@ -100,6 +100,7 @@ static void build_edge(sk_skin *skin, int level, const sk__edge_key *key, const 
     ur->nx = (float)nyx, ur->ny = (float)nyy;
     ur->d = (float)(nyx * (ax - ur->shx) + nyy * (ay - ur->shy));
     ul->edge = e, ur->edge = e;
+    ul->bulge = ur->bulge = E->bulge;
     ul->neighbour = cr, ur->neighbour = cl;
 }
 
@@ -131,6 +132,7 @@ sk_result sk__build_edges(sk_skin *skin, int level, const sk__edge_key *keys,
         }
     }
     lv->f_count = (1 << lv->depth) + 1;
+    lv->f_step = 1.0f / (float)(lv->f_count - 1);
     lv->edges = calloc(e ? e : 1, sizeof(sk__edge));
     lv->f = calloc((e ? e : 1) * (size_t)lv->f_count, sizeof(float));
     if (!lv->edges || !lv->f) {
@@ -138,7 +140,7 @@ sk_result sk__build_edges(sk_skin *skin, int level, const sk__edge_key *keys,
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %u edges", e);
     }
     /* Each edge draws its own random numbers from its key: any order, same result. */
-#pragma omp parallel for schedule(static) if (e >= SK__PARALLEL_ITEMS)
+#pragma omp parallel for schedule(dynamic, 64) if (e >= SK__PARALLEL_HEAVY_ITEMS)
     for (long q = 0; q < (long)e; q++)
         build_edge(skin, level, &keys[pairs[q].use_left], &pairs[q], (uint32_t)q, site_left_y);
     free(pairs);

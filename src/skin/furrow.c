@@ -31,6 +31,18 @@ static float polyline_dist2(const sk__edge *e, const float *f, float inv, int i,
  * whatever is skipped could not have been the nearest. */
 #define SK__FURROW_SLACK 1e-3f
 
+/* Segment i of the polyline, unless its lower bound (b2 along the edge, and across it the
+ * distance from s_p to the segment's range of f) is already beyond `limit`. */
+static inline void try_segment(const sk__edge *e, const float *f, float inv, int i, float rx,
+                               float ry, float sp, float b2, float *best2, float *limit)
+{
+    float lo = f[i] < f[i + 1] ? f[i] : f[i + 1], hi = f[i] < f[i + 1] ? f[i + 1] : f[i];
+    float across = sp > hi ? sp - hi : (sp < lo ? lo - sp : 0.0f);
+    if (b2 + across * across >= *limit) return;
+    float s2 = polyline_dist2(e, f, inv, i, rx, ry);
+    if (s2 < *best2) *best2 = s2, *limit = s2 * (1.0f + SK__FURROW_SLACK);
+}
+
 /* Distance to the perturbed polyline of edge e from r (the edge's frame), at most best2 on
  * entry. With r = a + t_p (b - a) + s_p d (d the unit normal of the straight edge), a point
  * (t, f(t)) of the polyline lies (L (t - t_p))^2 + (f - s_p)^2 away (L = |b - a|): search
@@ -38,60 +50,66 @@ static float polyline_dist2(const sk__edge *e, const float *f, float inv, int i,
 static float polyline_distance(const sk__level *lv, const sk__edge *e, float rx, float ry,
                                float best2)
 {
-    /* |f| <= bulge: every polyline point is at least |s_p| - bulge across */
     const float *f = lv->f + e->f_first;
     int segs = lv->f_count - 1;
-    float inv = 1.0f / (float)segs;
+    float inv = lv->f_step;
     float ex = e->bx - e->ax, ey = e->by - e->ay, len2 = ex * ex + ey * ey;
     float wx = rx - e->ax, wy = ry - e->ay;
     float tp = e->atx * wx + e->aty * wy, sp = e->dx * wx + e->dy * wy;
     float ts = tp * (float)segs;
     int i0 = ts < 0.0f ? 0 : (ts >= (float)segs ? segs - 1 : (int)ts);
+    /* |f| <= bulge: every polyline point is at least |s_p| - bulge across */
     float a = fabsf(sp) - e->bulge, a2 = a > 0 ? a * a : 0.0f;
     float limit = best2 * (1.0f + SK__FURROW_SLACK);
-    for (int side = 0; side < 2; side++)
-        for (int i = side ? i0 + 1 : i0; i >= 0 && i < segs; i += side ? 1 : -1) {
-            /* along the edge */
-            float gap = side ? (float)i * inv - tp : (i == i0 ? 0.0f : tp - (float)(i + 1) * inv);
-            float b2 = gap > 0 ? len2 * gap * gap : 0.0f;
-            if (b2 + a2 >= limit) break; /* and every segment beyond */
-            /* across it */
-            float lo = f[i] < f[i + 1] ? f[i] : f[i + 1], hi = f[i] < f[i + 1] ? f[i + 1] : f[i];
-            float across = sp > hi ? sp - hi : (sp < lo ? lo - sp : 0.0f);
-            if (b2 + across * across >= limit) continue;
-            float s2 = polyline_dist2(e, f, inv, i, rx, ry);
-            if (s2 < best2) best2 = s2, limit = best2 * (1.0f + SK__FURROW_SLACK);
-        }
+    /* towards t = 0 (segment i0 holds t_p), then towards t = 1; past the first segment
+       whose bound along the edge is too far, every one beyond it is too */
+    try_segment(e, f, inv, i0, rx, ry, sp, 0.0f, &best2, &limit);
+    for (int i = i0 - 1; i >= 0; i--) {
+        float gap = tp - (float)(i + 1) * inv;
+        float b2 = gap > 0 ? len2 * gap * gap : 0.0f;
+        if (b2 + a2 >= limit) break;
+        try_segment(e, f, inv, i, rx, ry, sp, b2, &best2, &limit);
+    }
+    for (int i = i0 + 1; i < segs; i++) {
+        float gap = (float)i * inv - tp;
+        float b2 = gap > 0 ? len2 * gap * gap : 0.0f;
+        if (b2 + a2 >= limit) break;
+        try_segment(e, f, inv, i, rx, ry, sp, b2, &best2, &limit);
+    }
     return best2;
 }
 
+/* Distance to a side of the cell: its perturbed polyline, or the straight side. */
+static float side_distance(const sk__level *lv, const sk__use *u, const sk__use *next, float px,
+                           float py, float best2)
+{
+    if (lv->perturbed && u->edge != SK__SKIN_NONE)
+        return polyline_distance(lv, &lv->edges[u->edge], px + u->shx, py + u->shy, best2);
+    float d2 = seg_dist2(px, py, u->vx, u->vy, next->vx, next->vy);
+    return d2 < best2 ? d2 : best2;
+}
+
+/* The minimum over the sides is the same in any order, since a side or segment is skipped
+ * only when its lower bound is beyond the nearest found: the side whose line is nearest
+ * comes first (its furrow is usually the nearest), and sets the bound for the others. */
 float sk__furrow_distance(const sk__level *lv, uint32_t c, float px, float py)
 {
     const sk__cell *cell = &lv->cells[c];
-    uint32_t n = cell->use_count, first = cell->first_use;
-    /* distances to the sides' lines (lower bounds); the nearest side is searched first */
-    float ld[SK__POLY_MAX];
-    uint32_t nearest = 0;
-    for (uint32_t k = 0; k < n && k < SK__POLY_MAX; k++) {
-        const sk__use *u = &lv->uses[first + k];
-        ld[k] = u->d - (u->nx * px + u->ny * py);
-        if (ld[k] < ld[nearest]) nearest = k;
+    const sk__use *u = lv->uses + cell->first_use;
+    uint32_t n = cell->use_count, nearest = 0;
+    float nearest_line = INFINITY;
+    for (uint32_t k = 0; k < n; k++) {
+        float line = u[k].d - (u[k].nx * px + u[k].ny * py);
+        if (line < nearest_line) nearest_line = line, nearest = k;
     }
-    float best2 = INFINITY;
-    for (uint32_t q = 0; q < n && q < SK__POLY_MAX; q++) {
-        uint32_t k = q == 0 ? nearest : (q <= nearest ? q - 1 : q);
-        const sk__use *u = &lv->uses[first + k];
-        bool perturbed = lv->perturbed && u->edge != SK__SKIN_NONE;
+    float best2 = side_distance(lv, &u[nearest], &u[nearest + 1 == n ? 0 : nearest + 1], px, py,
+                                INFINITY);
+    for (uint32_t k = 0; k < n; k++) {
+        if (k == nearest) continue;
         /* the polyline strays at most `bulge` from the straight side */
-        float lb = ld[k] - (perturbed ? lv->edges[u->edge].bulge : 0.0f);
+        float lb = u[k].d - (u[k].nx * px + u[k].ny * py) - u[k].bulge;
         if (lb > 0 && lb * lb >= best2 * (1.0f + SK__FURROW_SLACK)) continue;
-        if (perturbed) {
-            best2 = polyline_distance(lv, &lv->edges[u->edge], px + u->shx, py + u->shy, best2);
-        } else {
-            const sk__use *v = &lv->uses[k + 1 == n ? first : first + k + 1];
-            float d2 = seg_dist2(px, py, u->vx, u->vy, v->vx, v->vy);
-            if (d2 < best2) best2 = d2;
-        }
+        best2 = side_distance(lv, &u[k], &u[k + 1 == n ? 0 : k + 1], px, py, best2);
     }
     return sqrtf(best2);
 }

@@ -215,7 +215,7 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
         goto done;
     }
     int failed = 0;
-#pragma omp parallel if (n_cells >= SK__PARALLEL_ITEMS)
+#pragma omp parallel if (n_cells >= SK__PARALLEL_HEAVY_ITEMS)
     {
         dist_item *ord = malloc(sizeof(dist_item) * (max_family ? max_family : 1));
         sk__poly *pl = malloc(sizeof(sk__poly));
