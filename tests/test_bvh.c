@@ -131,6 +131,8 @@ static void test_broken_files_give_the_documented_error(void **state)
         {"bad-extra-data.bvh", SK_ERROR_PARSE, "line 21: data after the last frame"},
         {"bad-end-site-child.bvh", SK_ERROR_PARSE, "line 13: End Site with children"},
         {"bad-too-deep.bvh", SK_ERROR_LIMIT, "hierarchy deeper than 64"},
+        /* found by fuzz_bvh: a NUL in a name cut it, so the file written again did not read */
+        {"bad-control-name.bvh", SK_ERROR_PARSE, "line 6: joint name with a control byte (0x00) at byte 1"},
         {"bad-huge-frames.bvh", SK_ERROR_PARSE,
          "line 22: truncated: 22369621 frames x 12 channels need 268435452 numbers"},
     };

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "shitsukan/io.h"
 #include "shitsukan/pointcache.h"
 #include "test_result.h"
 #include "test_support.h"
@@ -448,6 +449,24 @@ static void test_bake_equals_live_equals_resumed(void **state)
                            "belongs to another character");
     sk_tissue_sim_destroy(s);
     sk_tissue_model_destroy(other);
+    /* a state at a step the simulation cannot go on from (beyond 1e7 s) is refused, the
+       last one it can is taken (fuzz_tissue_state loaded 2.7e8 s, then could not step) */
+    uint8_t *bytes = NULL;
+    size_t size = 0;
+    SK_ASSERT_OK(sk_read_file(state_path, 0, (char **)&bytes, &size, &e_));
+    uint32_t hz;
+    memcpy(&hz, bytes + 12, 4);
+    s = make_sim(m, &motion);
+    int64_t step = (int64_t)1e7 * hz + 1;
+    memcpy(bytes + 24, &step, 8);
+    sk_test_expect_failure(sk_tissue_sim_load_state(s, bytes, size, &err), &err, SK_ERROR_PARSE,
+                           "is not a step count in [0,");
+    step -= 1;
+    memcpy(bytes + 24, &step, 8);
+    SK_ASSERT_OK(sk_tissue_sim_load_state(s, bytes, size, &e_));
+    assert_true(sk_tissue_sim_time(s) == 1e7);
+    sk_tissue_sim_destroy(s);
+    free(bytes);
     sk_pc2_free(&baked);
     sk_pc2_free(&resumed);
     sk_tissue_model_destroy(m);

@@ -130,6 +130,13 @@ static sk_result add_joint(lexer *lx, sk_bvh *b, int parent, const char *name, s
     if (name_len >= SK_BVH_NAME_SIZE)
         return sk_fail(err, SK_ERROR_PARSE, "line %d: joint name longer than %d bytes", lx->tok_line,
                        SK_BVH_NAME_SIZE - 1);
+    /* a control byte (a NUL above all) would cut or garble the name when written again */
+    for (size_t i = 0; i < name_len; i++) {
+        unsigned char c = (unsigned char)name[i];
+        if (c < 32 || c == 127)
+            return sk_fail(err, SK_ERROR_PARSE, "line %d: joint name with a control byte (0x%02x) at byte %zu",
+                           lx->tok_line, c, i + 1);
+    }
     int j = b->joint_count++;
     memcpy(b->name[j], name, name_len);
     b->name[j][name_len] = '\0';

@@ -319,8 +319,9 @@ static void run_steps(sk_tissue_sim *s, int64_t end, int threads)
 
 sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
 {
-    if (!isfinite(seconds) || seconds > 1e7)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "time %g s is not a finite time up to 1e7 s", seconds);
+    if (!isfinite(seconds) || seconds > SK__SIM_MAX_SECONDS)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "time %g s is not a finite time up to %g s", seconds,
+                       SK__SIM_MAX_SECONDS);
     double k = seconds * s->step_hz;
     int64_t target = (int64_t)ceil(k - 1e-6);
     int most = threads_for(s);

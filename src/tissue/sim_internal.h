@@ -18,6 +18,7 @@ typedef struct sk__obstacle {
     sk_vec3d lo, hi;
 } sk__obstacle;
 #define SK__MAX_OBSTACLES (SK_TISSUE_MAX_BONES + SK_TISSUE_MAX_MUSCLES)
+#define SK__SIM_MAX_SECONDS 1e7 /* the latest time a simulation advances to (and a state may hold) */
 
 /* The bones (then the muscles, given their shapes) at a pose; returns how many. */
 int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose, const sk__muscle_state *muscle,

@@ -61,7 +61,10 @@ sk_result sk_tissue_sim_load_state(sk_tissue_sim *s, const void *buffer, size_t 
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "the state belongs to another character or material (%llu free points, this one has %zu)",
                        (unsigned long long)n, s->nfree);
-    if (step < 0 || step > ((int64_t)1 << 40)) return sk_fail(err, SK_ERROR_PARSE, "state step %lld is not a step count", (long long)step);
+    /* a state must be one the simulation can go on from (found by fuzz_tissue_state) */
+    if (step < 0 || (double)step > SK__SIM_MAX_SECONDS * s->step_hz)
+        return sk_fail(err, SK_ERROR_PARSE, "state step %lld is not a step count in [0, %g] (%g s at %d steps/s)",
+                       (long long)step, SK__SIM_MAX_SECONDS * s->step_hz, SK__SIM_MAX_SECONDS, s->step_hz);
     if (size != sk_tissue_sim_state_size(s))
         return sk_fail(err, SK_ERROR_PARSE, "state of %zu bytes, expected %zu (truncated or padded)", size,
                        sk_tissue_sim_state_size(s));
