@@ -60,7 +60,7 @@ studio-if-available:
 
 # The studio's tests with their screenshots written into docs/images/studio.
 studio-docs: studio
-	@STUDIO_SHOTS=$(CURDIR)/docs/images/studio bash web/tests/run.sh $(BUILD_DIR)/shitsukan $(WASM_DIR)/www $(WASM_DIR)/studio-tests
+	@STUDIO_SHOTS=$(CURDIR)/docs/images/studio bash web/tests/run.sh $(abspath $(BUILD_DIR))/shitsukan $(abspath $(WASM_DIR))/www $(abspath $(WASM_DIR))/studio-tests
 
 # The same tests built with AddressSanitizer + UndefinedBehaviorSanitizer.
 test-asan: deps-test
