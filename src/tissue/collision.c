@@ -8,10 +8,12 @@
  * a point's position the ellipsoids. */
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 
 #include "tissue/sim_internal.h"
 
-#define BLOCK 64
+#define BLOCK 64 /* at most 64: a block's points are the bits of a mask */
+_Static_assert(BLOCK <= 64, "a block's points must fit a 64-bit mask");
 #define MARGIN 1e-6 /* in level units: just outside the surface */
 
 static void part_setup(sk__obstacle_part *q, const sk__ellipsoid *e)
@@ -60,9 +62,10 @@ int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose, const sk
     return n;
 }
 
+/* (The comparisons joined without branches: where a point lies is hard to predict.) */
 static bool in_box(const double *p, sk_vec3d lo, sk_vec3d hi)
 {
-    return p[0] >= lo.x && p[0] <= hi.x && p[1] >= lo.y && p[1] <= hi.y && p[2] >= lo.z && p[2] <= hi.z;
+    return (p[0] >= lo.x) & (p[0] <= hi.x) & (p[1] >= lo.y) & (p[1] <= hi.y) & (p[2] >= lo.z) & (p[2] <= hi.z);
 }
 
 static double level(const sk__obstacle_part *q, const double *p)
@@ -96,16 +99,14 @@ static bool push_out(const sk__obstacle *o, double *x)
 /* Bounds of points p0..p1 of x. */
 static void block_bounds(const double *x, size_t p0, size_t p1, double lo[3], double hi[3])
 {
-    for (int c = 0; c < 3; c++) {
-        lo[c] = DBL_MAX;
-        hi[c] = -DBL_MAX;
+    double lx = DBL_MAX, ly = DBL_MAX, lz = DBL_MAX, hx = -DBL_MAX, hy = -DBL_MAX, hz = -DBL_MAX;
+    for (size_t p = p0; p < p1; p++) {
+        double vx = x[3 * p], vy = x[3 * p + 1], vz = x[3 * p + 2];
+        lx = vx < lx ? vx : lx, ly = vy < ly ? vy : ly, lz = vz < lz ? vz : lz;
+        hx = vx > hx ? vx : hx, hy = vy > hy ? vy : hy, hz = vz > hz ? vz : hz;
     }
-    for (size_t p = p0; p < p1; p++)
-        for (int c = 0; c < 3; c++) {
-            double v = x[3 * p + (size_t)c];
-            lo[c] = v < lo[c] ? v : lo[c];
-            hi[c] = v > hi[c] ? v : hi[c];
-        }
+    lo[0] = lx, lo[1] = ly, lo[2] = lz;
+    hi[0] = hx, hi[1] = hy, hi[2] = hz;
 }
 
 /* The obstacles of one kind (muscles: parts == 1, bones: parts == 3) whose bounds meet
@@ -140,16 +141,24 @@ static void collide_block(const sk__obstacle *obstacles, int obstacle_count, int
                 in_box(x + 3 * p, obstacles[near[k]].lo, obstacles[near[k]].hi))
                 moved |= push_out(&obstacles[near[k]], x + 3 * p);
     /* bones overlap at the joints: out of one may be into the next, so repeat (with
-       the bones near where the points now are) */
-    for (int pass = 0; pass < 8; pass++) {
+       the bones near where the points now are) for the points that moved: a point that
+       did not is outside every bone near it, and every bone that could hold it is near */
+    uint64_t again = ~(uint64_t)0; /* points of the block to test (BLOCK = 64) */
+    for (int pass = 0; pass < 8 && again; pass++) {
         if (moved) block_bounds(x, p0, p1, lo, hi); /* else still those of the points */
         n = near_block(obstacles, obstacle_count, 3, lo, hi, near);
         moved = false;
-        for (size_t p = p0; p < p1; p++)
+        uint64_t next = 0;
+        for (size_t p = p0; p < p1; p++) {
+            if (!(again >> (p - p0) & 1)) continue;
+            bool out = false;
             for (int k = 0; k < n; k++)
                 if (in_box(x + 3 * p, obstacles[near[k]].lo, obstacles[near[k]].hi))
-                    moved |= push_out(&obstacles[near[k]], x + 3 * p);
-        if (!moved) break;
+                    out |= push_out(&obstacles[near[k]], x + 3 * p);
+            if (out) next |= (uint64_t)1 << (p - p0);
+        }
+        moved = next != 0;
+        again = next;
     }
 }
 

@@ -60,20 +60,6 @@ void sk__sim_place_anchors(const sk_tissue_sim *s, const sk_tissue_pose *pose, c
     }
 }
 
-sk_vec3d sk__sim_carried(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
-                         size_t p)
-{
-    const sk_tissue_model *m = s->m;
-    int mu = m->carrier_muscle[p];
-    if (mu >= 0) {
-        /* the muscle's deformation, extended beyond its surface */
-        const sk__ellipsoid *e = &muscle[mu].body;
-        sk_vec3d u = m->local[p];
-        return sk_v3d_add(e->centre, sk_m3d_apply(e->axes, sk_v3d(u.x * e->radii.x, u.y * e->radii.y, u.z * e->radii.z)));
-    }
-    return sk__pose_apply(pose, m->bones[m->owner[p]].joint, m->local[p]);
-}
-
 static uint64_t fingerprint(const sk_tissue_model *m, int step_hz)
 {
     uint64_t h = sk_hash(0x7469737375650001ULL, m->point_count, m->spring_count, (uint64_t)step_hz);

@@ -75,8 +75,19 @@ void sk__sim_shape_muscles(const sk_tissue_sim *s, const sk_tissue_pose *pose, s
 void sk__sim_place_anchors(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
                            double *x);
 /* Where the tissue alone (the pose's bones, the muscles' shapes at it) carries free point
- * p's rest position. */
-sk_vec3d sk__sim_carried(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
-                         size_t p);
+ * p's rest position (inline: the step calls it for every free point). */
+static inline sk_vec3d sk__sim_carried(const sk_tissue_sim *s, const sk_tissue_pose *pose,
+                                       const sk__muscle_state *muscle, size_t p)
+{
+    const sk_tissue_model *m = s->m;
+    int mu = m->carrier_muscle[p];
+    if (mu >= 0) {
+        /* the muscle's deformation, extended beyond its surface */
+        const sk__ellipsoid *e = &muscle[mu].body;
+        sk_vec3d u = m->local[p];
+        return sk_v3d_add(e->centre, sk_m3d_apply(e->axes, sk_v3d(u.x * e->radii.x, u.y * e->radii.y, u.z * e->radii.z)));
+    }
+    return sk__pose_apply(pose, m->bones[m->owner[p]].joint, m->local[p]);
+}
 
 #endif
