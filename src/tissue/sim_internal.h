@@ -25,14 +25,15 @@ int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose, const sk
 /* Moves the first `count` points of x (3 doubles each) out of the obstacles: every bone,
  * and the muscles whose bit is set in the point's `near_muscles` mask (muscle i is
  * obstacle bone_count + i). Shares its work with an orphaned loop (call it from every
- * thread of a parallel region, or from one). */
+ * thread of a parallel region, or from one). `vectors`: the points that may be inside
+ * found four at a time (AVX2; the same result, simd.h). */
 void sk__collide(const sk__obstacle *obstacles, int count_obstacles, int bone_count, const uint64_t *near_muscles,
-                 double *x, size_t count);
+                 double *x, size_t count, bool vectors);
 /* The same, each block's velocities then set from its moves: v = (x - base) inv_h (one
  * loop, one synchronisation). */
 void sk__collide_finish(const sk__obstacle *obstacles, int obstacle_count, int bone_count,
                         const uint64_t *near_muscles, double *x, const double *base, double *v, double inv_h,
-                        size_t count);
+                        size_t count, bool vectors);
 
 struct sk_tissue_sim {
     const sk_tissue_model *m;
@@ -64,8 +65,12 @@ struct sk_tissue_sim {
     double settle_move;       /* the largest move of the last settling step */
     int threads;              /* threads the steps run on (chosen by timing, see sim.c) */
     int64_t next_probe;       /* step at which the thread count is chosen again */
+    bool vectors;             /* the AVX2 paths (where the processor has them; simd.h) */
 };
 
+/* Whether the springs and the collisions take their AVX2 paths (on by default where the
+ * processor has them; the tests turn them off to compare the bits). */
+void sk__sim_use_vectors(sk_tissue_sim *s, bool on);
 /* The pose of the motion at step k. */
 void sk__sim_pose_at(const sk_tissue_sim *s, int64_t k, sk_tissue_pose *pose);
 /* The muscles' shapes at a pose. */

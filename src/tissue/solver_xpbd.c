@@ -40,12 +40,8 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#define SK__HAVE_AVX2_PATH 1
-#define SK__AVX2 __attribute__((target("avx2")))
-#endif
 
+#include "tissue/simd.h"
 #include "tissue/solver.h"
 
 #define MAX_SLABS 64
@@ -162,7 +158,7 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
     s->paired = m->colour_count > 0;
     s->colours = s->paired ? m->colour_count : 1;
 #if defined(SK__HAVE_AVX2_PATH)
-    s->wide = s->paired && s->iterations == 1 && __builtin_cpu_supports("avx2");
+    s->wide = s->paired && s->iterations == 1 && sk__have_avx2();
     if (s->wide) s->packed = aligned_alloc(64, (m->point_count ? m->point_count : 1) * 8 * sizeof(double));
 #endif
     size_t cell_count = 2 * (size_t)s->colours * (size_t)s->half;
@@ -501,3 +497,5 @@ static void step(sk__solver *s, double *x, const double *base, const double *tar
 }
 
 const sk__solver_ops sk__solver_xpbd = {"xpbd", create, destroy, step};
+
+void sk__solver_xpbd_use_vectors(sk__solver *s, bool on) { s->wide = on && s->packed; }
