@@ -228,14 +228,15 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
 /* Below this length a spring has no direction and is left as it is. */
 #define SHORTEST 1e-12
 
-/* Spring k (see the top of the file). The relative motion of the ends over the step
- * along the spring, n . ((x_a - b_a) - (x_b - b_b)), is taken as d . (d - (b_a - b_b)) / |d|
- * with d = x_a - x_b (exactly 0 when nothing moved). `mu`: alpha lambda of the spring
- * when the step iterates, NULL for one iteration. */
-static inline void solve_one(const spring_arrays *sp, size_t k, double *x, const double *base, float *mu)
+/* Spring k (see the top of the file) with ends at xa and xb, which were at ba and bb at
+ * the step's start: returns dlambda / |d| times minus the denominator (0 without a
+ * direction) and d = xa - xb. The relative motion of the ends over the step along the
+ * spring, n . ((x_a - b_a) - (x_b - b_b)), is taken as d . (d - (b_a - b_b)) / |d|
+ * (exactly 0 when nothing moved). `mu`: alpha lambda of the spring when the step
+ * iterates, NULL for one iteration. */
+static inline double spring_factor(const spring_arrays *sp, size_t k, const double *xa, const double *ba,
+                                   const double *xb, const double *bb, float *mu, double d[3])
 {
-    double *xa = x + 3 * (size_t)sp->i[k], *xb = x + 3 * (size_t)sp->j[k];
-    const double *ba = base + 3 * (size_t)sp->i[k], *bb = base + 3 * (size_t)sp->j[k];
     double dx = xa[0] - xb[0], dy = xa[1] - xb[1], dz = xa[2] - xb[2];
     double mx = dx - (ba[0] - bb[0]), my = dy - (ba[1] - bb[1]), mz = dz - (ba[2] - bb[2]);
     double len = sqrt(dx * dx + dy * dy + dz * dz);
@@ -247,14 +248,20 @@ static inline void solve_one(const spring_arrays *sp, size_t k, double *x, const
         force += *mu;
         if (has_direction) *mu -= (float)(sp->ca[k] * force);
     }
-    double f = has_direction ? force * inv : 0.0;
+    d[0] = dx, d[1] = dy, d[2] = dz;
+    return has_direction ? force * inv : 0.0;
+}
+
+/* Spring k solved on x. */
+static inline void solve_one(const spring_arrays *sp, size_t k, double *x, const double *base, float *mu)
+{
+    double *xa = x + 3 * (size_t)sp->i[k], *xb = x + 3 * (size_t)sp->j[k], d[3];
+    double f = spring_factor(sp, k, xa, base + 3 * (size_t)sp->i[k], xb, base + 3 * (size_t)sp->j[k], mu, d);
     double ga = -sp->ci[k] * f, gb = -sp->cj[k] * f;
-    xa[0] += ga * dx;
-    xa[1] += ga * dy;
-    xa[2] += ga * dz;
-    xb[0] -= gb * dx;
-    xb[1] -= gb * dy;
-    xb[2] -= gb * dz;
+    for (int c = 0; c < 3; c++) {
+        xa[c] += ga * d[c];
+        xb[c] -= gb * d[c];
+    }
 }
 
 #if defined(__SSE2__)
@@ -349,19 +356,12 @@ static inline SK__AVX2 void factors_four(const spring_arrays *sp, size_t k, cons
     _mm256_storeu_pd(gb_out, _mm256_mul_pd(_mm256_xor_pd(_mm256_cvtps_pd(_mm_loadu_ps(sp->cj + k)), sign), f));
 }
 
-/* The same for one spring (solve_one's operations on the records). */
+/* The same for one spring (spring_factor on the records). */
 static inline SK__AVX2 void factors_one(const spring_arrays *sp, size_t k, const double *packed, double *ga,
                                         double *gb)
 {
     const double *a = packed + 8 * (size_t)sp->i[k], *b = packed + 8 * (size_t)sp->j[k];
-    double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-    double mx = dx - (a[4] - b[4]), my = dy - (a[5] - b[5]), mz = dz - (a[6] - b[6]);
-    double len = sqrt(dx * dx + dy * dy + dz * dz);
-    bool has_direction = len > SHORTEST;
-    double inv = 1.0 / (has_direction ? len : 1.0);
-    double rel = (dx * mx + dy * my + dz * mz) * inv;
-    double force = (len - sp->rest[k]) + sp->gamma[k] * rel;
-    double f = has_direction ? force * inv : 0.0;
+    double d[3], f = spring_factor(sp, k, a, a + 4, b, b + 4, NULL, d);
     *ga = -sp->ci[k] * f;
     *gb = -sp->cj[k] * f;
 }
