@@ -30,7 +30,9 @@
  * Within a run of springs of one colour no two share a point, so several are solved at
  * once in the lanes of a vector: two in SSE2, or four in AVX2 where the processor has it
  * (the points then copied for the step into 64-byte records of position and step start,
- * one aligned vector load each). Each lane does the very operations of the one-spring code
+ * one aligned vector load each; a chunk of a run's springs first computes every spring's
+ * factor, reading only, so their square roots and divisions overlap, then moves the
+ * ends). Each lane does the very operations of the one-spring code
  * (no fused multiply-add, correctly rounded square root and division, the sums in the
  * same order), so the result is the same bit for bit whichever path a spring takes. */
 #include <math.h>
