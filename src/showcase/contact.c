@@ -232,17 +232,31 @@ static sk_result free_clearance(problem *p, int f, double *x, double *gap, sk_er
 }
 
 /* The smallest extension that holds free finger f clear of the keys (the others held):
- * regula falsi (Illinois) on the lift amplitude in [-LIFT_MAX, 0]. */
+ * regula falsi (Illinois) on the lift amplitude in [-LIFT_MAX, 0], from the bracket the
+ * last round's lift gives (a later round starts where the one before ended). */
 static sk_result lift_finger(problem *p, int f, double *x, sk_error *err)
 {
-    double gap;
+    double last = p->lift[f], gap; /* the lift of the round before (0 in the first) */
     p->lift[f] = 0;
     sk_result r = free_clearance(p, f, x, &gap, err);
     if (r != SK_OK || gap >= -TOLERANCE_MM) return r;
-    double a = -LIFT_MAX, b = 0, ga, gb = gap;
-    p->lift[f] = a;
-    if ((r = free_clearance(p, f, x, &ga, err)) != SK_OK) return r;
-    if (ga < 0) return SK_OK; /* as high as it goes */
+    double a = -LIFT_MAX, b = 0, ga = 0, gb = gap;
+    bool bracketed = false;
+    if (last < 0) { /* the last round's lift, tried first: the other fingers moved little */
+        double gl;
+        p->lift[f] = last;
+        if ((r = free_clearance(p, f, x, &gl, err)) != SK_OK) return r;
+        if (gl >= 0 && gl < 0.05) return SK_OK; /* still just clear */
+        if (gl >= 0)
+            a = last, ga = gl, bracketed = true;
+        else
+            b = last, gb = gl;
+    }
+    if (!bracketed) {
+        p->lift[f] = a;
+        if ((r = free_clearance(p, f, x, &ga, err)) != SK_OK) return r;
+        if (ga < 0) return SK_OK; /* as high as it goes */
+    }
     int side = 0; /* Illinois: halve a stale end's value so the bracket shrinks from both ends */
     for (int it = 0; it < LIFT_ITERATIONS && b - a > 1e-4; it++) {
         double m = b - gb * (b - a) / (gb - ga);
