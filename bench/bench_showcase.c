@@ -206,19 +206,34 @@ int main(void)
     }
     report("1280x720, 16 samples", &st, sk_time_seconds() - tw);
     sk_showcase_destroy(full);
-    /* preview */
+    /* preview: 24 frames, three times; each stage's best of the three (the machine is
+       shared: a run's stage times include what others took of the processor) */
     d.width = 320, d.height = 180, d.samples = 4, d.texture_size = 512;
     sk_showcase *preview = NULL;
     if (sk_showcase_create(&d, &preview, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
-    memset(&st, 0, sizeof st);
-    if (sk_showcase_forearm_at(preview, 29, NULL, NULL, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
-    tw = sk_time_seconds();
-    for (int f = 30; f < 54; f++) {
-        sk_image img;
-        if (sk_showcase_render_frame(preview, f, &img, &st, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
-        sk_image_free(&img);
+    sk_showcase_stats best = {0};
+    double best_wall = 1e30;
+    for (int run = 0; run < 3; run++) {
+        memset(&st, 0, sizeof st);
+        /* frame 29 first (the forearm's simulation restarts and runs up to it) */
+        if (sk_showcase_forearm_at(preview, 29, NULL, NULL, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+        tw = sk_time_seconds();
+        for (int f = 30; f < 54; f++) {
+            sk_image img;
+            if (sk_showcase_render_frame(preview, f, &img, &st, &err) != SK_OK)
+                return fprintf(stderr, "%s\n", err.message), 1;
+            sk_image_free(&img);
+        }
+        best_wall = fmin(best_wall, sk_time_seconds() - tw);
+        if (run == 0) best = st;
+        best.seconds_input = fmin(best.seconds_input, st.seconds_input);
+        best.seconds_solve = fmin(best.seconds_solve, st.seconds_solve);
+        best.seconds_skin = fmin(best.seconds_skin, st.seconds_skin);
+        best.seconds_tissue = fmin(best.seconds_tissue, st.seconds_tissue);
+        best.seconds_scene = fmin(best.seconds_scene, st.seconds_scene);
+        best.seconds_render = fmin(best.seconds_render, st.seconds_render);
     }
-    report("320x180, 4 samples", &st, sk_time_seconds() - tw);
+    report("320x180, 4 samples (each stage the best of 3 runs)", &best, best_wall);
     sk_showcase_destroy(preview);
     /* the command as a user runs it: 12 preview frames with their PNG files and the WAV */
     char dir[] = "/tmp/bench_showcase_XXXXXX", cmd[1024];

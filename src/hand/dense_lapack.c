@@ -12,9 +12,33 @@ int sk_hand__cholesky_at(double *a, int n)
     return info > 0 ? (int)info : info < 0 ? 1 : 0;
 }
 
+/* One right-hand side, as dpotrs solves it with the reference BLAS (its two dtrsm
+ * loops: L y = b column by column, then L' x = y row by row from the last), without the
+ * library calls: the posture solver does this tens of times a frame, where the calls cost
+ * as much as the arithmetic. Whatever BLAS is installed, the result is the reference's. */
+static void cholesky_solve_one(const double *l, int n, double *b)
+{
+    for (int k = 0; k < n; k++) {
+        if (b[k] == 0.0) continue;
+        b[k] /= l[(size_t)k * n + k];
+        const double *col = l + (size_t)k * n;
+        for (int i = k + 1; i < n; i++) b[i] -= b[k] * col[i];
+    }
+    for (int i = n - 1; i >= 0; i--) {
+        const double *col = l + (size_t)i * n;
+        double t = b[i];
+        for (int k = i + 1; k < n; k++) t -= col[k] * b[k];
+        b[i] = t / col[i];
+    }
+}
+
 void sk_hand__cholesky_solve(const double *l, int n, double *b, int nrhs)
 {
     if (n == 0 || nrhs == 0) return;
+    if (nrhs == 1) {
+        cholesky_solve_one(l, n, b);
+        return;
+    }
     LAPACKE_dpotrs_work(LAPACK_COL_MAJOR, 'L', n, nrhs, l, n, b, n);
 }
 

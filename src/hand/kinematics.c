@@ -6,12 +6,28 @@
 
 #include "hand/hand_private.h"
 
+/* cos and sin of an angle; most joints turn about one or two of their three axes, and
+   the others' 0 needs no library call (sin(+-0) = +-0 and cos(+-0) = 1 exactly). */
+static inline void cos_sin(double a, double *c, double *s)
+{
+    if (a == 0.0) {
+        *c = 1.0;
+        *s = a;
+    } else {
+        *c = cos(a);
+        *s = sin(a);
+    }
+}
+
 sk_mat3d sk_hand_euler321(double x, double y, double z)
 {
     /* The direction-cosine product A1 A2 A3 of the thesis maps parent coordinates to
        child coordinates; its transpose, the rotation of the child frame in the parent,
        is Rz(z) Ry(y) Rx(x). Written out to keep the chain cheap. */
-    double cx = cos(x), sx = sin(x), cy = cos(y), sy = sin(y), cz = cos(z), sz = sin(z);
+    double cx, sx, cy, sy, cz, sz;
+    cos_sin(x, &cx, &sx);
+    cos_sin(y, &cy, &sy);
+    cos_sin(z, &cz, &sz);
     sk_mat3d r = {{{cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx},
                    {sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx},
                    {-sy, cy * sx, cy * cx}}};

@@ -33,11 +33,13 @@ sk_result sk_hand__solve_linear(sk_hand_solver *s, const bool *pinned, double *t
         it++;
         const sk_hand_factor *f = sk_hand__factor(s, fixed_mask(state), err);
         if (!f) return err ? err->result : SK_ERROR_NUMERIC;
+        int fixed[N_DOF], fixed_count = 0; /* the held DOFs, in order */
+        for (int j = 0; j < N_DOF; j++)
+            if (state[j] != 0) fixed[fixed_count++] = j;
         for (int a = 0; a < f->nf; a++) {
             int i = f->free_dof[a];
             double v = rhs[i];
-            for (int j = 0; j < N_DOF; j++)
-                if (state[j] != 0) v -= s->h[(size_t)j * N_DOF + i] * theta[j];
+            for (int q = 0; q < fixed_count; q++) v -= s->h[(size_t)fixed[q] * N_DOF + i] * theta[fixed[q]];
             b[a] = v;
         }
         sk_hand__factor_solve(f, b);
@@ -78,9 +80,11 @@ sk_result sk_hand__solve_linear(sk_hand_solver *s, const bool *pinned, double *t
     }
     double residual = 0.0, energy = s->c0;
     int clamped = 0;
-    sk_hand__matvec(s->h, theta, grad);
+    if (!converged) { /* (converged, grad is already H th - rhs at this theta) */
+        sk_hand__matvec(s->h, theta, grad);
+        for (int i = 0; i < N_DOF; i++) grad[i] -= rhs[i];
+    }
     for (int i = 0; i < N_DOF; i++) {
-        grad[i] -= rhs[i];
         /* 1/2 th'H th - rhs'th = th'(grad - rhs) / 2 */
         energy += 0.5 * theta[i] * (grad[i] - rhs[i]);
         if (state[i] == 0) residual = fmax(residual, fabs(grad[i]));

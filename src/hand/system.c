@@ -31,13 +31,16 @@ void sk_hand__assemble(sk_hand_solver *s)
 
 void sk_hand__matvec(const double *h, const double *x, double *y)
 {
-    for (int i = 0; i < N_DOF; i++) y[i] = 0.0;
+    double acc[N_DOF] = {0}; /* local, so the column updates vectorize (each entry's own
+                                sum, in the same order) */
     for (int j = 0; j < N_DOF; j++) {
         double xj = x[j];
         if (xj == 0.0) continue;
         const double *col = h + (size_t)j * N_DOF;
-        for (int i = 0; i < N_DOF; i++) y[i] += col[i] * xj;
+#pragma omp simd
+        for (int i = 0; i < N_DOF; i++) acc[i] += col[i] * xj;
     }
+    memcpy(y, acc, sizeof acc);
 }
 
 double sk_hand__energy(const sk_hand_solver *s, const double *theta, const double *rhs,

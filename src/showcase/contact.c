@@ -120,13 +120,26 @@ typedef struct unknown {
     bool aim;  /* the aim torque, else the press amplitude */
 } unknown;
 
+/* A posture solved for some torques. The lifts and the Newton steps often ask again for
+ * torques just solved for (a finger's lift left at 0, a step's point taken as the next
+ * start), so the last few are kept and given back as they were. */
+#define RECENT 4
+typedef struct posture {
+    double torque[SK_HAND_DOF_COUNT];
+    double dofs[SK_HAND_DOF_COUNT];
+    sk_hand_frames frames;
+    sk_vec3d pads[5];
+} posture;
+
 typedef struct problem {
     const sk__contact *c;
     const sk__intent *in;
     int count;
     unknown u[MAX_UNKNOWNS];
     double lift[5];  /* press amplitude (negative: extension) holding a free finger up */
-    int solves;
+    int solves;      /* hand solves done */
+    posture recent[RECENT];
+    int recent_count, recent_next;
 } problem;
 
 static void torques_of(const problem *p, const double *x, double *torque)
@@ -155,9 +168,22 @@ static sk_result misses(problem *p, const double *x, double *res, double dofs[SK
     const sk__contact *c = p->c;
     double torque[SK_HAND_DOF_COUNT];
     torques_of(p, x, torque);
-    sk_result r = sk__contact_posture(c, p->in->wrist, torque, dofs, frames, pads, err);
-    p->solves++;
-    if (r != SK_OK) return r;
+    const posture *known = NULL;
+    for (int k = 0; k < p->recent_count && !known; k++)
+        if (memcmp(p->recent[k].torque, torque, sizeof torque) == 0) known = &p->recent[k];
+    if (!known) {
+        posture *fresh = &p->recent[p->recent_next];
+        sk_result r = sk__contact_posture(c, p->in->wrist, torque, fresh->dofs, &fresh->frames, fresh->pads, err);
+        p->solves++;
+        if (r != SK_OK) return r;
+        memcpy(fresh->torque, torque, sizeof torque);
+        p->recent_next = (p->recent_next + 1) % RECENT;
+        if (p->recent_count < RECENT) p->recent_count++;
+        known = fresh;
+    }
+    memcpy(dofs, known->dofs, sizeof known->dofs);
+    *frames = known->frames;
+    memcpy(pads, known->pads, sizeof known->pads);
     double hover = p->in->wrist.y - c->rig->hover_depth;
     for (int k = 0; k < p->count; k++) {
         int f = p->u[k].finger;
@@ -206,17 +232,31 @@ static sk_result free_clearance(problem *p, int f, double *x, double *gap, sk_er
 }
 
 /* The smallest extension that holds free finger f clear of the keys (the others held):
- * regula falsi (Illinois) on the lift amplitude in [-LIFT_MAX, 0]. */
+ * regula falsi (Illinois) on the lift amplitude in [-LIFT_MAX, 0], from the bracket the
+ * last round's lift gives (a later round starts where the one before ended). */
 static sk_result lift_finger(problem *p, int f, double *x, sk_error *err)
 {
-    double gap;
+    double last = p->lift[f], gap; /* the lift of the round before (0 in the first) */
     p->lift[f] = 0;
     sk_result r = free_clearance(p, f, x, &gap, err);
     if (r != SK_OK || gap >= -TOLERANCE_MM) return r;
-    double a = -LIFT_MAX, b = 0, ga, gb = gap;
-    p->lift[f] = a;
-    if ((r = free_clearance(p, f, x, &ga, err)) != SK_OK) return r;
-    if (ga < 0) return SK_OK; /* as high as it goes */
+    double a = -LIFT_MAX, b = 0, ga = 0, gb = gap;
+    bool bracketed = false;
+    if (last < 0) { /* the last round's lift, tried first: the other fingers moved little */
+        double gl;
+        p->lift[f] = last;
+        if ((r = free_clearance(p, f, x, &gl, err)) != SK_OK) return r;
+        if (gl >= 0 && gl < 0.05) return SK_OK; /* still just clear */
+        if (gl >= 0)
+            a = last, ga = gl, bracketed = true;
+        else
+            b = last, gb = gl;
+    }
+    if (!bracketed) {
+        p->lift[f] = a;
+        if ((r = free_clearance(p, f, x, &ga, err)) != SK_OK) return r;
+        if (ga < 0) return SK_OK; /* as high as it goes */
+    }
     int side = 0; /* Illinois: halve a stale end's value so the bracket shrinks from both ends */
     for (int it = 0; it < LIFT_ITERATIONS && b - a > 1e-4; it++) {
         double m = b - gb * (b - a) / (gb - ga);

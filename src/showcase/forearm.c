@@ -117,20 +117,57 @@ static sk_result measure_stump(const sk_showcase *sc, float albedo_out[3], sk_ve
     return SK_OK;
 }
 
+/* The forearm's end lies over the back of the hand, its skin nearly on the hand's (the
+ * stump inside it), so the two surfaces would cross in patches shaped by the forearm's
+ * grid. The end is drawn in toward the forearm's axis, by nothing TUCK_FROM_MM before
+ * the wrist and by TUCK_MM at the skin's end (smoothly), so it dives under the hand's
+ * skin and the two meet along one line. Only the rendered mesh is changed, never the
+ * simulation. */
+#define TUCK_MM 5.0
+#define TUCK_FROM_MM 20.0
+/* The forearm's microrelief (the back of the hand's, at full strength) is sharper than
+   the hand's baked one: over the last RELIEF_FADE_MM before the tuck and the tuck itself
+   it softens to RELIEF_END_WEIGHT of its strength, so the texture does not change at the
+   join. */
+#define RELIEF_FADE_MM 20.0
+#define RELIEF_END_WEIGHT 0.4f
+
+static sk_result tuck_weights(sk__forearm *fa, sk_error *err)
+{
+    size_t n = fa->mesh.vertex_count;
+    fa->tuck = malloc((n ? n : 1) * sizeof *fa->tuck);
+    if (!fa->tuck) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the forearm");
+    double end = 0, from = fa->length - TUCK_FROM_MM;
+    for (size_t v = 0; v < n; v++) end = fmax(end, fa->mesh.uvs[2 * v + 1]); /* along, mm from the elbow */
+    fa->relief.fade_from = (float)(from - RELIEF_FADE_MM);
+    fa->relief.fade_to = (float)fmax(end, from);
+    fa->relief.end_weight = RELIEF_END_WEIGHT;
+    for (size_t v = 0; v < n; v++) {
+        double u = end > from ? (fa->mesh.uvs[2 * v + 1] - from) / (end - from) : 0;
+        u = u < 0 ? 0 : u > 1 ? 1 : u;
+        fa->tuck[v] = (float)(u * u * (3 - 2 * u));
+    }
+    return SK_OK;
+}
+
 void sk__forearm_skin_texture(void *user, const sk_render_surface *s, sk_render_texel *texel)
 {
-    const sk_skin *skin = user;
+    const sk__forearm_relief *relief = user;
     sk_vec3f n;
-    sk_skin_eval(skin, s->st.x, s->st.y, NULL, &n);
+    sk_skin_eval(relief->skin, s->st.x, s->st.y, NULL, &n);
+    float u = (s->st.y - relief->fade_from) / (relief->fade_to - relief->fade_from);
+    u = u < 0 ? 0 : u > 1 ? 1 : u;
+    float weight = 1 - (1 - relief->end_weight) * u * u * (3 - 2 * u);
     if (n.z > 1e-6f) { /* the height field's normal is normalize(-dh/ds, -dh/dt, 1) */
-        texel->slope.x -= n.x / n.z;
-        texel->slope.y -= n.y / n.z;
+        texel->slope.x -= weight * n.x / n.z;
+        texel->slope.y -= weight * n.y / n.z;
     }
 }
 
 sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
 {
     sk__forearm *fa = &sc->forearm;
+    fa->relief.skin = sc->desc.back_skin;
     if (!sc->desc.forearm) return SK_OK;
     sk_tissue_character_desc *cd = malloc(sizeof *cd);
     if (!cd) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the forearm");
@@ -203,7 +240,7 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     fa->mesh.uvs = malloc(2 * fa->mesh.vertex_count * sizeof *fa->mesh.uvs);
     if (!fa->mesh.uvs) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the forearm");
     forearm_uvs(fa, &fa->mesh, elbow_rest);
-    return SK_OK;
+    return tuck_weights(fa, err);
 }
 
 void sk__forearm_free(sk_showcase *sc)
@@ -213,6 +250,7 @@ void sk__forearm_free(sk_showcase *sc)
     sk_tissue_model_destroy(fa->model);
     sk_mesh_free(&fa->mesh);
     free(fa->start);
+    free(fa->tuck);
 }
 
 sk_result sk__forearm_advance(sk_showcase *sc, double seconds, sk_error *err)
@@ -225,9 +263,28 @@ sk_result sk__forearm_advance(sk_showcase *sc, double seconds, sk_error *err)
     return r == SK_OK ? r : sk_error_prefix(err, r, "forearm");
 }
 
-sk_result sk__forearm_normals(sk_showcase *sc, sk_error *err)
+sk_result sk__forearm_render_mesh(sk_showcase *sc, double seconds, sk_error *err)
 {
-    return sc->forearm.sim ? sk_mesh_compute_normals(&sc->forearm.mesh, err) : SK_OK;
+    sk__forearm *fa = &sc->forearm;
+    if (!fa->sim) return SK_OK;
+    /* the end tucked in toward the forearm's axis where the hand's skin covers it */
+    sk__intent in;
+    sk__performance_at(&sc->perf, seconds, &in);
+    sk_vec3d wrist = sk_v3d_add(in.wrist, fa->ride), elbow;
+    sk_quatd turn;
+    forearm_place(fa, wrist, &elbow, &turn);
+    sk_vec3d axis = sk_v3d_normalize(sk_v3d_sub(wrist, elbow));
+    float *p = fa->mesh.positions;
+    for (size_t v = 0; v < fa->mesh.vertex_count; v++, p += 3) {
+        if (fa->tuck[v] <= 0) continue;
+        sk_vec3d q = sk_v3d_sub((sk_vec3d){p[0], p[1], p[2]}, elbow);
+        sk_vec3d radial = sk_v3d_sub(q, sk_v3d_scale(axis, sk_v3d_dot(q, axis)));
+        double r = sk_v3d_length(radial);
+        if (r < 2 * TUCK_MM) continue;
+        sk_vec3d in_by = sk_v3d_scale(radial, -TUCK_MM * fa->tuck[v] / r);
+        p[0] += (float)in_by.x, p[1] += (float)in_by.y, p[2] += (float)in_by.z;
+    }
+    return sk_mesh_compute_normals(&fa->mesh, err);
 }
 
 size_t sk_showcase_forearm_points(const sk_showcase *sc)

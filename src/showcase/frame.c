@@ -24,7 +24,7 @@ sk_result sk_showcase_render_frame(sk_showcase *sc, int frame, sk_image *image, 
     double t2b = sk_time_seconds();
     sk_mesh hand = {0};
     if (r == SK_OK) r = sk__hand_mesh_posed(sc, &pose.frames, &hand, err);
-    if (r == SK_OK) r = sk__forearm_normals(sc, err);
+    if (r == SK_OK) r = sk__forearm_render_mesh(sc, t, err);
     double t3 = sk_time_seconds();
     if (r == SK_OK) r = sk__scene_build(sc, &pose, &hand, sc->scene, err);
     sk_render_scene *scene = NULL;

@@ -89,7 +89,7 @@ static sk_result add_forearm(sk_showcase *sc, sk_render_scene_desc *d, sk_error 
     memcpy(m.albedo, sc->forearm_albedo, sizeof m.albedo);
     if (sc->desc.back_skin) {
         m.texture = sk__forearm_skin_texture;
-        m.texture_user = (void *)sc->desc.back_skin;
+        m.texture_user = (void *)&sc->forearm.relief;
     }
     if (add_material(d, &m) < 0) return sk_fail(err, SK_ERROR_LIMIT, "stage: no room for the forearm's material");
     sk_render_object_desc o = {0};

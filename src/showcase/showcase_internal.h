@@ -153,6 +153,14 @@ double sk__keys_surface(const sk_piano *piano, sk_vec3d centre, double radius);
 
 /* ------------------------------------------------------------ the forearm */
 
+/* The forearm's skin relief as rendered: the microrelief of `skin`, softened toward the
+ * forearm's end (along, mm from the elbow: full up to `fade_from`, `end_weight` of it at
+ * `fade_to`) to the hand's softer baked relief where the two skins meet. */
+typedef struct sk__forearm_relief {
+    const sk_skin *skin;
+    float fade_from, fade_to, end_weight;
+} sk__forearm_relief;
+
 /* The forearm (forearm.c): a tissue character whose root joint is the elbow and whose
  * joint "wrist" rides on the middle of the hand's wrist stump. */
 typedef struct sk__forearm {
@@ -169,15 +177,18 @@ typedef struct sk__forearm {
     sk_vec3d home_axis;         /* direction from the elbow to the wrist (the carpus's) */
     sk_vec3d home_wrist, home_elbow; /* at time 0 */
     sk_mesh mesh;               /* the skin: rest triangles and UVs, this frame's positions */
+    float *tuck;                /* per skin point: how far its end is drawn in (0..1) */
+    sk__forearm_relief relief;  /* the render texture's data */
 } sk__forearm;
 
 sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err);
 void sk__forearm_free(sk_showcase *sc);
 /* The skin at `seconds` into the forearm's mesh positions (the tissue step). */
 sk_result sk__forearm_advance(sk_showcase *sc, double seconds, sk_error *err);
-/* Its normals (with the skinning). */
-sk_result sk__forearm_normals(sk_showcase *sc, sk_error *err);
-/* Render texture of the forearm's skin: the microrelief of the sk_skin `user` as a bump
+/* The mesh as rendered at `seconds` (after sk__forearm_advance to that time, with the
+ * skinning): its end tucked under the hand's skin, then its normals. */
+sk_result sk__forearm_render_mesh(sk_showcase *sc, double seconds, sk_error *err);
+/* Render texture of the forearm's skin: the relief of the sk__forearm_relief `user` as a bump
  * map at the skin's UVs (mm). */
 void sk__forearm_skin_texture(void *user, const sk_render_surface *surface, sk_render_texel *texel);
 

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "tissue/sim_internal.h"
+#include "tissue/simd.h"
 
 /* Relaxation steps at the start pose before time 0 (the flesh carried there by the tissue
  * is let settle, so a motion that does not start at rest does not start with a jolt), until
@@ -60,20 +61,6 @@ void sk__sim_place_anchors(const sk_tissue_sim *s, const sk_tissue_pose *pose, c
     }
 }
 
-sk_vec3d sk__sim_carried(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
-                         size_t p)
-{
-    const sk_tissue_model *m = s->m;
-    int mu = m->carrier_muscle[p];
-    if (mu >= 0) {
-        /* the muscle's deformation, extended beyond its surface */
-        const sk__ellipsoid *e = &muscle[mu].body;
-        sk_vec3d u = m->local[p];
-        return sk_v3d_add(e->centre, sk_m3d_apply(e->axes, sk_v3d(u.x * e->radii.x, u.y * e->radii.y, u.z * e->radii.z)));
-    }
-    return sk__pose_apply(pose, m->bones[m->owner[p]].joint, m->local[p]);
-}
-
 static uint64_t fingerprint(const sk_tissue_model *m, int step_hz)
 {
     uint64_t h = sk_hash(0x7469737375650001ULL, m->point_count, m->spring_count, (uint64_t)step_hz);
@@ -116,7 +103,8 @@ static void settle(sk_tissue_sim *s)
 #pragma omp for schedule(static)
         for (size_t k = 0; k < 3 * s->n; k++) s->base[k] = s->x[k];
         s->ops->step(s->solver, s->x, s->base, s->target, s->target);
-        sk__collide(s->obstacles, s->obstacle_count, s->m->desc.bone_count, s->m->near_muscles, s->x, s->nfree);
+        sk__collide(s->obstacles, s->obstacle_count, s->m->desc.bone_count, s->m->near_muscles, s->x, s->nfree,
+                    s->vectors);
 #pragma omp single
         s->settle_move = 0.0;
         double move = 0.0; /* this thread's largest (a max is the same in any order) */
@@ -162,6 +150,7 @@ sk_result sk_tissue_sim_create(const sk_tissue_model *m, const sk_tissue_motion 
         return r;
     }
     s->fingerprint = fingerprint(m, s->step_hz);
+    s->vectors = sk__have_avx2();
     s->parallel_points = 20000;
     s->threads = omp_get_max_threads();
     sk__sim_pose_at(s, 0, &s->pose);
@@ -297,7 +286,7 @@ static void step_parallel(sk_tissue_sim *s)
     if (!no_fat) s->ops->step(s->solver, s->x, s->base, s->target, s->target_base);
     /* out of the bones and muscles, then the velocities, block by block */
     sk__collide_finish(s->obstacles, no_fat ? 0 : s->obstacle_count, s->m->desc.bone_count, s->m->near_muscles, s->x,
-                       s->base, s->v, 1.0 / s->h, s->nfree);
+                       s->base, s->v, 1.0 / s->h, s->nfree, s->vectors);
 }
 
 /* Steps on `threads` threads until step `end`. */
@@ -345,6 +334,12 @@ sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
         run_steps(s, end, most > 1 ? s->threads : 1);
     }
     return SK_OK;
+}
+
+void sk__sim_use_vectors(sk_tissue_sim *s, bool on)
+{
+    s->vectors = on && sk__have_avx2();
+    if (s->solver) sk__solver_xpbd_use_vectors(s->solver, on);
 }
 
 int64_t sk_tissue_sim_steps(const sk_tissue_sim *s) { return s->step; }

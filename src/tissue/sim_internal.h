@@ -26,14 +26,15 @@ int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose, const sk
 /* Moves the first `count` points of x (3 doubles each) out of the obstacles: every bone,
  * and the muscles whose bit is set in the point's `near_muscles` mask (muscle i is
  * obstacle bone_count + i). Shares its work with an orphaned loop (call it from every
- * thread of a parallel region, or from one). */
+ * thread of a parallel region, or from one). `vectors`: the points that may be inside
+ * found four at a time (AVX2; the same result, simd.h). */
 void sk__collide(const sk__obstacle *obstacles, int count_obstacles, int bone_count, const uint64_t *near_muscles,
-                 double *x, size_t count);
+                 double *x, size_t count, bool vectors);
 /* The same, each block's velocities then set from its moves: v = (x - base) inv_h (one
  * loop, one synchronisation). */
 void sk__collide_finish(const sk__obstacle *obstacles, int obstacle_count, int bone_count,
                         const uint64_t *near_muscles, double *x, const double *base, double *v, double inv_h,
-                        size_t count);
+                        size_t count, bool vectors);
 
 struct sk_tissue_sim {
     const sk_tissue_model *m;
@@ -65,8 +66,12 @@ struct sk_tissue_sim {
     double settle_move;       /* the largest move of the last settling step */
     int threads;              /* threads the steps run on (chosen by timing, see sim.c) */
     int64_t next_probe;       /* step at which the thread count is chosen again */
+    bool vectors;             /* the AVX2 paths (where the processor has them; simd.h) */
 };
 
+/* Whether the springs and the collisions take their AVX2 paths (on by default where the
+ * processor has them; the tests turn them off to compare the bits). */
+void sk__sim_use_vectors(sk_tissue_sim *s, bool on);
 /* The pose of the motion at step k. */
 void sk__sim_pose_at(const sk_tissue_sim *s, int64_t k, sk_tissue_pose *pose);
 /* The muscles' shapes at a pose. */
@@ -76,8 +81,19 @@ void sk__sim_shape_muscles(const sk_tissue_sim *s, const sk_tissue_pose *pose, s
 void sk__sim_place_anchors(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
                            double *x);
 /* Where the tissue alone (the pose's bones, the muscles' shapes at it) carries free point
- * p's rest position. */
-sk_vec3d sk__sim_carried(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
-                         size_t p);
+ * p's rest position (inline: the step calls it for every free point). */
+static inline sk_vec3d sk__sim_carried(const sk_tissue_sim *s, const sk_tissue_pose *pose,
+                                       const sk__muscle_state *muscle, size_t p)
+{
+    const sk_tissue_model *m = s->m;
+    int mu = m->carrier_muscle[p];
+    if (mu >= 0) {
+        /* the muscle's deformation, extended beyond its surface */
+        const sk__ellipsoid *e = &muscle[mu].body;
+        sk_vec3d u = m->local[p];
+        return sk_v3d_add(e->centre, sk_m3d_apply(e->axes, sk_v3d(u.x * e->radii.x, u.y * e->radii.y, u.z * e->radii.z)));
+    }
+    return sk__pose_apply(pose, m->bones[m->owner[p]].joint, m->local[p]);
+}
 
 #endif

@@ -25,6 +25,9 @@ typedef struct sk__solver_ops {
 
 /* XPBD with one iteration per substep (Macklin et al. 2016, 2019). */
 extern const sk__solver_ops sk__solver_xpbd;
+/* Whether an XPBD solver takes its AVX2 path (where it has one: on by default where the
+ * processor runs AVX2; the same bits either way). */
+void sk__solver_xpbd_use_vectors(sk__solver *s, bool on);
 
 /* Per-spring constants every solver derives the same way from the model's material:
  * stiffness (N/m) and damping coefficient c = 2 zeta sqrt(k mu) (N s/m) with mu the
