@@ -687,10 +687,7 @@ static void test_stopped_command_leaves_nothing(void **state)
         }
         assert_true(writing);
         sleep_ms(300);
-        assert_int_equal(kill(child, signals[k]), 0);
-        int status;
-        assert_int_equal(waitpid(child, &status, 0), child);
-        assert_true(WIFSIGNALED(status) && WTERMSIG(status) == signals[k]);
+        sk_test_kill_and_reap(child, signals[k]);
         assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
         assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
         assert_false(sk_test_file_exists(out));

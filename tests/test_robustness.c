@@ -480,11 +480,8 @@ static void test_signal_removes_unfinished_outputs(void **state)
         /* the unfinished outputs are there ... */
         assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 1);
         assert_int_equal(sk_test_count_files_containing(dir, ".part"), 2);
-        assert_int_equal(kill(child, signals[k]), 0);
-        int status;
-        assert_int_equal(waitpid(child, &status, 0), child);
         /* ... the process ends by the signal, and they are gone */
-        assert_true(WIFSIGNALED(status) && WTERMSIG(status) == signals[k]);
+        sk_test_kill_and_reap(child, signals[k]);
         assert_int_equal(sk_test_count_files_containing(dir, ".tmp"), 0);
         assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
         assert_int_equal(sk_test_count_files_containing(dir, "file.txt"), 0);

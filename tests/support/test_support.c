@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include <dirent.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -86,6 +87,14 @@ void sk_test_write_file(const char *path, const void *data, size_t size)
     assert_non_null(fp);
     assert_int_equal(fwrite(data, 1, size, fp), size);
     fclose(fp);
+}
+
+void sk_test_kill_and_reap(int child, int signal_number)
+{
+    assert_int_equal(kill(child, signal_number), 0);
+    int status;
+    assert_int_equal(waitpid(child, &status, 0), child);
+    assert_true(WIFSIGNALED(status) && WTERMSIG(status) == signal_number);
 }
 
 int sk_test_count_files_containing(const char *folder, const char *needle)

@@ -39,5 +39,7 @@ bool sk_test_same_file(const char *a, const char *b);
 void sk_test_write_file(const char *path, const void *data, size_t size);
 /* Lists names in folder containing `needle` (e.g. ".tmp"), returns the count. */
 int sk_test_count_files_containing(const char *folder, const char *needle);
+/* Sends `signal_number` to `child`, waits for it and asserts it ended by that signal. */
+void sk_test_kill_and_reap(int child, int signal_number);
 
 #endif
