@@ -631,6 +631,44 @@ static void test_region_and_threads(void **state)
     sk_skin_destroy(skin);
 }
 
+/* A render of only cell ids and furrow distances walks down only to the deepest level
+ * they name and evaluates no relief: its values are those of a render of every map, for
+ * each level asked of (and the other outputs untouched). */
+static void test_cells_and_furrows_only(void **state)
+{
+    (void)state;
+    sk_skin_desc d = desc_19a(3.2f);
+    d.pores.hair.depth_mm = 0.01f;
+    sk_skin *skin = make(&d);
+    enum { W = 64, H = 52, N = W * H };
+    static float height[N], normal[3 * N], furrow[N], furrow_only[N];
+    static uint32_t ids[N], ids_only[N];
+    sk_error err = {0};
+    for (int furrow_level = 1; furrow_level <= 3; furrow_level++)
+        for (int id_level = 1; id_level <= 3; id_level++) {
+            sk_skin_render_desc all = {.width = W, .height = H, .height_mm = height, .normal = normal,
+                                       .furrow = furrow, .cell_id = ids,
+                                       .furrow_level = furrow_level, .id_level = id_level};
+            assert_int_equal(sk_skin_render(skin, &all, &err), SK_OK);
+            sk_skin_render_desc some = {.width = W, .height = H, .furrow = furrow_only,
+                                        .cell_id = ids_only, .furrow_level = furrow_level,
+                                        .id_level = id_level};
+            assert_int_equal(sk_skin_render(skin, &some, &err), SK_OK);
+            assert_memory_equal(furrow, furrow_only, sizeof furrow);
+            assert_memory_equal(ids, ids_only, sizeof ids);
+            /* one output alone too */
+            memset(ids_only, 0, sizeof ids_only);
+            sk_skin_render_desc one = {.width = W, .height = H, .cell_id = ids_only, .id_level = id_level};
+            assert_int_equal(sk_skin_render(skin, &one, &err), SK_OK);
+            assert_memory_equal(ids, ids_only, sizeof ids);
+        }
+    /* the level-1 cells differ from pixel to pixel: not a flat answer */
+    int changes = 0;
+    for (int i = 1; i < N; i++) changes += ids[i] != ids[i - 1];
+    assert_true(changes > 20);
+    sk_skin_destroy(skin);
+}
+
 /* Level-1 furrow distance is the true distance to the cell's perturbed outline. */
 static void test_furrow_distance(void **state)
 {
@@ -1023,6 +1061,7 @@ int main(void)
         cmocka_unit_test(test_aperiodic),
         cmocka_unit_test(test_region_and_threads),
         cmocka_unit_test(test_furrow_distance),
+        cmocka_unit_test(test_cells_and_furrows_only),
         cmocka_unit_test(test_bad_parameters),
         cmocka_unit_test(test_presets_build),
         cmocka_unit_test(test_cli_help_and_errors),

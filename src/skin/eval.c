@@ -79,6 +79,10 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
         hint = &local;
     }
     unsigned furrow = flags & SK_SKIN_QUERY_FURROW ? ~0u : flags >> SK__FURROW_LEVEL_SHIFT;
+    /* levels walked: every one, or the first `depth` with no relief (cells and furrows) */
+    int depth = (int)(flags >> SK__QUERY_DEPTH_SHIFT & 0xffu);
+    bool relief = depth == 0 || depth > L;
+    int walked = relief ? L : depth;
     /* Points that lie in the skin, with their fan and position at the current level. */
     int idx[SK__QUERY_BATCH], m = 0;
     uint32_t u[SK__QUERY_BATCH], owner[SK__QUERY_BATCH];
@@ -94,6 +98,7 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
             for (int k = 0; k < L; k++) o->cell[k] = SK__SKIN_NONE, o->furrow_mm[k] = 0.0f;
             continue;
         }
+        for (int k = walked; k < L; k++) o->cell[k] = SK__SKIN_NONE, o->furrow_mm[k] = 0.0f;
         jac[m][0] = 1, jac[m][1] = 0, jac[m][2] = 0, jac[m][3] = 1;
         warped[m] = L;
         idx[m++] = j;
@@ -103,7 +108,7 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
     enum { ITEMS = SK__QUERY_BATCH * SK_SKIN_MAX_LEVELS };
     uint32_t cell[ITEMS];
     float lx[ITEMS], ly[ITEMS], lj[ITEMS][4];
-    for (int k = 0; k < L; k++) {
+    for (int k = 0; k < walked; k++) {
         const sk__level *lv = &skin->levels[k];
         for (int p = 0; p < m; p++) {
             if (k > 0) u[p] = locate_child(skin, k, owner[p], px[p], py[p], hint);
@@ -127,6 +132,7 @@ void sk__query(const sk_skin *skin, int n, const double *x, const double *y, uns
                 for (int q = 0; q < 4; q++) lj[i][q] = jac[p][q];
         }
     }
+    if (!relief) return;
     /* The profiles of every item at once (independent of one another). */
     float z[ITEMS], g[ITEMS][2];
     sk__profile_eval(skin, L, m, cell, lx, ly, hint->sector, z, g);

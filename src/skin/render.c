@@ -67,12 +67,20 @@ sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, s
     unsigned flags = desc->edges    ? SK_SKIN_QUERY_FURROW
                      : want_furrow ? 1u << (SK__FURROW_LEVEL_SHIFT + furrow_level - 1)
                                    : 0u;
+    /* only cell ids and furrow distances: down to the deepest level they name, with no
+       profiles or pores */
+    int walked = L;
+    if (!desc->height_mm && !desc->normal && !desc->preview && !desc->edges) {
+        walked = desc->cell_id ? id_level : 1;
+        if (desc->furrow && furrow_level > walked) walked = furrow_level;
+        flags |= SK__QUERY_DEPTH(walked);
+    }
     float line_mm = (float)(0.75 * fmax(mm_x, mm_y));
     sk__loop_progress lp;
     sk__loop_progress_init(&lp, &desc->progress, rh);
 
     /* under about a millisecond of work one thread is faster than two */
-    double work = (double)rw * rh * L * samples * samples;
+    double work = (double)rw * rh * walked * samples * samples;
 #pragma omp parallel for schedule(dynamic, 1) if (work >= SK__PARALLEL_PIXELS)
     for (int j = 0; j < rh; j++) {
         int gy = ry + j;

@@ -352,6 +352,13 @@ void sk__hint_reset(sk__hint *hint);
 /* Internal query flag: furrow distance of level k only when bit (SK__FURROW_LEVEL_SHIFT + k)
  * is set (SK_SKIN_QUERY_FURROW asks for every level). */
 #define SK__FURROW_LEVEL_SHIFT 8
+/* Internal query flag: the query walks down only the first D levels, D in the bits from
+ * SK__QUERY_DEPTH_SHIFT (0: every level), and evaluates no section profile or pore: the
+ * cells and furrow distances of those levels are the same as a full query's, the heights
+ * and normals are left flat, the deeper levels' cells SK__SKIN_NONE. For renders of only
+ * cell ids and furrow distances. */
+#define SK__QUERY_DEPTH_SHIFT 16
+#define SK__QUERY_DEPTH(d) ((unsigned)(d) << SK__QUERY_DEPTH_SHIFT)
 /* Points a query runs side by side (their long dependency chains overlap). */
 #define SK__QUERY_BATCH 32
 /* The query behind sk_skin_query for n <= SK__QUERY_BATCH points, with an optional hint
