@@ -16,65 +16,75 @@ static float seg_dist2(float px, float py, float ax, float ay, float bx, float b
     return dx * dx + dy * dy;
 }
 
-/* Squared distance from r (the edge's frame) to polyline segment i (vertices i, i + 1). */
-static float polyline_dist2(const sk__edge *e, const float *f, float inv, int i, float rx, float ry)
-{
-    float t0 = (float)i * inv, t1 = (float)(i + 1) * inv;
-    float x0 = e->ax + t0 * (e->bx - e->ax) + f[i] * e->dx;
-    float y0 = e->ay + t0 * (e->by - e->ay) + f[i] * e->dy;
-    float x1 = e->ax + t1 * (e->bx - e->ax) + f[i + 1] * e->dx;
-    float y1 = e->ay + t1 * (e->by - e->ay) + f[i + 1] * e->dy;
-    return seg_dist2(rx, ry, x0, y0, x1, y1);
-}
-
 /* Relative slack of the lower bounds that skip edges and segments: far above rounding, so
  * whatever is skipped could not have been the nearest. */
 #define SK__FURROW_SLACK 1e-3f
 
-/* Segment i of the polyline, unless its lower bound (b2 along the edge, and across it the
- * distance from s_p to the segment's range of f) is already beyond `limit`. */
-static inline void try_segment(const sk__edge *e, const float *f, float inv, int i, float rx,
-                               float ry, float sp, float b2, float *best2, float *limit)
+/* The polyline in the edge's own orthonormal frame: u along the straight edge (u = L t,
+ * L = |b - a|) and s across it (d is the unit normal), vertex i at (i h, f_i) with
+ * h = L / segments. Distances are the same as in y space, with no vertex built there. */
+typedef struct polyline_frame {
+    const float *f;
+    float h, up, sp; /* segment length along u; the point's u and s */
+} polyline_frame;
+
+/* Squared distance from the point to segment i, (i h, f_i) - ((i + 1) h, f_{i+1}). */
+static inline float segment_dist2(const polyline_frame *pf, int i)
 {
+    float ey = pf->f[i + 1] - pf->f[i];
+    float wx = pf->up - (float)i * pf->h, wy = pf->sp - pf->f[i];
+    float l2 = pf->h * pf->h + ey * ey;
+    float t = l2 > 0 ? (wx * pf->h + wy * ey) / l2 : 0.0f;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    float dx = wx - t * pf->h, dy = wy - t * ey;
+    return dx * dx + dy * dy;
+}
+
+/* Segment i, unless its lower bound (b2 along the edge, and across it the distance from
+ * s_p to the segment's range of f) is already beyond `limit`. */
+static inline void try_segment(const polyline_frame *pf, int i, float b2, float *best2,
+                               float *limit)
+{
+    const float *f = pf->f;
     float lo = f[i] < f[i + 1] ? f[i] : f[i + 1], hi = f[i] < f[i + 1] ? f[i + 1] : f[i];
-    float across = sp > hi ? sp - hi : (sp < lo ? lo - sp : 0.0f);
+    float across = pf->sp > hi ? pf->sp - hi : (pf->sp < lo ? lo - pf->sp : 0.0f);
     if (b2 + across * across >= *limit) return;
-    float s2 = polyline_dist2(e, f, inv, i, rx, ry);
+    float s2 = segment_dist2(pf, i);
     if (s2 < *best2) *best2 = s2, *limit = s2 * (1.0f + SK__FURROW_SLACK);
 }
 
 /* Distance to the perturbed polyline of edge e from r (the edge's frame), at most best2 on
- * entry. With r = a + t_p (b - a) + s_p d (d the unit normal of the straight edge), a point
- * (t, f(t)) of the polyline lies (L (t - t_p))^2 + (f - s_p)^2 away (L = |b - a|): search
- * the segments outwards from t_p, skipping those whose bound is already too far. */
+ * entry. With r = a + t_p (b - a) + s_p d, a point (t, f(t)) of the polyline lies
+ * (L (t - t_p))^2 + (f - s_p)^2 away: search the segments outwards from t_p, skipping
+ * those whose bound is already too far. */
 static float polyline_distance(const sk__level *lv, const sk__edge *e, float rx, float ry,
                                float best2)
 {
-    const float *f = lv->f + e->f_first;
     int segs = lv->f_count - 1;
     float inv = lv->f_step;
-    float ex = e->bx - e->ax, ey = e->by - e->ay, len2 = ex * ex + ey * ey;
+    float ex = e->bx - e->ax, ey = e->by - e->ay, len2 = ex * ex + ey * ey, len = sqrtf(len2);
     float wx = rx - e->ax, wy = ry - e->ay;
-    float tp = e->atx * wx + e->aty * wy, sp = e->dx * wx + e->dy * wy;
+    float tp = e->atx * wx + e->aty * wy;
+    polyline_frame pf = {lv->f + e->f_first, len * inv, len * tp, e->dx * wx + e->dy * wy};
     float ts = tp * (float)segs;
     int i0 = ts < 0.0f ? 0 : (ts >= (float)segs ? segs - 1 : (int)ts);
     /* |f| <= bulge: every polyline point is at least |s_p| - bulge across */
-    float a = fabsf(sp) - e->bulge, a2 = a > 0 ? a * a : 0.0f;
+    float a = fabsf(pf.sp) - e->bulge, a2 = a > 0 ? a * a : 0.0f;
     float limit = best2 * (1.0f + SK__FURROW_SLACK);
     /* towards t = 0 (segment i0 holds t_p), then towards t = 1; past the first segment
        whose bound along the edge is too far, every one beyond it is too */
-    try_segment(e, f, inv, i0, rx, ry, sp, 0.0f, &best2, &limit);
+    try_segment(&pf, i0, 0.0f, &best2, &limit);
     for (int i = i0 - 1; i >= 0; i--) {
         float gap = tp - (float)(i + 1) * inv;
         float b2 = gap > 0 ? len2 * gap * gap : 0.0f;
         if (b2 + a2 >= limit) break;
-        try_segment(e, f, inv, i, rx, ry, sp, b2, &best2, &limit);
+        try_segment(&pf, i, b2, &best2, &limit);
     }
     for (int i = i0 + 1; i < segs; i++) {
         float gap = (float)i * inv - tp;
         float b2 = gap > 0 ? len2 * gap * gap : 0.0f;
         if (b2 + a2 >= limit) break;
-        try_segment(e, f, inv, i, rx, ry, sp, b2, &best2, &limit);
+        try_segment(&pf, i, b2, &best2, &limit);
     }
     return best2;
 }
