@@ -114,7 +114,9 @@ enum { LIVE_PREVIEW, LIVE_HEIGHT, LIVE_NORMAL, LIVE_FURROW, LIVE_CELLS, LIVE_COU
  * 0 the shaded preview (sRGB codes), 1 the height, 2 the normal, 3 the furrow distance
  * (each scaled by studio_skin_scale_maps), 4 the cells' colours; the others in linear
  * codes, as the map files encode them. `normals` (NULL or width x rows x 3 floats)
- * receives the float normals the render finds; with bit LIVE_RESHADE the preview alone is
+ * receives the float normals the render finds when it makes the preview, height or normal
+ * map (asked for only the furrow and cells maps, the render evaluates no relief and leaves
+ * them as they were); with bit LIVE_RESHADE the preview alone is
  * shaded from the normals it holds, with no render (sk_skin_shade: the bytes the render's
  * preview has, as the shading is all a shading edit changes). Returns 0, or an sk_result
  * with the error. */
@@ -130,12 +132,15 @@ STUDIO_API int studio_skin_live_rgba(const sk_skin *skin, int width, int height,
     want[LIVE_PREVIEW] = (maps & 1u) && rgba[LIVE_PREVIEW];
     float *height_mm = want[LIVE_HEIGHT] ? malloc(n * sizeof(float)) : NULL;
     float *furrow = want[LIVE_FURROW] ? malloc(n * sizeof(float)) : NULL;
-    float *normal = normals ? normals : malloc(3 * n * sizeof(float));
+    /* the normals: kept for the caller, or for the normal map; a render of only the
+       furrow and cells maps evaluates no relief (sk_skin_render) */
+    bool relief = want[LIVE_PREVIEW] || want[LIVE_HEIGHT] || want[LIVE_NORMAL];
+    float *normal = normals && relief ? normals : want[LIVE_NORMAL] ? malloc(3 * n * sizeof(float)) : NULL;
     float *colour = malloc(3 * n * sizeof(float)); /* preview, then the normal scaled, the cells */
     uint32_t *cells = want[LIVE_CELLS] ? malloc(n * sizeof(uint32_t)) : NULL;
     uint8_t *scratch = malloc(3 * n);
     int r = 0;
-    if ((want[LIVE_HEIGHT] && !height_mm) || (want[LIVE_FURROW] && !furrow) || !normal ||
+    if ((want[LIVE_HEIGHT] && !height_mm) || (want[LIVE_FURROW] && !furrow) || (want[LIVE_NORMAL] && !normal) ||
         !colour || (want[LIVE_CELLS] && !cells) || !scratch)
         r = (int)sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the live maps");
     else if (reshade)

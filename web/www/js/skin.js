@@ -140,33 +140,49 @@ export class SkinPanel extends PresetPanel {
   async show() {
     const w = this.size, h = this.size;
     const t0 = performance.now();
+    const resized = this.canvases.preview.width !== w;
+    // new cells come in two parts: the preview, height and normal maps (and the board)
+    // are shown while the furrow and cells maps are made
+    let first = null;
+    const part = (p) => {
+      this.draw(p, w, resized && !first);
+      first = { at: performance.now(), maps: p.changed };
+      this.app.emit('skin-part', first);
+    };
     let r;
     try {
-      r = await this.workers.render(this.tree, w, h);
+      r = await this.workers.render(this.tree, w, h, part);
     } catch (e) {
       this.errorLine.textContent = e.message;
       return;
     }
     const t1 = performance.now();
-    const resized = this.canvases.preview.width !== w;
+    // what the first part showed is on its canvases already
+    this.draw({ ...r, changed: first ? r.changed.filter((k) => !first.maps.includes(k)) : r.changed }, w, resized && !first);
+    const t2 = performance.now();
+    const rebuilt = r.workers.some((x) => x.changes & 1);
+    this.timings = { model_ms: t1 - t0, draw_ms: t2 - t1, total_ms: t2 - t0, shown_at: t2, size: w, rebuilt, maps: r.changed, workers: r.workers,
+      first_shown_at: first ? first.at : t2, first_maps: first ? first.maps : r.changed };
+    const what = rebuilt ? 'cells built' : r.changed.length > 1 ? 'relief re-profiled' : r.changed.length ? 'shaded again' : 'unchanged';
+    const firstNote = first ? `, the preview ${(first.at - t0).toFixed(0)} ms` : '';
+    this.info.textContent = `tile ${r.tw.toFixed(2)} × ${r.th.toFixed(2)} mm, height ${r.lo.toFixed(4)}…${r.hi.toFixed(4)} mm; ${w}² maps in ${(t2 - t0).toFixed(0)} ms${firstNote} (${what})`;
+    this.app.emit('skin-updated', this.timings);
+  }
+
+  // Puts the maps r.changed of a render (r.rgba) on their canvases (every canvas sized
+  // w x w first when `resized`), and the board in the 3D view takes a new normal map at the
+  // next frame (a texture of another size is a new one for WebGL).
+  draw(r, w, resized) {
     for (const [k, c] of Object.entries(this.canvases)) {
       if (resized) c.width = c.height = w;
-      if (resized || r.changed.includes(k)) c.getContext('2d').putImageData(new ImageData(r.rgba[k], w, h), 0, 0);
+      if (r.changed.includes(k)) c.getContext('2d').putImageData(new ImageData(r.rgba[k], w, w), 0, 0);
     }
-    // the board in the 3D view takes the new normal map at the next frame (a texture of
-    // another size is a new one for WebGL)
     if (resized) this.normalTex.dispose();
     if (resized || r.changed.includes('normal')) this.normalTex.needsUpdate = true;
     if ((resized || r.changed.includes('normal')) && this.app.tab === 'skin' && !this.boardPending) {
       this.boardPending = true;
       requestAnimationFrame(() => { this.boardPending = false; this.app.view.render(); });
     }
-    const t2 = performance.now();
-    const rebuilt = r.workers.some((x) => x.changes & 1);
-    this.timings = { model_ms: t1 - t0, draw_ms: t2 - t1, total_ms: t2 - t0, shown_at: t2, size: w, rebuilt, maps: r.changed, workers: r.workers };
-    const what = rebuilt ? 'cells built' : r.changed.length > 1 ? 'relief re-profiled' : r.changed.length ? 'shaded again' : 'unchanged';
-    this.info.textContent = `tile ${r.tw.toFixed(2)} × ${r.th.toFixed(2)} mm, height ${r.lo.toFixed(4)}…${r.hi.toFixed(4)} mm; ${w}² maps in ${(t2 - t0).toFixed(0)} ms (${what})`;
-    this.app.emit('skin-updated', this.timings);
   }
 
   // Only the shaded preview at n x n, built and rendered on the page's own thread (one
