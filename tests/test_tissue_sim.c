@@ -392,6 +392,73 @@ static void test_thread_count_independence(void **state)
     sk_tissue_model_destroy(m);
 }
 
+/* A model machine for the thread choice's clock: a step costs 1 s on one thread and, on
+ * two, 0.5 s until step `busy_from` and 3 s from there on (another job took a core: the
+ * threads wait for each other at every barrier). The clock adds the cost of the steps run
+ * since its last reading, on the threads the simulation was running them on. */
+static const sk_tissue_sim *clock_sim;
+static int64_t clock_step, busy_from;
+static double clock_now;
+static int clock_calls;
+static double model_clock(void)
+{
+    const sk_tissue_sim *s = clock_sim;
+    bool two = s->probe_phase == 2 || (s->probe_phase == 0 && s->threads > 1);
+    for (; clock_step < s->step; clock_step++) clock_now += !two ? 1.0 : clock_step < busy_from ? 0.5 : 3.0;
+    clock_calls++;
+    return clock_now;
+}
+
+/* The thread choice (sim.c): a few steps timed on one thread and on two keep the faster,
+ * timed over several calls when a call is fewer steps (a frame: 8 steps at 240 steps/s and
+ * 30 fps); on two threads every run is timed, and one much slower than one thread's steps
+ * makes the choice again at once. On the model machine, two threads win the first choice
+ * and keep it while the machine is quiet; once it is busy one thread is chosen within a few
+ * frames. The steps are the same bits as one thread's. */
+static void test_thread_choice_follows_the_machine(void **state)
+{
+    (void)state;
+    sk_tissue_model *m = sk_test_rod_model(5.0);
+    sk_test_motion mo = {SK_TEST_MOTION_RANDOM, 0, 0, 0, 4};
+    sk_tissue_motion motion = sk_test_motion_get(&mo, 1.0);
+    sk_threads_set(2);
+    sk_tissue_sim *s = make_sim(m, &motion);
+    s->parallel_points = 0;
+    int64_t start = s->step;
+    clock_sim = s, clock_step = start, busy_from = start + 100, clock_now = 0.0, clock_calls = 0;
+    s->clock = model_clock;
+    for (int64_t k = start + 8; k <= start + 96; k += 8) {
+        SK_ASSERT_OK(sk_tissue_sim_advance(s, (double)k / s->step_hz, &e_));
+        assert_int_equal(s->step, k);
+        /* the first choice took 12 steps on one thread and 12 on two, over three frames */
+        if (k >= start + 24) assert_int_equal(s->threads, 2), assert_int_equal(s->probe_phase, 0);
+        else assert_int_not_equal(s->probe_phase, 0);
+    }
+    assert_float_equal(s->one_thread_step_s, 1.0, 1e-12);
+    assert_int_equal(s->next_probe, start + 24 + 1200);
+    for (int64_t k = start + 104; k <= start + 160; k += 8)
+        SK_ASSERT_OK(sk_tissue_sim_advance(s, (double)k / s->step_hz, &e_));
+    /* busy from step 100: the run of steps 96-104 is slow, the choice runs again over
+       steps 104-128 and keeps one thread, with no clock until the next choice */
+    assert_int_equal(s->threads, 1);
+    assert_int_equal(s->next_probe, start + 128 + 1200);
+    int calls = clock_calls;
+    SK_ASSERT_OK(sk_tissue_sim_advance(s, (double)(start + 400) / s->step_hz, &e_));
+    assert_int_equal(clock_calls, calls);
+    s->clock = sk_time_seconds;
+    double t = (double)(start + 480) / s->step_hz;
+    float *chosen = skin_at(s, t);
+    sk_tissue_sim_destroy(s);
+    sk_threads_set(1);
+    s = make_sim(m, &motion);
+    float *one = skin_at(s, t);
+    sk_tissue_sim_destroy(s);
+    sk_threads_set(0);
+    assert_memory_equal(chosen, one, 3 * m->skin_count * sizeof(float));
+    free(chosen), free(one);
+    sk_tissue_model_destroy(m);
+}
+
 /* The vector paths (AVX2 springs four at a time on packed points, the collisions' test of
  * four points at once) give the same bits as the scalar code, with the bones and the muscle
  * pushing flesh out (a fast random motion), on one thread and on two. Where the processor
@@ -515,6 +582,7 @@ int main(void)
         cmocka_unit_test(test_teleports_and_extreme_stiffness_stay_bounded),
         cmocka_unit_test(test_frame_rate_independence),
         cmocka_unit_test(test_thread_count_independence),
+        cmocka_unit_test(test_thread_choice_follows_the_machine),
         cmocka_unit_test(test_vector_paths_give_the_same_bits),
         cmocka_unit_test(test_bake_equals_live_equals_resumed),
     };

@@ -18,9 +18,15 @@
  * no point moves more than SETTLED_MM in a step. */
 #define SETTLE_STEPS 240
 #define SETTLED_MM 1e-6
-/* Steps timed on one thread and on all to choose, and steps until the choice is made again. */
+/* Steps timed on one thread and on all to choose, and steps until the choice is made again.
+ * On several threads the steps also run in runs of WATCH_STEPS, each timed: a run whose
+ * steps are WATCH_SLOWDOWN times slower than one thread's at the last choice (the machine
+ * got busy and the threads wait for each other at every barrier) makes the choice again
+ * at once, so a choice made in a quiet moment is not kept through a busy one. */
 #define PROBE_STEPS 12
 #define REPROBE_STEPS 1200
+#define WATCH_STEPS 24
+#define WATCH_SLOWDOWN 1.25
 
 void sk__sim_pose_at(const sk_tissue_sim *s, int64_t k, sk_tissue_pose *pose)
 {
@@ -153,6 +159,7 @@ sk_result sk_tissue_sim_create(const sk_tissue_model *m, const sk_tissue_motion 
     s->vectors = sk__have_avx2();
     s->parallel_points = 20000;
     s->threads = omp_get_max_threads();
+    s->clock = sk_time_seconds;
     sk__sim_pose_at(s, 0, &s->pose);
     s->pose_prev = s->pose;
     sk__sim_shape_muscles(s, &s->pose, s->muscle);
@@ -315,22 +322,40 @@ sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
     int64_t target = (int64_t)ceil(k - 1e-6);
     int most = threads_for(s);
     while (s->step < target) {
-        if (most > 1 && s->step >= s->next_probe) {
-            /* time a few steps on one thread and on all, keep the faster (the machine may be
-               shared; the result is the same either way) */
-            int64_t a0 = s->step;
-            double t0 = sk_time_seconds();
-            run_steps(s, a0 + PROBE_STEPS < target ? a0 + PROBE_STEPS : target, 1);
-            int64_t a1 = s->step;
-            double t1 = sk_time_seconds();
-            run_steps(s, a1 + PROBE_STEPS < target ? a1 + PROBE_STEPS : target, most);
-            int64_t a2 = s->step;
-            double t2 = sk_time_seconds();
-            if (a1 > a0 && a2 > a1) s->threads = (t2 - t1) / (double)(a2 - a1) < (t1 - t0) / (double)(a1 - a0) ? most : 1;
+        if (most > 1 && s->probe_phase == 0 && s->step >= s->next_probe) {
+            s->probe_phase = 1;
+            s->probe_steps[0] = s->probe_steps[1] = 0;
+            s->probe_s[0] = s->probe_s[1] = 0.0;
+        }
+        if (most > 1 && s->probe_phase > 0) {
+            /* the choice: PROBE_STEPS steps timed on one thread, then as many on all, over
+               as many calls as it takes (a frame may be fewer steps); the faster is kept
+               (the machine may be shared; the result is the same either way) */
+            int p = s->probe_phase - 1;
+            int64_t a0 = s->step, left = PROBE_STEPS - s->probe_steps[p];
+            double t0 = s->clock();
+            run_steps(s, a0 + left < target ? a0 + left : target, p == 0 ? 1 : most);
+            s->probe_s[p] += s->clock() - t0;
+            s->probe_steps[p] += s->step - a0;
+            if (s->probe_steps[p] < PROBE_STEPS) continue;
+            s->probe_phase = p == 0 ? 2 : 0;
+            if (p == 0) continue;
+            s->one_thread_step_s = s->probe_s[0] / PROBE_STEPS;
+            s->threads = s->probe_s[1] < s->probe_s[0] ? most : 1;
             s->next_probe = s->step + REPROBE_STEPS;
             continue;
         }
         int64_t end = most > 1 && s->next_probe < target ? s->next_probe : target;
+        if (most > 1 && s->threads > 1) {
+            /* a timed run; too slow against one thread: choose again */
+            int64_t a0 = s->step, run_end = a0 + WATCH_STEPS < end ? a0 + WATCH_STEPS : end;
+            double t0 = s->clock();
+            run_steps(s, run_end, s->threads);
+            double per_step = (s->clock() - t0) / (double)(s->step - a0);
+            if (s->step > a0 && s->one_thread_step_s > 0 && per_step > WATCH_SLOWDOWN * s->one_thread_step_s)
+                s->next_probe = s->step;
+            continue;
+        }
         run_steps(s, end, most > 1 ? s->threads : 1);
     }
     return SK_OK;

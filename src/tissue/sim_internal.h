@@ -65,7 +65,13 @@ struct sk_tissue_sim {
     size_t parallel_points;   /* below this many free points one thread runs the steps */
     double settle_move;       /* the largest move of the last settling step */
     int threads;              /* threads the steps run on (chosen by timing, see sim.c) */
+    /* the choice of threads (sim.c), timed over as many calls as it takes */
     int64_t next_probe;       /* step at which the thread count is chosen again */
+    int probe_phase;          /* 0 none; 1, 2: timing steps on one thread, then on all */
+    int64_t probe_steps[2];   /* steps timed so far on one thread and on all */
+    double probe_s[2];        /* and their seconds */
+    double one_thread_step_s; /* seconds a step took on one thread at the last choice */
+    double (*clock)(void);    /* the clock that times the choice (sk_time_seconds) */
     bool vectors;             /* the AVX2 paths (where the processor has them; simd.h) */
 };
 
