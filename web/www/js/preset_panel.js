@@ -60,8 +60,7 @@ export class PresetPanel {
   }
 
   // After an edit: the values the model uses (or the library's message), the panel's
-  // pictures (started first: the skin panel's workers render while the controls are
-  // made), then the controls when the tree's shape changed.
+  // pictures, then the controls when the tree's shape changed (afterPictures).
   edited(path, structural) {
     try {
       this.resolvedTree = this.lib.resolved(this.module, this.tree);
@@ -71,8 +70,13 @@ export class PresetPanel {
       return;
     }
     this.update();
-    if (structural) this.form.render();
+    if (structural) this.afterPictures(() => this.form.render());
   }
+
+  // Runs fn once the pictures update() started are shown: at once here; the skin panel,
+  // whose workers render on every core, waits for its first maps, so that making the
+  // controls does not take a core from them.
+  afterPictures(fn) { fn(); }
 
   // RGBA bytes of float samples with the PNG writer's codes.
   rgbaOf(samples, channels, srgb, n) {

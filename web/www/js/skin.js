@@ -137,6 +137,16 @@ export class SkinPanel extends PresetPanel {
 
   idle() { return this.rendering; }
 
+  // (PresetPanel) fn runs when the next maps are on their canvases, or the render failed.
+  afterPictures(fn) { (this.whenShown ||= []).push(fn); }
+
+  // Runs what waits for the maps (afterPictures).
+  shown() {
+    const waiting = this.whenShown || [];
+    this.whenShown = [];
+    for (const fn of waiting) fn();
+  }
+
   async show() {
     const w = this.size, h = this.size;
     const t0 = performance.now();
@@ -148,12 +158,14 @@ export class SkinPanel extends PresetPanel {
       this.draw(p, w, resized && !first);
       first = { at: performance.now(), maps: p.changed };
       this.app.emit('skin-part', first);
+      this.shown();
     };
     let r;
     try {
       r = await this.workers.render(this.tree, w, h, part);
     } catch (e) {
       this.errorLine.textContent = e.message;
+      this.shown();
       return;
     }
     const t1 = performance.now();
@@ -167,6 +179,7 @@ export class SkinPanel extends PresetPanel {
     const firstNote = first ? `, the preview ${(first.at - t0).toFixed(0)} ms` : '';
     this.info.textContent = `tile ${r.tw.toFixed(2)} × ${r.th.toFixed(2)} mm, height ${r.lo.toFixed(4)}…${r.hi.toFixed(4)} mm; ${w}² maps in ${(t2 - t0).toFixed(0)} ms${firstNote} (${what})`;
     this.app.emit('skin-updated', this.timings);
+    this.shown();
   }
 
   // Puts the maps r.changed of a render (r.rgba) on their canvases (every canvas sized
