@@ -617,6 +617,70 @@ static void test_output_set_is_all_or_nothing(void **state)
 
 /* ------------------------------------------------------------ readers */
 
+/* `wood cut -o DIR/shaded.png --maps DIR` was refused ("cannot create file") when DIR did
+ * not exist yet: the picture's folder is the maps folder, which the set makes only at the
+ * end. A file directly inside a folder reserved before it goes into its staged copy. */
+static void test_output_set_file_inside_its_folder(void **state)
+{
+    (void)state;
+    const char *dir = fresh_folder("robust/inside");
+    char maps[1024], shaded[1024], path[1024], buf[64];
+    snprintf(maps, sizeof maps, "%s/oak", dir);
+    snprintf(shaded, sizeof shaded, "%s/oak/shaded.png", dir);
+    sk_error err = {0};
+    for (int existing = 0; existing < 2; existing++) {
+        /* the folder new, then already there: the file lands inside it either way */
+        sk_output_set *set = NULL;
+        const char *sf, *ss;
+        assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+        assert_int_equal(sk_output_set_folder(set, maps, &sf, &err), SK_OK);
+        assert_int_equal(sk_output_set_file(set, shaded, &ss, &err), SK_OK);
+        assert_int_equal(strncmp(ss, sf, strlen(sf)), 0);
+        assert_int_equal(write_text(ss, existing ? "S2" : "S", &err), SK_OK);
+        snprintf(path, sizeof path, "%s/albedo.png", sf);
+        assert_int_equal(write_text(path, "A", &err), SK_OK);
+        /* nothing in place before the commit (the earlier file, the second time) */
+        if (existing) read_text(shaded, buf, sizeof buf), assert_string_equal(buf, "S");
+        else assert_false(sk_test_file_exists(shaded));
+        assert_int_equal(sk_output_set_commit(set, &err), SK_OK);
+        read_text(shaded, buf, sizeof buf);
+        assert_string_equal(buf, existing ? "S2" : "S");
+        snprintf(path, sizeof path, "%s/albedo.png", maps);
+        assert_true(sk_test_file_exists(path));
+        assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+    }
+    /* not written: commit fails and leaves nothing new */
+    char other[1024], other_file[1024];
+    snprintf(other, sizeof other, "%s/maple", dir);
+    snprintf(other_file, sizeof other_file, "%s/maple/shaded.png", dir);
+    sk_output_set *set = NULL;
+    const char *sf, *ss;
+    assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+    assert_int_equal(sk_output_set_folder(set, other, &sf, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, other_file, &ss, &err), SK_OK);
+    snprintf(path, sizeof path, "%s/albedo.png", sf);
+    assert_int_equal(write_text(path, "A", &err), SK_OK);
+    assert_int_equal(sk_output_set_commit(set, &err), SK_ERROR_IO);
+    assert_non_null(strstr(err.message, "was not written"));
+    assert_false(sk_test_file_exists(other));
+    assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+    /* aborted: the folder and the file inside are gone */
+    assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+    assert_int_equal(sk_output_set_folder(set, other, &sf, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, other_file, &ss, &err), SK_OK);
+    assert_int_equal(write_text(ss, "S", &err), SK_OK);
+    sk_output_set_abort(set);
+    assert_false(sk_test_file_exists(other));
+    assert_int_equal(sk_test_count_files_containing(dir, ".part"), 0);
+    /* a file reserved before its folder still needs the folder to exist */
+    char late[1024], late_file[1024];
+    snprintf(late, sizeof late, "%s/late", dir);
+    snprintf(late_file, sizeof late_file, "%s/late/shaded.png", dir);
+    assert_int_equal(sk_output_set_create(&set, &err), SK_OK);
+    assert_int_equal(sk_output_set_file(set, late_file, &ss, &err), SK_ERROR_IO);
+    sk_output_set_abort(set);
+}
+
 /* PLY "property double" values above FLT_MAX loaded as inf (ASCII and binary). */
 static void test_ply_refuses_doubles_beyond_float(void **state)
 {
@@ -690,6 +754,7 @@ int main(void)
         cmocka_unit_test(test_atomic_file_takes_the_longest_names),
         cmocka_unit_test(test_signal_removes_unfinished_outputs),
         cmocka_unit_test(test_output_set_is_all_or_nothing),
+        cmocka_unit_test(test_output_set_file_inside_its_folder),
         cmocka_unit_test(test_ply_refuses_doubles_beyond_float),
         cmocka_unit_test(test_folder_as_input_is_bad_input),
     };

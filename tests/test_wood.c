@@ -1334,6 +1334,18 @@ static void test_cli_cut_and_region(void **state)
     assert_true(sk_test_file_exists(path));
     snprintf(path, sizeof path, "%s/pores.png", maps);
     assert_true(sk_test_file_exists(path));
+    /* the picture inside a maps folder that does not exist yet (as make demo writes it) */
+    const char *fresh = sk_test_path("wood/maps/fresh");
+    char inside[1200];
+    snprintf(inside, sizeof inside, "%s/shaded.png", fresh);
+    char clear[1300];
+    snprintf(clear, sizeof clear, "rm -rf '%s'", fresh);
+    assert_int_equal(system(clear), 0);
+    assert_int_equal(sk_test_cli(&g_run, "wood cut --preset oak --size 24 --samples 1 -q "
+                                         "--maps '%s' -o '%s'", fresh, inside), 0);
+    assert_true(sk_test_file_exists(inside));
+    snprintf(path, sizeof path, "%s/albedo.png", fresh);
+    assert_true(sk_test_file_exists(path));
 }
 
 static void expect_cli_error(const char *args, const char *needle)

@@ -590,12 +590,14 @@ int cli_reserve_outputs(const cli_output *list, int count, sk_output_set **set)
         }
     sk_error err = {0};
     sk_result r = sk_output_set_create(set, &err);
-    for (int i = 0; i < count && r == SK_OK; i++) {
-        if (!*list[i].path) continue;
-        r = list[i].folder ? sk_output_set_folder(*set, *list[i].path, list[i].path, &err)
-                           : sk_output_set_file(*set, *list[i].path, list[i].path, &err);
-        if (r != SK_OK) sk_error_prefix(&err, r, "%s", list[i].option);
-    }
+    /* folders first: a file may go inside one of them */
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < count && r == SK_OK; i++) {
+            if (!*list[i].path || list[i].folder != (pass == 0)) continue;
+            r = list[i].folder ? sk_output_set_folder(*set, *list[i].path, list[i].path, &err)
+                               : sk_output_set_file(*set, *list[i].path, list[i].path, &err);
+            if (r != SK_OK) sk_error_prefix(&err, r, "%s", list[i].option);
+        }
     if (r != SK_OK) {
         sk_output_set_abort(*set);
         *set = NULL;

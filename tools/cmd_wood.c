@@ -261,8 +261,9 @@ static int run_cut(const cli_command *command, const cli_args *args)
     sk_output_set *outputs = NULL;
     const char *staged_output = NULL, *staged_maps = NULL;
     sk_result r = sk_output_set_create(&outputs, &err);
-    if (r == SK_OK) r = sk_output_set_file(outputs, output, &staged_output, &err);
+    /* the folder first: the picture may go inside it (-o DIR/shaded.png --maps DIR) */
     if (r == SK_OK && maps) r = sk_output_set_folder(outputs, maps, &staged_maps, &err);
+    if (r == SK_OK) r = sk_output_set_file(outputs, output, &staged_output, &err);
     if (r == SK_OK) r = sk_image_create(&shaded, w, h, 3, &err);
     if (r == SK_OK && maps) r = sk_image_create(&albedo, w, h, 3, &err);
     if (r == SK_OK && maps) r = sk_image_create(&fibre, w, h, 3, &err);

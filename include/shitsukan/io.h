@@ -67,7 +67,9 @@ sk_result sk_atomic_file_write_failed(sk_atomic_file *file, sk_error *err);
  * the staged paths may be written from any. */
 typedef struct sk_output_set sk_output_set;
 sk_result sk_output_set_create(sk_output_set **out, sk_error *err);
-/* Reserves output file `path`; *staged is the path to write it under (owned by the set). */
+/* Reserves output file `path`; *staged is the path to write it under (owned by the set).
+ * A file directly inside a folder reserved before it is written into that folder's staged
+ * copy and placed with the folder (its folder need not exist yet). */
 sk_result sk_output_set_file(sk_output_set *set, const char *path, const char **staged,
                              sk_error *err);
 /* Reserves output folder `path`; *staged is a folder (created now) to write its files in. */

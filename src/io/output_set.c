@@ -14,7 +14,9 @@
 #include "io/io_internal.h"
 #include "shitsukan/io.h"
 
-typedef enum entry_kind { ENTRY_FILE, ENTRY_STREAM, ENTRY_FOLDER } entry_kind;
+/* ENTRY_INSIDE: a file written into the staged copy of a folder reserved before it, and
+   placed (or removed) with that folder */
+typedef enum entry_kind { ENTRY_FILE, ENTRY_STREAM, ENTRY_FOLDER, ENTRY_INSIDE } entry_kind;
 
 typedef struct entry {
     entry_kind kind;
@@ -97,6 +99,21 @@ sk_result sk_output_check(const char *path, sk_error *err)
     return r;
 }
 
+/* The reserved folder that `final` (a file path) names a file directly inside of, or NULL. */
+static const entry *folder_holding(const sk_output_set *set, const char *final)
+{
+    const char *slash = strrchr(final, '/');
+    if (!slash) return NULL;
+    size_t dir_len = (size_t)(slash - final);
+    for (int i = 0; i < set->count; i++) {
+        const entry *e = &set->entries[i];
+        if (e->kind == ENTRY_FOLDER && strlen(e->final) == dir_len &&
+            strncmp(e->final, final, dir_len) == 0)
+            return e;
+    }
+    return NULL;
+}
+
 sk_result sk_output_set_file(sk_output_set *set, const char *path, const char **staged,
                              sk_error *err)
 {
@@ -105,8 +122,10 @@ sk_result sk_output_set_file(sk_output_set *set, const char *path, const char **
     sk__output_kind kind;
     sk_result r = sk__output_resolve(path, &final, &kind, err);
     if (r != SK_OK) return r;
+    /* a file inside a folder of the set goes into that folder's staged copy */
+    const entry *holder = kind == SK__OUTPUT_FILE ? folder_holding(set, final) : NULL;
     /* a missing folder is found now, before the work */
-    if (kind == SK__OUTPUT_FILE && (r = sk__output_folder_exists(final, err)) != SK_OK) {
+    if (kind == SK__OUTPUT_FILE && !holder && (r = sk__output_folder_exists(final, err)) != SK_OK) {
         free(final);
         return r;
     }
@@ -116,14 +135,21 @@ sk_result sk_output_set_file(sk_output_set *set, const char *path, const char **
                        path);
     }
     /* a stream is written under the name given (a link keeps the extension writers read) */
-    char *name = kind == SK__OUTPUT_STREAM ? strdup(path) : staged_name(set, final);
+    char *name = NULL;
+    if (holder) {
+        const char *base = strrchr(final, '/') + 1;
+        size_t size = strlen(holder->staged) + 1 + strlen(base) + 1;
+        if ((name = malloc(size)) != NULL) snprintf(name, size, "%s/%s", holder->staged, base);
+    } else {
+        name = kind == SK__OUTPUT_STREAM ? strdup(path) : staged_name(set, final);
+    }
     entry *e = name ? add_entry(set) : NULL;
     if (!e) {
         free(name);
         free(final);
         return out_of_memory(err);
     }
-    e->kind = kind == SK__OUTPUT_STREAM ? ENTRY_STREAM : ENTRY_FILE;
+    e->kind = holder ? ENTRY_INSIDE : kind == SK__OUTPUT_STREAM ? ENTRY_STREAM : ENTRY_FILE;
     e->final = final;
     e->staged = name;
     if (e->kind == ENTRY_FILE) e->slot = sk__cleanup_register(e->staged, false);
@@ -347,6 +373,12 @@ void sk_output_set_abort(sk_output_set *set)
 sk_result sk_output_set_commit(sk_output_set *set, sk_error *err)
 {
     sk_result r = SK_OK;
+    /* files inside a folder of the set move with it: each must be there first */
+    for (int i = 0; i < set->count && r == SK_OK; i++) {
+        struct stat st;
+        if (set->entries[i].kind == ENTRY_INSIDE && lstat(set->entries[i].staged, &st) != 0)
+            r = sk_fail(err, SK_ERROR_IO, "%s: was not written", set->entries[i].final);
+    }
     for (int i = 0; i < set->count && r == SK_OK; i++) {
         entry *e = &set->entries[i];
         if (e->kind == ENTRY_FILE) {
