@@ -18,6 +18,8 @@ vg="valgrind --tool=memcheck --error-exitcode=99 --leak-check=full --errors-for-
 #   test_wood       renders many cuts at several thread counts (about 15 s native).
 #   test_noise_map  renders maps at several sizes and thread counts (about 20 s native).
 #   install_package builds another project with cmake: not a test of our memory use.
+#   demo_job        the whole of make demo (about 90 s native): every command it runs is
+#                   tested here on its own.
 #   studio_browser  drives headless Chromium against the served page for minutes; the
 #                   server's request parser is replayed by fuzz_http_request and its
 #                   end-to-end test (test_studio_server) runs here.
@@ -27,8 +29,8 @@ vg="valgrind --tool=memcheck --error-exitcode=99 --leak-check=full --errors-for-
 #                   checks of the sources) on files: none of our code runs in them. The
 #                   commands that write their files (render_export_*, hand_export_*,
 #                   tissue_export_*) do run here.
-# Those run under ASan + UBSan in make test-asan.
-skip='^(test_render_.*|test_skin|test_wood|test_noise_map|install_package|studio_browser|gltf_validator|gltf_blender_import|tissue_blender_pc2|docs_links|lint_posix_source)$'
+# Those run under ASan + UBSan in make test-asan (but demo_job, for the same reason).
+skip='^(test_render_.*|test_skin|test_wood|test_noise_map|install_package|demo_job|studio_browser|gltf_validator|gltf_blender_import|tissue_blender_pc2|docs_links|lint_posix_source)$'
 export SK_TEST_SANITIZED=1 OMP_NUM_THREADS=2
 export SK_TEST_CLI_WRAPPER="$vg"
 mapfile -t tests < <(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p')
