@@ -200,10 +200,10 @@ static double command_wall(const char *path, int threads)
 
 static void bench_command(void)
 {
-    char path[] = "/tmp/sk_bench_wood_XXXXXX"; /* not .exr: a PNG */
-    int fd = mkstemp(path);
-    if (fd < 0) return;
-    close(fd);
+    /* c.png in a fresh folder (the command picks the format by the name's extension) */
+    char dir[] = "/tmp/sk_bench_wood_XXXXXX", path[64];
+    if (!mkdtemp(dir)) return;
+    snprintf(path, sizeof path, "%s/c.png", dir);
     int threads = sk_threads_max();
     printf("wood cut --preset fig9 --size 2048 -o c.png (2 x 2 samples per pixel, 8-bit sRGB PNG):\n");
     for (int pass = 0; pass < 2; pass++) {
@@ -225,6 +225,7 @@ static void bench_command(void)
     }
     sk_threads_set(threads);
     unlink(path);
+    rmdir(dir);
 }
 
 /* The machine's load when the figures were taken (other jobs share the cores), where the
