@@ -313,6 +313,14 @@ static void run_steps(sk_tissue_sim *s, int64_t end, int threads)
     }
 }
 
+/* Steps until `end` on `threads` threads; the seconds they took by the choice's clock. */
+static double timed_steps(sk_tissue_sim *s, int64_t end, int threads)
+{
+    double t0 = s->clock();
+    run_steps(s, end, threads);
+    return s->clock() - t0;
+}
+
 sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
 {
     if (!isfinite(seconds) || seconds > SK__SIM_MAX_SECONDS)
@@ -333,13 +341,14 @@ sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
                (the machine may be shared; the result is the same either way) */
             int p = s->probe_phase - 1;
             int64_t a0 = s->step, left = PROBE_STEPS - s->probe_steps[p];
-            double t0 = s->clock();
-            run_steps(s, a0 + left < target ? a0 + left : target, p == 0 ? 1 : most);
-            s->probe_s[p] += s->clock() - t0;
+            s->probe_s[p] += timed_steps(s, a0 + left < target ? a0 + left : target, p == 0 ? 1 : most);
             s->probe_steps[p] += s->step - a0;
             if (s->probe_steps[p] < PROBE_STEPS) continue;
-            s->probe_phase = p == 0 ? 2 : 0;
-            if (p == 0) continue;
+            if (p == 0) {
+                s->probe_phase = 2;
+                continue;
+            }
+            s->probe_phase = 0;
             s->one_thread_step_s = s->probe_s[0] / PROBE_STEPS;
             s->threads = s->probe_s[1] < s->probe_s[0] ? most : 1;
             s->next_probe = s->step + REPROBE_STEPS;
@@ -348,15 +357,14 @@ sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
         int64_t end = most > 1 && s->next_probe < target ? s->next_probe : target;
         if (most > 1 && s->threads > 1) {
             /* a timed run; too slow against one thread: choose again */
-            int64_t a0 = s->step, run_end = a0 + WATCH_STEPS < end ? a0 + WATCH_STEPS : end;
-            double t0 = s->clock();
-            run_steps(s, run_end, s->threads);
-            double per_step = (s->clock() - t0) / (double)(s->step - a0);
-            if (s->step > a0 && s->one_thread_step_s > 0 && per_step > WATCH_SLOWDOWN * s->one_thread_step_s)
+            int64_t a0 = s->step;
+            double took = timed_steps(s, a0 + WATCH_STEPS < end ? a0 + WATCH_STEPS : end, most);
+            if (s->step > a0 && s->one_thread_step_s > 0 &&
+                took > WATCH_SLOWDOWN * s->one_thread_step_s * (double)(s->step - a0))
                 s->next_probe = s->step;
             continue;
         }
-        run_steps(s, end, most > 1 ? s->threads : 1);
+        run_steps(s, end, 1); /* one thread: the one chosen, or all there is */
     }
     return SK_OK;
 }
