@@ -109,7 +109,8 @@ int main(void)
     for (int frac = 0; frac < 2; frac++) {
         t0 = sk_time_seconds();
         for (int i = 0; i < 10000; i++) {
-            float x = frac ? seg[i].x0 : floorf(seg[i].x0), y = frac ? seg[i].y0 : floorf(seg[i].y0);
+            float x = frac ? seg[i].x0 : floorf(seg[i].x0),
+                  y = frac ? seg[i].y0 : floorf(seg[i].y0);
             sk_draw_text(&img, x, y, "(a) jitter 0.25", 2, c);
         }
         t = sk_time_seconds() - t0;

@@ -48,7 +48,8 @@ int main(void)
     sk_hand_skeleton_desc sd = {0};
     if (sk_hand_skeleton_init(&skel, &sd, &err) != SK_OK) fail(&err);
     static sk_hand_constraints c;
-    if (sk_hand_constraints_load_file(SK_BENCH_PRESET_DIR "/hand/natural.json", &skel, &c, &err) != SK_OK)
+    if (sk_hand_constraints_load_file(SK_BENCH_PRESET_DIR "/hand/natural.json", &skel, &c, &err) !=
+        SK_OK)
         fail(&err);
     sk_hand_solver *solver;
     if (sk_hand_solver_create(&solver, &skel, &c, NULL, 0, NULL, &err) != SK_OK) fail(&err);
@@ -84,10 +85,10 @@ int main(void)
     }
     sk_hand_lut luts[2];
     double tb0 = sk_time_seconds();
-    if (sk_hand_lut_build(&luts[0], sk_hand_dof_find("I.MCP.flex"), sk_hand_dof_find("I.PIP.flex"), xs, ys,
-                          N, NULL, &err) != SK_OK ||
-        sk_hand_lut_build(&luts[1], sk_hand_dof_find("L.MCP.flex"), sk_hand_dof_find("R.MCP.flex"), us, vs,
-                          N, NULL, &err) != SK_OK)
+    if (sk_hand_lut_build(&luts[0], sk_hand_dof_find("I.MCP.flex"), sk_hand_dof_find("I.PIP.flex"),
+                          xs, ys, N, NULL, &err) != SK_OK ||
+        sk_hand_lut_build(&luts[1], sk_hand_dof_find("L.MCP.flex"), sk_hand_dof_find("R.MCP.flex"),
+                          us, vs, N, NULL, &err) != SK_OK)
         fail(&err);
     double build_ms = (sk_time_seconds() - tb0) * 1e3 / 2.0;
     sk_hand_solver *lsolver;
@@ -106,11 +107,14 @@ int main(void)
         if (info.residual > worst_residual) worst_residual = info.residual;
         checksum += q[5];
     }
-    printf("hand: equilibrium solve (3.17), cached Cholesky, 35 DOF, %d rows: median %.2f us (target 5)\n",
+    printf("hand: equilibrium solve (3.17), cached Cholesky, 35 DOF, %d rows: median %.2f us "
+           "(target 5)\n",
            c.row_count, median_us(t_solve, POSES));
-    printf("hand: full pose update (solve + forward kinematics of 25 points): median %.2f us (target 20)\n",
+    printf("hand: full pose update (solve + forward kinematics of 25 points): median %.2f us "
+           "(target 20)\n",
            median_us(t_pose, POSES));
-    printf("hand: iterative solve with 2 lookup tables (100x100) + linear rows: median %.2f us (target 200); "
+    printf("hand: iterative solve with 2 lookup tables (100x100) + linear rows: median %.2f us "
+           "(target 200); "
            "%d/%d converged to 1e-6, mean %.1f Newton steps, worst residual %.2g\n",
            median_us(t_lut, POSES), converged, POSES, (double)iterations / POSES, worst_residual);
     printf("hand: lookup table build from %d samples: %.2f ms per pair\n", N, build_ms);
@@ -131,12 +135,14 @@ int main(void)
         checksum += img.data[(size_t)img.width * 3 * (img.height / 2)];
         sk_image_free(&img);
     }
-    printf("hand: stick figure, 2 views, 800 x 480 (sk_hand_draw): median %.2f ms\n", median_us(t_draw, DRAWS) / 1e3);
+    printf("hand: stick figure, 2 views, 800 x 480 (sk_hand_draw): median %.2f ms\n",
+           median_us(t_draw, DRAWS) / 1e3);
     /* the calibrated potential of the shipped synthetic recordings: fit, and slider
        solves blended over its mixture components */
     sk_hand_samples samples;
     sk_hand_samples_desc read_desc = {.group_column = "person", .ignore_columns = "trial"};
-    if (sk_hand_samples_read(SK_BENCH_PRESET_DIR "/hand/samples/synthetic-grasps.csv", &read_desc, &samples, &err) != SK_OK)
+    if (sk_hand_samples_read(SK_BENCH_PRESET_DIR "/hand/samples/synthetic-grasps.csv", &read_desc,
+                             &samples, &err) != SK_OK)
         fail(&err);
     sk_hand_potential pot;
     sk_hand_potential_desc pd = {.base = &c, .seed = 1};
@@ -156,9 +162,10 @@ int main(void)
         t_pot[p] = sk_time_seconds() - t0;
         checksum += q[16];
     }
-    printf("hand: calibrated potential from %d samples (%d DOFs, %d components chosen): fit %.2f s; "
-           "solve with one pin, blended over the components: median %.2f us\n",
-           samples.count, pot.dof_count, pot.component_count, fit_s, median_us(t_pot, POSES));
+    printf(
+        "hand: calibrated potential from %d samples (%d DOFs, %d components chosen): fit %.2f s; "
+        "solve with one pin, blended over the components: median %.2f us\n",
+        samples.count, pot.dof_count, pot.component_count, fit_s, median_us(t_pot, POSES));
     sk_hand_potential_solver_destroy(ps);
     sk_hand_potential_free(&pot);
     sk_hand_samples_free(&samples);

@@ -15,7 +15,8 @@ static double cpu_seconds(void)
 {
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
-    return ru.ru_utime.tv_sec + ru.ru_stime.tv_sec + 1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+    return ru.ru_utime.tv_sec + ru.ru_stime.tv_sec +
+           1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
 }
 
 static void fail(const sk_error *err)
@@ -38,8 +39,10 @@ static run run_once(const sk_hand_scan_input *in, int threads, sk_hand_scan_resu
     double c0 = cpu_seconds();
     if (sk_hand_scan_run(in, &d, &res, (sk_progress){0}, &err) != SK_OK) fail(&err);
     run r = {res.timings, cpu_seconds() - c0};
-    if (keep) *keep = res;
-    else sk_hand_scan_result_free(&res);
+    if (keep)
+        *keep = res;
+    else
+        sk_hand_scan_result_free(&res);
     return r;
 }
 
@@ -54,11 +57,12 @@ static void keep_best(run *best, const run *r)
 static void print_run(const char *what, const run *r)
 {
     double pipeline = r->t.simulate + r->t.register_ + r->t.segment + r->t.resample + r->t.fit;
-    printf("  %s: simulate %.3f s, register %.3f s, segment %.3f s, resample %.3f s, fit %.3f s  = %.3f s "
+    printf("  %s: simulate %.3f s, register %.3f s, segment %.3f s, resample %.3f s, fit %.3f s  = "
+           "%.3f s "
            "(target <= 5 s)\n",
            what, r->t.simulate, r->t.register_, r->t.segment, r->t.resample, r->t.fit, pipeline);
-    printf("  %*s  + Table 4.1's facet distances %.3f s; whole run %.3f s wall, %.3f s CPU\n", (int)strlen(what), "",
-           r->t.measure, r->t.total, r->cpu);
+    printf("  %*s  + Table 4.1's facet distances %.3f s; whole run %.3f s wall, %.3f s CPU\n",
+           (int)strlen(what), "", r->t.measure, r->t.total, r->cpu);
 }
 
 int main(void)
@@ -76,7 +80,8 @@ int main(void)
     if (sk_hand_scan_cast(&skel, q, NULL, &cast, &surface, &target, &err) != SK_OK) fail(&err);
     double t_cast = sk_time_seconds() - t0;
     sk_hand_scan_input in = {.target = target, .skeleton = &cast, .dofs = q};
-    printf("hand scan: the cast (hand surface, %zu triangles, and its ray hierarchy) built in %.3f s\n",
+    printf("hand scan: the cast (hand surface, %zu triangles, and its ray hierarchy) built in %.3f "
+           "s\n",
            sk_hand_surface_mesh(surface)->triangle_count, t_cast);
 
     run best2 = {{1e9, 1e9, 1e9, 1e9, 1e9, 1e9, 1e9}, 1e9};
@@ -86,21 +91,27 @@ int main(void)
         keep_best(&best2, &r);
     }
     run one = run_once(&in, 1, NULL);
-    printf("hand scan pipeline, 512 x 512 scans, %zu points, %d + %d patches fitted (best of 3):\n", res.cloud.count,
-           res.table.patches_fitted[0], res.table.patches_fitted[1]);
+    printf("hand scan pipeline, 512 x 512 scans, %zu points, %d + %d patches fitted (best of 3):\n",
+           res.cloud.count, res.table.patches_fitted[0], res.table.patches_fitted[1]);
     print_run("2 threads", &best2);
     print_run("1 thread ", &one);
-    double sum = best2.t.simulate + best2.t.register_ + best2.t.segment + best2.t.resample + best2.t.fit;
+    double sum =
+        best2.t.simulate + best2.t.register_ + best2.t.segment + best2.t.resample + best2.t.fit;
     double sum1 = one.t.simulate + one.t.register_ + one.t.segment + one.t.resample + one.t.fit;
-    printf("  2 threads / 1 thread: %.2f x faster; 2-thread CPU / 2 (idle cores): %.3f s\n", sum1 / sum,
-           best2.cpu / 2.0);
+    printf("  2 threads / 1 thread: %.2f x faster; 2-thread CPU / 2 (idle cores): %.3f s\n",
+           sum1 / sum, best2.cpu / 2.0);
     int iterations = 0, converged = 0;
     for (int k = 0; k < res.patches->count; k++)
-        if (res.patches->fitted[k]) iterations += res.patches->fit[k].iterations, converged += res.patches->fit[k].converged;
-    printf("  fit: %d parameter corrections in all (%.1f per patch), %d patches stopped before the cap\n", iterations,
-           iterations / 96.0, converged);
-    printf("  Table 4.1 [mm]: palm %.4f / %.3g, back %.4f / %.3g (mean / max; thesis 0.030 / 3.6, 0.027 / 0.43)\n",
-           res.table.scan[0].mean_mm, res.table.scan[0].max_mm, res.table.scan[1].mean_mm, res.table.scan[1].max_mm);
+        if (res.patches->fitted[k])
+            iterations += res.patches->fit[k].iterations,
+                converged += res.patches->fit[k].converged;
+    printf("  fit: %d parameter corrections in all (%.1f per patch), %d patches stopped before the "
+           "cap\n",
+           iterations, iterations / 96.0, converged);
+    printf("  Table 4.1 [mm]: palm %.4f / %.3g, back %.4f / %.3g (mean / max; thesis 0.030 / 3.6, "
+           "0.027 / 0.43)\n",
+           res.table.scan[0].mean_mm, res.table.scan[0].max_mm, res.table.scan[1].mean_mm,
+           res.table.scan[1].max_mm);
     sk_hand_scan_result_free(&res);
     sk_hand_scan_target_destroy(target);
     sk_hand_surface_destroy(surface);
@@ -120,6 +131,8 @@ int main(void)
         double c = sk_time_seconds() - c0;
         if (c < best_cmd) best_cmd = c;
     }
-    printf("  shitsukan hand scan -o DIR (cast, pipeline, 9 files and 8 pictures): %.3f s (best of 2)\n", best_cmd);
+    printf("  shitsukan hand scan -o DIR (cast, pipeline, 9 files and 8 pictures): %.3f s (best of "
+           "2)\n",
+           best_cmd);
     return 0;
 }

@@ -60,7 +60,8 @@ int main(void)
     printf("mesh: %zu vertices, %zu triangles\n", m->vertex_count, m->triangle_count);
     /* pose update + skinning + normals, one thread (the deform is single-threaded below
        20000 vertices) */
-    float *pos = malloc(3 * m->vertex_count * sizeof *pos), *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
+    float *pos = malloc(3 * m->vertex_count * sizeof *pos),
+          *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
     const int poses = 2000;
     double *t = malloc(poses * sizeof *t);
     static const char *const names[] = {"rigid", "lbs", "dqs"};
@@ -81,7 +82,8 @@ int main(void)
         }
         qsort(t, poses, sizeof *t, cmp_double);
         double us = t[poses / 2] * 1e6;
-        printf("pose update + skinning + normals, %s: median %.1f us per pose, %.2f ns per vertex (best %.1f us)%s\n",
+        printf("pose update + skinning + normals, %s: median %.1f us per pose, %.2f ns per vertex "
+               "(best %.1f us)%s\n",
                names[method - 1], us, us * 1e3 / (double)m->vertex_count, t[0] * 1e6,
                sink == 12345.678 ? "" : "");
     }
@@ -104,8 +106,8 @@ int main(void)
         double t0 = sk_time_seconds();
         if (sk_hand_surface_simplify(&c, s, sk_hand_lod_triangles[l], &err) != SK_OK) fail(&err);
         const sk_mesh *cm = sk_hand_surface_mesh(c);
-        printf("LOD %d: %zu vertices, %zu triangles (target %d) in %.3f s\n", l, cm->vertex_count, cm->triangle_count,
-               sk_hand_lod_triangles[l], sk_time_seconds() - t0);
+        printf("LOD %d: %zu vertices, %zu triangles (target %d) in %.3f s\n", l, cm->vertex_count,
+               cm->triangle_count, sk_hand_lod_triangles[l], sk_time_seconds() - t0);
         sk_hand_surface_destroy(c);
     }
     /* the defect of the thesis on a fully flexed index (MCP 90, PIP 100, DIP 80 deg) */
@@ -113,22 +115,29 @@ int main(void)
     q[sk_hand_dof_find("I.MCP.flex")] = 90 * SK_DEG_TO_RAD;
     q[sk_hand_dof_find("I.PIP.flex")] = 100 * SK_DEG_TO_RAD;
     q[sk_hand_dof_find("I.DIP.flex")] = 80 * SK_DEG_TO_RAD;
-    printf("defect, fully flexed index (%s):\n  method  volume lost mm^3  %% of finger  inside neighbour  max depth mm\n", "4.1.5");
+    printf("defect, fully flexed index (%s):\n  method  volume lost mm^3  %% of finger  inside "
+           "neighbour  max depth mm\n",
+           "4.1.5");
     for (int method = SK_HAND_SKINNING_RIGID; method <= SK_HAND_SKINNING_DQS; method++) {
         sk_hand_defect d;
-        if (sk_hand_surface_defect(s, q, (sk_hand_skinning)method, SK_HAND_INDEX, &d, &err) != SK_OK) fail(&err);
-        printf("  %-6s  %16.0f  %11.1f  %9d / %4d  %12.2f\n", names[method - 1], d.volume_lost_mm3, d.volume_lost_percent,
-               d.inside_count, d.vertex_count, d.max_depth_mm);
+        if (sk_hand_surface_defect(s, q, (sk_hand_skinning)method, SK_HAND_INDEX, &d, &err) !=
+            SK_OK)
+            fail(&err);
+        printf("  %-6s  %16.0f  %11.1f  %9d / %4d  %12.2f\n", names[method - 1], d.volume_lost_mm3,
+               d.volume_lost_percent, d.inside_count, d.vertex_count, d.max_depth_mm);
     }
     /* the whole commands as a user runs them, files written; wall and CPU time (the
        machine may be shared: the CPU time of the command is the steadier figure) */
     static const char *const commands[][3] = {
-        {"hand mesh --pin I.PIP.flex=90 -o %s/bench-hand.obj -q", "hand mesh --pin I.PIP.flex=90 -o hand.obj",
-         "mesh generation, solve, skinning, OBJ"},
-        {"hand mesh --pin I.PIP.flex=90 -o %s/bench-hand.glb -q", "hand mesh --pin I.PIP.flex=90 -o hand.glb",
+        {"hand mesh --pin I.PIP.flex=90 -o %s/bench-hand.obj -q",
+         "hand mesh --pin I.PIP.flex=90 -o hand.obj", "mesh generation, solve, skinning, OBJ"},
+        {"hand mesh --pin I.PIP.flex=90 -o %s/bench-hand.glb -q",
+         "hand mesh --pin I.PIP.flex=90 -o hand.glb",
          "the same, 3 levels of detail, 1024 texture, GLB"},
-        {"hand animate " SK_BENCH_PRESET_DIR "/hand/fig4.18-keys.json --glb %s/bench-fig4.18.glb -q",
-         "hand animate fig4.18-keys.json --glb fig4.18.glb", "81 frames solved, 3 levels, texture, animation, GLB"},
+        {"hand animate " SK_BENCH_PRESET_DIR
+         "/hand/fig4.18-keys.json --glb %s/bench-fig4.18.glb -q",
+         "hand animate fig4.18-keys.json --glb fig4.18.glb",
+         "81 frames solved, 3 levels, texture, animation, GLB"},
     };
     for (size_t c = 0; c < sizeof commands / sizeof commands[0]; c++) {
         char cmd[1024], args[768];
@@ -145,12 +154,15 @@ int main(void)
             }
             double dt = sk_time_seconds() - t0;
             getrusage(RUSAGE_CHILDREN, &r1);
-            double cpu = (double)(r1.ru_utime.tv_sec - r0.ru_utime.tv_sec + r1.ru_stime.tv_sec - r0.ru_stime.tv_sec) +
-                         1e-6 * (double)(r1.ru_utime.tv_usec - r0.ru_utime.tv_usec + r1.ru_stime.tv_usec - r0.ru_stime.tv_usec);
+            double cpu = (double)(r1.ru_utime.tv_sec - r0.ru_utime.tv_sec + r1.ru_stime.tv_sec -
+                                  r0.ru_stime.tv_sec) +
+                         1e-6 * (double)(r1.ru_utime.tv_usec - r0.ru_utime.tv_usec +
+                                         r1.ru_stime.tv_usec - r0.ru_stime.tv_usec);
             best = dt < best ? dt : best;
             best_cpu = cpu < best_cpu ? cpu : best_cpu;
         }
-        printf("shitsukan %s: best %.3f s wall, %.3f s CPU of 3 (%s)\n", commands[c][1], best, best_cpu, commands[c][2]);
+        printf("shitsukan %s: best %.3f s wall, %.3f s CPU of 3 (%s)\n", commands[c][1], best,
+               best_cpu, commands[c][2]);
     }
     free(pos), free(nrm), free(t);
     sk_hand_surface_destroy(s);

@@ -35,7 +35,8 @@ static void load(const char *module, const char *name, const sk_schema *schema, 
     snprintf(path, sizeof path, "%s/%s/%s.json", SK_BENCH_PRESET_DIR, module, name);
     sk_preset *p;
     sk_error err = {0};
-    if (sk_preset_load_file(&p, path, &err) != SK_OK || sk_preset_bind(p, schema, desc, &err) != SK_OK)
+    if (sk_preset_load_file(&p, path, &err) != SK_OK ||
+        sk_preset_bind(p, schema, desc, &err) != SK_OK)
         die(path, &err);
     sk_preset_free(p);
 }
@@ -48,7 +49,8 @@ static void wood_image(const char *preset, sk_image *out)
     load("wood", preset, &sk_wood_schema, &desc);
     sk_error err = {0};
     sk_wood *wood;
-    if (sk_wood_create(&desc, &wood, &err) != SK_OK || sk_image_create(out, SIZE, SIZE, 3, &err) != SK_OK)
+    if (sk_wood_create(&desc, &wood, &err) != SK_OK ||
+        sk_image_create(out, SIZE, SIZE, 3, &err) != SK_OK)
         die(preset, &err);
     sk_wood_cut_desc cut = {0};
     sk_wood_view_cut(wood, &sk_wood_get_desc(wood)->view, &cut);
@@ -68,11 +70,13 @@ static void skin_images(sk_image *height_mm, sk_image *height, sk_image *normal)
     load("skin", "back-of-hand", &sk_skin_schema, &desc);
     sk_error err = {0};
     sk_skin *skin;
-    if (sk_skin_create(&skin, &desc, &err) != SK_OK || sk_image_create(height_mm, SIZE, SIZE, 1, &err) != SK_OK ||
+    if (sk_skin_create(&skin, &desc, &err) != SK_OK ||
+        sk_image_create(height_mm, SIZE, SIZE, 1, &err) != SK_OK ||
         sk_image_create(height, SIZE, SIZE, 1, &err) != SK_OK ||
         sk_image_create(normal, SIZE, SIZE, 3, &err) != SK_OK)
         die("back-of-hand", &err);
-    sk_skin_render_desc rd = {.width = SIZE, .height = SIZE, .height_mm = height_mm->data, .normal = normal->data};
+    sk_skin_render_desc rd = {
+        .width = SIZE, .height = SIZE, .height_mm = height_mm->data, .normal = normal->data};
     if (sk_skin_render(skin, &rd, &err) != SK_OK) die("back-of-hand", &err);
     float lo = INFINITY, hi = -INFINITY;
     size_t n = (size_t)SIZE * SIZE;
@@ -130,7 +134,8 @@ static unsigned char *codes_of(const sk_image *im, int bit_depth, sk_png_encodin
     unsigned char *codes = malloc(row * im->height);
     if (!q || !codes) die("codes", NULL);
     sk__png_quantizer_init(q, im->channels, bit_depth, enc);
-    for (int y = 0; y < im->height; y++) sk__png_quantize_row(q, sk_image_pixel(im, 0, y), im->width, codes + row * y);
+    for (int y = 0; y < im->height; y++)
+        sk__png_quantize_row(q, sk_image_pixel(im, 0, y), im->width, codes + row * y);
     free(q);
     return codes;
 }
@@ -139,8 +144,8 @@ static unsigned char *codes_of(const sk_image *im, int bit_depth, sk_png_encodin
  * writer used before); false after a libpng error. */
 static bool write_libpng(FILE *f, const sk_image *im, int bit_depth, const unsigned char *codes)
 {
-    static const int types[5] = {0, PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
-                                 PNG_COLOR_TYPE_RGB_ALPHA};
+    static const int types[5] = {0, PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA,
+                                 PNG_COLOR_TYPE_RGB, PNG_COLOR_TYPE_RGB_ALPHA};
     size_t row = (size_t)im->width * im->channels * (bit_depth / 8);
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
     png_infop info = png ? png_create_info_struct(png) : NULL;
@@ -151,8 +156,9 @@ static bool write_libpng(FILE *f, const sk_image *im, int bit_depth, const unsig
     }
     png_init_io(png, f);
     png_set_compression_level(png, 6);
-    png_set_IHDR(png, info, (png_uint_32)im->width, (png_uint_32)im->height, bit_depth, types[im->channels],
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, (png_uint_32)im->width, (png_uint_32)im->height, bit_depth,
+                 types[im->channels], PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                 PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (int y = 0; y < im->height; y++) png_write_row(png, codes + row * y);
     png_write_end(png, NULL);
@@ -160,7 +166,8 @@ static bool write_libpng(FILE *f, const sk_image *im, int bit_depth, const unsig
     return true;
 }
 
-static timing time_libpng(const sk_image *im, int bit_depth, sk_png_encoding enc, const char *path, int runs)
+static timing time_libpng(const sk_image *im, int bit_depth, sk_png_encoding enc, const char *path,
+                          int runs)
 {
     unsigned char *codes = codes_of(im, bit_depth, enc);
     timing t = {1e30, 0, 0};
@@ -196,7 +203,8 @@ static void time_quantiser(const sk_image *im)
     for (int r = 0; r < 3; r++) {
         double t0 = sk_time_seconds();
         for (int y = 0; y < im->height; y++)
-            sk__png_quantize_row(q, sk_image_pixel(im, 0, y), im->width, out + (size_t)y * im->width * im->channels);
+            sk__png_quantize_row(q, sk_image_pixel(im, 0, y), im->width,
+                                 out + (size_t)y * im->width * im->channels);
         double t1 = sk_time_seconds();
         mismatches = 0;
         for (size_t i = 0; i < n; i++) {
@@ -205,7 +213,10 @@ static void time_quantiser(const sk_image *im)
             if (v > 0.0f)
                 while (lo < hi) {
                     unsigned mid = (lo + hi + 1) / 2;
-                    if ((double)v >= boundary[mid - 1]) lo = mid; else hi = mid - 1;
+                    if ((double)v >= boundary[mid - 1])
+                        lo = mid;
+                    else
+                        hi = mid - 1;
                 }
             mismatches += lo != out[i];
         }
@@ -213,21 +224,25 @@ static void time_quantiser(const sk_image *im)
         table = fmin(table, t1 - t0);
         search = fmin(search, t2 - t1);
     }
-    printf("  float -> 8-bit sRGB, %zu samples, one thread: table %.1f ms, per-sample search %.1f ms "
-           "(%.1fx), %zu codes differ\n", n, table * 1e3, search * 1e3, search / table, mismatches);
+    printf(
+        "  float -> 8-bit sRGB, %zu samples, one thread: table %.1f ms, per-sample search %.1f ms "
+        "(%.1fx), %zu codes differ\n",
+        n, table * 1e3, search * 1e3, search / table, mismatches);
     free(q);
     free(out);
 }
 
-static void bench_png(const char *label, const sk_image *im, int bit_depth, sk_png_encoding enc, const char *dir)
+static void bench_png(const char *label, const sk_image *im, int bit_depth, sk_png_encoding enc,
+                      const char *dir)
 {
     char path[1200];
     snprintf(path, sizeof path, "%s/bench.png", dir);
     int threads = sk_threads_max();
-    printf("%s: %dx%d, %d channel(s), %d-bit %s PNG\n", label, im->width, im->height, im->channels, bit_depth,
-           enc == SK_PNG_ENCODING_SRGB ? "sRGB" : "linear");
+    printf("%s: %dx%d, %d channel(s), %d-bit %s PNG\n", label, im->width, im->height, im->channels,
+           bit_depth, enc == SK_PNG_ENCODING_SRGB ? "sRGB" : "linear");
     timing ref = time_libpng(im, bit_depth, enc, path, 2);
-    printf("  libpng, zlib level 6, adaptive filters (codes given): %7.1f ms (CPU %.1f ms) %9ld bytes\n",
+    printf("  libpng, zlib level 6, adaptive filters (codes given): %7.1f ms (CPU %.1f ms) %9ld "
+           "bytes\n",
            ref.seconds * 1e3, ref.cpu * 1e3, ref.bytes);
     for (int level = 0; level <= 9; level++) {
         if (level != 0 && level != 1 && level != 4 && level != 9) continue;
@@ -238,9 +253,11 @@ static void bench_png(const char *label, const sk_image *im, int bit_depth, sk_p
         sk_threads_set(threads);
         char name[32];
         snprintf(name, sizeof name, level ? "level %d" : "default (6)", level);
-        printf("  writer %-12s %d threads %6.1f ms (CPU %6.1f), 1 thread %6.1f ms (CPU %6.1f) %9ld bytes (%+.1f %% "
-               "size; libpng's CPU / ours: %.1fx)\n", name, threads, all.seconds * 1e3, all.cpu * 1e3,
-               one.seconds * 1e3, one.cpu * 1e3, all.bytes, 100.0 * (double)(all.bytes - ref.bytes) / (double)ref.bytes,
+        printf("  writer %-12s %d threads %6.1f ms (CPU %6.1f), 1 thread %6.1f ms (CPU %6.1f) %9ld "
+               "bytes (%+.1f %% "
+               "size; libpng's CPU / ours: %.1fx)\n",
+               name, threads, all.seconds * 1e3, all.cpu * 1e3, one.seconds * 1e3, one.cpu * 1e3,
+               all.bytes, 100.0 * (double)(all.bytes - ref.bytes) / (double)ref.bytes,
                ref.cpu / one.cpu);
     }
     unlink(path);
@@ -255,10 +272,10 @@ static void bench_exr(const char *label, const sk_image *im, const char *dir)
         const char *name;
         sk_exr_compression c;
         int level;
-    } kinds[] = {{"NONE", SK_EXR_COMPRESSION_NONE, 0},     {"RLE", SK_EXR_COMPRESSION_RLE, 0},
-                 {"ZIPS 1", SK_EXR_COMPRESSION_ZIPS, 1},   {"ZIPS 4", SK_EXR_COMPRESSION_ZIPS, 4},
-                 {"ZIP 1", SK_EXR_COMPRESSION_ZIP, 1},     {"ZIP 4", SK_EXR_COMPRESSION_ZIP, 4},
-                 {"ZIP 6", SK_EXR_COMPRESSION_ZIP, 6},     {"PIZ", SK_EXR_COMPRESSION_PIZ, 0},
+    } kinds[] = {{"NONE", SK_EXR_COMPRESSION_NONE, 0},      {"RLE", SK_EXR_COMPRESSION_RLE, 0},
+                 {"ZIPS 1", SK_EXR_COMPRESSION_ZIPS, 1},    {"ZIPS 4", SK_EXR_COMPRESSION_ZIPS, 4},
+                 {"ZIP 1", SK_EXR_COMPRESSION_ZIP, 1},      {"ZIP 4", SK_EXR_COMPRESSION_ZIP, 4},
+                 {"ZIP 6", SK_EXR_COMPRESSION_ZIP, 6},      {"PIZ", SK_EXR_COMPRESSION_PIZ, 0},
                  {"default", SK_EXR_COMPRESSION_DEFAULT, 0}};
     for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
         sk_exr_write_desc d = {.compression = kinds[k].c, .compression_level = kinds[k].level};
@@ -274,8 +291,9 @@ static void bench_exr(const char *label, const sk_image *im, const char *dir)
             }
         }
         long bytes = file_size(path);
-        printf("  %-8s %7.1f ms (CPU %7.1f ms) %10ld bytes (%.2f of raw)\n", kinds[k].name, best * 1e3, cpu * 1e3,
-               bytes, (double)bytes / ((double)im->width * im->height * im->channels * 4));
+        printf("  %-8s %7.1f ms (CPU %7.1f ms) %10ld bytes (%.2f of raw)\n", kinds[k].name,
+               best * 1e3, cpu * 1e3, bytes,
+               (double)bytes / ((double)im->width * im->height * im->channels * 4));
     }
     unlink(path);
 }
@@ -286,7 +304,8 @@ int main(void)
     double load = -1;
     if (f && fscanf(f, "%lf", &load) != 1) load = -1;
     if (f) fclose(f);
-    printf("machine load (1-minute average) %.2f on %d threads; best of 2-3 runs\n", load, sk_threads_max());
+    printf("machine load (1-minute average) %.2f on %d threads; best of 2-3 runs\n", load,
+           sk_threads_max());
     char dir[] = "/tmp/sk_bench_image_XXXXXX";
     if (!mkdtemp(dir)) die("mkdtemp", NULL);
     sk_image fig9, oak, height_mm, height, normal;

@@ -66,14 +66,15 @@ int main(int argc, char **argv)
         free(desc);
         return 1;
     }
-    for (int i = 0; i < desc->material_count; i++) desc->materials[i].type = SK_RENDER_MATERIAL_STANDARD;
+    for (int i = 0; i < desc->material_count; i++)
+        desc->materials[i].type = SK_RENDER_MATERIAL_STANDARD;
     if (render_once(desc, false, &plain, &setup_plain)) {
         free(desc);
         return 1;
     }
     double busy = timed.intersect_seconds + timed.shade_seconds;
-    printf("render %s: %dx%d, %d spp, %d threads (load average %.2f before the run)\n", path,
-           width, height, spp, omp_get_max_threads(), load);
+    printf("render %s: %dx%d, %d spp, %d threads (load average %.2f before the run)\n", path, width,
+           height, spp, omp_get_max_threads(), load);
     printf("  scene setup      %8.3f s (meshes, materials, Embree BVH)\n", setup);
     printf("  render           %8.3f s wall  (target <= 10 s on 2 cores)\n", full.seconds);
     printf("  camera rays      %8.2f M/s  (%lld rays)\n", full.camera_rays_per_second / 1e6,
@@ -85,7 +86,8 @@ int main(int argc, char **argv)
            busy > 0 ? 100 * timed.intersect_seconds / busy : 0,
            busy > 0 ? 100 * timed.shade_seconds / busy : 0, busy, timed.seconds);
     printf("  baseline         %8.3f s wall with every material standard (no skin/wood "
-           "evaluation): x%.2f\n", plain.seconds, full.seconds / plain.seconds);
+           "evaluation): x%.2f\n",
+           plain.seconds, full.seconds / plain.seconds);
     free(desc);
     return 0;
 }

@@ -21,7 +21,8 @@ static sk_skin *load_skin(const char *name)
     sk_skin_desc d = {0};
     sk_skin *skin = NULL;
     sk_error err = {0};
-    if (sk_preset_load_file(&p, path, &err) != SK_OK || sk_preset_bind(p, &sk_skin_schema, &d, &err) != SK_OK ||
+    if (sk_preset_load_file(&p, path, &err) != SK_OK ||
+        sk_preset_bind(p, &sk_skin_schema, &d, &err) != SK_OK ||
         sk_skin_create(&skin, &d, &err) != SK_OK) {
         fprintf(stderr, "bench_showcase: %s\n", err.message);
         exit(1);
@@ -37,16 +38,19 @@ static void report(const char *label, const sk_showcase_stats *s, double wall)
     double n = s->frames > 0 ? s->frames : 1;
     double non_render = s->seconds_input + s->seconds_solve + s->seconds_skin + s->seconds_tissue;
     double total = non_render + s->seconds_scene + s->seconds_render + s->seconds_write;
-    printf("%s: %d frames in %.2f s = %.2f frames/s (load average %s)\n", label, s->frames, wall, s->frames / wall,
-           load);
-    printf("  per frame: input %.3f ms, posture solve %.3f ms, skinning %.3f ms, tissue %.3f ms | non-render %.3f ms "
+    printf("%s: %d frames in %.2f s = %.2f frames/s (load average %s)\n", label, s->frames, wall,
+           s->frames / wall, load);
+    printf("  per frame: input %.3f ms, posture solve %.3f ms, skinning %.3f ms, tissue %.3f ms | "
+           "non-render %.3f ms "
            "(budget 2 ms)\n",
            1e3 * s->seconds_input / n, 1e3 * s->seconds_solve / n, 1e3 * s->seconds_skin / n,
            1e3 * s->seconds_tissue / n, 1e3 * non_render / n);
-    printf("  shares: input %.2f%%, solve %.2f%%, skinning %.2f%%, tissue %.2f%%, scene %.1f%%, render %.1f%%, "
+    printf("  shares: input %.2f%%, solve %.2f%%, skinning %.2f%%, tissue %.2f%%, scene %.1f%%, "
+           "render %.1f%%, "
            "files %.1f%%\n",
-           100 * s->seconds_input / total, 100 * s->seconds_solve / total, 100 * s->seconds_skin / total,
-           100 * s->seconds_tissue / total, 100 * s->seconds_scene / total, 100 * s->seconds_render / total,
+           100 * s->seconds_input / total, 100 * s->seconds_solve / total,
+           100 * s->seconds_skin / total, 100 * s->seconds_tissue / total,
+           100 * s->seconds_scene / total, 100 * s->seconds_render / total,
            100 * s->seconds_write / total);
 }
 
@@ -59,7 +63,8 @@ static int step_rates(const sk_showcase_desc *base, const sk_hand_surface *surfa
     const int count = (int)(sizeof rates / sizeof rates[0]);
     sk_error err = {0};
     sk_melody cut;
-    if (sk_melody_copy(base->melody, &cut, &err) != SK_OK || sk_melody_cut(&cut, 4.0, &err) != SK_OK)
+    if (sk_melody_copy(base->melody, &cut, &err) != SK_OK ||
+        sk_melody_cut(&cut, 4.0, &err) != SK_OK)
         return fprintf(stderr, "%s\n", err.message), 1;
     float *reference = NULL, *skin = NULL, *carried = NULL;
     for (int r = 0; r < count; r++) {
@@ -69,17 +74,20 @@ static int step_rates(const sk_showcase_desc *base, const sk_hand_surface *surfa
         d.melody = &cut, d.forearm = &forearm, d.surface = surface, d.texture_size = 64;
         d.width = d.height = 16, d.samples = 1;
         sk_showcase *sc = NULL;
-        if (sk_showcase_create(&d, &sc, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+        if (sk_showcase_create(&d, &sc, &err) != SK_OK)
+            return fprintf(stderr, "%s\n", err.message), 1;
         int frames = sk_showcase_frame_count(sc);
         size_t n = 3 * sk_showcase_forearm_points(sc);
         if (!reference) {
             reference = malloc((size_t)frames * n * sizeof *reference);
             skin = malloc(n * sizeof *skin), carried = malloc(n * sizeof *carried);
-            if (!reference || !skin || !carried) return fprintf(stderr, "bench_showcase: out of memory\n"), 1;
+            if (!reference || !skin || !carried)
+                return fprintf(stderr, "bench_showcase: out of memory\n"), 1;
         }
         double motion = 0, miss = 0;
         for (int f = 0; f < frames; f++) {
-            if (sk_showcase_forearm_at(sc, f, skin, carried, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+            if (sk_showcase_forearm_at(sc, f, skin, carried, &err) != SK_OK)
+                return fprintf(stderr, "%s\n", err.message), 1;
             float *ref = reference + (size_t)f * n;
             if (r == 0) memcpy(ref, skin, n * sizeof *skin);
             for (size_t i = 0; i < n; i++) {
@@ -88,7 +96,8 @@ static int step_rates(const sk_showcase_desc *base, const sk_hand_surface *surfa
             }
         }
         double points = (double)frames * (double)(n / 3);
-        printf("forearm at %d steps a second: the flesh's motion %.3f mm rms, %.3f mm rms from 1920 steps a second\n",
+        printf("forearm at %d steps a second: the flesh's motion %.3f mm rms, %.3f mm rms from "
+               "1920 steps a second\n",
                rates[r], sqrt(motion / points), sqrt(miss / points));
         sk_showcase_destroy(sc);
     }
@@ -103,10 +112,12 @@ int main(void)
     sk_error err = {0};
     sk_melody melody;
     snprintf(path, sizeof path, "%s/showcase/twinkle.txt", SK_BENCH_PRESET_DIR);
-    if (sk_melody_load(path, &melody, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    if (sk_melody_load(path, &melody, &err) != SK_OK)
+        return fprintf(stderr, "%s\n", err.message), 1;
     sk_render_scene_desc *stage = calloc(1, sizeof *stage);
     snprintf(path, sizeof path, "%s/showcase/stage.json", SK_BENCH_PRESET_DIR);
-    if (sk_render_scene_desc_load(path, stage, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    if (sk_render_scene_desc_load(path, stage, &err) != SK_OK)
+        return fprintf(stderr, "%s\n", err.message), 1;
     sk_hand_skeleton skeleton;
     sk_hand_skeleton_init(&skeleton, NULL, &err);
     sk_hand_constraints *constraints = calloc(1, sizeof *constraints);
@@ -116,16 +127,19 @@ int main(void)
     sk_skin *back = load_skin("back-of-hand"), *palm = load_skin("palm");
     sk_tissue_character_desc *forearm = calloc(1, sizeof *forearm);
     snprintf(path, sizeof path, "%s/showcase/forearm.json", SK_BENCH_PRESET_DIR);
-    if (sk_tissue_character_load(path, forearm, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    if (sk_tissue_character_load(path, forearm, &err) != SK_OK)
+        return fprintf(stderr, "%s\n", err.message), 1;
     double t0 = sk_time_seconds();
     sk_showcase_desc d = {0};
     d.melody = &melody, d.stage = stage, d.constraints = constraints;
     d.back_skin = back, d.palm_skin = palm;
     d.forearm = forearm;
     sk_showcase *full = NULL;
-    if (sk_showcase_create(&d, &full, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    if (sk_showcase_create(&d, &full, &err) != SK_OK)
+        return fprintf(stderr, "%s\n", err.message), 1;
     double setup = sk_time_seconds() - t0;
-    printf("setup (fingering, playing posture, hand surface 8000 triangles, texture 1024 with microrelief, wood, "
+    printf("setup (fingering, playing posture, hand surface 8000 triangles, texture 1024 with "
+           "microrelief, wood, "
            "forearm of %zu skin points): %.2f s\n",
            sk_showcase_forearm_points(full), setup);
     int frames = sk_showcase_frame_count(full);
@@ -144,7 +158,8 @@ int main(void)
         pose_wall = fmin(pose_wall, sk_time_seconds() - ta);
         pose_cpu = fmin(pose_cpu, bench_cpu_seconds(CLOCK_PROCESS_CPUTIME_ID) - ca);
     }
-    printf("performance + posture over all %d frames of twinkle: %.3f ms a frame wall, %.3f ms CPU (%.1f posture "
+    printf("performance + posture over all %d frames of twinkle: %.3f ms a frame wall, %.3f ms CPU "
+           "(%.1f posture "
            "solves a frame; best of 3)\n",
            frames, 1e3 * pose_wall / frames, 1e3 * pose_cpu / frames, (double)solves / frames);
     /* the forearm's simulation over the whole piece, frame after frame (asking frame 0
@@ -165,10 +180,11 @@ int main(void)
         }
         char load[128];
         bench_load_average(load, sizeof load);
-        printf("forearm tissue over all %d frames (%.0f steps a frame), %s: %.3f ms a frame wall, %.3f ms CPU "
+        printf("forearm tissue over all %d frames (%.0f steps a frame), %s: %.3f ms a frame wall, "
+               "%.3f ms CPU "
                "(%.3f ms CPU a step; best of 3; load average %s)\n",
-               frames, steps, threads == 1 ? "1 thread" : "all threads", 1e3 * wall / frames, 1e3 * cpu / frames,
-               1e3 * cpu / (frames * steps), load);
+               frames, steps, threads == 1 ? "1 thread" : "all threads", 1e3 * wall / frames,
+               1e3 * cpu / frames, 1e3 * cpu / (frames * steps), load);
     }
     sk_threads_set(0);
     /* how far the flesh moves from where its bones carry it: over the piece, and while
@@ -177,31 +193,37 @@ int main(void)
     double largest = 0, largest_still = 0;
     sk_vec3d before = {0, 0, 0};
     for (int f = 0; f < frames; f++) {
-        if (sk_showcase_forearm_at(full, f, skin, carried, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+        if (sk_showcase_forearm_at(full, f, skin, carried, &err) != SK_OK)
+            return fprintf(stderr, "%s\n", err.message), 1;
         double worst = 0;
         for (size_t i = 0; i < 3 * points; i += 3) {
-            double dx = skin[i] - carried[i], dy = skin[i + 1] - carried[i + 1], dz = skin[i + 2] - carried[i + 2];
+            double dx = skin[i] - carried[i], dy = skin[i + 1] - carried[i + 1],
+                   dz = skin[i + 2] - carried[i + 2];
             worst = fmax(worst, sqrt(dx * dx + dy * dy + dz * dz));
         }
         sk_showcase_pose_at(full, f / fps, &pose, &err);
         sk_vec3d w = pose.frames.point[0];
-        bool still = f > 0 && fabs(w.x - before.x) + fabs(w.y - before.y) + fabs(w.z - before.z) < 0.05;
+        bool still =
+            f > 0 && fabs(w.x - before.x) + fabs(w.y - before.y) + fabs(w.z - before.z) < 0.05;
         largest = fmax(largest, worst);
         if (still) largest_still = fmax(largest_still, worst);
         before = w;
     }
-    printf("forearm flesh off its bones: largest %.2f mm over the piece, %.2f mm in frames where the wrist holds still\n",
+    printf("forearm flesh off its bones: largest %.2f mm over the piece, %.2f mm in frames where "
+           "the wrist holds still\n",
            largest, largest_still);
     free(carried);
     free(skin);
     if (step_rates(&d, sk_showcase_surface(full)) != 0) return 1;
     /* full size: a few frames through the renderer */
     sk_showcase_stats st = {0};
-    if (sk_showcase_forearm_at(full, 35, NULL, NULL, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    if (sk_showcase_forearm_at(full, 35, NULL, NULL, &err) != SK_OK)
+        return fprintf(stderr, "%s\n", err.message), 1;
     double tw = sk_time_seconds();
     for (int f = 36; f < 38; f++) { /* the forearm's simulation runs on from frame 35 */
         sk_image img;
-        if (sk_showcase_render_frame(full, f, &img, &st, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+        if (sk_showcase_render_frame(full, f, &img, &st, &err) != SK_OK)
+            return fprintf(stderr, "%s\n", err.message), 1;
         sk_image_free(&img);
     }
     report("1280x720, 16 samples", &st, sk_time_seconds() - tw);
@@ -210,13 +232,15 @@ int main(void)
        shared: a run's stage times include what others took of the processor) */
     d.width = 320, d.height = 180, d.samples = 4, d.texture_size = 512;
     sk_showcase *preview = NULL;
-    if (sk_showcase_create(&d, &preview, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+    if (sk_showcase_create(&d, &preview, &err) != SK_OK)
+        return fprintf(stderr, "%s\n", err.message), 1;
     sk_showcase_stats best = {0};
     double best_wall = 1e30;
     for (int run = 0; run < 3; run++) {
         memset(&st, 0, sizeof st);
         /* frame 29 first (the forearm's simulation restarts and runs up to it) */
-        if (sk_showcase_forearm_at(preview, 29, NULL, NULL, &err) != SK_OK) return fprintf(stderr, "%s\n", err.message), 1;
+        if (sk_showcase_forearm_at(preview, 29, NULL, NULL, &err) != SK_OK)
+            return fprintf(stderr, "%s\n", err.message), 1;
         tw = sk_time_seconds();
         for (int f = 30; f < 54; f++) {
             sk_image img;
@@ -239,12 +263,14 @@ int main(void)
     char dir[] = "/tmp/bench_showcase_XXXXXX", cmd[1024];
     if (!mkdtemp(dir)) return fprintf(stderr, "bench_showcase: no temporary folder\n"), 1;
     snprintf(cmd, sizeof cmd,
-             "%s showcase --melody %s/showcase/twinkle.txt --frames 30:41 --size 320x180 --spp 4 --texture-size 512 -q "
+             "%s showcase --melody %s/showcase/twinkle.txt --frames 30:41 --size 320x180 --spp 4 "
+             "--texture-size 512 -q "
              "-o %s/out",
              SK_BENCH_CLI, SK_BENCH_PRESET_DIR, dir);
     tw = sk_time_seconds();
     int rc = system(cmd);
-    printf("command (setup + 12 frames at 320x180 + WAV + PNGs): %.2f s wall (exit %d)\n", sk_time_seconds() - tw, rc);
+    printf("command (setup + 12 frames at 320x180 + WAV + PNGs): %.2f s wall (exit %d)\n",
+           sk_time_seconds() - tw, rc);
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     if (system(cmd) != 0) fprintf(stderr, "bench_showcase: %s left behind\n", dir);
     sk_skin_destroy(back), sk_skin_destroy(palm);

@@ -129,7 +129,8 @@ int main(void)
     printf("  4096 x 4096 height + normal maps, %d levels, 2 threads:\n", levels);
     printf("    create %.1f ms, render %.1f ms, total %.3f s   target <= 1.5 s\n", (t1 - t0) * 1e3,
            (t2 - t1) * 1e3, t2 - t0);
-    printf("    CPU %.3f s (all threads): %.3f s on 2 idle cores\n", cpu2 - cpu0, (cpu2 - cpu0) / 2);
+    printf("    CPU %.3f s (all threads): %.3f s on 2 idle cores\n", cpu2 - cpu0,
+           (cpu2 - cpu0) / 2);
     printf("    %.1f ns per pixel wall, %.1f ns per pixel per level (thread time: %.1f)\n",
            (t2 - t1) * 1e9 / px, (t2 - t1) * 1e9 / px / levels, 2 * (t2 - t1) * 1e9 / px / levels);
     printf("    rendered again into the same maps (their memory already touched): %.1f ms,\n"

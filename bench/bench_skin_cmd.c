@@ -74,8 +74,8 @@ static int run_cli(const char *const *argv, const char *threads, run *out)
     }
     /* a build without the timing line (an older one, to compare) leaves the split at -1 */
     const char *line = got > 0 ? strstr(text, "timings:") : NULL;
-    if (!line || sscanf(line, "timings: model %lf ms, shading %lf ms, files %lf ms",
-                        &out->model, &out->shading, &out->files) != 3)
+    if (!line || sscanf(line, "timings: model %lf ms, shading %lf ms, files %lf ms", &out->model,
+                        &out->shading, &out->files) != 3)
         out->model = out->shading = out->files = -1;
     const char *cpu = line ? strstr(line, "(CPU ") : NULL;
     if (!cpu || sscanf(cpu, "(CPU %lf, %lf, %lf ms)", &out->cpu_model, &out->cpu_shading,
@@ -100,8 +100,8 @@ static void print_run(const char *label, const run *r, const char *target)
 {
     printf("    %-10s %7.1f ms wall, %7.1f ms CPU, peak %5.0f MiB   (model %.1f, shading %.1f, "
            "files %.1f ms; CPU %.1f, %.1f, %.1f ms)%s\n",
-           label, r->wall * 1e3, r->cpu * 1e3, r->peak_kib / 1024.0, r->model, r->shading,
-           r->files, r->cpu_model, r->cpu_shading, r->cpu_files, target);
+           label, r->wall * 1e3, r->cpu * 1e3, r->peak_kib / 1024.0, r->model, r->shading, r->files,
+           r->cpu_model, r->cpu_shading, r->cpu_files, target);
 }
 
 int main(void)
@@ -127,13 +127,14 @@ int main(void)
     print_run("1 thread", &one, "");
     print_run("2 threads", &two, "   target <= 60 ms wall");
 
-    const char *big[] = {"skin", "maps", "--preset", "back-of-hand", "--size", "4096", "-q",
-                         "-o", maps, NULL};
+    const char *big[] = {"skin", "maps", "--preset", "back-of-hand", "--size",
+                         "4096", "-q",   "-o",       maps,           NULL};
     printf("  skin maps --preset back-of-hand --size 4096 (six files)\n");
     if (best_of(big, "2", 2, &two)) return 1;
     print_run("2 threads", &two, "   target <= 4 s wall, <= 400 MiB");
     const char *rm[] = {"rm", "-rf", dir, NULL};
     pid_t pid;
-    if (posix_spawnp(&pid, "rm", NULL, NULL, (char *const *)rm, environ) == 0) waitpid(pid, NULL, 0);
+    if (posix_spawnp(&pid, "rm", NULL, NULL, (char *const *)rm, environ) == 0)
+        waitpid(pid, NULL, 0);
     return 0;
 }

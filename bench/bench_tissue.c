@@ -65,8 +65,8 @@ static double children_cpu_seconds(void)
 {
     struct rusage u;
     getrusage(RUSAGE_CHILDREN, &u);
-    return (double)u.ru_utime.tv_sec + 1e-6 * (double)u.ru_utime.tv_usec + (double)u.ru_stime.tv_sec +
-           1e-6 * (double)u.ru_stime.tv_usec;
+    return (double)u.ru_utime.tv_sec + 1e-6 * (double)u.ru_utime.tv_usec +
+           (double)u.ru_stime.tv_sec + 1e-6 * (double)u.ru_stime.tv_usec;
 }
 
 /* ------------------------------------------------------------ skin generation */
@@ -86,10 +86,13 @@ static void bench_skin(const char *name, double spacing, double target)
         if (run == 0 || cpu < best_cpu) best_cpu = cpu;
         sk_tissue_model_destroy(m);
     }
-    printf("skin generation, %s at %g mm: grid %d x %d x %d, %zu skin + %zu fat points, %zu springs\n", name, spacing,
-           best.grid[0], best.grid[1], best.grid[2], best.skin_points, best.fat_points, best.springs);
+    printf(
+        "skin generation, %s at %g mm: grid %d x %d x %d, %zu skin + %zu fat points, %zu springs\n",
+        name, spacing, best.grid[0], best.grid[1], best.grid[2], best.skin_points, best.fat_points,
+        best.springs);
     printf("  CPU %.3f s (every thread)\n", best_cpu);
-    printf("  wall %.3f s (target %.0f s): voxelise %.3f, fat regions %.3f, dilate %.3f, isosurface %.3f, classify %.3f, "
+    printf("  wall %.3f s (target %.0f s): voxelise %.3f, fat regions %.3f, dilate %.3f, "
+           "isosurface %.3f, classify %.3f, "
            "springs %.3f\n",
            best.seconds_total, target, best.seconds_voxelise, best.seconds_fat, best.seconds_dilate,
            best.seconds_extract, best.seconds_classify, best.seconds_springs);
@@ -133,7 +136,8 @@ static sim_figures bench_sim(const sk_tissue_model *m, int threads, int steps)
 #pragma omp parallel num_threads(threads)
         {
             double own = cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
-            for (int k = 0; k < reps; k++) s->ops->step(s->solver, s->x, s->base, s->target, s->target_base);
+            for (int k = 0; k < reps; k++)
+                s->ops->step(s->solver, s->x, s->base, s->target, s->target_base);
             own = cpu_seconds(CLOCK_THREAD_CPUTIME_ID) - own;
 #pragma omp critical(bench_busiest)
             busiest = fmax(busiest, own);
@@ -143,8 +147,10 @@ static sim_figures bench_sim(const sk_tissue_model *m, int threads, int steps)
         if (sps > best.steps_per_second) best.steps_per_second = sps;
         if (run == 0 || cpu < best.cpu_per_step) best.cpu_per_step = cpu;
         double solver = (t3 - t2) / reps;
-        if (run == 0 || solver < best.solver_seconds_per_step) best.solver_seconds_per_step = solver;
-        if (run == 0 || busiest / reps < best.solver_cpu_per_step) best.solver_cpu_per_step = busiest / reps;
+        if (run == 0 || solver < best.solver_seconds_per_step)
+            best.solver_seconds_per_step = solver;
+        if (run == 0 || busiest / reps < best.solver_cpu_per_step)
+            best.solver_cpu_per_step = busiest / reps;
         sk_tissue_sim_destroy(s);
     }
     sk_threads_set(0);
@@ -155,7 +161,7 @@ static sim_figures bench_sim(const sk_tissue_model *m, int threads, int steps)
  * dashpot along the spring) gathered per point, then symplectic Euler. */
 typedef struct explicit_system {
     size_t n, nfree;
-    size_t *start;   /* CSR of each free point's springs */
+    size_t *start; /* CSR of each free point's springs */
     uint32_t *other;
     double *k, *c, *rest;
     double *x, *v, *inv_m;
@@ -215,8 +221,10 @@ static void explicit_step(explicit_system *e, double h, double *a)
             const double *xq = e->x + 3 * e->other[o], *vq = e->v + 3 * e->other[o];
             double d[3] = {xq[0] - xp[0], xq[1] - xp[1], xq[2] - xp[2]};
             double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), inv = 1.0 / len;
-            double rel = ((vq[0] - vp[0]) * d[0] + (vq[1] - vp[1]) * d[1] + (vq[2] - vp[2]) * d[2]) * inv;
-            double mag = e->k[o] * (len - e->rest[o]) + e->c[o] * rel; /* mm and mm/s with N/m: mN */
+            double rel =
+                ((vq[0] - vp[0]) * d[0] + (vq[1] - vp[1]) * d[1] + (vq[2] - vp[2]) * d[2]) * inv;
+            double mag =
+                e->k[o] * (len - e->rest[o]) + e->c[o] * rel; /* mm and mm/s with N/m: mN */
             for (int c = 0; c < 3; c++) f[c] += mag * d[c] * inv;
         }
         for (int c = 0; c < 3; c++) a[3 * p + (size_t)c] = f[c] * e->inv_m[p];
@@ -250,11 +258,13 @@ static void bench_explicit(const sk_tissue_model *m, int threads, double xpbd_st
         best = fmin(best, (sk_time_seconds() - t0) / steps);
     }
     size_t springs = m->spring_count;
-    printf("  explicit mass-spring step, %d thread%s: %.3f ms/step, %.1f M springs/s (every spring is visited twice, once "
-           "per end); stable only below h = %.2e s, so %.0f steps per simulated second: %.2f s per simulated second "
+    printf("  explicit mass-spring step, %d thread%s: %.3f ms/step, %.1f M springs/s (every spring "
+           "is visited twice, once "
+           "per end); stable only below h = %.2e s, so %.0f steps per simulated second: %.2f s per "
+           "simulated second "
            "against XPBD's %.2f s\n",
-           threads, threads > 1 ? "s" : "", best * 1e3, springs / best * 1e-6, h_stable, 1.0 / h_stable,
-           best / h_stable, m->desc.simulation.step_hz / xpbd_steps_per_second);
+           threads, threads > 1 ? "s" : "", best * 1e3, springs / best * 1e-6, h_stable,
+           1.0 / h_stable, best / h_stable, m->desc.simulation.step_hz / xpbd_steps_per_second);
     free(a);
     free(e.start);
     free(e.other);
@@ -275,7 +285,8 @@ static void bench_cholmod(const sk_tissue_model *m)
     double h = 1.0 / m->desc.simulation.step_hz;
     cholmod_common cc;
     cholmod_start(&cc);
-    cholmod_triplet *t = cholmod_allocate_triplet(nfree, nfree, nfree + m->spring_count, -1, CHOLMOD_REAL, &cc);
+    cholmod_triplet *t =
+        cholmod_allocate_triplet(nfree, nfree, nfree + m->spring_count, -1, CHOLMOD_REAL, &cc);
     double *diag = calloc(nfree, sizeof *diag);
     for (size_t p = 0; p < nfree; p++) diag[p] = m->mass[p] / (h * h);
     for (size_t s = 0; s < m->spring_count; s++) {
@@ -309,7 +320,8 @@ static void bench_cholmod(const sk_tissue_model *m)
         best = fmin(best, sk_time_seconds() - s0);
         cholmod_free_dense(&x, &cc);
     }
-    printf("  projective dynamics' prefactored matrix (CHOLMOD): factor %.2f s, %.0f nonzeros in L, one solve for "
+    printf("  projective dynamics' prefactored matrix (CHOLMOD): factor %.2f s, %.0f nonzeros in "
+           "L, one solve for "
            "x, y, z %.2f ms: %.2f s per simulated second at one iteration per step\n",
            t1 - t0, cc.lnz, best * 1e3, best * m->desc.simulation.step_hz);
     cholmod_free_dense(&b, &cc);
@@ -353,18 +365,22 @@ int main(int argc, char **argv)
     if (sk_tissue_model_build(d, NULL, &m, &err) != SK_OK) fail(&err);
     size_t nfree = m->skin_count + m->fat_count;
     int hz = m->desc.simulation.step_hz, steps = quick ? hz / 4 : hz;
-    printf("simulation, arm at 5 mm: %zu fat and skin points, %zu muscle and bone points, %zu springs, %d steps/s\n",
+    printf("simulation, arm at 5 mm: %zu fat and skin points, %zu muscle and bone points, %zu "
+           "springs, %d steps/s\n",
            nfree, m->muscle_count + m->bone_count, m->spring_count, hz);
     double two = 0.0;
     for (int threads = 1; threads <= 2; threads++) {
         sim_figures f = bench_sim(m, threads, steps);
         double frames = f.steps_per_second / (hz / 60.0);
-        printf("  %d thread%s: %.0f steps/s = %.1f simulated 60 fps frames per second (target 120 on 2 cores); "
-               "springs %.1f M/s in the whole step, the XPBD solve alone %.3f ms/step (%.1f M springs/s)\n",
+        printf("  %d thread%s: %.0f steps/s = %.1f simulated 60 fps frames per second (target 120 "
+               "on 2 cores); "
+               "springs %.1f M/s in the whole step, the XPBD solve alone %.3f ms/step (%.1f M "
+               "springs/s)\n",
                threads, threads > 1 ? "s" : "", f.steps_per_second, frames,
                f.steps_per_second * m->spring_count * 1e-6, f.solver_seconds_per_step * 1e3,
                m->spring_count / f.solver_seconds_per_step * 1e-6);
-        printf("    CPU: %.3f ms a whole step (every thread), the XPBD solve alone %.3f ms on the busiest thread\n",
+        printf("    CPU: %.3f ms a whole step (every thread), the XPBD solve alone %.3f ms on the "
+               "busiest thread\n",
                f.cpu_per_step * 1e3, f.solver_cpu_per_step * 1e3);
         if (threads == 2) two = f.steps_per_second;
     }
@@ -378,11 +394,14 @@ int main(int argc, char **argv)
     printf("the whole command, files written (best of 2):\n");
     const char *tmp = getenv("TMPDIR");
     char args[2048];
-    snprintf(args, sizeof args, "tissue run --character arm --motion curl -o '%s/sk-bench-tissue-curl'",
+    snprintf(args, sizeof args,
+             "tissue run --character arm --motion curl -o '%s/sk-bench-tissue-curl'",
              tmp && tmp[0] ? tmp : "/tmp");
-    bench_command(args, "tissue run --character arm --motion curl (5 s, 30 fps: rest.obj, skin.pc2, skin.glb, stats)");
+    bench_command(args, "tissue run --character arm --motion curl (5 s, 30 fps: rest.obj, "
+                        "skin.pc2, skin.glb, stats)");
     if (!quick) {
-        snprintf(args, sizeof args, "tissue run --character body --motion jump -o '%s/sk-bench-tissue-jump'",
+        snprintf(args, sizeof args,
+                 "tissue run --character body --motion jump -o '%s/sk-bench-tissue-jump'",
                  tmp && tmp[0] ? tmp : "/tmp");
         bench_command(args, "tissue run --character body --motion jump (3.2 s, 30 fps)");
     }

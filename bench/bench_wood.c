@@ -146,7 +146,8 @@ static command_split command_steps(const char *path)
     sk_image image = {0};
     if (sk_preset_load_file(&preset, SK_BENCH_PRESET_DIR "/wood/fig9.json", &err) != SK_OK ||
         sk_preset_bind(preset, &sk_wood_schema, &desc, &err) != SK_OK ||
-        sk_wood_create(&desc, &wood, &err) != SK_OK || sk_image_create(&image, 2048, 2048, 3, &err) != SK_OK) {
+        sk_wood_create(&desc, &wood, &err) != SK_OK ||
+        sk_image_create(&image, 2048, 2048, 3, &err) != SK_OK) {
         fprintf(stderr, "bench_wood: %s\n", err.message);
         exit(1);
     }
@@ -205,7 +206,8 @@ static void bench_command(void)
     if (!mkdtemp(dir)) return;
     snprintf(path, sizeof path, "%s/c.png", dir);
     int threads = sk_threads_max();
-    printf("wood cut --preset fig9 --size 2048 -o c.png (2 x 2 samples per pixel, 8-bit sRGB PNG):\n");
+    printf(
+        "wood cut --preset fig9 --size 2048 -o c.png (2 x 2 samples per pixel, 8-bit sRGB PNG):\n");
     for (int pass = 0; pass < 2; pass++) {
         int n = pass == 0 ? threads : 1;
         sk_threads_set(n);
@@ -219,9 +221,11 @@ static void bench_command(void)
             double w = command_wall(path, n);
             if (w < wall) wall = w;
         }
-        printf("  %d thread(s): in process %.3f s = preset + tree %.1f ms + shaded cut %.1f ms + PNG %.1f ms "
+        printf("  %d thread(s): in process %.3f s = preset + tree %.1f ms + shaded cut %.1f ms + "
+               "PNG %.1f ms "
                "(CPU %.3f s); the command %.3f s wall (target <= 0.45 s on 2 idle cores)\n",
-               n, best.total, best.model * 1e3, best.shading * 1e3, best.writing * 1e3, best.cpu, wall);
+               n, best.total, best.model * 1e3, best.shading * 1e3, best.writing * 1e3, best.cpu,
+               wall);
     }
     sk_threads_set(threads);
     unlink(path);
@@ -236,7 +240,8 @@ static void print_load(void)
     double load;
     if (f && fscanf(f, "%lf", &load) == 1)
         printf("machine load (1-minute average) %.2f on %d cores; best of 5 runs on all threads, "
-               "3 on one\n", load, sk_threads_max());
+               "3 on one\n",
+               load, sk_threads_max());
     if (f) fclose(f);
 }
 

@@ -14,10 +14,13 @@
 static void check(const sk_bvh *b)
 {
     int channels = 0;
-    if (b->joint_count < 1 || b->joint_count > SK_BVH_MAX_JOINTS || !b->motion || !(b->frame_time > 0)) abort();
+    if (b->joint_count < 1 || b->joint_count > SK_BVH_MAX_JOINTS || !b->motion ||
+        !(b->frame_time > 0))
+        abort();
     for (int j = 0; j < b->joint_count; j++) {
         if (b->parent[j] >= j || b->parent[j] < -1) abort();
-        if (b->channel_first[j] != channels || b->channel_count[j] < 0 || b->channel_count[j] > 6) abort();
+        if (b->channel_first[j] != channels || b->channel_count[j] < 0 || b->channel_count[j] > 6)
+            abort();
         if (b->end_site[j] && b->channel_count[j]) abort();
         channels += b->channel_count[j];
     }
@@ -41,7 +44,8 @@ static void round_trip(const sk_bvh *b)
             again->channels_per_frame != b->channels_per_frame)
             abort();
         for (int j = 0; j < b->joint_count; j++)
-            if (strcmp(again->name[j], b->name[j]) != 0 || again->parent[j] != b->parent[j]) abort();
+            if (strcmp(again->name[j], b->name[j]) != 0 || again->parent[j] != b->parent[j])
+                abort();
         sk_bvh_free(again);
     }
     free(again);

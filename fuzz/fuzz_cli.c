@@ -10,9 +10,9 @@
 #include "cli.h"
 
 static const cli_option k_options[] = {
-    {"size", 0, "WxH", "", false},  {"region", 0, "x,y,w,h", "", false},
+    {"size", 0, "WxH", "", false},    {"region", 0, "x,y,w,h", "", false},
     {"point", 0, "X,Y,Z", "", false}, {"count", 'n', "N", "", false},
-    {"scale", 0, "X", "", false},   {"label", 0, "TEXT", "", true},
+    {"scale", 0, "X", "", false},     {"label", 0, "TEXT", "", true},
     {"flag", 'f', NULL, "", false},
 };
 static int run_none(const cli_command *command, const cli_args *args)
@@ -22,9 +22,15 @@ static int run_none(const cli_command *command, const cli_args *args)
     return 0;
 }
 static const cli_command k_command = {
-    .name = "fuzz sub", .summary = "", .usage = "", .options = k_options,
-    .option_count = (int)(sizeof k_options / sizeof k_options[0]), .common = CLI_COMMON_ALL,
-    .min_positional = 0, .max_positional = 4, .run = run_none,
+    .name = "fuzz sub",
+    .summary = "",
+    .usage = "",
+    .options = k_options,
+    .option_count = (int)(sizeof k_options / sizeof k_options[0]),
+    .common = CLI_COMMON_ALL,
+    .min_positional = 0,
+    .max_positional = 4,
+    .run = run_none,
 };
 const cli_command *const cli_commands[] = {&k_command, NULL};
 

@@ -24,7 +24,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (sk__deflate_make_continuable(copy, &n)) {
         static const uint8_t close_block[5] = {0x01, 0x00, 0x00, 0xff, 0xff};
         memcpy(copy + n, close_block, sizeof close_block);
-        bool after = libdeflate_deflate_decompress(dec, copy, n + 5, b, OUT, &nb) == LIBDEFLATE_SUCCESS;
+        bool after =
+            libdeflate_deflate_decompress(dec, copy, n + 5, b, OUT, &nb) == LIBDEFLATE_SUCCESS;
         if (before && (!after || na != nb || memcmp(a, b, na) != 0)) abort();
     }
     libdeflate_free_decompressor(dec);

@@ -28,7 +28,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     };
     for (size_t k = 0; k < sizeof descs / sizeof descs[0]; k++) {
         sk_hand_samples s;
-        if (sk_hand_samples_parse_desc((const char *)data, size, "fuzz", &descs[k], &s, NULL) == SK_OK) {
+        if (sk_hand_samples_parse_desc((const char *)data, size, "fuzz", &descs[k], &s, NULL) ==
+            SK_OK) {
             check(&s);
             sk_hand_samples_free(&s);
         } else if (s.count != 0 || s.group) {

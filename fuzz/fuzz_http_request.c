@@ -14,7 +14,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char rel[HTTP_MAX_PATH + 16];
     if (!http_relative_path(req.path, rel, sizeof rel)) return 0;
     /* a mapped path is relative, has no dot segment and no backslash */
-    if (rel[0] == '/' || strstr(rel, "..") == rel || strstr(rel, "/.") || strchr(rel, '\\') || rel[0] == '.')
+    if (rel[0] == '/' || strstr(rel, "..") == rel || strstr(rel, "/.") || strchr(rel, '\\') ||
+        rel[0] == '.')
         abort();
     (void)http_mime_type(rel);
     return 0;

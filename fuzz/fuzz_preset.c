@@ -18,16 +18,26 @@ typedef struct f_desc {
 } f_desc;
 
 static const sk_schema_field k_elem_fields[] = {
-    {.key = NULL, .type = SK_FIELD_FLOATS, .offset = offsetof(f_elem, v), .min = -1, .max = 1,
-     .count = 2, .count_offset = SK_FIELD_FIXED},
+    {.key = NULL,
+     .type = SK_FIELD_FLOATS,
+     .offset = offsetof(f_elem, v),
+     .min = -1,
+     .max = 1,
+     .count = 2,
+     .count_offset = SK_FIELD_FIXED},
 };
 static const sk_schema k_elem = {"elem", k_elem_fields, 1};
 static const char *const k_modes[] = {"default", "x", "y", NULL};
 static const sk_schema_field k_fields[] = {
     {.key = "a", .type = SK_FIELD_FLOAT, .offset = offsetof(f_desc, a), .min = 0, .max = 1},
     {.key = "n", .type = SK_FIELD_INT, .offset = offsetof(f_desc, n), .min = 0, .max = 9},
-    {.key = "items", .type = SK_FIELD_ARRAY, .offset = offsetof(f_desc, items), .count = 4,
-     .min_count = 0, .count_offset = offsetof(f_desc, count), .elem_size = sizeof(f_elem),
+    {.key = "items",
+     .type = SK_FIELD_ARRAY,
+     .offset = offsetof(f_desc, items),
+     .count = 4,
+     .min_count = 0,
+     .count_offset = offsetof(f_desc, count),
+     .elem_size = sizeof(f_elem),
      .schema = &k_elem},
     {.key = "mode", .type = SK_FIELD_ENUM, .offset = offsetof(f_desc, mode), .names = k_modes},
     {.key = "name", .type = SK_FIELD_STRING, .offset = offsetof(f_desc, name), .count = 8},

@@ -18,7 +18,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         d->image.width = d->image.height = 4;
         d->image.samples = 1;
         if (d->environment.ao_samples > 2) d->environment.ao_samples = 2;
-        for (int i = 0; i < d->material_count; i++) d->materials[i].type = SK_RENDER_MATERIAL_STANDARD;
+        for (int i = 0; i < d->material_count; i++)
+            d->materials[i].type = SK_RENDER_MATERIAL_STANDARD;
         for (int i = 0; i < d->object_count; i++) {
             if (d->objects[i].segments > 16) d->objects[i].segments = 16;
             if (d->objects[i].rings > 8) d->objects[i].rings = 8;

@@ -32,13 +32,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 0: {
             sk_skin_desc d;
             memset(&d, 0, sizeof d);
-            if (sk_preset_bind(p, &sk_skin_schema, &d, NULL) == SK_OK) sk_skin_desc_validate(&d, NULL);
+            if (sk_preset_bind(p, &sk_skin_schema, &d, NULL) == SK_OK)
+                sk_skin_desc_validate(&d, NULL);
             break;
         }
         case 1: {
             sk_wood_desc d;
             memset(&d, 0, sizeof d);
-            if (sk_preset_bind(p, &sk_wood_schema, &d, NULL) == SK_OK) sk_wood_desc_validate(&d, NULL);
+            if (sk_preset_bind(p, &sk_wood_schema, &d, NULL) == SK_OK)
+                sk_wood_desc_validate(&d, NULL);
             break;
         }
         case 2: {

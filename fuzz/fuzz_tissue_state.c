@@ -10,7 +10,8 @@
 #include "shitsukan/tissue.h"
 
 static const char k_rod[] =
-    "{\"joints\": [{\"name\": \"A\"}, {\"name\": \"B\", \"parent\": \"A\", \"offset_mm\": [0, -60, 0]}],"
+    "{\"joints\": [{\"name\": \"A\"}, {\"name\": \"B\", \"parent\": \"A\", \"offset_mm\": [0, -60, "
+    "0]}],"
     " \"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 8}],"
     " \"skin\": {\"spacing_mm\": 6, \"dilations\": 2, \"dilation_radius_mm\": 12}}";
 
@@ -29,7 +30,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         sk_preset *p = NULL;
         sk_tissue_character_desc *d = malloc(sizeof *d);
         if (!d || sk_preset_parse(&p, k_rod, sizeof k_rod - 1, "rod", NULL) != SK_OK ||
-            sk_tissue_character_bind(p, d, NULL) != SK_OK || sk_tissue_model_build(d, NULL, &model, NULL) != SK_OK)
+            sk_tissue_character_bind(p, d, NULL) != SK_OK ||
+            sk_tissue_model_build(d, NULL, &model, NULL) != SK_OK)
             abort();
         sk_preset_free(p);
         free(d);

@@ -12,7 +12,7 @@
 #   blender  Blender (headless import checks of the glTF/OBJ/PC2/BVH outputs)
 #   studio   emscripten, Chromium and the node group (the browser studio and its tests)
 #   fuzz     clang and its sanitizer runtimes (libFuzzer harnesses)
-#   test     build + node + video (what `make test` needs)
+#   test     build + node + video + clang-format (what `make test` needs)
 #
 # Without root it names what is missing and fails.
 set -eu
@@ -35,6 +35,7 @@ build_packages=(
 )
 node_packages=(nodejs npm)
 video_packages=(ffmpeg)
+lint_packages=(clang-format) # the layout check (tests/lint/format.sh)
 blender_packages=(blender python3-numpy) # numpy: Blender's glTF importer needs it
 studio_packages=(emscripten node-acorn chromium)
 fuzz_packages=(clang libclang-rt-14-dev)
@@ -52,7 +53,7 @@ for g in "${groups[@]}"; do
     blender) want+=("${blender_packages[@]}") ;;
     studio) want+=("${studio_packages[@]}"); want_npm=1 ;;
     fuzz) want+=("${fuzz_packages[@]}") ;;
-    test) want+=("${video_packages[@]}"); want_npm=1 ;;
+    test) want+=("${video_packages[@]}" "${lint_packages[@]}"); want_npm=1 ;;
     *) echo "deps: error: unknown group '$g' (build node video blender studio fuzz test)" >&2; exit 2 ;;
   esac
 done

@@ -28,7 +28,9 @@ static sk_bvh *load(const char *name, sk_result want, sk_error *err)
     sk_bvh *b = malloc(sizeof *b);
     assert_non_null(b);
     sk_result r = sk_bvh_load_file(corpus(name), b, err);
-    if (r != want) fail_msg("%s: got %s (%s), want %s", name, sk_result_string(r), err->message, sk_result_string(want));
+    if (r != want)
+        fail_msg("%s: got %s (%s), want %s", name, sk_result_string(r), err->message,
+                 sk_result_string(want));
     return b;
 }
 
@@ -75,8 +77,9 @@ static void test_reads_what_tools_write(void **state)
     sk_mat3d r;
     sk_vec3d t;
     sk_bvh_local(b, 0, 0, &r, &t);
-    sk_mat3d want = sk_m3d_mul(sk_m3d_mul(sk_m3d_rot_z(-2.6 * SK_DEG_TO_RAD), sk_m3d_rot_y(-5.9 * SK_DEG_TO_RAD)),
-                               sk_m3d_rot_x(3.3 * SK_DEG_TO_RAD));
+    sk_mat3d want = sk_m3d_mul(
+        sk_m3d_mul(sk_m3d_rot_z(-2.6 * SK_DEG_TO_RAD), sk_m3d_rot_y(-5.9 * SK_DEG_TO_RAD)),
+        sk_m3d_rot_x(3.3 * SK_DEG_TO_RAD));
     assert_true(max_matrix_difference(r, want) < 1e-15);
     assert_true(fabs(t.x - 9.3722) < 1e-12 && fabs(t.y - 17.8693) < 1e-12);
     sk_bvh_free(b);
@@ -121,7 +124,8 @@ static void test_broken_files_give_the_documented_error(void **state)
         sk_result result;
         const char *message;
     } cases[] = {
-        {"bad-truncated-frame.bvh", SK_ERROR_PARSE, "line 35: truncated: frame 3 of 3 ends after 2 of its 15 numbers"},
+        {"bad-truncated-frame.bvh", SK_ERROR_PARSE,
+         "line 35: truncated: frame 3 of 3 ends after 2 of its 15 numbers"},
         {"bad-unknown-channel.bvh", SK_ERROR_PARSE, "line 9: unknown channel \"Qrotation\""},
         {"bad-missing-brace.bvh", SK_ERROR_PARSE, "joint \"mixamorig:Hips\" is not closed"},
         {"bad-nan.bvh", SK_ERROR_PARSE, "line 20: \"nan\" is not a finite number"},
@@ -132,7 +136,8 @@ static void test_broken_files_give_the_documented_error(void **state)
         {"bad-end-site-child.bvh", SK_ERROR_PARSE, "line 13: End Site with children"},
         {"bad-too-deep.bvh", SK_ERROR_LIMIT, "hierarchy deeper than 64"},
         /* found by fuzz_bvh: a NUL in a name cut it, so the file written again did not read */
-        {"bad-control-name.bvh", SK_ERROR_PARSE, "line 6: joint name with a control byte (0x00) at byte 1"},
+        {"bad-control-name.bvh", SK_ERROR_PARSE,
+         "line 6: joint name with a control byte (0x00) at byte 1"},
         {"bad-huge-frames.bvh", SK_ERROR_PARSE,
          "line 22: truncated: 22369621 frames x 12 channels need 268435452 numbers"},
     };
@@ -141,7 +146,8 @@ static void test_broken_files_give_the_documented_error(void **state)
         sk_bvh *b = load(cases[i].file, cases[i].result, &err);
         assert_null(b->motion);
         if (!strstr(err.message, cases[i].message) || !strstr(err.message, cases[i].file))
-            fail_msg("%s: message \"%s\" lacks \"%s\"", cases[i].file, err.message, cases[i].message);
+            fail_msg("%s: message \"%s\" lacks \"%s\"", cases[i].file, err.message,
+                     cases[i].message);
         free(b);
     }
 }
@@ -167,7 +173,8 @@ static void test_huge_header_under_a_memory_limit(void **state)
         setrlimit(RLIMIT_AS, &limit);
         sk_bvh *b = malloc(sizeof *b);
         sk_error err = {0};
-        sk_result r = b ? sk_bvh_load_file(corpus("bad-huge-frames.bvh"), b, &err) : SK_ERROR_OUT_OF_MEMORY;
+        sk_result r =
+            b ? sk_bvh_load_file(corpus("bad-huge-frames.bvh"), b, &err) : SK_ERROR_OUT_OF_MEMORY;
         _exit(r == SK_ERROR_PARSE && strstr(err.message, "truncated") ? 0 : 1);
     }
     int status = 0;
@@ -185,7 +192,8 @@ static void test_write_read_round_trip(void **state)
     SK_ASSERT_OK(sk_bvh_add_joint(b, "Root", -1, sk_v3d(0, 0, 0), "xyzZXY", false, &root, &e_));
     SK_ASSERT_OK(sk_bvh_add_joint(b, "Arm", root, sk_v3d(10, 0, 0), "YXZ", false, &arm, &e_));
     SK_ASSERT_OK(sk_bvh_add_joint(b, "ForeArm", arm, sk_v3d(0, -30, 0), "XYZ", false, &fore, &e_));
-    SK_ASSERT_OK(sk_bvh_add_joint(b, "ForeArm_end", fore, sk_v3d(0, -25, 0), NULL, true, NULL, &e_));
+    SK_ASSERT_OK(
+        sk_bvh_add_joint(b, "ForeArm_end", fore, sk_v3d(0, -25, 0), NULL, true, NULL, &e_));
     SK_ASSERT_OK(sk_bvh_add_joint(b, "Leg", root, sk_v3d(0, -5, 0), "ZYX", false, NULL, &e_));
     SK_ASSERT_OK(sk_bvh_alloc_motion(b, 4, 1.0 / 60.0, &e_));
     for (int i = 0; i < 4 * b->channels_per_frame; i++) b->motion[i] = 0.125 * i - 3.0;
@@ -207,15 +215,17 @@ static void test_write_read_round_trip(void **state)
     sk_error err = {0};
     sk_bvh_free(back);
     sk_bvh_init(back);
-    sk_test_expect_failure(sk_bvh_add_joint(back, "a b", -1, sk_v3d(0, 0, 0), "xyz", false, NULL, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "without white space");
-    sk_test_expect_failure(sk_bvh_add_joint(back, "A", -1, sk_v3d(0, 0, 0), "xxZ", false, NULL, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "distinct codes");
-    sk_test_expect_failure(sk_bvh_add_joint(back, "A", 3, sk_v3d(0, 0, 0), "Z", false, NULL, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "parent 3");
+    sk_test_expect_failure(
+        sk_bvh_add_joint(back, "a b", -1, sk_v3d(0, 0, 0), "xyz", false, NULL, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "without white space");
+    sk_test_expect_failure(
+        sk_bvh_add_joint(back, "A", -1, sk_v3d(0, 0, 0), "xxZ", false, NULL, &err), &err,
+        SK_ERROR_INVALID_ARGUMENT, "distinct codes");
+    sk_test_expect_failure(sk_bvh_add_joint(back, "A", 3, sk_v3d(0, 0, 0), "Z", false, NULL, &err),
+                           &err, SK_ERROR_INVALID_ARGUMENT, "parent 3");
     b->motion[7] = NAN;
-    sk_test_expect_failure(sk_bvh_write(b, sk_test_path("bvh/nan.bvh"), &err), &err, SK_ERROR_INVALID_ARGUMENT,
-                           "motion value 7 (frame 0) is not finite");
+    sk_test_expect_failure(sk_bvh_write(b, sk_test_path("bvh/nan.bvh"), &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "motion value 7 (frame 0) is not finite");
     assert_false(sk_test_file_exists(sk_test_path("bvh/nan.bvh")));
     sk_bvh_free(b);
     free(b);

@@ -142,8 +142,8 @@ static void test_hand_inputs_are_checked(void **state)
                                  sk_hand_dof(i)->name);
     assert_int_equal(sk_test_cli(&g_run, "hand pose%s", many), 0);
     for (int i = 0; i < 65 - SK_HAND_DOF_COUNT; i++)
-        used += (size_t)snprintf(many + used, sizeof many - used, " --pin %s=1",
-                                 sk_hand_dof(i)->name);
+        used +=
+            (size_t)snprintf(many + used, sizeof many - used, " --pin %s=1", sk_hand_dof(i)->name);
     sk_test_cli(&g_run, "hand pose%s", many);
     assert_one_line_error(&g_run, 2);
     assert_non_null(strstr(g_run.err, "already has --pin"));
@@ -229,27 +229,34 @@ static const bad_case k_bad_cases[] = {
     {"hand animate DIR/anim.json --plot OUT.jpg", "--plot", ".png"},
     {"hand animate DIR/anim.json --plot OUT.png --plot-size 10", "--plot-size", "at least 64"},
     {"hand animate DIR/anim.json --plot OUT.png --plot-dofs X.Y", "--plot-dofs", "unknown DOF"},
-    {"hand animate DIR/long-anim.json --bvh OUT.bvh --max-memory 1M", "10001 frames", "--max-memory"},
+    {"hand animate DIR/long-anim.json --bvh OUT.bvh --max-memory 1M", "10001 frames",
+     "--max-memory"},
     {"hand animate DIR/garbage.json --bvh OUT.bvh", "garbage.json", "unexpected text"},
     {"hand animate DIR/anim.json --glb OUT.gltf", "--glb", ".glb"},
     {"hand animate DIR/anim.json --landmarks OUT.txt", "--landmarks", ".csv, .json"},
     {"hand animate DIR/anim.json --meshes-dir DIR/file", "file", "not a folder"},
-    {"hand animate DIR/anim.json --meshes-dir OUT --mesh-frames 99", "--mesh-frames", "comma-separated"},
-    {"hand animate DIR/anim.json --meshes-dir OUT --mesh-frames 0,", "--mesh-frames", "comma-separated"},
-    {"hand animate DIR/anim.json --bvh OUT.bvh --mesh-frames 0", "--mesh-frames", "needs --meshes-dir"},
+    {"hand animate DIR/anim.json --meshes-dir OUT --mesh-frames 99", "--mesh-frames",
+     "comma-separated"},
+    {"hand animate DIR/anim.json --meshes-dir OUT --mesh-frames 0,", "--mesh-frames",
+     "comma-separated"},
+    {"hand animate DIR/anim.json --bvh OUT.bvh --mesh-frames 0", "--mesh-frames",
+     "needs --meshes-dir"},
     {"hand animate DIR/anim.json --bvh OUT.bvh --skinning lbs", "--skinning", "needs --glb"},
     {"hand animate DIR/anim.json --glb OUT.glb --texture OUT", "--texture", "needs --meshes-dir"},
     {"hand animate DIR/anim.json --glb OUT.glb --material wax", "--material", "blend or pbr"},
     {"hand animate DIR/anim.json --glb OUT.glb --skinning soft", "--skinning", "rigid, lbs or dqs"},
     {"hand animate DIR/anim.json --glb OUT.glb --texture-size 32", "--texture-size", "[64, 8192]"},
-    {"hand animate DIR/anim.json --glb OUT.glb --triangles 200000 --max-memory 64M", "--triangles", "--max-memory"},
-    {"hand animate DIR/anim.json --meshes-dir OUT --flesh DIR/garbage.json", "garbage.json", "unexpected text"},
+    {"hand animate DIR/anim.json --glb OUT.glb --triangles 200000 --max-memory 64M", "--triangles",
+     "--max-memory"},
+    {"hand animate DIR/anim.json --meshes-dir OUT --flesh DIR/garbage.json", "garbage.json",
+     "unexpected text"},
     /* hand mesh */
     {"hand mesh", "-o", ".glb"},
     {"hand mesh -o OUT.stl", "-o", ".obj, .ply, .glb"},
     {"hand mesh -o DIR/folder.glb", "folder.glb", "names a folder"},
     {"hand mesh --pin L.MCP.flex=0x3c -o OUT.obj", "--pin", "[-1000000, 1000000]"},
-    {"hand mesh --pin L.MCP.flex=1 --pin L.MCP.flex=2 -o OUT.obj", "L.MCP.flex", "already has --pin"},
+    {"hand mesh --pin L.MCP.flex=1 --pin L.MCP.flex=2 -o OUT.obj", "L.MCP.flex",
+     "already has --pin"},
     {"hand mesh --pin L.MCP.flex=1 --pose DIR/pose.json -o OUT.obj", "--pose", "--pin"},
     {"hand mesh --pose DIR/garbage.json -o OUT.obj", "garbage.json", "unexpected text"},
     {"hand mesh --pose DIR/folder.png -o OUT.obj", "folder.png", "not a regular file"},
@@ -265,7 +272,8 @@ static const bad_case k_bad_cases[] = {
     {"hand mesh --texture OUT --texture-size 10 -o OUT.obj", "--texture-size", "[64, 8192]"},
     {"hand mesh --constraints nope -o OUT.obj", "--constraints", "natural"},
     {"hand mesh --potential DIR/garbage.json -o OUT.obj", "garbage.json", "unexpected text"},
-    {"hand mesh --potential DIR/garbage.json --constraints natural -o OUT.obj", "--potential", "--constraints"},
+    {"hand mesh --potential DIR/garbage.json --constraints natural -o OUT.obj", "--potential",
+     "--constraints"},
     {"hand mesh --triangles 200000 --max-memory 64M -o OUT.glb", "--triangles", "--max-memory"},
     /* hand scan */
     {"hand scan", "-o", "is required"},
@@ -276,37 +284,43 @@ static const bad_case k_bad_cases[] = {
     {"hand scan --noise -1 -o OUT", "--noise", "[0, 10]"},
     {"hand scan --pin I.MCP.flex=0x10 -o OUT", "--pin", "[-1000000, 1000000]"},
     {"hand scan --pin I.MCP.flex=1 --pin I.MCP.flex=2 -o OUT", "I.MCP.flex", "already has --pin"},
-    {"hand scan --bend I.MCP.flex=1 --bend I.MCP.flex=2 -o OUT", "I.MCP.flex", "already has --bend"},
+    {"hand scan --bend I.MCP.flex=1 --bend I.MCP.flex=2 -o OUT", "I.MCP.flex",
+     "already has --bend"},
     {"hand scan --bend X.MCP.flex=1 -o OUT", "--bend", "unknown DOF"},
     {"hand scan --bend I.MCP.flex=1 --no-pictures -o OUT", "--bend", "--no-pictures"},
     {"hand scan --pose DIR/garbage.json -o OUT", "garbage.json", "unexpected text"},
     {"hand scan --input DIR/folder.png -o OUT", "folder.png", ".obj, .ply"},
     {"hand scan --input DIR/no-such.ply -o OUT", "no-such.ply", "cannot open"},
-    {"hand scan --lines 4096 --points 4096 --max-memory 1G -o OUT", "--lines x --points", "--max-memory"},
+    {"hand scan --lines 4096 --points 4096 --max-memory 1G -o OUT", "--lines x --points",
+     "--max-memory"},
     /* tissue */
     {"tissue skin --character nobody -o OUT.obj", "--character", "arm, body"},
     {"tissue skin --character DIR/garbage.json -o OUT.obj", "garbage.json", "unexpected text"},
     {"tissue skin --character arm -o OUT.stl", "-o", ".obj, .ply"},
     {"tissue skin --character arm -o OUT.obj --stats OUT.txt", "--stats", ".json"},
     {"tissue skin --character arm --layers DIR/file", "file", "not a folder"},
-    {"tissue skin --character arm --set skin.spacing_mm=nan -o OUT.obj", "skin.spacing_mm", "[0, 50]"},
-    {"tissue skin --character arm --set skin.spacing_mm=1 --max-memory 512M -o OUT.obj", "skin.spacing_mm",
-     "--max-memory"},
+    {"tissue skin --character arm --set skin.spacing_mm=nan -o OUT.obj", "skin.spacing_mm",
+     "[0, 50]"},
+    {"tissue skin --character arm --set skin.spacing_mm=1 --max-memory 512M -o OUT.obj",
+     "skin.spacing_mm", "--max-memory"},
     {"tissue skin --character arm", "nothing to write", "--layers"},
     {"tissue run --character arm --motion curl -o DIR/file", "file", "not a folder"},
     {"tissue run --character arm --motion curl --plot OUT.jpg -o OUT", "--plot", ".png"},
     {"tissue run --character arm --motion curl --fps 0 -o OUT", "--fps", "[1, 1000]"},
     {"tissue run --character arm --motion curl --frames 5:2 -o OUT", "--frames", "A:B"},
-    {"tissue run --character arm --motion curl --render-width 10 -o OUT", "--render-width", "[64, 4096]"},
+    {"tissue run --character arm --motion curl --render-width 10 -o OUT", "--render-width",
+     "[64, 4096]"},
     {"tissue run --character arm --motion DIR/no-such.bvh -o OUT", "no-such.bvh", "cannot open"},
     {"tissue run --character arm --motion dance -o OUT", "--motion", "curl, jump, walk"},
-    {"tissue run --character arm --set skin.spacing_mm=10 --set skin.dilation_radius_mm=15 --motion curl "
+    {"tissue run --character arm --set skin.spacing_mm=10 --set skin.dilation_radius_mm=15 "
+     "--motion curl "
      "--resume DIR/file -o OUT",
      "file", "SKTSTATE"},
     {"tissue motion dance -o OUT.bvh", "dance", "curl, jump or walk"},
     {"tissue motion curl -o OUT.txt", "-o", ".bvh"},
     /* showcase */
-    {"showcase --melody DIR/melody.txt --max-memory 64M -o OUT", "--hand-triangles", "--max-memory"},
+    {"showcase --melody DIR/melody.txt --max-memory 64M -o OUT", "--hand-triangles",
+     "--max-memory"},
     {"showcase --melody DIR/melody.txt --spp 0 -o OUT", "--spp", "[1, 1024]"},
     {"showcase midi --melody DIR/melody.txt -o OUT.jpg", "-o", ".mid"},
     {"showcase midi --melody DIR/bad-note.txt -o OUT.mid", "bad-note.txt:2", "key number 21..108"},
@@ -317,12 +331,17 @@ static const bad_case k_bad_cases[] = {
     {"showcase --melody DIR/melody.txt --size 8x8 -o OUT", "--size", "at least 16x16"},
     {"showcase --melody DIR/melody.txt --duration -1 -o OUT", "--duration", "[0.001, 3600]"},
     {"showcase --melody DIR/melody.txt --texture-size 3 -o OUT", "--texture-size", "[64, 8192]"},
-    {"showcase --melody DIR/melody.txt --hand-triangles 10 -o OUT", "--hand-triangles", "[500, 200000]"},
+    {"showcase --melody DIR/melody.txt --hand-triangles 10 -o OUT", "--hand-triangles",
+     "[500, 200000]"},
     {"showcase --melody DIR/melody.txt --forearm nobody -o OUT", "--forearm", "no such preset"},
-    {"showcase --melody DIR/melody.txt --forearm DIR/garbage.json -o OUT", "garbage.json", "unexpected text"},
-    {"showcase --melody DIR/melody.txt --constraints nobody -o OUT", "--constraints", "no such preset"},
-    {"showcase --melody DIR/melody.txt --set film.exposure=99 -o OUT", "film.exposure", "[-30, 30]"},
-    {"showcase --melody DIR/melody.txt --ffmpeg DIR/no-such-ffmpeg -o OUT", "no-such-ffmpeg", "--no-video"},
+    {"showcase --melody DIR/melody.txt --forearm DIR/garbage.json -o OUT", "garbage.json",
+     "unexpected text"},
+    {"showcase --melody DIR/melody.txt --constraints nobody -o OUT", "--constraints",
+     "no such preset"},
+    {"showcase --melody DIR/melody.txt --set film.exposure=99 -o OUT", "film.exposure",
+     "[-30, 30]"},
+    {"showcase --melody DIR/melody.txt --ffmpeg DIR/no-such-ffmpeg -o OUT", "no-such-ffmpeg",
+     "--no-video"},
     {"showcase --melody DIR/melody.txt -o DIR/file", "file", "not a folder"},
     {"showcase --melody DIR/bad-note.txt -o OUT", "bad-note.txt:2", "key number 21..108"},
     {"showcase --melody DIR/bad.mid -o OUT", "bad.mid: byte 0", "MThd"},
@@ -407,8 +426,8 @@ static const bad_case k_bad_cases[] = {
     {"render DIR/scene.json --export OUT.glb --texture-size 8", "--texture-size", "[16, 8192]"},
     {"render DIR/scene.json --export OUT.glb --exr OUT.exr", "--exr", "needs -o"},
     {"render DIR/scene.json --export DIR/folder.glb -o OUT.png", "--export", "names a folder"},
-    {"render DIR/wood-scene.json --export OUT.glb --texture-size 8192 --max-memory 256M", "--texture-size",
-     "--max-memory"},
+    {"render DIR/wood-scene.json --export OUT.glb --texture-size 8192 --max-memory 256M",
+     "--texture-size", "--max-memory"},
 };
 
 /* Small inputs of every kind the commands read. */
@@ -443,9 +462,10 @@ static void make_inputs(const char *dir)
                         "\"objects\": [{\"shape\": \"sphere\"}]}";
     sk_test_write_file(path, scene, strlen(scene));
     snprintf(path, sizeof path, "%s/wood-scene.json", dir);
-    const char *wood = "{\"image\": {\"width\": 8, \"height\": 8, \"samples\": 1}, \"materials\": [{\"name\": "
-                       "\"oak\", \"type\": \"wood\", \"wood_preset\": \"oak\"}], \"objects\": [{\"shape\": "
-                       "\"sphere\", \"material\": \"oak\"}]}";
+    const char *wood =
+        "{\"image\": {\"width\": 8, \"height\": 8, \"samples\": 1}, \"materials\": [{\"name\": "
+        "\"oak\", \"type\": \"wood\", \"wood_preset\": \"oak\"}], \"objects\": [{\"shape\": "
+        "\"sphere\", \"material\": \"oak\"}]}";
     sk_test_write_file(path, wood, strlen(wood));
     snprintf(path, sizeof path, "%s/melody.txt", dir);
     const char *melody = "C4 0 0.5\nE4 0.5 0.5\n";
@@ -464,8 +484,10 @@ static void expand(const char *text, const char *out, const char *dir, char *buf
     for (const char *p = text; *p && used + 1 < size;) {
         const char *with = NULL;
         size_t skip = 0;
-        if (strncmp(p, "OUT", 3) == 0) with = out, skip = 3;
-        else if (strncmp(p, "DIR", 3) == 0) with = dir, skip = 3;
+        if (strncmp(p, "OUT", 3) == 0)
+            with = out, skip = 3;
+        else if (strncmp(p, "DIR", 3) == 0)
+            with = dir, skip = 3;
         if (with) {
             used += (size_t)snprintf(buf + used, size - used, "%s", with);
             p += skip;
@@ -509,8 +531,9 @@ static void test_every_command_refuses_bad_input(void **state)
             print_error("case %zu '%s': status %d, %d leftover file(s), stderr: %s", i, args,
                         g_run.status, leftovers, g_run.err);
             failures++;
-            snprintf(command, sizeof command, "rm -rf '%s'/out* '%s'/.out* '%s'/cut.png '%s'/render.png",
-                     dir, dir, dir, dir);
+            snprintf(command, sizeof command,
+                     "rm -rf '%s'/out* '%s'/.out* '%s'/cut.png '%s'/render.png", dir, dir, dir,
+                     dir);
             assert_int_equal(system(command), 0);
         }
     }
@@ -548,7 +571,8 @@ static void test_outputs_are_all_or_nothing(void **state)
         text = "{\"image\": {\"width\": 8, \"height\": 8, \"samples\": 1}, "
                "\"objects\": [{\"shape\": \"sphere\"}]}";
         sk_test_write_file(scene, text, strlen(text));
-        sk_test_cli(&g_run, "render '%s' -q --export '%s' -o '%s' --exr '%s'", scene, obj, path, full);
+        sk_test_cli(&g_run, "render '%s' -q --export '%s' -o '%s' --exr '%s'", scene, obj, path,
+                    full);
         assert_one_line_error(&g_run, 1);
         assert_false(sk_test_file_exists(path));
         assert_false(sk_test_file_exists(obj));
@@ -567,7 +591,8 @@ static void test_outputs_are_all_or_nothing(void **state)
         assert_int_equal(symlink("/dev/full", texture), 0);
         snprintf(texture, sizeof texture, "%s/full", dir);
         snprintf(obj, sizeof obj, "%s/hand.obj", dir);
-        sk_test_cli(&g_run, "hand mesh -q --triangles 500 --texture '%s' --texture-size 64 -o '%s'", texture, obj);
+        sk_test_cli(&g_run, "hand mesh -q --triangles 500 --texture '%s' --texture-size 64 -o '%s'",
+                    texture, obj);
         assert_one_line_error(&g_run, 1);
         assert_non_null(strstr(g_run.err, "No space left on device"));
         assert_false(sk_test_file_exists(obj));
@@ -594,7 +619,8 @@ static void test_outputs_are_all_or_nothing(void **state)
         snprintf(glb, sizeof glb, "%s/full.glb", dir);
         snprintf(landmarks, sizeof landmarks, "%s/landmarks.csv", dir);
         sk_test_cli(&g_run,
-                    "hand animate '%s' -q --landmarks '%s' --meshes-dir '%s' --mesh-frames 0 --triangles 500 "
+                    "hand animate '%s' -q --landmarks '%s' --meshes-dir '%s' --mesh-frames 0 "
+                    "--triangles 500 "
                     "--texture-size 64 --glb '%s'",
                     scene, landmarks, frames, glb);
         assert_one_line_error(&g_run, 1);
@@ -610,10 +636,11 @@ static void test_outputs_are_all_or_nothing(void **state)
         snprintf(plot, sizeof plot, "%s/tissue-plot.png", dir);
         snprintf(saved, sizeof saved, "%s/full.state", dir);
         assert_int_equal(symlink("/dev/full", saved), 0);
-        sk_test_cli(&g_run,
-                    "tissue run --character arm --set skin.spacing_mm=10 --set skin.dilation_radius_mm=15 "
-                    "--motion curl --frames 0:2 -q -o '%s' --plot '%s' --save-state '%s'",
-                    run, plot, saved);
+        sk_test_cli(
+            &g_run,
+            "tissue run --character arm --set skin.spacing_mm=10 --set skin.dilation_radius_mm=15 "
+            "--motion curl --frames 0:2 -q -o '%s' --plot '%s' --save-state '%s'",
+            run, plot, saved);
         assert_one_line_error(&g_run, 1);
         assert_non_null(strstr(g_run.err, "No space left on device"));
         assert_false(sk_test_file_exists(run));
@@ -627,7 +654,8 @@ static void test_outputs_are_all_or_nothing(void **state)
     snprintf(command, sizeof command, "mkdir -p '%s'", scan);
     assert_int_equal(system(command), 0);
     snprintf(scan, sizeof scan, "%s/scan", dir);
-    sk_test_cli(&g_run, "hand scan -q --lines 75 --points 60 --slices 20 --no-pictures -o '%s'", scan);
+    sk_test_cli(&g_run, "hand scan -q --lines 75 --points 60 --slices 20 --no-pictures -o '%s'",
+                scan);
     assert_one_line_error(&g_run, 1);
     assert_non_null(strstr(g_run.err, "patches.obj"));
     assert_int_equal(sk_test_count_files_containing(scan, "."), 3); /* ., .. and patches.obj */
@@ -638,7 +666,8 @@ static void test_outputs_are_all_or_nothing(void **state)
     char maps[1024];
     snprintf(path, sizeof path, "%s/cut.png", dir);
     snprintf(maps, sizeof maps, "%s/new/maps", dir);
-    assert_int_equal(sk_test_cli(&g_run, "wood cut --size 16 -q --maps '%s' -o '%s'", maps, path), 0);
+    assert_int_equal(sk_test_cli(&g_run, "wood cut --size 16 -q --maps '%s' -o '%s'", maps, path),
+                     0);
     assert_true(sk_test_file_exists(path));
     snprintf(path, sizeof path, "%s/new/maps/pores.png", dir);
     assert_true(sk_test_file_exists(path));

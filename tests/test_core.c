@@ -60,7 +60,8 @@ static void test_range_checks(void **state)
     assert_string_equal(err.message, "levels[1].jitter = 1.5 is out of range [0, 1]");
     assert_int_equal(sk_check_range_f(&err, "h", NAN, 0.0, 1.0), SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "h is not a finite number"));
-    assert_int_equal(sk_check_range_f(&err, "h", INFINITY, 0.0, INFINITY), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_check_range_f(&err, "h", INFINITY, 0.0, INFINITY),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_int_equal(sk_check_range_i(&err, "levels", 0, 1, 8), SK_ERROR_INVALID_ARGUMENT);
     assert_string_equal(err.message, "levels = 0 is out of range [1, 8]");
 }
@@ -322,7 +323,8 @@ static void test_rotations_and_quaternions(void **state)
     /* matrix -> quaternion -> matrix, including angles near pi */
     for (int k = 0; k < 50; k++) {
         double ang = -3.1 + 0.125 * k;
-        sk_mat3d rm = sk_m3d_mul(sk_m3d_rot_x(ang), sk_m3d_mul(sk_m3d_rot_y(0.4 * ang), sk_m3d_rot_z(1.7)));
+        sk_mat3d rm =
+            sk_m3d_mul(sk_m3d_rot_x(ang), sk_m3d_mul(sk_m3d_rot_y(0.4 * ang), sk_m3d_rot_z(1.7)));
         sk_mat3d back = sk_qd_to_m3d(sk_m3d_to_qd(rm));
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) assert_true(fabs(back.m[i][j] - rm.m[i][j]) < 1e-9);
@@ -347,8 +349,8 @@ static void test_affine_inverse_and_basis(void **state)
     assert_false(sk_m4f_affine_inverse(sk_m4f_scaling(sk_v3f(1, 0, 1)), &inv));
     sk_rng r = sk_rng_make(4, 0, 0, 0);
     for (int i = 0; i < 1000; i++) {
-        sk_vec3f n = sk_v3f_normalize(sk_v3f((float)sk_rng_normal(&r), (float)sk_rng_normal(&r),
-                                             (float)sk_rng_normal(&r)));
+        sk_vec3f n = sk_v3f_normalize(
+            sk_v3f((float)sk_rng_normal(&r), (float)sk_rng_normal(&r), (float)sk_rng_normal(&r)));
         sk_vec3f t, b;
         sk_v3f_basis(n, &t, &b);
         assert_true(fabsf(sk_v3f_dot(t, n)) < 1e-5f && fabsf(sk_v3f_dot(b, n)) < 1e-5f);

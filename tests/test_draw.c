@@ -42,7 +42,8 @@ static const sk_color white = {1.0f, 1.0f, 1.0f, 1.0f};
 static void assert_near(double actual, double expected, double tol, const char *what)
 {
     if (fabs(actual - expected) > tol) {
-        fprintf(stderr, "%s: got %.6f, expected %.6f (tolerance %.6f)\n", what, actual, expected, tol);
+        fprintf(stderr, "%s: got %.6f, expected %.6f (tolerance %.6f)\n", what, actual, expected,
+                tol);
         fail();
     }
 }
@@ -113,7 +114,8 @@ static void test_line_coverage_matches_area(void **state)
         sk_draw_line_capped(&img, x0, y0, x1, y1, w, SK_CAP_BUTT, white);
         assert_near(img_sum(&img, 0), w * len, 0.01 * w * len, "butt line coverage");
         /* Every pixel's coverage is a fraction of the pixel. */
-        for (size_t i = 0; i < (size_t)img.width * img.height; i++) assert_true(img.data[i] <= 1.0f);
+        for (size_t i = 0; i < (size_t)img.width * img.height; i++)
+            assert_true(img.data[i] <= 1.0f);
         memset(img.data, 0, sizeof(float) * (size_t)img.width * img.height);
         sk_draw_line(&img, x0, y0, x1, y1, w, white);
         double round = w * len + SK_PI * w * w / 4.0;
@@ -132,7 +134,8 @@ static void test_line_cross_section_far_from_ends(void **state)
        far from the ends; a width of 2 centred on y = 10 covers half of rows 8 and 11. */
     sk_image img = img_new(64, 20, 1);
     sk_draw_line(&img, 5.0f, 10.5f, 60.0f, 10.5f, 3.0f, white);
-    for (int y = 0; y < 20; y++) assert_near(px(&img, 30, y, 0), (y >= 9 && y <= 11) ? 1.0 : 0.0, 1e-5, "row");
+    for (int y = 0; y < 20; y++)
+        assert_near(px(&img, 30, y, 0), (y >= 9 && y <= 11) ? 1.0 : 0.0, 1e-5, "row");
     memset(img.data, 0, sizeof(float) * 64 * 20);
     sk_draw_line(&img, 5.0f, 10.0f, 60.0f, 10.0f, 2.0f, white);
     for (int y = 0; y < 20; y++) {
@@ -162,14 +165,16 @@ static void test_polyline_composites_once(void **state)
     for (size_t i = 0; i < 64 * 40; i++) max = fmaxf(max, img.data[i]);
     assert_near(max, 0.5, 1e-5, "polyline maximum");
     memset(img.data, 0, sizeof(float) * 64 * 40);
-    for (int i = 0; i + 1 < n; i++) sk_draw_line(&img, pts[i].x, pts[i].y, pts[i + 1].x, pts[i + 1].y, 4.0f, half);
+    for (int i = 0; i + 1 < n; i++)
+        sk_draw_line(&img, pts[i].x, pts[i].y, pts[i + 1].x, pts[i + 1].y, 4.0f, half);
     max = 0.0f;
     for (size_t i = 0; i < 64 * 40; i++) max = fmaxf(max, img.data[i]);
     assert_true(max > 0.7f); /* separate segments double-blend at the joins */
 
     /* Collinear segments of a straight polyline cover like one line of the same length. */
     sk_vec2f straight[9];
-    for (int i = 0; i < 9; i++) straight[i] = sk_v2f(8.0f + 6.0f * (float)i, 20.3f + 1.5f * (float)i);
+    for (int i = 0; i < 9; i++)
+        straight[i] = sk_v2f(8.0f + 6.0f * (float)i, 20.3f + 1.5f * (float)i);
     memset(img.data, 0, sizeof(float) * 64 * 40);
     sk_draw_polyline(&img, straight, 9, false, 2.0f, white);
     double joined = img_sum(&img, 0);
@@ -199,7 +204,8 @@ static void test_disc_and_ring_areas(void **state)
         sk_draw_disc(&img, 63.3f, 64.6f, r, white);
         double area = SK_PI * r * r;
         assert_near(img_sum(&img, 0), area, 0.002 * area + 1e-3, "disc area");
-        assert_near(px(&img, 63, 64, 0), r >= 1.0f ? 1.0 : px(&img, 63, 64, 0), 1e-6, "disc centre");
+        assert_near(px(&img, 63, 64, 0), r >= 1.0f ? 1.0 : px(&img, 63, 64, 0), 1e-6,
+                    "disc centre");
         memset(img.data, 0, sizeof(float) * 128 * 128);
         sk_draw_circle(&img, 63.3f, 64.6f, r, 1.5f, white);
         double inner = r - 0.75 > 0 ? r - 0.75 : 0.0;
@@ -225,20 +231,25 @@ static void test_polygon_areas(void **state)
     sk_vec2f arrow[] = {{10, 30}, {40, 10}, {40, 22}, {70, 22.5f}, {70, 37.5f}, {40, 38}, {40, 50}};
     sk_vec2f arrow_cw[7];
     for (int i = 0; i < 7; i++) arrow_cw[i] = arrow[6 - i];
-    struct { const sk_vec2f *p; int n; } cases[] = {{tri, 3}, {arrow, 7}, {arrow_cw, 7}};
+    struct {
+        const sk_vec2f *p;
+        int n;
+    } cases[] = {{tri, 3}, {arrow, 7}, {arrow_cw, 7}};
     for (size_t k = 0; k < 3; k++) {
         sk_image img = img_new(80, 64, 1);
         sk_draw_polygon(&img, cases[k].p, cases[k].n, white);
         double area = polygon_area(cases[k].p, cases[k].n);
         assert_near(img_sum(&img, 0), area, 1e-4 * area, "polygon area");
-        for (size_t i = 0; i < 80 * 64; i++) assert_true(img.data[i] >= 0.0f && img.data[i] <= 1.0f);
+        for (size_t i = 0; i < 80 * 64; i++)
+            assert_true(img.data[i] >= 0.0f && img.data[i] <= 1.0f);
         img_free(&img);
     }
     /* A polygon wider than one rasterizer tile (1022 px). */
     sk_vec2f wide[] = {{3.5f, 2.0f}, {2500.2f, 9.0f}, {2490.0f, 30.5f}, {10.0f, 25.0f}};
     sk_image img = img_new(2600, 32, 1);
     sk_draw_polygon(&img, wide, 4, white);
-    assert_near(img_sum(&img, 0), polygon_area(wide, 4), 1e-4 * polygon_area(wide, 4), "wide polygon");
+    assert_near(img_sum(&img, 0), polygon_area(wide, 4), 1e-4 * polygon_area(wide, 4),
+                "wide polygon");
     img_free(&img);
 }
 
@@ -262,7 +273,8 @@ static void test_fill_rules_and_holes(void **state)
     assert_near(px(&img, 32, 8, 0), 1.0, 1e-6, "even-odd point");
 
     /* A square with a hole (opposite orientation): area is the difference. */
-    sk_vec2f pts[] = {{4, 4}, {60, 4}, {60, 60}, {4, 60}, {20.5f, 20.5f}, {20.5f, 40.5f}, {40.5f, 40.5f}, {40.5f, 20.5f}};
+    sk_vec2f pts[] = {{4, 4},         {60, 4},        {60, 60},       {4, 60},
+                      {20.5f, 20.5f}, {20.5f, 40.5f}, {40.5f, 40.5f}, {40.5f, 20.5f}};
     int counts[] = {4, 4};
     memset(img.data, 0, sizeof(float) * 64 * 64);
     sk_draw_contours(&img, pts, counts, 2, SK_FILL_NONZERO, white);
@@ -310,7 +322,8 @@ static double draw_all_guarded(float x0, float y0, float x1, float y1, float siz
     size_t n = (size_t)W * H * channels;
     float *buf = malloc((n + 2 * GUARD) * sizeof(float));
     assert_non_null(buf);
-    for (size_t i = 0; i < n + 2 * GUARD; i++) buf[i] = (i < GUARD || i >= GUARD + n) ? -7.0f : 0.0f;
+    for (size_t i = 0; i < n + 2 * GUARD; i++)
+        buf[i] = (i < GUARD || i >= GUARD + n) ? -7.0f : 0.0f;
     sk_image img = {W, H, channels, buf + GUARD};
     sk_color c = sk_rgba(1.0f, 0.5f, 0.25f, 1.0f);
     sk_vec2f pts[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
@@ -415,7 +428,8 @@ static void test_text_metrics_match_ink(void **state)
         assert_int_equal(x1 - x0 + 1, w);
         assert_int_equal(y1 - y0 + 1, sk_draw_text_height(scale));
         /* Integer positions are crisp: only 0 or full colour. */
-        for (size_t i = 0; i < (size_t)240 * 40; i++) assert_true(img.data[i] == 0.0f || img.data[i] == 1.0f);
+        for (size_t i = 0; i < (size_t)240 * 40; i++)
+            assert_true(img.data[i] == 0.0f || img.data[i] == 1.0f);
         /* A fractional position spreads the same ink (area is conserved). */
         double ink = img_sum(&img, 0);
         memset(img.data, 0, sizeof(float) * 240 * 40);
@@ -441,7 +455,8 @@ static void test_glyphs_present_and_distinct(void **state)
         assert_int_equal(sk_draw_text(&img, 0, 0, s, 1, white), W);
         memcpy(glyphs[i], img.data, sizeof glyphs[i]);
         double ink = img_sum(&img, 0);
-        if (i == 0) assert_true(ink == 0.0);
+        if (i == 0)
+            assert_true(ink == 0.0);
         else if (ink < 1.0) {
             fprintf(stderr, "glyph '%c' draws nothing\n", 32 + i);
             fail();
@@ -550,13 +565,16 @@ static void test_resize_constant_and_box_mean(void **state)
     (void)state;
     sk_image c = img_new(37, 23, 3);
     for (size_t i = 0; i < 37 * 23 * 3; i++) c.data[i] = (float)(i % 3) * 0.3f + 0.1f;
-    const sk_resize_filter filters[] = {SK_RESIZE_DEFAULT, SK_RESIZE_NEAREST, SK_RESIZE_BILINEAR, SK_RESIZE_BOX};
+    const sk_resize_filter filters[] = {SK_RESIZE_DEFAULT, SK_RESIZE_NEAREST, SK_RESIZE_BILINEAR,
+                                        SK_RESIZE_BOX};
     const int sizes[][2] = {{11, 7}, {100, 61}, {37, 23}, {5, 90}, {1, 1}};
     for (size_t f = 0; f < 4; f++)
         for (size_t s = 0; s < 5; s++) {
             sk_image out;
             sk_error err;
-            assert_int_equal(sk_image_resize_filter(&c, sizes[s][0], sizes[s][1], filters[f], &out, &err), SK_OK);
+            assert_int_equal(
+                sk_image_resize_filter(&c, sizes[s][0], sizes[s][1], filters[f], &out, &err),
+                SK_OK);
             assert_int_equal(out.width, sizes[s][0]);
             assert_int_equal(out.height, sizes[s][1]);
             assert_int_equal(out.channels, 3);
@@ -585,12 +603,14 @@ static void test_resize_constant_and_box_mean(void **state)
     /* Nearest doubling repeats pixels; bilinear keeps a ramp a ramp inside. */
     assert_int_equal(sk_image_resize_filter(&cb, 128, 128, SK_RESIZE_NEAREST, &out, NULL), SK_OK);
     for (int y = 0; y < 128; y++)
-        for (int x = 0; x < 128; x++) assert_true(out.data[y * 128 + x] == cb.data[(y / 2) * 64 + x / 2]);
+        for (int x = 0; x < 128; x++)
+            assert_true(out.data[y * 128 + x] == cb.data[(y / 2) * 64 + x / 2]);
     free(out.data);
     sk_image ramp = img_new(10, 1, 1);
     for (int x = 0; x < 10; x++) ramp.data[x] = (float)x;
     assert_int_equal(sk_image_resize_filter(&ramp, 20, 1, SK_RESIZE_BILINEAR, &out, NULL), SK_OK);
-    for (int x = 1; x < 19; x++) assert_near(out.data[x], (x + 0.5) / 2.0 - 0.5, 1e-5, "bilinear ramp");
+    for (int x = 1; x < 19; x++)
+        assert_near(out.data[x], (x + 0.5) / 2.0 - 0.5, 1e-5, "bilinear ramp");
     free(out.data);
     img_free(&ramp);
     img_free(&cb);
@@ -607,7 +627,8 @@ static void test_resize_errors_and_threads(void **state)
     assert_non_null(strstr(err.message, "0 x 5"));
     assert_int_equal(sk_image_resize(&src, 70000, 5, &out, &err), SK_ERROR_LIMIT);
     assert_int_equal(sk_image_resize(NULL, 5, 5, &out, &err), SK_ERROR_INVALID_ARGUMENT);
-    assert_int_equal(sk_image_resize_filter(&src, 5, 5, (sk_resize_filter)9, &out, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_image_resize_filter(&src, 5, 5, (sk_resize_filter)9, &out, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "filter"));
     sk_image bad = {8, 8, 5, src.data};
     assert_int_equal(sk_image_resize(&bad, 5, 5, &out, &err), SK_ERROR_INVALID_ARGUMENT);
@@ -711,7 +732,8 @@ static void test_contact_sheet_layout(void **state)
     assert_int_equal(sheet.width, 24);
     for (int y = 0; y < 16; y++)
         for (int x = 0; x < 16; x++)
-            assert_true(sk_image_pixel(&sheet, 4 + x, 4 + y)[0] == (((x < 8) == (y < 8)) ? 1.0f : 0.0f));
+            assert_true(sk_image_pixel(&sheet, 4 + x, 4 + y)[0] ==
+                        (((x < 8) == (y < 8)) ? 1.0f : 0.0f));
     free(sheet.data);
     img_free(&checker);
     for (int i = 0; i < 5; i++) img_free(&t[i]);
@@ -743,7 +765,8 @@ static void test_contact_sheet_tile_border(void **state)
     assert_near(sk_image_pixel(&b, 15, 18)[0], 0.5, 1e-6, "bottom bar");
     assert_near(sk_image_pixel(&a, 7, 12)[0], 1.0, 1e-6, "no frame without a border");
     framed.tile_border = 65;
-    assert_int_equal(sk_contact_sheet(tiles, NULL, 1, &framed, &b, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_contact_sheet(tiles, NULL, 1, &framed, &b, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     free(a.data);
     free(b.data);
     img_free(&t);
@@ -809,7 +832,8 @@ static void test_nice_ticks(void **state)
             assert_true(v >= lo - 1e-9 * t.step && v <= hi + 1e-9 * t.step);
         }
         /* The next finer round step would give too many ticks (the step is the finest). */
-        double finer = fabs(m - 1.0) < 1e-6 ? 0.5 * t.step : (fabs(m - 2.0) < 1e-6 ? 0.5 * t.step : 0.4 * t.step);
+        double finer = fabs(m - 1.0) < 1e-6 ? 0.5 * t.step
+                                            : (fabs(m - 2.0) < 1e-6 ? 0.5 * t.step : 0.4 * t.step);
         double n_finer = floor(hi / finer + 1e-9) - ceil(lo / finer - 1e-9) + 1.0;
         assert_true(n_finer > max_count);
     }
@@ -896,7 +920,9 @@ static void test_plot_auto_range(void **state)
         y[i] = 17.0f * sinf(0.05f * (float)i) + 3.0f;
         y2[i] = (i == 10) ? NAN : 0.01f * (float)(i * i) - 40.0f;
     }
-    sk_plot_series s[3] = {{"a", x, y, N, {0, 0, 0, 0}, 0}, {"b", x, y2, N, {0, 0, 0, 0}, 1.0f}, {NULL, NULL, y, 50, {0, 0, 0, 0}, 0}};
+    sk_plot_series s[3] = {{"a", x, y, N, {0, 0, 0, 0}, 0},
+                           {"b", x, y2, N, {0, 0, 0, 0}, 1.0f},
+                           {NULL, NULL, y, 50, {0, 0, 0, 0}, 0}};
     sk_plot_layout l;
     assert_int_equal(sk_plot_compute_layout(s, 3, NULL, &l, NULL), SK_OK);
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;

@@ -48,8 +48,6 @@ static void make_grid(sk_mesh *m)
         }
 }
 
-
-
 static void assert_floats_equal(const float *a, const float *b, size_t n)
 {
     for (size_t i = 0; i < n; i++)
@@ -229,7 +227,8 @@ static void test_static_roundtrip(void **state)
     assert_floats_equal(nn, grid.normals, 27);
     float *col = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "COLOR_0"), 9, 3);
     assert_floats_equal(col, grid.colors, 27);
-    float *uv = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "TEXCOORD_0"), 9, 2);
+    float *uv =
+        sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, mesh, "TEXCOORD_0"), 9, 2);
     for (int v = 0; v < 9; v++) {
         assert_true(uv[2 * v] == grid.uvs[2 * v]);
         assert_true(uv[2 * v + 1] == 1.0f - grid.uvs[2 * v + 1]); /* glTF's top-left origin */
@@ -383,8 +382,10 @@ static void test_skin_roundtrip(void **state)
     SK_ASSERT_OK(sk_gltf_doc_get_node(doc, c.body, &body, &e_));
     assert_int_equal(body.skin, 0);
     assert_int_equal(body.mesh, c.mesh);
-    float *jw = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, c.mesh, "JOINTS_0"), 9, 4);
-    float *ww = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, c.mesh, "WEIGHTS_0"), 9, 4);
+    float *jw =
+        sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, c.mesh, "JOINTS_0"), 9, 4);
+    float *ww =
+        sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, c.mesh, "WEIGHTS_0"), 9, 4);
     for (int v = 0; v < 9; v++) {
         float sum = 0.0f; /* summed in float, in slot order, as the validator does */
         for (int k = 0; k < 4; k++) {
@@ -481,8 +482,10 @@ static void test_morph_roundtrip(void **state)
     sk_gltf_doc *doc = sk_test_gltf_read_back(g, &bytes, &size);
     assert_int_equal(sk_gltf_doc_mesh_target_count(doc, mesh), 2);
     for (int t = 0; t < 2; t++) {
-        float *tp = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_target_accessor(doc, mesh, t, "POSITION"), 9, 3);
-        float *tn = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_target_accessor(doc, mesh, t, "NORMAL"), 9, 3);
+        float *tp = sk_test_gltf_accessor(
+            doc, sk_gltf_doc_mesh_target_accessor(doc, mesh, t, "POSITION"), 9, 3);
+        float *tn = sk_test_gltf_accessor(
+            doc, sk_gltf_doc_mesh_target_accessor(doc, mesh, t, "NORMAL"), 9, 3);
         assert_floats_equal(tp, targets + 27 * t, 27);
         assert_floats_equal(tn, normals + 27 * t, 27);
         free(tp), free(tn);
@@ -496,7 +499,8 @@ static void test_morph_roundtrip(void **state)
         assert_int_equal(ch.node, node);
         assert_int_equal(ch.interpolation,
                          a == 0 ? SK_GLTF_INTERPOLATION_LINEAR : SK_GLTF_INTERPOLATION_STEP);
-        float *wv = sk_test_gltf_accessor(doc, ch.output_accessor, 6, 1); /* one scalar per target per key */
+        float *wv = sk_test_gltf_accessor(doc, ch.output_accessor, 6,
+                                          1); /* one scalar per target per key */
         assert_floats_equal(wv, w, 6);
         free(wv);
     }
@@ -637,7 +641,8 @@ static void test_writer_refuses_bad_input(void **state)
                            SK_ERROR_INVALID_ARGUMENT, "tangent");
     sk_gltf_material_desc glow = {.emissive_texture = &tex};
     sk_test_expect_failure(sk_gltf_add_material(g, &glow, &index, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "emissive_texture without an emissive factor");
+                           SK_ERROR_INVALID_ARGUMENT,
+                           "emissive_texture without an emissive factor");
     glow.emissive[2] = 1.5f;
     sk_test_expect_failure(sk_gltf_add_material(g, &glow, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "emissive[2]");
@@ -763,7 +768,8 @@ static void test_writer_refuses_bad_input(void **state)
     sk_gltf_doc *doc;
     SK_ASSERT_OK(sk_gltf_read_glb_memory(&doc, data, size, NULL, &e_));
     assert_int_equal(sk_gltf_doc_count(doc).meshes, 2);
-    assert_int_equal(sk_gltf_doc_count(doc).images, 3); /* the textured, the normal and the emissive material's */
+    assert_int_equal(sk_gltf_doc_count(doc).images,
+                     3); /* the textured, the normal and the emissive material's */
     sk_gltf_doc_free(doc);
     free(data);
     const char *not_a_folder = sk_test_path("gltf/plain-file");

@@ -68,7 +68,8 @@ static void test_dof_table(void **state)
     assert_int_equal(sk_hand_dof_find("L.MCP.flex"), 31);
     /* 29 joint DOF after the 6 wrist DOF (spec decision) */
     int joint = 0;
-    for (int i = 0; i < SK_HAND_DOF_COUNT; i++) joint += strncmp(sk_hand_dof(i)->name, "wrist", 5) != 0;
+    for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
+        joint += strncmp(sk_hand_dof(i)->name, "wrist", 5) != 0;
     assert_int_equal(joint, 29);
     /* every point but the wrist has a parent one step up its chain */
     for (int p = 1; p < SK_HAND_POINT_COUNT; p++) assert_true(sk_hand_point_parent(p) >= 0);
@@ -82,7 +83,8 @@ static void test_euler_is_product_of_axis_rotations(void **state)
     (void)state;
     sk_rng rng = sk_rng_make(7, 0, 0, 0);
     for (int t = 0; t < 50; t++) {
-        double x = sk_rng_range(&rng, -3, 3), y = sk_rng_range(&rng, -1.5, 1.5), z = sk_rng_range(&rng, -3, 3);
+        double x = sk_rng_range(&rng, -3, 3), y = sk_rng_range(&rng, -1.5, 1.5),
+               z = sk_rng_range(&rng, -3, 3);
         sk_mat3d e = sk_hand_euler321(x, y, z);
         sk_mat3d p = sk_m3d_mul(sk_m3d_mul(sk_m3d_rot_z(z), sk_m3d_rot_y(y)), sk_m3d_rot_x(x));
         for (int i = 0; i < 3; i++)
@@ -118,7 +120,8 @@ static void test_forward_kinematics_hand_computed(void **state)
     sk_vec3d dip = sk_v3d_add(pip, sk_v3d(0, -0.170 * hl, 0));
     sk_vec3d tip = sk_v3d_add(dip, sk_v3d(0, 0, -0.108 * hl));
     sk_vec3d want[4] = {mcp, pip, dip, tip};
-    for (int k = 0; k < 4; k++) assert_true(sk_v3d_length(sk_v3d_sub(f.point[11 + k], want[k])) < 1e-9);
+    for (int k = 0; k < 4; k++)
+        assert_true(sk_v3d_length(sk_v3d_sub(f.point[11 + k], want[k])) < 1e-9);
     /* wrist translation and a wrist flexion of 90 degrees: +Y maps to +Z */
     memset(q, 0, sizeof q);
     q[0] = 5;
@@ -215,7 +218,8 @@ static void test_anatomy_file_matches_builtin(void **state)
     }
     /* a bad value is named by its key path */
     const char *bad = "{\"dofs\": {\"I.PIP.flex\": {\"relaxed_deg\": 130}}}";
-    assert_int_equal(sk_hand_anatomy_parse(bad, strlen(bad), "a.json", &file, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_anatomy_parse(bad, strlen(bad), "a.json", &file, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "dofs.I.PIP.flex.relaxed_deg"));
 }
 
@@ -235,7 +239,8 @@ static double residual_317(const sk_hand_skeleton *s, const sk_hand_constraints 
         const sk_hand_row *row = &c->rows[r];
         double v = row->b;
         for (int a = 0; a < row->term_count; a++) v += row->coeff[a] * theta[row->dof[a]];
-        for (int a = 0; a < row->term_count; a++) res[row->dof[a]] += row->coeff[a] * row->weight * v;
+        for (int a = 0; a < row->term_count; a++)
+            res[row->dof[a]] += row->coeff[a] * row->weight * v;
     }
     double m = 0.0;
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) m = fmax(m, fabs(res[i]));
@@ -288,8 +293,10 @@ static void test_no_constraints_is_spring_law(void **state)
     assert_int_equal(sk_hand_solve(solver, &in, q, &info, &err), SK_OK);
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
         double want = s.dof[i].relaxed + in.torque[i] / s.dof[i].stiffness;
-        if (want > s.dof[i].min && want < s.dof[i].max) assert_true(fabs(q[i] - want) < 1e-12);
-        else assert_true(q[i] == s.dof[i].min || q[i] == s.dof[i].max);
+        if (want > s.dof[i].min && want < s.dof[i].max)
+            assert_true(fabs(q[i] - want) < 1e-12);
+        else
+            assert_true(q[i] == s.dof[i].min || q[i] == s.dof[i].max);
     }
     sk_hand_solver_destroy(solver);
 }
@@ -308,7 +315,8 @@ static void test_driving_one_dof_moves_coupled_dofs(void **state)
     assert_int_equal(parse_constraints(json, &s, c, &err), SK_OK);
     sk_hand_solver *solver;
     assert_int_equal(sk_hand_solver_create(&solver, &s, c, NULL, 0, NULL, &err), SK_OK);
-    int x = sk_hand_dof_find("L.MCP.flex"), y = sk_hand_dof_find("R.MCP.flex"), z = sk_hand_dof_find("M.MCP.abd");
+    int x = sk_hand_dof_find("L.MCP.flex"), y = sk_hand_dof_find("R.MCP.flex"),
+        z = sk_hand_dof_find("M.MCP.abd");
     sk_hand_input in = {0};
     in.pinned[x] = true;
     double dx = 30 * DEG;
@@ -368,18 +376,23 @@ static void test_limits_never_exceeded(void **state)
         assert_int_equal(sk_hand_solve(solver, &in, q, &info, &err), SK_OK);
         assert_true(info.converged);
         saw_clamped += info.clamped_count > 0;
-        for (int i = 0; i < SK_HAND_DOF_COUNT; i++) assert_true(q[i] >= s.dof[i].min && q[i] <= s.dof[i].max);
+        for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
+            assert_true(q[i] >= s.dof[i].min && q[i] <= s.dof[i].max);
         /* optimality (KKT): free DOFs balanced, DOFs at a limit pushed outward */
         double theta[SK_HAND_DOF_COUNT], g[SK_HAND_DOF_COUNT];
         for (int i = 0; i < SK_HAND_DOF_COUNT; i++) theta[i] = q[i] - s.dof[i].relaxed;
         const double *h = sk_hand_solver_matrix(solver), *g0 = sk_hand_solver_rhs_constant(solver);
         for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
             g[i] = -(in.torque[i] + g0[i]);
-            for (int j = 0; j < SK_HAND_DOF_COUNT; j++) g[i] += h[j * SK_HAND_DOF_COUNT + i] * theta[j];
+            for (int j = 0; j < SK_HAND_DOF_COUNT; j++)
+                g[i] += h[j * SK_HAND_DOF_COUNT + i] * theta[j];
             if (in.pinned[i]) continue;
-            if (q[i] == s.dof[i].min) assert_true(g[i] > -1e-9);
-            else if (q[i] == s.dof[i].max) assert_true(g[i] < 1e-9);
-            else assert_true(fabs(g[i]) < 1e-9);
+            if (q[i] == s.dof[i].min)
+                assert_true(g[i] > -1e-9);
+            else if (q[i] == s.dof[i].max)
+                assert_true(g[i] < 1e-9);
+            else
+                assert_true(fabs(g[i]) < 1e-9);
         }
     }
     assert_true(saw_clamped > 100);
@@ -402,8 +415,12 @@ static double fd_error(const sk_hand_lut *lut, double x, double y, double *gx_ou
 {
     double gx, gy, e = 1e-7;
     sk_hand_lut_eval(lut, x, y, &gx, &gy);
-    double fx = (sk_hand_lut_eval(lut, x + e, y, NULL, NULL) - sk_hand_lut_eval(lut, x - e, y, NULL, NULL)) / (2 * e);
-    double fy = (sk_hand_lut_eval(lut, x, y + e, NULL, NULL) - sk_hand_lut_eval(lut, x, y - e, NULL, NULL)) / (2 * e);
+    double fx = (sk_hand_lut_eval(lut, x + e, y, NULL, NULL) -
+                 sk_hand_lut_eval(lut, x - e, y, NULL, NULL)) /
+                (2 * e);
+    double fy = (sk_hand_lut_eval(lut, x, y + e, NULL, NULL) -
+                 sk_hand_lut_eval(lut, x, y - e, NULL, NULL)) /
+                (2 * e);
     if (gx_out) *gx_out = gx;
     return fmax(fabs(gx - fx), fabs(gy - fy));
 }
@@ -458,7 +475,8 @@ static void test_lut_gradients_match_finite_differences(void **state)
         double x = sk_rng_range(&rng, lut.x0 + 0.5 * lut.h_x, lut.x0 + 98.5 * lut.h_x);
         double y = sk_rng_range(&rng, lut.y0 + 0.5 * lut.h_y, lut.y0 + 98.5 * lut.h_y);
         int ci = (int)((x - lut.x0) / lut.h_x), cj = (int)((y - lut.y0) / lut.h_y);
-        int at[4] = {cj * 100 + ci, cj * 100 + ci + 1, (cj + 1) * 100 + ci, (cj + 1) * 100 + ci + 1};
+        int at[4] = {cj * 100 + ci, cj * 100 + ci + 1, (cj + 1) * 100 + ci,
+                     (cj + 1) * 100 + ci + 1};
         double spread = 0.0;
         for (int a = 0; a < 4; a++)
             for (int b = 0; b < 4; b++)
@@ -549,7 +567,8 @@ static void test_calibration_recovers_line_and_weight(void **state)
     sk_hand_fit fits[2];
     sk_error err;
     assert_int_equal(sk_hand_calibrate((const double *const *)cols, N, (const int(*)[2])pairs, 2,
-                                       SK_HAND_WEIGHT_THESIS, fits, &err), SK_OK);
+                                       SK_HAND_WEIGHT_THESIS, fits, &err),
+                     SK_OK);
     assert_true(fabs(fits[0].slope - 0.7) < 0.01);
     assert_true(fabs(fits[0].intercept - 0.1) < 0.01);
     assert_true(fabs(fits[1].slope + 0.3) < 0.01);
@@ -561,12 +580,15 @@ static void test_calibration_recovers_line_and_weight(void **state)
     assert_true(fabs(fits[1].weight - 1.0) < 1e-12);
     assert_true(fabs(fits[0].weight / (m1 / m2) - 1.0) < 0.1);
     assert_int_equal(sk_hand_calibrate((const double *const *)cols, N, (const int(*)[2])pairs, 2,
-                                       SK_HAND_WEIGHT_INVERSE_VARIANCE, fits, &err), SK_OK);
+                                       SK_HAND_WEIGHT_INVERSE_VARIANCE, fits, &err),
+                     SK_OK);
     assert_true(fabs(fits[0].weight - 1.0) < 1e-12);
     assert_true(fabs(fits[1].weight / (m1 / m2) - 1.0) < 0.1);
     /* the written file loads back as the same line (absolute angles, degrees) */
     const char *path = sk_test_path("hand/calib.json");
-    assert_int_equal(sk_hand_fits_write_json(fits, 2, SK_HAND_WEIGHT_INVERSE_VARIANCE, "synthetic", path, &err), SK_OK);
+    assert_int_equal(
+        sk_hand_fits_write_json(fits, 2, SK_HAND_WEIGHT_INVERSE_VARIANCE, "synthetic", path, &err),
+        SK_OK);
     sk_hand_skeleton s = make_skeleton(SK_HAND_SIDE_RIGHT);
     sk_hand_constraints *cs = malloc(sizeof *cs);
     assert_int_equal(sk_hand_constraints_load_file(path, &s, cs, &err), SK_OK);
@@ -589,19 +611,25 @@ static void test_samples_csv_errors(void **state)
     assert_true(fabs(smp.column[15][1] - 40 * DEG) < 1e-15);
     sk_hand_samples_free(&smp);
     const char *bad_num = "I.MCP.flex,I.PIP.flex\n10,20\n30,4x0\n";
-    assert_int_equal(sk_hand_samples_parse(bad_num, strlen(bad_num), "s.csv", &smp, &err), SK_ERROR_PARSE);
+    assert_int_equal(sk_hand_samples_parse(bad_num, strlen(bad_num), "s.csv", &smp, &err),
+                     SK_ERROR_PARSE);
     assert_non_null(strstr(err.message, "line 3, column 2 (I.PIP.flex)"));
     const char *bad_name = "I.MCP.flex,I.PIPflex\n10,20\n";
-    assert_int_equal(sk_hand_samples_parse(bad_name, strlen(bad_name), "s.csv", &smp, &err), SK_ERROR_PARSE);
+    assert_int_equal(sk_hand_samples_parse(bad_name, strlen(bad_name), "s.csv", &smp, &err),
+                     SK_ERROR_PARSE);
     assert_non_null(strstr(err.message, "line 1, column 2: unknown DOF \"I.PIPflex\""));
     const char *short_line = "I.MCP.flex,I.PIP.flex\n10\n";
-    assert_int_equal(sk_hand_samples_parse(short_line, strlen(short_line), "s.csv", &smp, &err), SK_ERROR_PARSE);
+    assert_int_equal(sk_hand_samples_parse(short_line, strlen(short_line), "s.csv", &smp, &err),
+                     SK_ERROR_PARSE);
     assert_non_null(strstr(err.message, "line 2: 1 fields, the header has 2"));
     int pairs[4][2], n;
-    assert_int_equal(sk_hand_parse_pairs("R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex", pairs, 4, &n, &err), SK_OK);
+    assert_int_equal(
+        sk_hand_parse_pairs("R.MCP.flex:L.MCP.flex,I.PIP.flex:I.DIP.flex", pairs, 4, &n, &err),
+        SK_OK);
     assert_int_equal(n, 2);
     assert_int_equal(pairs[1][1], 16);
-    assert_int_equal(sk_hand_parse_pairs("R.MCP.flex:L.MCP.flx", pairs, 4, &n, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_parse_pairs("R.MCP.flex:L.MCP.flx", pairs, 4, &n, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
 }
 
 /* ------------------------------------------------------ constraint files */
@@ -622,12 +650,14 @@ static void test_bad_constraint_files(void **state)
     const char *not_pd = "{\"rows\": [{\"pair\": \"L.MCP.flex:R.MCP.flex\", \"A\": 1, \"W\": -5}]}";
     assert_int_equal(parse_constraints(not_pd, &s, c, &err), SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "not positive definite"));
-    const char *mild_negative = "{\"rows\": [{\"pair\": \"L.MCP.flex:R.MCP.flex\", \"A\": 1, \"W\": -0.2}]}";
+    const char *mild_negative =
+        "{\"rows\": [{\"pair\": \"L.MCP.flex:R.MCP.flex\", \"A\": 1, \"W\": -0.2}]}";
     assert_int_equal(parse_constraints(mild_negative, &s, c, &err), SK_OK);
     const char *malformed = "{\"rows\": [\n{\"pair\": \"L.MCP.flex:R.MCP.flex\", \"A\": 1,,}]}";
     assert_int_equal(parse_constraints(malformed, &s, c, &err), SK_ERROR_PARSE);
     assert_non_null(strstr(err.message, "test.json: line 2: malformed JSON"));
-    const char *unknown_key = "{\"rows\": [{\"pair\": \"L.MCP.flex:R.MCP.flex\", \"A\": 1, \"W\": 1, \"w\": 2}]}";
+    const char *unknown_key =
+        "{\"rows\": [{\"pair\": \"L.MCP.flex:R.MCP.flex\", \"A\": 1, \"W\": 1, \"w\": 2}]}";
     assert_int_equal(parse_constraints(unknown_key, &s, c, &err), SK_ERROR_PARSE);
     assert_non_null(strstr(err.message, "rows[0].w: unknown key"));
     const char *zero_w = "{\"rows\": [{\"terms\": {\"L.MCP.flex\": 1}, \"W\": 0}]}";
@@ -654,7 +684,8 @@ static void test_keyframe_interpolation(void **state)
     double e = 1e-6;
     assert_true(fabs(sk_hand_interpolate(SK_HAND_INTERP_BEZIER, 0, 1, 3, 9, e) - 1.0) < 1e-10);
     /* Catmull-Rom: through the keys, slope (p2 - p0) / 2 at p1 */
-    assert_true(fabs(sk_hand_interpolate(SK_HAND_INTERP_CATMULL_ROM, 0, 1, 3, 9, 1.0) - 3.0) < 1e-15);
+    assert_true(fabs(sk_hand_interpolate(SK_HAND_INTERP_CATMULL_ROM, 0, 1, 3, 9, 1.0) - 3.0) <
+                1e-15);
     double slope = (sk_hand_interpolate(SK_HAND_INTERP_CATMULL_ROM, 0, 1, 3, 9, e) - 1.0) / e;
     assert_true(fabs(slope - 1.5) < 1e-4);
 
@@ -682,7 +713,8 @@ static void test_keyframe_interpolation(void **state)
     sk_hand_animation_input(anim, 12, &in);
     assert_true(fabs(in.torque[15] - 3.0) < 1e-12);
     const char *bad = "{\"keys\": [{\"pin\": {\"L.MCP.flx\": 3}}]}";
-    assert_int_equal(sk_hand_animation_parse(bad, strlen(bad), "a.json", anim, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_animation_parse(bad, strlen(bad), "a.json", anim, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "keys[0].pin.L.MCP.flx: unknown DOF"));
     free(anim);
 }
@@ -730,7 +762,8 @@ static void test_bvh_round_trip(void **state)
     check_bvh_round_trip(SK_HAND_SIDE_LEFT);
     sk_bvh bvh;
     sk_error err;
-    const char *bad = "HIERARCHY\nROOT Hand\n{\n OFFSET 0 0 0\n CHANNELS 3 Xrotation Qrotation Z\n}\n";
+    const char *bad =
+        "HIERARCHY\nROOT Hand\n{\n OFFSET 0 0 0\n CHANNELS 3 Xrotation Qrotation Z\n}\n";
     assert_int_equal(sk_bvh_parse(bad, strlen(bad), "b.bvh", &bvh, &err), SK_ERROR_PARSE);
     assert_non_null(strstr(err.message, "b.bvh: line 5: unknown channel \"Qrotation\""));
 }
@@ -815,15 +848,18 @@ static void test_draw_view_conventions(void **state)
         sk_hand_frames f;
         sk_hand_forward(&s, q, &f);
         double mirror = side == SK_HAND_SIDE_RIGHT ? 1.0 : -1.0;
-        sk_vec2d thumb = sk_hand_draw_project(&l, 0, f.point[4]), little = sk_hand_draw_project(&l, 0, f.point[24]);
+        sk_vec2d thumb = sk_hand_draw_project(&l, 0, f.point[4]),
+                 little = sk_hand_draw_project(&l, 0, f.point[24]);
         assert_true(mirror * (little.x - thumb.x) > 50.0 * l.pixels_per_mm);
         /* radial view: the flexed middle fingertip lies palmar of its MCP, to the left for
            a right hand */
-        sk_vec2d mcp = sk_hand_draw_project(&l, 1, f.point[11]), tip = sk_hand_draw_project(&l, 1, f.point[14]);
+        sk_vec2d mcp = sk_hand_draw_project(&l, 1, f.point[11]),
+                 tip = sk_hand_draw_project(&l, 1, f.point[14]);
         assert_true(mirror * (mcp.x - tip.x) > 40.0 * l.pixels_per_mm);
         /* fingers up: the middle MCP is above the wrist in both views */
         for (int v = 0; v < 2; v++)
-            assert_true(sk_hand_draw_project(&l, v, f.point[11]).y < sk_hand_draw_project(&l, v, f.point[0]).y);
+            assert_true(sk_hand_draw_project(&l, v, f.point[11]).y <
+                        sk_hand_draw_project(&l, v, f.point[0]).y);
         /* the projection is the documented formula, and every point is in its panel */
         for (int v = 0; v < 2; v++) {
             const sk_hand_panel *pn = &l.panel[v];
@@ -868,7 +904,8 @@ static void test_draw_pixels_at_projected_points(void **state)
         sk_vec2d px = sk_hand_draw_project(&l, 0, mid);
         const float *p = sk_image_pixel(&img, (int)px.x, (int)px.y);
         sk_color want = sk_hand_finger_color((sk_hand_finger)finger);
-        assert_true(fabsf(p[0] - want.r) < 1e-3f && fabsf(p[1] - want.g) < 1e-3f && fabsf(p[2] - want.b) < 1e-3f);
+        assert_true(fabsf(p[0] - want.r) < 1e-3f && fabsf(p[1] - want.g) < 1e-3f &&
+                    fabsf(p[2] - want.b) < 1e-3f);
     }
     sk_vec2d w = sk_hand_draw_project(&l, 0, f.point[0]);
     const float *wp = sk_image_pixel(&img, (int)(w.x + 0.6 * l.pixels_per_mm * 3.4), (int)w.y);
@@ -906,7 +943,8 @@ static void test_draw_reach_framing_is_pose_independent(void **state)
     assert_int_equal(sk_hand_draw_layout_fit(&s, a, 1, NULL, &la, &err), SK_OK);
     assert_int_equal(sk_hand_draw_layout_fit(&s, b, 1, NULL, &lb, &err), SK_OK);
     assert_true(la.pixels_per_mm == lb.pixels_per_mm);
-    assert_true(la.panel[1].origin_x == lb.panel[1].origin_x && la.panel[1].origin_y == lb.panel[1].origin_y);
+    assert_true(la.panel[1].origin_x == lb.panel[1].origin_x &&
+                la.panel[1].origin_y == lb.panel[1].origin_y);
     /* a tight framing of the relaxed pose shows it larger */
     sk_hand_draw_desc d = {0};
     d.framing = SK_HAND_FRAMING_TIGHT;
@@ -928,15 +966,18 @@ static void test_frames_write_png(void **state)
     sk_hand_draw_desc d = {0};
     d.width = 320;
     d.height = 200;
-    const char *captions[N] = {"a", NULL, "c, with a longer caption that needs two lines", "d", "e"};
+    const char *captions[N] = {"a", NULL, "c, with a longer caption that needs two lines", "d",
+                               "e"};
     char dir1[512], dir2[512];
     snprintf(dir1, sizeof dir1, "%s", sk_test_path("hand/frames1"));
     snprintf(dir2, sizeof dir2, "%s", sk_test_path("hand/frames2"));
     sk_error err = {0};
     sk_threads_set(1);
-    assert_int_equal(sk_hand_frames_write_png(&s, q, N, &d, captions, dir1, (sk_progress){0}, &err), SK_OK);
+    assert_int_equal(sk_hand_frames_write_png(&s, q, N, &d, captions, dir1, (sk_progress){0}, &err),
+                     SK_OK);
     sk_threads_set(2);
-    assert_int_equal(sk_hand_frames_write_png(&s, q, N, &d, captions, dir2, (sk_progress){0}, &err), SK_OK);
+    assert_int_equal(sk_hand_frames_write_png(&s, q, N, &d, captions, dir2, (sk_progress){0}, &err),
+                     SK_OK);
     sk_threads_set(0);
     assert_int_equal(sk_test_count_files_containing(dir1, "frame_"), N);
     assert_int_equal(sk_test_count_files_containing(dir1, ".tmp"), 0);
@@ -966,7 +1007,7 @@ static void test_angle_plot(void **state)
         q[f * SK_HAND_DOF_COUNT + l] = f * 5 * DEG;
         q[f * SK_HAND_DOF_COUNT + r] = f * 2 * DEG;
         q[f * SK_HAND_DOF_COUNT + p] = f * 3 * DEG;
-        q[f * SK_HAND_DOF_COUNT + tx] = f * 100.0; /* translations are not "moving joints" */
+        q[f * SK_HAND_DOF_COUNT + tx] = f * 100.0;      /* translations are not "moving joints" */
         q[f * SK_HAND_DOF_COUNT + 20] = f * 0.01 * DEG; /* below the threshold */
     }
     bool driven[SK_HAND_DOF_COUNT] = {false};
@@ -986,12 +1027,14 @@ static void test_angle_plot(void **state)
     assert_int_equal(img.height, 300);
     sk_image_free(&img);
     int bad[1] = {SK_HAND_DOF_COUNT};
-    assert_int_equal(sk_hand_plot_angles(q, N, bad, 1, driven, NULL, &img, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_plot_angles(q, N, bad, 1, driven, NULL, &img, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "dof_list[0]"));
     /* the animation's driven DOFs: pinned, or a non-zero torque in some key */
     sk_hand_animation *anim = malloc(sizeof *anim);
-    const char *json = "{\"keys\": [{\"pin\": {\"L.DIP.flex\": 10}, \"torque\": {\"I.PIP.flex\": 0}},"
-                       "{\"torque\": {\"M.MCP.flex\": 0.5}}]}";
+    const char *json =
+        "{\"keys\": [{\"pin\": {\"L.DIP.flex\": 10}, \"torque\": {\"I.PIP.flex\": 0}},"
+        "{\"torque\": {\"M.MCP.flex\": 0.5}}]}";
     assert_int_equal(sk_hand_animation_parse(json, strlen(json), "a.json", anim, &err), SK_OK);
     sk_hand_animation_driven(anim, driven);
     int count = 0;
@@ -1026,14 +1069,17 @@ static void test_cli_pictures(void **state)
         /* the middle of the ring finger's proximal phalanx: its colour, in the file too */
         sk_vec3d mid = sk_v3d_scale(sk_v3d_add(f.point[16], f.point[17]), 0.5);
         sk_vec2d px = sk_hand_draw_project(&l, v, mid);
-        const float *a = sk_image_pixel(&img, (int)px.x, (int)px.y), *b = sk_image_pixel(&lib, (int)px.x, (int)px.y);
+        const float *a = sk_image_pixel(&img, (int)px.x, (int)px.y),
+                    *b = sk_image_pixel(&lib, (int)px.x, (int)px.y);
         for (int c = 0; c < 3; c++) assert_true(fabsf(a[c] - b[c]) < 0.01f);
         /* nearer to the ring finger's colour than to any other finger's or the background */
         float best = INFINITY;
         int nearest = -1;
         for (int finger = -1; finger < SK_HAND_FINGER_COUNT; finger++) {
-            sk_color c = finger < 0 ? sk_rgb(1, 1, 1) : sk_hand_finger_color((sk_hand_finger)finger);
-            float d2 = (a[0] - c.r) * (a[0] - c.r) + (a[1] - c.g) * (a[1] - c.g) + (a[2] - c.b) * (a[2] - c.b);
+            sk_color c =
+                finger < 0 ? sk_rgb(1, 1, 1) : sk_hand_finger_color((sk_hand_finger)finger);
+            float d2 = (a[0] - c.r) * (a[0] - c.r) + (a[1] - c.g) * (a[1] - c.g) +
+                       (a[2] - c.b) * (a[2] - c.b);
             if (d2 < best) best = d2, nearest = finger;
         }
         assert_int_equal(nearest, SK_HAND_RING);
@@ -1043,8 +1089,13 @@ static void test_cli_pictures(void **state)
     /* frames: one per animation frame */
     const char *dir = sk_test_path("hand/cli-frames");
     const char *plot = sk_test_path("hand/cli-plot.png");
-    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-dip.json' -q --frames-dir '%s' --png-size 240x160 "
-                                      "--views radial --plot '%s'", SK_TEST_PRESET_DIR, dir, plot), 0);
+    assert_int_equal(
+        sk_test_cli(
+            run,
+            "hand animate '%s/hand/little-dip.json' -q --frames-dir '%s' --png-size 240x160 "
+            "--views radial --plot '%s'",
+            SK_TEST_PRESET_DIR, dir, plot),
+        0);
     assert_int_equal(sk_test_count_files_containing(dir, "frame_"), 49);
     char first[600], last[600];
     snprintf(first, sizeof first, "%s/frame_0000.png", dir);
@@ -1060,15 +1111,19 @@ static void test_cli_pictures(void **state)
     sk_image_free(&img);
     /* a bad --png path: status 1, one line, neither the picture nor the pose file */
     const char *json = sk_test_path("hand/cli-not-written.json");
-    assert_int_equal(sk_test_cli(run, "hand pose --png '%s/no/such/folder/p.png' -o '%s'", SK_TEST_TMP_DIR, json), 1);
+    assert_int_equal(sk_test_cli(run, "hand pose --png '%s/no/such/folder/p.png' -o '%s'",
+                                 SK_TEST_TMP_DIR, json),
+                     1);
     assert_int_equal(sk_test_count_lines(run->err), 1);
     assert_false(sk_test_file_exists(json));
     /* bad picture options: status 2 */
     assert_int_equal(sk_test_cli(run, "hand pose --png '%s' --views dorsal,sideways", png), 2);
     assert_non_null(strstr(run->err, "--views"));
     assert_int_equal(sk_test_cli(run, "hand pose --png '%s' --png-size 40x40", png), 2);
-    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-dip.json' --plot '%s' --plot-dofs L.DIP.flx",
-                                 SK_TEST_PRESET_DIR, plot), 2);
+    assert_int_equal(
+        sk_test_cli(run, "hand animate '%s/hand/little-dip.json' --plot '%s' --plot-dofs L.DIP.flx",
+                    SK_TEST_PRESET_DIR, plot),
+        2);
     assert_non_null(strstr(run->err, "L.DIP.flx"));
     assert_int_equal(sk_test_cli(run, "hand pose --labels"), 2);
     assert_non_null(strstr(run->err, "--labels needs --png"));
@@ -1100,29 +1155,39 @@ static void test_cli(void **state)
     const char *csv = sk_test_path("hand/cli-bad.csv");
     const char *bad = "R.MCP.flex,L.MCP.flex\n10,12\n20,2x\n";
     sk_test_write_file(csv, bad, strlen(bad));
-    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --pairs R.MCP.flex:L.MCP.flex -o '%s'", csv, none), 2);
+    assert_int_equal(
+        sk_test_cli(run, "hand calibrate '%s' --pairs R.MCP.flex:L.MCP.flex -o '%s'", csv, none),
+        2);
     assert_int_equal(sk_test_count_lines(run->err), 1);
     assert_non_null(strstr(run->err, "line 3, column 2 (L.MCP.flex)"));
     const char *good = "R.MCP.flex,L.MCP.flex\n10,12\n20,25\n30,35\n40,49\n";
     sk_test_write_file(csv, good, strlen(good));
     const char *rows = sk_test_path("hand/cli-rows.json");
-    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --pairs R.MCP.flex:L.MCP.flex -o '%s'", csv, rows), 0);
+    assert_int_equal(
+        sk_test_cli(run, "hand calibrate '%s' --pairs R.MCP.flex:L.MCP.flex -o '%s'", csv, rows),
+        0);
     /* the fitted rows drive a pose */
     assert_int_equal(sk_test_cli(run, "hand pose --constraints '%s' --pin R.MCP.flex=50", rows), 0);
     assert_non_null(strstr(run->out, "L.MCP.flex"));
     /* lookup-table potentials from the same samples */
-    assert_int_equal(sk_test_cli(run, "hand pose --samples '%s' --pairs R.MCP.flex:L.MCP.flex --pin R.MCP.flex=30", csv), 0);
+    assert_int_equal(
+        sk_test_cli(
+            run, "hand pose --samples '%s' --pairs R.MCP.flex:L.MCP.flex --pin R.MCP.flex=30", csv),
+        0);
     /* animate the shipped demonstration into BVH and positions */
     const char *bvh = sk_test_path("hand/cli-little.bvh");
     const char *pos = sk_test_path("hand/cli-little.csv");
-    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-mcp.json' --bvh '%s' --positions '%s' -q",
-                                 SK_TEST_PRESET_DIR, bvh, pos), 0);
+    assert_int_equal(
+        sk_test_cli(run, "hand animate '%s/hand/little-mcp.json' --bvh '%s' --positions '%s' -q",
+                    SK_TEST_PRESET_DIR, bvh, pos),
+        0);
     sk_bvh *b = malloc(sizeof *b);
     assert_int_equal(sk_bvh_load_file(bvh, b, &err), SK_OK);
     assert_int_equal(b->frame_count, 49);
     sk_bvh_free(b);
     free(b);
-    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-mcp.json'", SK_TEST_PRESET_DIR), 2);
+    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-mcp.json'", SK_TEST_PRESET_DIR),
+                     2);
     assert_int_equal(sk_test_cli(run, "hand pose --help"), 0);
     assert_non_null(strstr(run->out, "--pin"));
     free(run);

@@ -43,7 +43,8 @@ static void test_cholesky_and_solve_match_lapack(void **state)
         assert_int_equal(sk_hand__portable_cholesky(pa, n), 0);
         double scale = max_abs(la, n * n);
         for (int j = 0; j < n; j++)
-            for (int i = j; i < n; i++) assert_true(fabs(la[j * n + i] - pa[j * n + i]) <= 1e-13 * scale);
+            for (int i = j; i < n; i++)
+                assert_true(fabs(la[j * n + i] - pa[j * n + i]) <= 1e-13 * scale);
         double lb[3 * MAXN], pb[3 * MAXN];
         sk_rng rng = sk_rng_make(5, (uint64_t)n, 0, 0);
         for (int i = 0; i < 3 * n; i++) lb[i] = pb[i] = sk_rng_range(&rng, -2.0, 2.0);

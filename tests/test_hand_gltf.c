@@ -83,22 +83,25 @@ static sk_gltf_doc *write_and_read(const sk_hand_gltf_desc *d, uint8_t **bytes, 
     return doc;
 }
 
-
 /* Rotation matrix of a unit quaternion (x, y, z, w). */
 static sk_mat3d quat_matrix(const double q[4])
 {
     sk_quatd u = sk_qd(q[3], q[0], q[1], q[2]);
     sk_mat3d m;
     double x = u.x, y = u.y, z = u.z, w = u.w;
-    m.m[0][0] = 1 - 2 * (y * y + z * z), m.m[0][1] = 2 * (x * y - w * z), m.m[0][2] = 2 * (x * z + w * y);
-    m.m[1][0] = 2 * (x * y + w * z), m.m[1][1] = 1 - 2 * (x * x + z * z), m.m[1][2] = 2 * (y * z - w * x);
-    m.m[2][0] = 2 * (x * z - w * y), m.m[2][1] = 2 * (y * z + w * x), m.m[2][2] = 1 - 2 * (x * x + y * y);
+    m.m[0][0] = 1 - 2 * (y * y + z * z), m.m[0][1] = 2 * (x * y - w * z),
+    m.m[0][2] = 2 * (x * z + w * y);
+    m.m[1][0] = 2 * (x * y + w * z), m.m[1][1] = 1 - 2 * (x * x + z * z),
+    m.m[1][2] = 2 * (y * z - w * x);
+    m.m[2][0] = 2 * (x * z - w * y), m.m[2][1] = 2 * (y * z + w * x),
+    m.m[2][2] = 1 - 2 * (x * x + y * y);
     return m;
 }
 
 /* World frames of the joint nodes from local translations and rotations (parents first),
  * positions back in mm, compared with the skeleton's forward kinematics. */
-static void assert_joints_match(const sk_hand_skeleton *s, const double *dofs, const double t[][3], const double q[][4])
+static void assert_joints_match(const sk_hand_skeleton *s, const double *dofs, const double t[][3],
+                                const double q[][4])
 {
     sk_hand_frames fk;
     sk_hand_forward(s, dofs, &fk);
@@ -130,7 +133,11 @@ static void test_animation_reads_back(void **state)
 {
     (void)state;
     const sk_hand_surface *lods[2] = {fx->fine, fx->coarse};
-    sk_hand_gltf_desc d = {.lods = lods, .lod_count = 2, .dofs = fx->dofs, .frame_count = FRAMES, .animation = true,
+    sk_hand_gltf_desc d = {.lods = lods,
+                           .lod_count = 2,
+                           .dofs = fx->dofs,
+                           .frame_count = FRAMES,
+                           .animation = true,
                            .fps = FPS};
     sk_gltf_doc *doc = write_and_read(&d, NULL, NULL);
     sk_gltf_doc_counts c = sk_gltf_doc_count(doc);
@@ -147,7 +154,8 @@ static void test_animation_reads_back(void **state)
         sk_gltf_doc_node n;
         SK_ASSERT_OK(sk_gltf_doc_get_node(doc, joints[j], &n, &e_));
         assert_string_equal(n.name, sk_hand_link_name(j));
-        assert_int_equal(n.parent, fx->right.parent[j] >= 0 ? joints[fx->right.parent[j]] : SK_GLTF_NONE);
+        assert_int_equal(n.parent,
+                         fx->right.parent[j] >= 0 ? joints[fx->right.parent[j]] : SK_GLTF_NONE);
     }
     /* without the animation the joints stand in the bind pose: the inverse bind matrices
        undo their world transforms */
@@ -159,7 +167,7 @@ static void test_animation_reads_back(void **state)
         memcpy(q[j], n.rotation, sizeof q[j]);
     }
     sk_hand_relaxed(&fx->right, rest);
-    assert_joints_match(&fx->right, rest, (const double (*)[3])t, (const double (*)[4])q);
+    assert_joints_match(&fx->right, rest, (const double(*)[3])t, (const double(*)[4])q);
     float *inv = sk_test_gltf_accessor(doc, ibm, SK_HAND_LINK_COUNT, 16);
     sk_hand_frames bind;
     sk_hand_forward(&fx->right, rest, &bind);
@@ -167,7 +175,8 @@ static void test_animation_reads_back(void **state)
         const float *m = inv + 16 * j;
         sk_vec3d p = sk_v3d_scale(bind.point[sk_hand_link_point(j)], 1e-3);
         /* inverse(bind) * (joint centre) = origin, inverse(bind) * (centre + R e_y) = e_y */
-        sk_vec3d y = sk_v3d_add(p, sk_v3d(bind.rotation[j].m[0][1], bind.rotation[j].m[1][1], bind.rotation[j].m[2][1]));
+        sk_vec3d y = sk_v3d_add(p, sk_v3d(bind.rotation[j].m[0][1], bind.rotation[j].m[1][1],
+                                          bind.rotation[j].m[2][1]));
         for (int row = 0; row < 3; row++) {
             double o = m[row] * p.x + m[4 + row] * p.y + m[8 + row] * p.z + m[12 + row];
             double e = m[row] * y.x + m[4 + row] * y.y + m[8 + row] * y.z + m[12 + row];
@@ -213,8 +222,8 @@ static void test_animation_reads_back(void **state)
             }
         }
         for (int k = 0; k < 3; k++) t[0][k] = root[3 * f + k];
-        assert_joints_match(&fx->right, fx->dofs + f * SK_HAND_DOF_COUNT, (const double (*)[3])t,
-                            (const double (*)[4])q);
+        assert_joints_match(&fx->right, fx->dofs + f * SK_HAND_DOF_COUNT, (const double(*)[3])t,
+                            (const double(*)[4])q);
     }
     for (int j = 0; j < SK_HAND_LINK_COUNT; j++) free(rot[j]);
     free(root);
@@ -226,12 +235,15 @@ static void test_animation_reads_back(void **state)
         const float *w;
         sk_hand_surface_weights(lods[l], SK_HAND_WEIGHTS_SMOOTH, &links, &w);
         const sk_mesh *m = sk_hand_surface_mesh(lods[l]);
-        float *pos = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "POSITION"), n, 3);
+        float *pos =
+            sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "POSITION"), n, 3);
         float *jw = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "JOINTS_0"), n, 4);
-        float *ww = sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "WEIGHTS_0"), n, 4);
+        float *ww =
+            sk_test_gltf_accessor(doc, sk_gltf_doc_mesh_accessor(doc, l, "WEIGHTS_0"), n, 4);
         for (size_t e = 0; e < n; e++) {
             size_t v = map[e];
-            for (int k = 0; k < 3; k++) assert_float_equal(pos[3 * e + k], m->positions[3 * v + k] * 1e-3, 1e-9);
+            for (int k = 0; k < 3; k++)
+                assert_float_equal(pos[3 * e + k], m->positions[3 * v + k] * 1e-3, 1e-9);
             for (int k = 0; k < 4; k++) {
                 assert_float_equal(ww[4 * e + k], w[4 * v + k], 1e-6);
                 if (w[4 * v + k] > 0) assert_int_equal((int)jw[4 * e + k], links[4 * v + k]);
@@ -252,8 +264,13 @@ static void test_posed_left_hand_and_material(void **state)
     sk_image albedo, normal;
     sk_hand_texture_desc td = {.size = 64};
     SK_ASSERT_OK(sk_hand_texture_bake(fx->mirror, &td, &albedo, &normal, &e_));
-    sk_hand_gltf_desc d = {.lods = lods, .lod_count = 1, .dofs = pose, .frame_count = 1,
-                           .weights = SK_HAND_WEIGHTS_NEAREST, .albedo = &albedo, .normal_map = &normal};
+    sk_hand_gltf_desc d = {.lods = lods,
+                           .lod_count = 1,
+                           .dofs = pose,
+                           .frame_count = 1,
+                           .weights = SK_HAND_WEIGHTS_NEAREST,
+                           .albedo = &albedo,
+                           .normal_map = &normal};
     uint8_t *bytes;
     size_t size;
     sk_gltf_doc *doc = write_and_read(&d, &bytes, &size);
@@ -266,7 +283,7 @@ static void test_posed_left_hand_and_material(void **state)
         memcpy(t[j], n.translation, sizeof t[j]);
         memcpy(q[j], n.rotation, sizeof q[j]);
     }
-    assert_joints_match(&fx->left, pose, (const double (*)[3])t, (const double (*)[4])q);
+    assert_joints_match(&fx->left, pose, (const double(*)[3])t, (const double(*)[4])q);
     /* rigid links: one joint per vertex, the nearest link */
     size_t n;
     const uint32_t *map = sk_hand_surface_export_map(fx->mirror, &n);
@@ -288,8 +305,10 @@ static void test_posed_left_hand_and_material(void **state)
     char *json = calloc(1, json_length + 1);
     memcpy(json, bytes + 20, json_length);
     assert_non_null(strstr(json, "\"emissiveTexture\""));
-    assert_non_null(strstr(json, "\"emissiveFactor\":[0.699999988079071,0.699999988079071,0.699999988079071]"));
-    assert_non_null(strstr(json, "\"baseColorFactor\":[0.300000011920929,0.300000011920929,0.300000011920929,1]"));
+    assert_non_null(
+        strstr(json, "\"emissiveFactor\":[0.699999988079071,0.699999988079071,0.699999988079071]"));
+    assert_non_null(strstr(
+        json, "\"baseColorFactor\":[0.300000011920929,0.300000011920929,0.300000011920929,1]"));
     free(json);
     free(bytes);
     /* PBR: the albedo is the lit base colour, nothing emitted */
@@ -333,15 +352,19 @@ static void test_desc_errors(void **state)
         {{.lods = lods, .lod_count = 1, .dofs = nan_pose, .frame_count = 1}, "R.PIP.flex"},
         {{.lods = lods, .lod_count = 1, .dofs = NULL, .frame_count = 1}, "dofs"},
         {{.lods = lods, .lod_count = 1, .dofs = fx->dofs, .frame_count = 1, .fps = -1}, "fps"},
-        {{.lods = lods, .lod_count = 1, .dofs = fx->dofs, .frame_count = 1, .texture_weight = 1.5}, "texture_weight"},
-        {{.lods = lods, .lod_count = 1, .dofs = fx->dofs, .frame_count = 1, .material = 7}, "material"},
-        {{.lods = lods, .lod_count = 1, .dofs = fx->dofs, .frame_count = 1, .normal_map = &img}, "normal_map"},
+        {{.lods = lods, .lod_count = 1, .dofs = fx->dofs, .frame_count = 1, .texture_weight = 1.5},
+         "texture_weight"},
+        {{.lods = lods, .lod_count = 1, .dofs = fx->dofs, .frame_count = 1, .material = 7},
+         "material"},
+        {{.lods = lods, .lod_count = 1, .dofs = fx->dofs, .frame_count = 1, .normal_map = &img},
+         "normal_map"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         sk_gltf *g;
         SK_ASSERT_OK(sk_gltf_create(&g, &e_));
         sk_error err = {0};
-        sk_test_expect_failure(sk_hand_gltf_add(g, &bad[i].d, &err), &err, SK_ERROR_INVALID_ARGUMENT, bad[i].needle);
+        sk_test_expect_failure(sk_hand_gltf_add(g, &bad[i].d, &err), &err,
+                               SK_ERROR_INVALID_ARGUMENT, bad[i].needle);
         /* nothing added: the document still writes as an empty one */
         uint8_t *data;
         size_t size;
@@ -362,7 +385,8 @@ static void test_commands(void **state)
     (void)state;
     sk_test_run run;
     const char *glb = sk_test_path("cli/hand.glb");
-    assert_int_equal(sk_test_cli(&run, "hand mesh -q --pin I.PIP.flex=90 --texture-size 64 -o %s", glb), 0);
+    assert_int_equal(
+        sk_test_cli(&run, "hand mesh -q --pin I.PIP.flex=90 --texture-size 64 -o %s", glb), 0);
     sk_gltf_doc *doc;
     SK_ASSERT_OK(sk_gltf_read_glb(&doc, glb, NULL, &e_));
     assert_int_equal(sk_gltf_doc_count(doc).meshes, SK_HAND_LOD_COUNT);
@@ -370,14 +394,20 @@ static void test_commands(void **state)
     assert_int_equal(sk_gltf_doc_count(doc).animations, 0);
     sk_gltf_doc_free(doc);
     const char *one = sk_test_path("cli/lod2.glb");
-    assert_int_equal(sk_test_cli(&run, "hand mesh -q --lod 2 --left --material pbr --texture-size 64 -o %s", one), 0);
+    assert_int_equal(
+        sk_test_cli(&run, "hand mesh -q --lod 2 --left --material pbr --texture-size 64 -o %s",
+                    one),
+        0);
     SK_ASSERT_OK(sk_gltf_read_glb(&doc, one, NULL, &e_));
     assert_int_equal(sk_gltf_doc_count(doc).meshes, 1);
     sk_gltf_doc_free(doc);
 
     const char *anim = sk_test_path("cli/anim.glb"), *bvh = sk_test_path("cli/anim.bvh");
-    assert_int_equal(sk_test_cli(&run, "hand animate -q %s/hand/little-mcp.json --glb %s --bvh %s --texture-size 64",
-                                 SK_TEST_PRESET_DIR, anim, bvh), 0);
+    assert_int_equal(
+        sk_test_cli(&run,
+                    "hand animate -q %s/hand/little-mcp.json --glb %s --bvh %s --texture-size 64",
+                    SK_TEST_PRESET_DIR, anim, bvh),
+        0);
     sk_bvh b;
     SK_ASSERT_OK(sk_bvh_load_file(bvh, &b, &e_));
     SK_ASSERT_OK(sk_gltf_read_glb(&doc, anim, NULL, &e_));

@@ -54,9 +54,11 @@ static void test_basis_is_bernstein_and_corners_interpolate(void **state)
     sk_hand_patch_eval(&p, 0.3, 0.6, &du, &dv);
     double h = 1e-6;
     sk_vec3d fu = sk_v3d_scale(sk_v3d_sub(sk_hand_patch_eval(&p, 0.3 + h, 0.6, NULL, NULL),
-                                          sk_hand_patch_eval(&p, 0.3 - h, 0.6, NULL, NULL)), 0.5 / h);
+                                          sk_hand_patch_eval(&p, 0.3 - h, 0.6, NULL, NULL)),
+                               0.5 / h);
     sk_vec3d fv = sk_v3d_scale(sk_v3d_sub(sk_hand_patch_eval(&p, 0.3, 0.6 + h, NULL, NULL),
-                                          sk_hand_patch_eval(&p, 0.3, 0.6 - h, NULL, NULL)), 0.5 / h);
+                                          sk_hand_patch_eval(&p, 0.3, 0.6 - h, NULL, NULL)),
+                               0.5 / h);
     assert_true(sk_v3d_length(sk_v3d_sub(du, fu)) < 1e-6);
     assert_true(sk_v3d_length(sk_v3d_sub(dv, fv)) < 1e-6);
 }
@@ -90,7 +92,8 @@ static void test_fit_reproduces_a_bicubic_surface_exactly(void **state)
     assert_int_equal(sk_hand_patch_fit(pts, N * N, u, v, &d, &fit, &info, NULL, &err), SK_OK);
     assert_false(info.regularised);
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) assert_true(sk_v3d_length(sk_v3d_sub(fit.p[i][j], ref.p[i][j])) < 1e-9);
+        for (int j = 0; j < 4; j++)
+            assert_true(sk_v3d_length(sk_v3d_sub(fit.p[i][j], ref.p[i][j])) < 1e-9);
     assert_true(info.rms_final_mm < 1e-10);
 }
 
@@ -112,7 +115,7 @@ static void test_parameter_correction_never_increases_the_error(void **state)
         sk_hand_chord_parameters(row, N, ur);
         assert_true(ur[0] == 0.0 && ur[N - 1] == 1.0);
         for (int b = 0; b < N; b++) {
-            v[a * N + b] = ur[b];           /* along a row b varies: that is v here */
+            v[a * N + b] = ur[b]; /* along a row b varies: that is v here */
             u[a * N + b] = (double)a / (N - 1);
         }
     }
@@ -122,7 +125,8 @@ static void test_parameter_correction_never_increases_the_error(void **state)
     sk_error err;
     assert_int_equal(sk_hand_patch_fit(pts, N * N, u, v, &d, &fit, &info, history, &err), SK_OK);
     assert_true(info.iterations >= 2);
-    for (int k = 1; k <= info.iterations; k++) assert_true(history[k] <= history[k - 1] * (1 + 1e-12) + 1e-15);
+    for (int k = 1; k <= info.iterations; k++)
+        assert_true(history[k] <= history[k - 1] * (1 + 1e-12) + 1e-15);
     /* the chord-length start is visibly off; the correction brings it to the surface */
     assert_true(info.rms_initial_mm > 1e-3);
     assert_true(info.rms_final_mm < 0.05 * info.rms_initial_mm);
@@ -151,16 +155,20 @@ static void test_fit_rejects_bad_input(void **state)
     sk_hand_patch p;
     memset(&p, 0, sizeof p);
     sk_error err;
-    assert_int_equal(sk_hand_patch_fit(pts, 10, u, v, NULL, &p, NULL, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_patch_fit(pts, 10, u, v, NULL, &p, NULL, NULL, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "16 or more"));
     u[3] = 1.5;
-    assert_int_equal(sk_hand_patch_fit(pts, 20, u, v, NULL, &p, NULL, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_patch_fit(pts, 20, u, v, NULL, &p, NULL, NULL, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     u[3] = 3 / 19.0;
     pts[4].x = NAN;
-    assert_int_equal(sk_hand_patch_fit(pts, 20, u, v, NULL, &p, NULL, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_patch_fit(pts, 20, u, v, NULL, &p, NULL, NULL, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     pts[4].x = 4;
     sk_hand_patch_fit_desc d = {.max_iterations = -3};
-    assert_int_equal(sk_hand_patch_fit(pts, 20, u, v, &d, &p, NULL, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_patch_fit(pts, 20, u, v, &d, &p, NULL, NULL, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "fit.max_iterations"));
     /* all points on one v line: singular normal equations, solved with a tiny ridge */
     sk_hand_patch_fit_info info;
@@ -188,7 +196,8 @@ static double triangle_distance(sk_vec3d q, sk_vec3d a, sk_vec3d b, sk_vec3d c)
     double wb = sk_v3d_dot(sk_v3d_cross(sk_v3d_sub(c, f), sk_v3d_sub(a, f)), n) / area2;
     double wc = 1.0 - wa - wb;
     if (wa >= 0 && wb >= 0 && wc >= 0) return fabs(h) * sqrt(area2);
-    double d = segment_distance(q, a, b), e = segment_distance(q, b, c), g = segment_distance(q, c, a);
+    double d = segment_distance(q, a, b), e = segment_distance(q, b, c),
+           g = segment_distance(q, c, a);
     return d < e ? (d < g ? d : g) : (e < g ? e : g);
 }
 
@@ -200,9 +209,11 @@ static double brute_facet_distance(const sk_hand_patch *p, int n, sk_vec3d q)
         for (int b = 0; b < n; b++) {
             sk_vec3d v00 = sk_hand_patch_eval(p, (double)a / n, (double)b / n, NULL, NULL);
             sk_vec3d v10 = sk_hand_patch_eval(p, (double)(a + 1) / n, (double)b / n, NULL, NULL);
-            sk_vec3d v11 = sk_hand_patch_eval(p, (double)(a + 1) / n, (double)(b + 1) / n, NULL, NULL);
+            sk_vec3d v11 =
+                sk_hand_patch_eval(p, (double)(a + 1) / n, (double)(b + 1) / n, NULL, NULL);
             sk_vec3d v01 = sk_hand_patch_eval(p, (double)a / n, (double)(b + 1) / n, NULL, NULL);
-            double d1 = triangle_distance(q, v00, v10, v11), d2 = triangle_distance(q, v00, v11, v01);
+            double d1 = triangle_distance(q, v00, v10, v11),
+                   d2 = triangle_distance(q, v00, v11, v01);
             if (d1 < best) best = d1;
             if (d2 < best) best = d2;
         }
@@ -229,7 +240,8 @@ static void test_facet_distance_is_the_nearest_facet(void **state)
     }
     sk_error err;
     assert_int_equal(sk_hand_patch_facet_distances(&p, SPLITS, q, K, u, v, d_hint, &err), SK_OK);
-    assert_int_equal(sk_hand_patch_facet_distances(&p, SPLITS, q, K, NULL, NULL, d_plain, &err), SK_OK);
+    assert_int_equal(sk_hand_patch_facet_distances(&p, SPLITS, q, K, NULL, NULL, d_plain, &err),
+                     SK_OK);
     for (int k = 0; k < K; k++) {
         double brute = brute_facet_distance(&p, SPLITS, q[k]);
         assert_true(d_hint[k] == d_plain[k]);
@@ -240,9 +252,9 @@ static void test_facet_distance_is_the_nearest_facet(void **state)
     for (int k = 0; k < K; k++) q[k] = sk_hand_patch_eval(&p, u[k], v[k], NULL, NULL);
     assert_int_equal(sk_hand_patch_facet_distances(&p, 100, q, K, u, v, on, &err), SK_OK);
     for (int k = 0; k < K; k++) assert_true(on[k] < 2e-3);
-    assert_int_equal(sk_hand_patch_facet_distances(&p, 5000, q, K, u, v, on, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_patch_facet_distances(&p, 5000, q, K, u, v, on, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
 }
-
 
 /* ------------------------------------------------------------ with their links */
 
@@ -272,7 +284,8 @@ static void test_control_points_move_with_their_links(void **state)
     /* at rest nothing moves */
     assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &rest, NULL, &same, &err), SK_OK);
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) assert_true(sk_v3d_length(sk_v3d_sub(same.p[i][j], p.p[i][j])) < 1e-9);
+        for (int j = 0; j < 4; j++)
+            assert_true(sk_v3d_length(sk_v3d_sub(same.p[i][j], p.p[i][j])) < 1e-9);
     /* rigidly: distances kept, and the link's base joint carries the patch along */
     assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, NULL, &moved, &err), SK_OK);
     for (int a = 0; a < 16; a++)
@@ -282,7 +295,8 @@ static void test_control_points_move_with_their_links(void **state)
             assert_true(fabs(d0 - d1) < 1e-9);
         }
     int base = sk_hand_link_point(6);
-    sk_vec3d rel0 = sk_v3d_sub(p.p[0][0], rest.point[base]), rel1 = sk_v3d_sub(moved.p[0][0], pose.point[base]);
+    sk_vec3d rel0 = sk_v3d_sub(p.p[0][0], rest.point[base]),
+             rel1 = sk_v3d_sub(moved.p[0][0], pose.point[base]);
     /* the same point in the link's own frame before and after */
     sk_vec3d l0 = sk_m3d_apply(sk_m3d_transpose(rest.rotation[6]), rel0);
     sk_vec3d l1 = sk_m3d_apply(sk_m3d_transpose(pose.rotation[6]), rel1);
@@ -294,10 +308,12 @@ static void test_control_points_move_with_their_links(void **state)
     sk_hand_patch blend;
     assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err), SK_OK);
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) assert_true(sk_v3d_length(sk_v3d_sub(blend.p[i][j], moved.p[i][j])) < 1e-9);
+        for (int j = 0; j < 4; j++)
+            assert_true(sk_v3d_length(sk_v3d_sub(blend.p[i][j], moved.p[i][j])) < 1e-9);
     sk_hand_patch other = p, moved_other;
     other.link = 5;
-    assert_int_equal(sk_hand_patches_pose(&other, 1, &rest, &pose, NULL, &moved_other, &err), SK_OK);
+    assert_int_equal(sk_hand_patches_pose(&other, 1, &rest, &pose, NULL, &moved_other, &err),
+                     SK_OK);
     for (int c = 0; c < 16; c++) w[c] = (sk_hand_patch_weights){{6, 5, -1, -1}, {0.5f, 0.5f, 0, 0}};
     assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err), SK_OK);
     for (int i = 0; i < 4; i++)
@@ -307,12 +323,15 @@ static void test_control_points_move_with_their_links(void **state)
         }
     /* bad weights and links are refused, naming the entry */
     w[3].weight[0] = -1.0f;
-    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "weights[3]"));
     w[3] = (sk_hand_patch_weights){{-1, -1, -1, -1}, {0, 0, 0, 0}};
-    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, w, &blend, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     p.link = 40;
-    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, NULL, &blend, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_patches_pose(&p, 1, &rest, &pose, NULL, &blend, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
 }
 
 static void test_tessellation_and_the_table(void **state)
@@ -329,16 +348,21 @@ static void test_tessellation_and_the_table(void **state)
         double u = m.uvs[2 * v], w = m.uvs[2 * v + 1];
         sk_vec3d du, dv;
         sk_vec3d q = sk_hand_patch_eval(&p[0], u, w, &du, &dv);
-        assert_true(fabs(q.x - m.positions[3 * v]) < 1e-4 && fabs(q.z - m.positions[3 * v + 2]) < 1e-4);
+        assert_true(fabs(q.x - m.positions[3 * v]) < 1e-4 &&
+                    fabs(q.z - m.positions[3 * v + 2]) < 1e-4);
         sk_vec3d n = sk_v3d_normalize(sk_v3d_cross(du, dv));
-        assert_true(n.x * m.normals[3 * v] + n.y * m.normals[3 * v + 1] + n.z * m.normals[3 * v + 2] > 0.999);
+        assert_true(n.x * m.normals[3 * v] + n.y * m.normals[3 * v + 1] +
+                        n.z * m.normals[3 * v + 2] >
+                    0.999);
         assert_int_equal((int)m.attributes[0].data[v], (int)(v / 81));
     }
     for (size_t t = 0; t < m.triangle_count; t++) {
         /* a triangle's face normal agrees with its vertices' normals */
         const uint32_t *ix = m.indices + 3 * t;
-        const float *a = m.positions + 3 * ix[0], *b = m.positions + 3 * ix[1], *c = m.positions + 3 * ix[2];
-        sk_vec3d fn = sk_v3d_cross(sk_v3d(b[0] - a[0], b[1] - a[1], b[2] - a[2]), sk_v3d(c[0] - a[0], c[1] - a[1], c[2] - a[2]));
+        const float *a = m.positions + 3 * ix[0], *b = m.positions + 3 * ix[1],
+                    *c = m.positions + 3 * ix[2];
+        sk_vec3d fn = sk_v3d_cross(sk_v3d(b[0] - a[0], b[1] - a[1], b[2] - a[2]),
+                                   sk_v3d(c[0] - a[0], c[1] - a[1], c[2] - a[2]));
         const float *vn = m.normals + 3 * ix[0];
         assert_true(fn.x * vn[0] + fn.y * vn[1] + fn.z * vn[2] > 0);
         assert_true(ix[0] / 81 == ix[1] / 81 && ix[1] / 81 == ix[2] / 81);
@@ -350,17 +374,22 @@ static void test_tessellation_and_the_table(void **state)
     memset(&set, 0, sizeof set);
     set.count = SK_HAND_PATCH_COUNT;
     double e0[3] = {0.1, 0.2, 0.3}, e1[2] = {0.5, 1.5};
-    set.patch[0].side = SK_HAND_SCAN_PALM, set.fitted[0] = true, set.data[0].count = 3, set.error_scan[0] = e0;
-    set.patch[50].side = SK_HAND_SCAN_BACK, set.fitted[50] = true, set.data[50].count = 2, set.error_scan[50] = e1;
+    set.patch[0].side = SK_HAND_SCAN_PALM, set.fitted[0] = true, set.data[0].count = 3,
+    set.error_scan[0] = e0;
+    set.patch[50].side = SK_HAND_SCAN_BACK, set.fitted[50] = true, set.data[50].count = 2,
+    set.error_scan[50] = e1;
     sk_hand_table41 t;
     sk_hand_table41_compute(&set, &t);
-    assert_true(fabs(t.scan[0].mean_mm - 0.2) < 1e-12 && t.scan[0].max_mm == 0.3 && t.scan[0].worst_patch == 0);
-    assert_true(fabs(t.scan[1].mean_mm - 1.0) < 1e-12 && t.scan[1].max_mm == 1.5 && t.scan[1].worst_patch == 50);
+    assert_true(fabs(t.scan[0].mean_mm - 0.2) < 1e-12 && t.scan[0].max_mm == 0.3 &&
+                t.scan[0].worst_patch == 0);
+    assert_true(fabs(t.scan[1].mean_mm - 1.0) < 1e-12 && t.scan[1].max_mm == 1.5 &&
+                t.scan[1].worst_patch == 50);
     assert_true(fabs(t.scan_all.mean_mm - 2.6 / 5) < 1e-12 && t.scan_all.points == 5);
     assert_false(t.has_truth);
     assert_int_equal(t.patches_fitted[0], 1);
     /* and its files beside the thesis's figures */
-    const char *json = sk_test_path("table/table-4.1.json"), *txt = sk_test_path("table/table-4.1.txt");
+    const char *json = sk_test_path("table/table-4.1.json"),
+               *txt = sk_test_path("table/table-4.1.txt");
     assert_int_equal(sk_hand_table41_write_json(&t, json, &err), SK_OK);
     assert_int_equal(sk_hand_table41_write_text(&t, txt, &err), SK_OK);
     char *text = NULL;

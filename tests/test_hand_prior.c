@@ -62,7 +62,8 @@ static void invert(const double *a, double *out, int d)
 enum { G_D = 4 };
 static const char *const G_NAME[G_D] = {"I.MCP.flex", "I.PIP.flex", "I.DIP.flex", "M.PIP.flex"};
 static const double G_MEAN[G_D] = {40, 50, 30, 55}, G_SD[G_D] = {12, 15, 9, 15};
-static const double G_R[G_D * G_D] = {1, .3, .2, .25, .3, 1, .8, .85, .2, .8, 1, .7, .25, .85, .7, 1};
+static const double G_R[G_D * G_D] = {1,  .3, .2, .25, .3,  1,   .8, .85,
+                                      .2, .8, 1,  .7,  .25, .85, .7, 1};
 #define G_NOISE 1.0
 
 /* Covariance of the observed samples (with glove noise), degrees^2, row-major. */
@@ -70,7 +71,8 @@ static void known_cov(double *cov)
 {
     for (int i = 0; i < G_D; i++)
         for (int j = 0; j < G_D; j++)
-            cov[i * G_D + j] = G_R[i * G_D + j] * G_SD[i] * G_SD[j] + (i == j ? G_NOISE * G_NOISE : 0.0);
+            cov[i * G_D + j] =
+                G_R[i * G_D + j] * G_SD[i] * G_SD[j] + (i == j ? G_NOISE * G_NOISE : 0.0);
 }
 
 /* CSV text of n draws: clamped into the joint limits as a glove's calibrated output is. */
@@ -94,7 +96,8 @@ static char *known_csv(int n, uint64_t seed)
             int dof = sk_hand_dof_find(G_NAME[i]);
             x[i] = sk_clampd(x[i], s.dof[dof].min * SK_RAD_TO_DEG, s.dof[dof].max * SK_RAD_TO_DEG);
         }
-        len += (size_t)snprintf(text + len, cap - len, "%.6f,%.6f,%.6f,%.6f\n", x[0], x[1], x[2], x[3]);
+        len += (size_t)snprintf(text + len, cap - len, "%.6f,%.6f,%.6f,%.6f\n", x[0], x[1], x[2],
+                                x[3]);
     }
     return text;
 }
@@ -107,7 +110,8 @@ static void parse_samples(const char *text, sk_hand_samples *s)
 
 /* Samples of n draws: the header, then one line per draw written by `row` (degrees). */
 typedef int (*row_writer)(int k, sk_rng *r, char *line, size_t size);
-static void drawn_samples(const char *header, int n, uint64_t seed, row_writer row, sk_hand_samples *s)
+static void drawn_samples(const char *header, int n, uint64_t seed, row_writer row,
+                          sk_hand_samples *s)
 {
     size_t cap = (size_t)n * 64 + strlen(header) + 2, len = 0;
     char *text = malloc(cap);
@@ -124,7 +128,8 @@ static void drawn_samples(const char *header, int n, uint64_t seed, row_writer r
 static int open_or_closed(int k, sk_rng *r, char *line, size_t size)
 {
     bool closed = k % 2;
-    double mcp = (closed ? 70 : 10) + 4 * sk_rng_normal(r), pip = (closed ? 90 : 12) + 4 * sk_rng_normal(r);
+    double mcp = (closed ? 70 : 10) + 4 * sk_rng_normal(r),
+           pip = (closed ? 90 : 12) + 4 * sk_rng_normal(r);
     return snprintf(line, size, "%.4f,%.4f\n", mcp, pip);
 }
 
@@ -165,7 +170,8 @@ static void test_gaussian_recovered(void **state)
         assert_true(fabs(mean[i] * SK_RAD_TO_DEG - G_MEAN[i]) < 4 * G_SD[i] / sqrt(12000.0));
         for (int j = 0; j < G_D; j++) {
             double got = cov[i * G_D + j] * SK_RAD_TO_DEG * SK_RAD_TO_DEG;
-            assert_true(fabs(got - want[i * G_D + j]) < 0.04 * sqrt(want[i * G_D + i] * want[j * G_D + j]));
+            assert_true(fabs(got - want[i * G_D + j]) <
+                        0.04 * sqrt(want[i * G_D + i] * want[j * G_D + j]));
         }
     }
     /* thesis form: positive springs, rows with b = 0, K + A'WA = scale x precision */
@@ -187,11 +193,13 @@ static void test_gaussian_recovered(void **state)
         assert_true(row->b == 0.0);
         calibrated_rows++;
         for (int a = 0; a < n; a++)
-            for (int b = 0; b < n; b++) h[at[a] * G_D + at[b]] += row->weight * row->coeff[a] * row->coeff[b];
+            for (int b = 0; b < n; b++)
+                h[at[a] * G_D + at[b]] += row->weight * row->coeff[a] * row->coeff[b];
     }
     assert_int_equal(calibrated_rows, G_D);
     invert(cov, prec, G_D);
-    for (int i = 0; i < G_D * G_D; i++) assert_true(fabs(h[i] - p.scale * prec[i]) < 1e-8 * fabs(h[0]));
+    for (int i = 0; i < G_D * G_D; i++)
+        assert_true(fabs(h[i] - p.scale * prec[i]) < 1e-8 * fabs(h[0]));
 
     /* pins give the conditional mean of the Gaussian (limits not reached here) */
     sk_hand_potential_solver *ps;
@@ -259,14 +267,15 @@ static void test_pair_choice(void **state)
     sk_hand_skeleton skel = skeleton();
     static sk_hand_constraints natural;
     sk_error err;
-    assert_int_equal(sk_hand_constraints_load_file(SK_TEST_PRESET_DIR "/hand/natural.json", &skel, &natural, &err),
+    assert_int_equal(sk_hand_constraints_load_file(SK_TEST_PRESET_DIR "/hand/natural.json", &skel,
+                                                   &natural, &err),
                      SK_OK);
     char *text = known_csv(4000, 11);
     sk_hand_samples s;
     parse_samples(text, &s);
     sk_hand_pin_set pins = {1, {sk_hand_dof_find("M.PIP.flex")}};
-    sk_hand_potential_desc d = {.method = SK_HAND_POTENTIAL_PAIRS, .base = &natural, .pin_sets = &pins,
-                                .pin_set_count = 1};
+    sk_hand_potential_desc d = {
+        .method = SK_HAND_POTENTIAL_PAIRS, .base = &natural, .pin_sets = &pins, .pin_set_count = 1};
     sk_hand_potential p;
     assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
     assert_int_equal(p.component_count, 1);
@@ -278,14 +287,16 @@ static void test_pair_choice(void **state)
         const sk_hand_row *row = &c->rows[k];
         assert_int_equal(row->term_count, 2);
         assert_true(row->weight > 0 && row->b == 0.0);
-        bool ip = row->dof[0] == sk_hand_dof_find("I.PIP.flex") || row->dof[1] == sk_hand_dof_find("I.PIP.flex");
+        bool ip = row->dof[0] == sk_hand_dof_find("I.PIP.flex") ||
+                  row->dof[1] == sk_hand_dof_find("I.PIP.flex");
         bool mp = row->dof[0] == pins.dof[0] || row->dof[1] == pins.dof[0];
         strongest |= ip && mp;
     }
     assert_true(strongest);
     /* the relaxed posture is the samples' mean (shrunk a little toward the default) */
     for (int i = 0; i < G_D; i++)
-        assert_true(fabs(p.component[0].relaxed[sk_hand_dof_find(G_NAME[i])] * SK_RAD_TO_DEG - G_MEAN[i]) < 2.0);
+        assert_true(fabs(p.component[0].relaxed[sk_hand_dof_find(G_NAME[i])] * SK_RAD_TO_DEG -
+                         G_MEAN[i]) < 2.0);
     sk_hand_potential_free(&p);
 
     /* held out: near the conditional mean, far better than the eq. 3.18 line */
@@ -297,13 +308,16 @@ static void test_pair_choice(void **state)
     double want[G_D * G_D], condvar = 0.0;
     known_cov(want);
     for (int u = 0; u < G_D; u++)
-        if (u != 3) condvar += want[u * G_D + u] - want[u * G_D + 3] * want[u * G_D + 3] / want[3 * G_D + 3];
+        if (u != 3)
+            condvar +=
+                want[u * G_D + u] - want[u * G_D + 3] * want[u * G_D + 3] / want[3 * G_D + 3];
     double expect = sqrt(condvar / 3) * DEG;
     assert_true(ev->result[0].model_all < 1.08 * expect);
     assert_true(ev->result[0].model_all < 0.8 * ev->result[0].mean_all);
     assert_int_equal(ev->result[0].unconverged, 0);
     int pair[1][2] = {{sk_hand_dof_find("I.PIP.flex"), pins.dof[0]}};
-    sk_hand_evaluation_desc td = {.model = SK_HAND_EVAL_MODEL_PAIRS, .pairs = (const int(*)[2])pair, .pair_count = 1};
+    sk_hand_evaluation_desc td = {
+        .model = SK_HAND_EVAL_MODEL_PAIRS, .pairs = (const int(*)[2])pair, .pair_count = 1};
     td.potential.base = &natural;
     assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &td, thesis, &err), SK_OK);
     assert_true(ev->result[0].model_all < 0.8 * thesis->result[0].model_all);
@@ -317,11 +331,13 @@ static void test_pair_choice(void **state)
     assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
     assert_true(p.pair_count <= 1);
     if (p.pair_count == 1)
-        assert_string_equal(p.component[0].constraints.rows[p.component[0].constraints.row_count - 1].label,
-                            "I.MCP.flex:I.DIP.flex");
+        assert_string_equal(
+            p.component[0].constraints.rows[p.component[0].constraints.row_count - 1].label,
+            "I.MCP.flex:I.DIP.flex");
     sk_hand_potential_free(&p);
     one[0][1] = sk_hand_dof_find("L.PIP.flex");
-    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "L.PIP.flex"));
     d.pairs = NULL;
     d.pair_count = 0;
@@ -362,7 +378,8 @@ static void test_mixture_torques(void **state)
     sk_hand_skeleton skel = skeleton();
     sk_hand_samples s;
     drawn_samples("I.MCP.flex,I.PIP.flex", 1200, 21, open_or_closed, &s);
-    sk_hand_potential_desc d = {.method = SK_HAND_POTENTIAL_MIXTURE, .components = 2, .prior_strength = -1};
+    sk_hand_potential_desc d = {
+        .method = SK_HAND_POTENTIAL_MIXTURE, .components = 2, .prior_strength = -1};
     sk_hand_potential p;
     sk_error err;
     assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
@@ -419,7 +436,8 @@ static void test_mixture_beats_gaussian_on_nonlinear_relation(void **state)
     /* the lookup table of the pair (3.2.3), built per fold, strong against the springs:
        the DIP follows the hinge too, and every solve converges */
     int pair[1][2] = {{pins.dof[0], sk_hand_dof_find("I.DIP.flex")}};
-    sk_hand_evaluation_desc td = {.model = SK_HAND_EVAL_MODEL_LUT, .pairs = (const int(*)[2])pair, .pair_count = 1};
+    sk_hand_evaluation_desc td = {
+        .model = SK_HAND_EVAL_MODEL_LUT, .pairs = (const int(*)[2])pair, .pair_count = 1};
     td.lut.weight = 100;
     sk_hand_evaluation *t = malloc(sizeof *t);
     assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &td, t, &err), SK_OK);
@@ -438,7 +456,8 @@ static void test_mixture_beats_gaussian_on_nonlinear_relation(void **state)
     assert_int_equal(t->result[0].solves, s.count);
     /* a pair outside the samples */
     pair[0][1] = sk_hand_dof_find("L.DIP.flex");
-    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &td, t, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_evaluate(&skel, &s, &pins, 1, &td, t, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "L.DIP.flex is not a joint-angle column"));
     free(t);
     free(g);
@@ -463,16 +482,20 @@ static void test_lut_solves_converge(void **state)
     free(text);
     assert_int_equal(s.count, 1920);
     static sk_hand_constraints c;
-    assert_int_equal(sk_hand_constraints_load_file(SK_TEST_PRESET_DIR "/hand/natural.json", &skel, &c, &err), SK_OK);
+    assert_int_equal(
+        sk_hand_constraints_load_file(SK_TEST_PRESET_DIR "/hand/natural.json", &skel, &c, &err),
+        SK_OK);
     int pairs[5][2], np;
-    assert_int_equal(sk_hand_parse_pairs("I.MCP.flex:I.PIP.flex,I.PIP.flex:I.DIP.flex,M.MCP.flex:M.PIP.flex,"
-                                         "R.MCP.flex:L.MCP.flex,M.PIP.flex:R.PIP.flex",
-                                         pairs, 5, &np, &err),
-                     SK_OK);
+    assert_int_equal(
+        sk_hand_parse_pairs("I.MCP.flex:I.PIP.flex,I.PIP.flex:I.DIP.flex,M.MCP.flex:M.PIP.flex,"
+                            "R.MCP.flex:L.MCP.flex,M.PIP.flex:R.PIP.flex",
+                            pairs, 5, &np, &err),
+        SK_OK);
     sk_hand_lut luts[5];
     for (int k = 0; k < np; k++)
-        assert_int_equal(sk_hand_lut_build(&luts[k], pairs[k][0], pairs[k][1], s.column[pairs[k][0]],
-                                           s.column[pairs[k][1]], s.count, NULL, &err),
+        assert_int_equal(sk_hand_lut_build(&luts[k], pairs[k][0], pairs[k][1],
+                                           s.column[pairs[k][0]], s.column[pairs[k][1]], s.count,
+                                           NULL, &err),
                          SK_OK);
     sk_hand_solver *solver;
     assert_int_equal(sk_hand_solver_create(&solver, &skel, &c, luts, np, NULL, &err), SK_OK);
@@ -489,7 +512,8 @@ static void test_lut_solves_converge(void **state)
             assert_int_equal(sk_hand_solve(solver, &in, q, &info, &err), SK_OK);
             assert_true(info.converged);
             assert_true(info.residual <= 1e-6);
-            worst_steps = info.newton_iterations > worst_steps ? info.newton_iterations : worst_steps;
+            worst_steps =
+                info.newton_iterations > worst_steps ? info.newton_iterations : worst_steps;
             solves++;
         }
     }
@@ -505,8 +529,10 @@ static void test_samples_csv_options(void **state)
     (void)state;
     sk_hand_samples s;
     sk_error err;
-    const char *text = "person,trial,frame,I.MCP.flex,I.PIP.flex\np1,a,0,0.5,1.0\np2,b,1,0.25,0.75\np1,c,2,0.1,0.2\n";
-    sk_hand_samples_desc d = {.units = SK_HAND_UNIT_RAD, .group_column = "person", .ignore_columns = "trial"};
+    const char *text = "person,trial,frame,I.MCP.flex,I.PIP.flex\np1,a,0,0.5,1.0\np2,b,1,0.25,0."
+                       "75\np1,c,2,0.1,0.2\n";
+    sk_hand_samples_desc d = {
+        .units = SK_HAND_UNIT_RAD, .group_column = "person", .ignore_columns = "trial"};
     assert_int_equal(sk_hand_samples_parse_desc(text, strlen(text), "s.csv", &d, &s, &err), SK_OK);
     assert_int_equal(s.count, 3);
     assert_int_equal(s.group_count, 2);
@@ -524,14 +550,17 @@ static void test_samples_csv_options(void **state)
     sk_hand_samples_free(&s);
     /* a column that is neither a DOF nor ignored */
     d.ignore_columns = NULL;
-    assert_int_equal(sk_hand_samples_parse_desc(text, strlen(text), "s.csv", &d, &s, &err), SK_ERROR_PARSE);
+    assert_int_equal(sk_hand_samples_parse_desc(text, strlen(text), "s.csv", &d, &s, &err),
+                     SK_ERROR_PARSE);
     assert_non_null(strstr(err.message, "unknown DOF \"trial\""));
     d.ignore_columns = "trial,nosuch";
-    assert_int_equal(sk_hand_samples_parse_desc(text, strlen(text), "s.csv", &d, &s, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_samples_parse_desc(text, strlen(text), "s.csv", &d, &s, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "\"nosuch\" is not a column"));
     d.ignore_columns = "trial,person";
     d.group_column = "subject";
-    assert_int_equal(sk_hand_samples_parse_desc(text, strlen(text), "s.csv", &d, &s, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_samples_parse_desc(text, strlen(text), "s.csv", &d, &s, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "group column \"subject\""));
     const char *huge = "I.MCP.flex\n1e308\n";
     assert_int_equal(sk_hand_samples_parse(huge, strlen(huge), "s.csv", &s, &err), SK_ERROR_PARSE);
@@ -539,8 +568,9 @@ static void test_samples_csv_options(void **state)
     const char *empty_group = "person,I.MCP.flex\n,10\n";
     d.group_column = "person";
     d.ignore_columns = NULL;
-    assert_int_equal(sk_hand_samples_parse_desc(empty_group, strlen(empty_group), "s.csv", &d, &s, &err),
-                     SK_ERROR_PARSE);
+    assert_int_equal(
+        sk_hand_samples_parse_desc(empty_group, strlen(empty_group), "s.csv", &d, &s, &err),
+        SK_ERROR_PARSE);
 }
 
 static void test_potential_file_round_trip_and_errors(void **state)
@@ -553,7 +583,9 @@ static void test_potential_file_round_trip_and_errors(void **state)
     free(text);
     static sk_hand_constraints base;
     sk_error err;
-    assert_int_equal(sk_hand_constraints_load_file(SK_TEST_PRESET_DIR "/hand/natural.json", &skel, &base, &err), SK_OK);
+    assert_int_equal(
+        sk_hand_constraints_load_file(SK_TEST_PRESET_DIR "/hand/natural.json", &skel, &base, &err),
+        SK_OK);
     sk_hand_potential_desc d = {.components = 2, .base = &base, .seed = 4};
     sk_hand_potential p, back;
     assert_int_equal(sk_hand_potential_fit(&p, &skel, &s, NULL, 0, &d, &err), SK_OK);
@@ -588,7 +620,8 @@ static void test_potential_file_round_trip_and_errors(void **state)
     sk_hand_samples_free(&s);
 
     /* strict reader: each broken file fails with its reason */
-    const char *ok = "{\"dofs\": [\"I.MCP.flex\", \"I.PIP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, "
+    const char *ok = "{\"dofs\": [\"I.MCP.flex\", \"I.PIP.flex\"], \"scale\": 1, \"components\": "
+                     "[{\"weight\": 1, "
                      "\"relaxed_deg\": {\"I.MCP.flex\": 30, \"I.PIP.flex\": 40}, \"rows\": []}]}";
     assert_int_equal(sk_hand_potential_parse(ok, strlen(ok), "p.json", &skel, &p, &err), SK_OK);
     assert_true(fabs(p.component[0].relaxed[sk_hand_dof_find("I.PIP.flex")] - 40 * DEG) < 1e-12);
@@ -596,32 +629,44 @@ static void test_potential_file_round_trip_and_errors(void **state)
     static const struct {
         const char *text, *needle;
     } bad[] = {
-        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": []} x", "text after the JSON value"},
-        {"{\"dofs\": [\"I.MCP.flex\"], \"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": []}", "given twice"},
+        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": []} x",
+         "text after the JSON value"},
+        {"{\"dofs\": [\"I.MCP.flex\"], \"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": "
+         "[]}",
+         "given twice"},
         {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1e999, \"components\": []}", "too large"},
-        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [], \"extra\": 1}", "extra: unknown key"},
+        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [], \"extra\": 1}",
+         "extra: unknown key"},
         {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": []}", "components: 0 entries"},
         {"{\"dofs\": [\"wrist.tx\"], \"scale\": 1, \"components\": []}", "wrist DOF"},
-        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 0.5, \"relaxed_deg\": "
+        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 0.5, "
+         "\"relaxed_deg\": "
          "{\"I.MCP.flex\": 30}, \"rows\": []}]}",
          "sum to 0.5"},
-        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, \"relaxed_deg\": "
+        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, "
+         "\"relaxed_deg\": "
          "{\"I.MCP.flex\": 130}, \"rows\": []}]}",
          "outside the joint limits"},
-        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, \"relaxed_deg\": {}, "
+        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, "
+         "\"relaxed_deg\": {}, "
          "\"rows\": []}]}",
          "relaxed_deg.I.MCP.flex: missing"},
-        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, \"relaxed_deg\": "
+        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, "
+         "\"relaxed_deg\": "
          "{\"I.MCP.flex\": 30}, \"rows\": [{\"terms\": {\"I.MCP.flex\": 1}, \"W\": -5}]}]}",
          "not positive definite"},
-        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, \"relaxed_deg\": "
-         "{\"I.MCP.flex\": 30}, \"rows\": [{\"terms\": {\"I.MCP.flex\": 1}, \"W\": 1, \"q\": 1}]}]}",
+        {"{\"dofs\": [\"I.MCP.flex\"], \"scale\": 1, \"components\": [{\"weight\": 1, "
+         "\"relaxed_deg\": "
+         "{\"I.MCP.flex\": 30}, \"rows\": [{\"terms\": {\"I.MCP.flex\": 1}, \"W\": 1, \"q\": "
+         "1}]}]}",
          "components[0]: rows[0].q: unknown key"},
         {"[1, 2", "malformed JSON"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        sk_result r = sk_hand_potential_parse(bad[i].text, strlen(bad[i].text), "p.json", &skel, &p, &err);
-        if (r == SK_OK || !strstr(err.message, bad[i].needle)) fprintf(stderr, "case %zu: %s\n", i, err.message);
+        sk_result r =
+            sk_hand_potential_parse(bad[i].text, strlen(bad[i].text), "p.json", &skel, &p, &err);
+        if (r == SK_OK || !strstr(err.message, bad[i].needle))
+            fprintf(stderr, "case %zu: %s\n", i, err.message);
         assert_int_not_equal(r, SK_OK);
         assert_non_null(strstr(err.message, bad[i].needle));
         assert_null(p.component);
@@ -667,11 +712,15 @@ static void test_evaluation_deterministic_over_threads(void **state)
     /* the same for the thesis's form with the pairs chosen and for lookup tables */
     int pair[2][2] = {{sk_hand_dof_find("R.MCP.flex"), sk_hand_dof_find("L.MCP.flex")},
                       {sk_hand_dof_find("I.PIP.flex"), sk_hand_dof_find("M.PIP.flex")}};
-    sk_hand_evaluation_desc other[2] = {
-        {.by_group = true,
-         .potential = {.method = SK_HAND_POTENTIAL_PAIRS, .pairs = (const int(*)[2])pair, .pair_count = 2}},
-        {.by_group = true, .model = SK_HAND_EVAL_MODEL_LUT, .pairs = (const int(*)[2])pair, .pair_count = 2,
-         .lut = {.resolution = 24}}};
+    sk_hand_evaluation_desc other[2] = {{.by_group = true,
+                                         .potential = {.method = SK_HAND_POTENTIAL_PAIRS,
+                                                       .pairs = (const int(*)[2])pair,
+                                                       .pair_count = 2}},
+                                        {.by_group = true,
+                                         .model = SK_HAND_EVAL_MODEL_LUT,
+                                         .pairs = (const int(*)[2])pair,
+                                         .pair_count = 2,
+                                         .lut = {.resolution = 24}}};
     for (int m = 0; m < 2; m++) {
         sk_threads_set(1);
         assert_int_equal(sk_hand_evaluate(&skel, &s, pins, 2, &other[m], one, &err), SK_OK);
@@ -693,8 +742,11 @@ static void test_shipped_data_set_is_generated(void **state)
     char *text, *shipped;
     size_t len, size;
     sk_error err;
-    assert_int_equal(sk_hand_synthetic_grasps_csv(&(sk_hand_synthetic_desc){.seed = 1}, &text, &len, &err), SK_OK);
-    assert_int_equal(sk_read_file(SK_TEST_PRESET_DIR "/hand/samples/synthetic-grasps.csv", 0, &shipped, &size, &err),
+    assert_int_equal(
+        sk_hand_synthetic_grasps_csv(&(sk_hand_synthetic_desc){.seed = 1}, &text, &len, &err),
+        SK_OK);
+    assert_int_equal(sk_read_file(SK_TEST_PRESET_DIR "/hand/samples/synthetic-grasps.csv", 0,
+                                  &shipped, &size, &err),
                      SK_OK);
     assert_int_equal(len, size);
     assert_memory_equal(text, shipped, len);
@@ -709,13 +761,17 @@ static void test_cli_evaluate(void **state)
     char csv[1024], pot[1024]; /* kept: sk_test_path reuses its buffers */
     snprintf(csv, sizeof csv, "%s", sk_test_path("prior/cli-samples.csv"));
     snprintf(pot, sizeof pot, "%s", sk_test_path("prior/cli-potential.json"));
-    assert_int_equal(sk_test_cli(run, "hand synthesize --people 3 --trials 1 --frames 20 -o '%s'", csv), 0);
-    const char *report = sk_test_path("prior/cli-report.json"), *plot = sk_test_path("prior/cli-plot.png");
-    assert_int_equal(sk_test_cli(run,
-                                 "hand evaluate '%s' --pins I.MCP.flex,I.PIP.flex --pins L.MCP.flex --group person "
-                                 "--ignore-columns trial --report '%s' --plot '%s' --method gaussian",
-                                 csv, report, plot),
-                     0);
+    assert_int_equal(
+        sk_test_cli(run, "hand synthesize --people 3 --trials 1 --frames 20 -o '%s'", csv), 0);
+    const char *report = sk_test_path("prior/cli-report.json"),
+               *plot = sk_test_path("prior/cli-plot.png");
+    assert_int_equal(
+        sk_test_cli(
+            run,
+            "hand evaluate '%s' --pins I.MCP.flex,I.PIP.flex --pins L.MCP.flex --group person "
+            "--ignore-columns trial --report '%s' --plot '%s' --method gaussian",
+            csv, report, plot),
+        0);
     assert_non_null(strstr(run->out, "pins L.MCP.flex: held-out RMS error"));
     assert_true(sk_test_file_exists(plot));
     char *text;
@@ -729,56 +785,80 @@ static void test_cli_evaluate(void **state)
     assert_non_null(strstr(text, "\"per_joint\":\t{\n\t\t\t\"I.DIP.flex\":"));
     assert_non_null(strstr(text, "\"baselines\":\t{\n\t\t\t\"mean\":"));
     assert_non_null(strstr(text, "\"pca\":\t{\n\t\t\t\t\"k\":\t6,\n\t\t\t\t\"rms_deg\":"));
-    assert_non_null(strstr(text, "\"solves\":\t{\n\t\t\t\"count\":\t600,\n\t\t\t\"not_converged\":\t0,"));
+    assert_non_null(
+        strstr(text, "\"solves\":\t{\n\t\t\t\"count\":\t600,\n\t\t\t\"not_converged\":\t0,"));
     free(text);
     /* the lookup-table model (3.2.3) */
-    assert_int_equal(sk_test_cli(run,
-                                 "hand evaluate '%s' --pins L.MCP.flex --group person --ignore-columns trial "
-                                 "--model lookup-tables --pairs R.MCP.flex:L.MCP.flex --lut-resolution 60",
-                                 csv),
-                     0);
+    assert_int_equal(
+        sk_test_cli(run,
+                    "hand evaluate '%s' --pins L.MCP.flex --group person --ignore-columns trial "
+                    "--model lookup-tables --pairs R.MCP.flex:L.MCP.flex --lut-resolution 60",
+                    csv),
+        0);
     assert_non_null(strstr(run->out, "tables"));
     assert_non_null(strstr(run->out, "0 not converged"));
-    assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins L.MCP.flex --ignore-columns trial,person "
-                                      "--model lookup-tables", csv),
-                     2);
+    assert_int_equal(
+        sk_test_cli(run,
+                    "hand evaluate '%s' --pins L.MCP.flex --ignore-columns trial,person "
+                    "--model lookup-tables",
+                    csv),
+        2);
     assert_non_null(strstr(run->err, "--model lookup-tables needs --pairs"));
     /* calibrate a potential and pose with it */
     const char *pose = sk_test_path("prior/cli-pose.json");
-    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --components 3 -o '%s' -q",
-                                 csv, pot),
-                     0);
-    assert_int_equal(sk_test_cli(run, "hand pose --potential '%s' --pin I.MCP.flex=60 -o '%s'", pot, pose), 0);
+    assert_int_equal(
+        sk_test_cli(
+            run,
+            "hand calibrate '%s' --group person --ignore-columns trial --components 3 -o '%s' -q",
+            csv, pot),
+        0);
+    assert_int_equal(
+        sk_test_cli(run, "hand pose --potential '%s' --pin I.MCP.flex=60 -o '%s'", pot, pose), 0);
     assert_true(sk_test_file_exists(pose));
     /* animation and the surface with a calibrated potential (a mixture: pins and torques) */
-    const char *angles = sk_test_path("prior/cli-angles.csv"), *mesh = sk_test_path("prior/cli-mesh.obj");
-    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/piano-key.json' --potential '%s' --angles '%s' -q",
-                                 SK_TEST_PRESET_DIR, pot, angles),
-                     0);
+    const char *angles = sk_test_path("prior/cli-angles.csv"),
+               *mesh = sk_test_path("prior/cli-mesh.obj");
+    assert_int_equal(
+        sk_test_cli(run, "hand animate '%s/hand/piano-key.json' --potential '%s' --angles '%s' -q",
+                    SK_TEST_PRESET_DIR, pot, angles),
+        0);
     assert_true(sk_test_file_exists(angles));
-    assert_int_equal(sk_test_cli(run, "hand animate '%s/hand/little-mcp.json' --potential '%s' --constraints natural --angles '%s'",
+    assert_int_equal(sk_test_cli(run,
+                                 "hand animate '%s/hand/little-mcp.json' --potential '%s' "
+                                 "--constraints natural --angles '%s'",
                                  SK_TEST_PRESET_DIR, pot, angles),
                      2);
     assert_non_null(strstr(run->err, "--potential does not go with --constraints"));
-    assert_int_equal(sk_test_cli(run, "hand mesh --potential '%s' --pin I.MCP.flex=60 --lod 2 -o '%s' -q", pot, mesh), 0);
+    assert_int_equal(
+        sk_test_cli(run, "hand mesh --potential '%s' --pin I.MCP.flex=60 --lod 2 -o '%s' -q", pot,
+                    mesh),
+        0);
     assert_true(sk_test_file_exists(mesh));
     /* the thesis's form with the pairs chosen, written as a potential */
     const char *pairs_pot = sk_test_path("prior/cli-pairs.json");
-    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --group person --ignore-columns trial --method pairs "
-                                 "--pairs R.MCP.flex:L.MCP.flex,L.MCP.flex:L.PIP.flex,I.PIP.flex:M.PIP.flex -o '%s'",
-                                 csv, pairs_pot),
-                     0);
+    assert_int_equal(
+        sk_test_cli(
+            run,
+            "hand calibrate '%s' --group person --ignore-columns trial --method pairs "
+            "--pairs R.MCP.flex:L.MCP.flex,L.MCP.flex:L.PIP.flex,I.PIP.flex:M.PIP.flex -o '%s'",
+            csv, pairs_pot),
+        0);
     assert_non_null(strstr(run->out, "weight scale"));
-    assert_int_equal(sk_test_cli(run, "hand pose --potential '%s' --pin L.MCP.flex=70 -o '%s'", pairs_pot, pose), 0);
-    assert_int_equal(sk_test_cli(run, "hand calibrate '%s' --ignore-columns trial,person --max-pairs 3 -o '%s'", csv,
-                                 pairs_pot),
-                     2);
+    assert_int_equal(
+        sk_test_cli(run, "hand pose --potential '%s' --pin L.MCP.flex=70 -o '%s'", pairs_pot, pose),
+        0);
+    assert_int_equal(
+        sk_test_cli(run, "hand calibrate '%s' --ignore-columns trial,person --max-pairs 3 -o '%s'",
+                    csv, pairs_pot),
+        2);
     assert_non_null(strstr(run->err, "--max-pairs needs --method pairs"));
-    assert_int_equal(sk_test_cli(run,
-                                 "hand evaluate '%s' --pins L.MCP.flex --group person --ignore-columns trial "
-                                 "--method pairs --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:M.PIP.flex --max-pairs 2",
-                                 csv),
-                     0);
+    assert_int_equal(
+        sk_test_cli(
+            run,
+            "hand evaluate '%s' --pins L.MCP.flex --group person --ignore-columns trial "
+            "--method pairs --pairs R.MCP.flex:L.MCP.flex,I.PIP.flex:M.PIP.flex --max-pairs 2",
+            csv),
+        0);
     assert_non_null(strstr(run->out, "pins L.MCP.flex: held-out RMS error"));
     /* the group's help lists its commands; an unknown one is a one-line error */
     assert_int_equal(sk_test_cli(run, "hand --help"), 0);
@@ -789,24 +869,35 @@ static void test_cli_evaluate(void **state)
     assert_non_null(strstr(run->err, "unknown command 'hand evalute'"));
     /* errors: one line, exit 2, no report */
     const char *none = sk_test_path("prior/cli-none.json");
-    assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins T.MCP.flex --ignore-columns trial,person --report '%s'",
-                                 csv, none),
-                     2);
+    assert_int_equal(
+        sk_test_cli(
+            run, "hand evaluate '%s' --pins T.MCP.flex --ignore-columns trial,person --report '%s'",
+            csv, none),
+        2);
     assert_int_equal(sk_test_count_lines(run->err), 1);
     assert_non_null(strstr(run->err, "T.MCP.flex is not a joint-angle column"));
     assert_false(sk_test_file_exists(none));
     assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --ignore-columns trial,person", csv), 2);
     assert_non_null(strstr(run->err, "--pins is required"));
-    assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins L.MCP.flx --ignore-columns trial,person", csv), 2);
-    assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins L.MCP.flex --group subject", csv), 2);
+    assert_int_equal(
+        sk_test_cli(run, "hand evaluate '%s' --pins L.MCP.flx --ignore-columns trial,person", csv),
+        2);
+    assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins L.MCP.flex --group subject", csv),
+                     2);
     /* radians read as degrees: a warning */
     const char *rad = sk_test_path("prior/cli-rad.csv");
-    const char *rad_text = "I.MCP.flex,I.PIP.flex\n0.1,0.2\n0.5,0.9\n0.3,0.4\n0.7,1.1\n0.2,0.3\n0.6,1.0\n";
+    const char *rad_text =
+        "I.MCP.flex,I.PIP.flex\n0.1,0.2\n0.5,0.9\n0.3,0.4\n0.7,1.1\n0.2,0.3\n0.6,1.0\n";
     sk_test_write_file(rad, rad_text, strlen(rad_text));
-    assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins I.MCP.flex --folds 2 --method gaussian", rad), 0);
+    assert_int_equal(
+        sk_test_cli(run, "hand evaluate '%s' --pins I.MCP.flex --folds 2 --method gaussian", rad),
+        0);
     assert_non_null(strstr(run->err, "look like radians"));
-    assert_int_equal(sk_test_cli(run, "hand evaluate '%s' --pins I.MCP.flex --folds 2 --method gaussian --units rad", rad),
-                     0);
+    assert_int_equal(
+        sk_test_cli(run,
+                    "hand evaluate '%s' --pins I.MCP.flex --folds 2 --method gaussian --units rad",
+                    rad),
+        0);
     assert_null(strstr(run->err, "warning"));
     free(run);
 }

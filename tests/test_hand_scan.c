@@ -16,14 +16,16 @@
 
 /* A closed capsule mesh from a to b (its axis), radius r, appended to `m` (grown).
  * rings: latitude steps per hemisphere; sides: around. */
-static void add_capsule(sk_mesh *m, sk_vec3d a, sk_vec3d b, double r, int sides, int rings, int body)
+static void add_capsule(sk_mesh *m, sk_vec3d a, sk_vec3d b, double r, int sides, int rings,
+                        int body)
 {
     sk_vec3d axis = sk_v3d_normalize(sk_v3d_sub(b, a));
     sk_vec3d t = fabs(axis.x) < 0.9 ? sk_v3d(1, 0, 0) : sk_v3d(0, 1, 0);
     sk_vec3d e1 = sk_v3d_normalize(sk_v3d_cross(axis, t)), e2 = sk_v3d_cross(axis, e1);
     /* latitude rows: south pole cap (rings), body (body + 1 rows), north cap (rings) */
     int rows = 2 * rings + body + 1; /* rows of vertices between the two poles */
-    size_t v0 = m->vertex_count, nv = (size_t)rows * sides + 2, nt = (size_t)(rows - 1) * sides * 2 + 2 * sides;
+    size_t v0 = m->vertex_count, nv = (size_t)rows * sides + 2,
+           nt = (size_t)(rows - 1) * sides * 2 + 2 * sides;
     m->positions = realloc(m->positions, sizeof(float) * 3 * (v0 + nv));
     m->indices = realloc(m->indices, sizeof(uint32_t) * 3 * (m->triangle_count + nt));
     float *P = m->positions;
@@ -43,29 +45,34 @@ static void add_capsule(sk_mesh *m, sk_vec3d a, sk_vec3d b, double r, int sides,
         }
         for (int s = 0; s < sides; s++) {
             double phi = 2 * SK_PI * s / sides;
-            sk_vec3d dir = sk_v3d_add(sk_v3d_scale(sk_v3d_add(sk_v3d_scale(e1, cos(phi)), sk_v3d_scale(e2, sin(phi))), cos(lat)),
-                                      sk_v3d_scale(axis, sin(lat)));
+            sk_vec3d dir = sk_v3d_add(
+                sk_v3d_scale(sk_v3d_add(sk_v3d_scale(e1, cos(phi)), sk_v3d_scale(e2, sin(phi))),
+                             cos(lat)),
+                sk_v3d_scale(axis, sin(lat)));
             sk_vec3d p = sk_v3d_add(c, sk_v3d_scale(dir, r));
             P[3 * v] = (float)p.x, P[3 * v + 1] = (float)p.y, P[3 * v + 2] = (float)p.z;
             v++;
         }
     }
-    sk_vec3d south = sk_v3d_sub(a, sk_v3d_scale(axis, r)), north = sk_v3d_add(b, sk_v3d_scale(axis, r));
+    sk_vec3d south = sk_v3d_sub(a, sk_v3d_scale(axis, r)),
+             north = sk_v3d_add(b, sk_v3d_scale(axis, r));
     size_t vs = v++, vn = v++;
     P[3 * vs] = (float)south.x, P[3 * vs + 1] = (float)south.y, P[3 * vs + 2] = (float)south.z;
     P[3 * vn] = (float)north.x, P[3 * vn + 1] = (float)north.y, P[3 * vn + 2] = (float)north.z;
     uint32_t *I = m->indices + 3 * m->triangle_count;
     size_t t_ = 0;
-#define VID(row, s) ((uint32_t)(v0 + (size_t)(row) * sides + (size_t)(((s) % sides + sides) % sides)))
+#define VID(row, s) ((uint32_t)(v0 + (size_t)(row)*sides + (size_t)(((s) % sides + sides) % sides)))
     for (int row = 0; row + 1 < rows; row++)
         for (int s = 0; s < sides; s++) {
-            uint32_t q00 = VID(row, s), q01 = VID(row, s + 1), q10 = VID(row + 1, s), q11 = VID(row + 1, s + 1);
+            uint32_t q00 = VID(row, s), q01 = VID(row, s + 1), q10 = VID(row + 1, s),
+                     q11 = VID(row + 1, s + 1);
             I[3 * t_] = q00, I[3 * t_ + 1] = q01, I[3 * t_ + 2] = q11, t_++;
             I[3 * t_] = q00, I[3 * t_ + 1] = q11, I[3 * t_ + 2] = q10, t_++;
         }
     for (int s = 0; s < sides; s++) {
         I[3 * t_] = (uint32_t)vs, I[3 * t_ + 1] = VID(0, s + 1), I[3 * t_ + 2] = VID(0, s), t_++;
-        I[3 * t_] = (uint32_t)vn, I[3 * t_ + 1] = VID(rows - 1, s), I[3 * t_ + 2] = VID(rows - 1, s + 1), t_++;
+        I[3 * t_] = (uint32_t)vn, I[3 * t_ + 1] = VID(rows - 1, s),
+              I[3 * t_ + 2] = VID(rows - 1, s + 1), t_++;
     }
 #undef VID
     m->vertex_count = v0 + nv;
@@ -112,9 +119,11 @@ static void test_ray_hierarchy_matches_brute_force(void **state)
     sk_error err;
     assert_int_equal(sk_hand_scan_target_create(&t, &td, &err), SK_OK);
     for (int k = 0; k < 300; k++) {
-        sk_vec3d o = sk_v3d(sk_rand_uniform(1, k, 0, 0) * 40 - 20, sk_rand_uniform(1, k, 1, 0) * 40 - 20,
-                            sk_rand_uniform(1, k, 2, 0) * 40 - 20);
-        sk_vec3d d = sk_v3d_normalize(sk_v3d(sk_rand_normal(1, k, 3, 0), sk_rand_normal(1, k, 4, 0), sk_rand_normal(1, k, 5, 0)));
+        sk_vec3d o =
+            sk_v3d(sk_rand_uniform(1, k, 0, 0) * 40 - 20, sk_rand_uniform(1, k, 1, 0) * 40 - 20,
+                   sk_rand_uniform(1, k, 2, 0) * 40 - 20);
+        sk_vec3d d = sk_v3d_normalize(sk_v3d(sk_rand_normal(1, k, 3, 0), sk_rand_normal(1, k, 4, 0),
+                                             sk_rand_normal(1, k, 5, 0)));
         if (k % 7 == 0) d = sk_v3d(0, 0, -1); /* axis-aligned rays, as the scanner's */
         /* brute force over every triangle (Moller-Trumbore written out again) */
         double best = INFINITY;
@@ -124,7 +133,8 @@ static void test_ray_hierarchy_matches_brute_force(void **state)
                 const float *p = m.positions + 3 * m.indices[3 * i + c];
                 v[c] = sk_v3d(p[0], p[1], p[2]);
             }
-            sk_vec3d e1 = sk_v3d_sub(v[1], v[0]), e2 = sk_v3d_sub(v[2], v[0]), pv = sk_v3d_cross(d, e2);
+            sk_vec3d e1 = sk_v3d_sub(v[1], v[0]), e2 = sk_v3d_sub(v[2], v[0]),
+                     pv = sk_v3d_cross(d, e2);
             double det = sk_v3d_dot(e1, pv);
             if (fabs(det) < 1e-15) continue;
             sk_vec3d s = sk_v3d_sub(o, v[0]);
@@ -160,7 +170,8 @@ static void test_ray_hierarchy_matches_brute_force(void **state)
 static sk_hand_rigid some_transform(void)
 {
     sk_hand_rigid t;
-    t.rotation = sk_m3d_mul(sk_m3d_rot_z(0.07), sk_m3d_mul(sk_m3d_rot_x(SK_PI), sk_m3d_rot_y(-0.03)));
+    t.rotation =
+        sk_m3d_mul(sk_m3d_rot_z(0.07), sk_m3d_mul(sk_m3d_rot_x(SK_PI), sk_m3d_rot_y(-0.03)));
     t.translation = sk_v3d(12.0, 180.0, 41.0);
     return t;
 }
@@ -168,7 +179,7 @@ static sk_hand_rigid some_transform(void)
 /* 9 points spread like the markers: around the hand's outline, nearly in one plane. */
 static void marker_like_points(sk_vec3d *p)
 {
-    static const double xy[9][2] = {{-30, 0}, {35, 5}, {50, 40}, {60, 80}, {42, 100},
+    static const double xy[9][2] = {{-30, 0},  {35, 5},   {50, 40},  {60, 80},  {42, 100},
                                     {45, 140}, {-40, 30}, {-42, 90}, {-48, 120}};
     for (int i = 0; i < 9; i++) p[i] = sk_v3d(xy[i][0], xy[i][1], 2.0 * sin(i * 1.3));
 }
@@ -197,9 +208,11 @@ static void test_registration_recovers_a_known_transform(void **state)
     for (int k = 0; k < trials; k++) {
         sk_vec3d na[9], nb[9];
         for (int i = 0; i < 9; i++) {
-            na[i] = sk_v3d_add(a[i], sk_v3d(sigma * sk_rand_normal(5, k, i, 0), sigma * sk_rand_normal(5, k, i, 1),
+            na[i] = sk_v3d_add(a[i], sk_v3d(sigma * sk_rand_normal(5, k, i, 0),
+                                            sigma * sk_rand_normal(5, k, i, 1),
                                             sigma * sk_rand_normal(5, k, i, 2)));
-            nb[i] = sk_v3d_add(b[i], sk_v3d(sigma * sk_rand_normal(5, k, i, 3), sigma * sk_rand_normal(5, k, i, 4),
+            nb[i] = sk_v3d_add(b[i], sk_v3d(sigma * sk_rand_normal(5, k, i, 3),
+                                            sigma * sk_rand_normal(5, k, i, 4),
                                             sigma * sk_rand_normal(5, k, i, 5)));
         }
         assert_int_equal(sk_hand_register_rigid(na, nb, 9, &est, res, &err), SK_OK);
@@ -224,7 +237,8 @@ static void test_registration_recovers_a_known_transform(void **state)
     sk_hand_rigid_difference(&est, &truth, &angle, &shift);
     assert_true(angle < 1e-9 && shift < 1e-9);
     /* points on a line leave the rotation about it open */
-    for (int i = 0; i < 9; i++) a[i] = sk_v3d(i, 2 * i, 0), b[i] = sk_hand_rigid_apply(&truth, a[i]);
+    for (int i = 0; i < 9; i++)
+        a[i] = sk_v3d(i, 2 * i, 0), b[i] = sk_hand_rigid_apply(&truth, a[i]);
     assert_int_equal(sk_hand_register_rigid(a, b, 9, &est, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
     assert_int_equal(sk_hand_register_rigid(a, b, 2, &est, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
 }
@@ -242,14 +256,17 @@ static void test_scanner_sees_what_is_visible_with_the_stated_noise(void **state
     sk_hand_scan_target *t;
     sk_error err;
     assert_int_equal(sk_hand_scan_target_create(&t, &td, &err), SK_OK);
-    sk_hand_scanner_desc d = {.lines = 160, .points = 128, .size_x_mm = 100, .size_y_mm = 80, .size_z_mm = 100};
+    sk_hand_scanner_desc d = {
+        .lines = 160, .points = 128, .size_x_mm = 100, .size_y_mm = 80, .size_z_mm = 100};
     sk_hand_rigid place[2];
     assert_int_equal(sk_hand_scan_placements(t, &d, place, &err), SK_OK);
     /* resting on the table, centred */
     sk_vec3d centre = sk_hand_rigid_apply(&place[0], c);
-    assert_true(fabs(centre.z - radius) < 0.05 && fabs(centre.x - 50) < 0.05 && fabs(centre.y - 40) < 0.05);
+    assert_true(fabs(centre.z - radius) < 0.05 && fabs(centre.x - 50) < 0.05 &&
+                fabs(centre.y - 40) < 0.05);
     sk_hand_range_scan scan;
-    assert_int_equal(sk_hand_scan_simulate(t, NULL, SK_HAND_SCAN_PALM, &place[0], &d, 9, &scan, &err), SK_OK);
+    assert_int_equal(
+        sk_hand_scan_simulate(t, NULL, SK_HAND_SCAN_PALM, &place[0], &d, 9, &scan, &err), SK_OK);
     sk_hand_scanner_desc r = sk_hand_scanner_desc_resolved(&d);
     double a = r.triangulation_deg * SK_DEG_TO_RAD, cg = cos(r.grazing_deg * SK_DEG_TO_RAD);
     sk_vec3d cam = {sin(a), 0, cos(a)};
@@ -269,7 +286,8 @@ static void test_scanner_sees_what_is_visible_with_the_stated_noise(void **state
                 surface++;
                 mismatches += seen != measured;
                 if (measured) {
-                    assert_true(fabs(scan.true_depth[k] - (centre.z + dz)) < 1e-4); /* float storage */
+                    assert_true(fabs(scan.true_depth[k] - (centre.z + dz)) <
+                                1e-4); /* float storage */
                     double e = scan.depth[k] - scan.true_depth[k];
                     sum += e, sum2 += e * e;
                     /* quantised to the depth step */
@@ -291,9 +309,11 @@ static void test_scanner_sees_what_is_visible_with_the_stated_noise(void **state
         }
     /* only the silhouette's few samples may differ (mesh against sphere) */
     assert_true(mismatches < surface / 100 + 4);
-    assert_true(shadow_predicted > 100 && abs(shadow - shadow_predicted) < shadow_predicted / 50 + 4);
+    assert_true(shadow_predicted > 100 &&
+                abs(shadow - shadow_predicted) < shadow_predicted / 50 + 4);
     int measured = 0;
-    for (size_t k = 0; k < (size_t)scan.lines * scan.points; k++) measured += scan.kind[k] == SK_HAND_SAMPLE_SURFACE;
+    for (size_t k = 0; k < (size_t)scan.lines * scan.points; k++)
+        measured += scan.kind[k] == SK_HAND_SAMPLE_SURFACE;
     double mean = sum / measured, sd_ = sqrt(sum2 / measured - mean * mean);
     /* noise 0.05 / cos (>= 0.05) and quantisation 0.2 (sd 0.058) */
     assert_true(fabs(mean) < 0.01);
@@ -302,10 +322,12 @@ static void test_scanner_sees_what_is_visible_with_the_stated_noise(void **state
     assert_true(place[1].rotation.m[2][2] < -0.99);
     /* same seed, same scan; another seed, another noise */
     sk_hand_range_scan again;
-    assert_int_equal(sk_hand_scan_simulate(t, NULL, SK_HAND_SCAN_PALM, &place[0], &d, 9, &again, &err), SK_OK);
+    assert_int_equal(
+        sk_hand_scan_simulate(t, NULL, SK_HAND_SCAN_PALM, &place[0], &d, 9, &again, &err), SK_OK);
     assert_memory_equal(scan.depth, again.depth, sizeof(float) * scan.lines * scan.points);
     sk_hand_range_scan_free(&again);
-    assert_int_equal(sk_hand_scan_simulate(t, NULL, SK_HAND_SCAN_PALM, &place[0], &d, 10, &again, &err), SK_OK);
+    assert_int_equal(
+        sk_hand_scan_simulate(t, NULL, SK_HAND_SCAN_PALM, &place[0], &d, 10, &again, &err), SK_OK);
     assert_true(memcmp(scan.depth, again.depth, sizeof(float) * scan.lines * scan.points) != 0);
     sk_hand_range_scan_free(&again);
     sk_hand_range_scan_free(&scan);
@@ -314,8 +336,9 @@ static void test_scanner_sees_what_is_visible_with_the_stated_noise(void **state
     assert_int_equal(sk_hand_scan_placements(t, &small, place, &err), SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "size_x_mm"));
     sk_hand_scanner_desc bad = {.lines = 3};
-    assert_int_equal(sk_hand_scan_simulate(t, NULL, SK_HAND_SCAN_PALM, &place[0], &bad, 9, &scan, &err),
-                     SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(
+        sk_hand_scan_simulate(t, NULL, SK_HAND_SCAN_PALM, &place[0], &bad, 9, &scan, &err),
+        SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "scanner.lines"));
     sk_hand_scan_target_destroy(t);
     free_mesh(&m);
@@ -335,12 +358,15 @@ static void test_markers_are_found_where_they_are(void **state)
     sk_hand_markers mk = {.count = 9, .radius_mm = 2.5};
     for (int k = 0; k < 9; k++) snprintf(mk.name[k], sizeof mk.name[k], "m%d", k);
     for (int k = 0; k < 9; k++) mk.centre[k] = sk_v3d((k % 2 ? 1 : -1) * 20.75, -36 + 9.0 * k, 0);
-    sk_hand_scanner_desc d = {.lines = 300, .points = 256, .size_x_mm = 150, .size_y_mm = 100, .size_z_mm = 80};
+    sk_hand_scanner_desc d = {
+        .lines = 300, .points = 256, .size_x_mm = 150, .size_y_mm = 100, .size_z_mm = 80};
     sk_hand_rigid place[2];
     assert_int_equal(sk_hand_scan_placements(t, &d, place, &err), SK_OK);
     for (int side = 0; side < 2; side++) {
         sk_hand_range_scan scan;
-        assert_int_equal(sk_hand_scan_simulate(t, &mk, (sk_hand_scan_side)side, &place[side], &d, 4, &scan, &err), SK_OK);
+        assert_int_equal(sk_hand_scan_simulate(t, &mk, (sk_hand_scan_side)side, &place[side], &d, 4,
+                                               &scan, &err),
+                         SK_OK);
         sk_vec3d found[9];
         int used[9];
         assert_int_equal(sk_hand_markers_locate(&scan, &mk, found, used, &err), SK_OK);
@@ -355,7 +381,6 @@ static void test_markers_are_found_where_they_are(void **state)
     sk_hand_scan_target_destroy(t);
     free_mesh(&m);
 }
-
 
 /* ------------------------------------------------------------ slices and polygons */
 
@@ -412,8 +437,10 @@ static edge_count *count_edges(const sk_mesh *m, size_t *count)
             size_t i = 0;
             while (i < n && !(e[i].a == lo && e[i].b == hi)) i++;
             if (i == n) e[n++] = (edge_count){lo, hi, 0, 0};
-            if (a == lo) e[i].forward++;
-            else e[i].backward++;
+            if (a == lo)
+                e[i].forward++;
+            else
+                e[i].backward++;
         }
     *count = n;
     return e;
@@ -423,9 +450,11 @@ static edge_count *count_edges(const sk_mesh *m, size_t *count)
 static void assert_faces_away_from_the_y_axis(const sk_mesh *m)
 {
     for (size_t t = 0; t < m->triangle_count; t++) {
-        const float *p0 = m->positions + 3 * m->indices[3 * t], *p1 = m->positions + 3 * m->indices[3 * t + 1];
+        const float *p0 = m->positions + 3 * m->indices[3 * t],
+                    *p1 = m->positions + 3 * m->indices[3 * t + 1];
         const float *p2 = m->positions + 3 * m->indices[3 * t + 2];
-        sk_vec3d a = sk_v3d(p0[0], p0[1], p0[2]), b = sk_v3d(p1[0], p1[1], p1[2]), c = sk_v3d(p2[0], p2[1], p2[2]);
+        sk_vec3d a = sk_v3d(p0[0], p0[1], p0[2]), b = sk_v3d(p1[0], p1[1], p1[2]),
+                 c = sk_v3d(p2[0], p2[1], p2[2]);
         sk_vec3d n = sk_v3d_cross(sk_v3d_sub(b, a), sk_v3d_sub(c, a));
         sk_vec3d centre = sk_v3d_scale(sk_v3d_add(sk_v3d_add(a, b), c), 1.0 / 3);
         assert_true(n.x * centre.x + n.z * centre.z > 0);
@@ -502,7 +531,8 @@ static void tube_folds(double noise, sk_hand_resample_stats st[2])
     sk_hand_slices_desc sd = {.count = 30};
     assert_int_equal(sk_hand_slices_build(&c, &g, &sd, &sl, &err), SK_OK);
     for (int k = 0; k < 2; k++) {
-        sk_hand_resample_desc rd = {.mode = k ? SK_HAND_RESAMPLE_THESIS : SK_HAND_RESAMPLE_NEIGHBOURS};
+        sk_hand_resample_desc rd = {.mode =
+                                        k ? SK_HAND_RESAMPLE_THESIS : SK_HAND_RESAMPLE_NEIGHBOURS};
         sk_mesh m;
         assert_int_equal(sk_hand_resample(&sl, &g, &rd, &m, &st[k], &err), SK_OK);
         assert_int_equal(st[k].rings, 30);
@@ -535,7 +565,8 @@ static void assert_joined_at_y20(sk_hand_cloud *cloud, const sk_hand_link_geomet
     free(e);
     bool joined = false;
     for (size_t t = 0; t < m.triangle_count; t++) {
-        float y0 = m.positions[3 * m.indices[3 * t] + 1], y1 = m.positions[3 * m.indices[3 * t + 1] + 1];
+        float y0 = m.positions[3 * m.indices[3 * t] + 1],
+              y1 = m.positions[3 * m.indices[3 * t + 1] + 1];
         joined = joined || (y0 < 20.0f && y1 > 20.0f) || (y0 > 20.0f && y1 < 20.0f);
     }
     assert_true(joined);
@@ -552,7 +583,8 @@ static void drop_side_bands(sk_hand_cloud *c, bool above)
     for (size_t i = 0; i < c->count; i++) {
         sk_vec3d p = c->position[i];
         double th = atan2(p.z, p.x);
-        if ((above ? p.y > 20.0 : p.y < 20.0) && (fabs(th) < 0.6 || fabs(th) > SK_PI - 0.6)) continue;
+        if ((above ? p.y > 20.0 : p.y < 20.0) && (fabs(th) < 0.6 || fabs(th) > SK_PI - 0.6))
+            continue;
         c->position[n] = p;
         c->side[n++] = c->side[i];
     }
@@ -582,8 +614,9 @@ static void test_finger_joins_its_metacarpal(void **state)
     cylinder_cloud(10.0, 40.0, 0.0, 0.0, &c);
     /* below y = 20 (the metacarpal) the sides are unseen, as between the palm's strips */
     drop_side_bands(&c, false);
-    sk_hand_link_geometry g = single_link(sk_v3d(0, 20, 0), sk_v3d(0, 45, 0)); /* link 5: index proximal */
-    g.a[4] = sk_v3d(0, -5, 0), g.b[4] = sk_v3d(0, 20, 0);                    /* link 4: its metacarpal */
+    sk_hand_link_geometry g =
+        single_link(sk_v3d(0, 20, 0), sk_v3d(0, 45, 0));  /* link 5: index proximal */
+    g.a[4] = sk_v3d(0, -5, 0), g.b[4] = sk_v3d(0, 20, 0); /* link 4: its metacarpal */
     assert_joined_at_y20(&c, &g);
 }
 
@@ -605,7 +638,7 @@ static void test_palm_strips_are_bridged(void **state)
         }
     c.count = (size_t)rows * around;
     sk_hand_link_geometry g = single_link(sk_v3d(1000, 0, 0), sk_v3d(1000, 1, 0));
-    g.a[4] = sk_v3d(10, -5, 0), g.b[4] = sk_v3d(10, 45, 0); /* the index metacarpal */
+    g.a[4] = sk_v3d(10, -5, 0), g.b[4] = sk_v3d(10, 45, 0);   /* the index metacarpal */
     g.a[8] = sk_v3d(-10, -5, 0), g.b[8] = sk_v3d(-10, 45, 0); /* the middle metacarpal */
     sk_hand_slices_desc sd = {.count = 8};
     sk_hand_slices sl;
@@ -623,7 +656,8 @@ static void test_palm_strips_are_bridged(void **state)
         boundary += e[i].forward + e[i].backward == 1;
     }
     free(e);
-    assert_int_equal(boundary, 2 * 20); /* the first and the last section: 2 arcs of 9 edges, 2 bridges */
+    assert_int_equal(boundary,
+                     2 * 20); /* the first and the last section: 2 arcs of 9 edges, 2 bridges */
     assert_int_equal((long)m.vertex_count - (long)ne + (long)m.triangle_count, 0);
     assert_faces_away_from_the_y_axis(&m);
     sk_mesh_free(&m);
@@ -675,7 +709,8 @@ static double sdf_capsules(void *user, sk_vec3d p, sk_vec3d *g)
     return best;
 }
 
-static void make_capsule_hand(const sk_hand_skeleton *skel, const double *dofs, capsule_hand *h, sk_mesh *m)
+static void make_capsule_hand(const sk_hand_skeleton *skel, const double *dofs, capsule_hand *h,
+                              sk_mesh *m)
 {
     sk_hand_frames f;
     sk_hand_forward(skel, dofs, &f);
@@ -683,8 +718,8 @@ static void make_capsule_hand(const sk_hand_skeleton *skel, const double *dofs, 
     sk_hand_link_geometry_from_frames(&f, &g);
     memset(m, 0, sizeof *m);
     h->count = SK_HAND_LINK_COUNT;
-    static const double radius[SK_HAND_LINK_COUNT] = {22, 13, 10, 9, 12, 9, 8, 7, 12, 9, 8, 7, 12, 8.5, 7.5, 6.5,
-                                                      11, 8, 7, 6};
+    static const double radius[SK_HAND_LINK_COUNT] = {22, 13, 10, 9,   12,  9,   8,  7, 12, 9,
+                                                      8,  7,  12, 8.5, 7.5, 6.5, 11, 8, 7,  6};
     for (int l = 0; l < SK_HAND_LINK_COUNT; l++) {
         sk_vec3d a = g.a[l], b = g.b[l];
         if (l == 0) a = sk_v3d_sub(a, sk_v3d(0, 20, 0)); /* the wrist stump */
@@ -712,7 +747,8 @@ static void run_capsule_pipeline(int threads, sk_hand_scan_result *res)
     assert_int_equal(sk_hand_scan_target_create(&t, &td, &err), SK_OK);
     /* a coarser scan under the sanitizers keeps the test within seconds there */
     bool sanitized = getenv("SK_TEST_SANITIZED") != NULL;
-    sk_hand_scan_desc d = {.scanner = {.lines = sanitized ? 200 : 320, .points = sanitized ? 160 : 256}, .seed = 5};
+    sk_hand_scan_desc d = {
+        .scanner = {.lines = sanitized ? 200 : 320, .points = sanitized ? 160 : 256}, .seed = 5};
     sk_hand_scan_input in = {.target = t, .skeleton = &skel, .dofs = q};
     sk_threads_set(threads);
     sk_result r = sk_hand_scan_run(&in, &d, res, (sk_progress){0}, &err);
@@ -747,11 +783,13 @@ static void test_pipeline_on_a_hand_of_capsules(void **state)
     /* the same for two threads, bit for bit */
     run_capsule_pipeline(2, &b);
     assert_int_equal(a.cloud.count, b.cloud.count);
-    assert_memory_equal(a.cloud.position, b.cloud.position, sizeof *a.cloud.position * a.cloud.count);
+    assert_memory_equal(a.cloud.position, b.cloud.position,
+                        sizeof *a.cloud.position * a.cloud.count);
     assert_memory_equal(a.patches->patch, b.patches->patch, sizeof a.patches->patch);
     assert_memory_equal(&a.table, &b.table, sizeof a.table);
     assert_int_equal(a.polygons.vertex_count, b.polygons.vertex_count);
-    assert_memory_equal(a.polygons.positions, b.polygons.positions, sizeof(float) * 3 * a.polygons.vertex_count);
+    assert_memory_equal(a.polygons.positions, b.polygons.positions,
+                        sizeof(float) * 3 * a.polygons.vertex_count);
     sk_hand_scan_result_free(&a);
     sk_hand_scan_result_free(&b);
 }

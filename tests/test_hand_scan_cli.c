@@ -61,8 +61,9 @@ static void test_help_and_bad_input(void **state)
     /* -o is required */
     assert_int_equal(sk_test_cli(&g_run, "hand scan"), 2);
     assert_non_null(strstr(g_run.err, "-o DIR"));
-    assert_int_equal(sk_test_cli(&g_run, "hand scan --input '%s' -o '%s'", sk_test_path("scan/none.obj"),
-                                 sk_test_path("scan/out-missing")), 2);
+    assert_int_equal(sk_test_cli(&g_run, "hand scan --input '%s' -o '%s'",
+                                 sk_test_path("scan/none.obj"), sk_test_path("scan/out-missing")),
+                     2);
     assert_int_equal(sk_test_count_lines(g_run.err), 1);
     const char *bad = sk_test_path("scan/bad.obj");
     sk_test_write_file(bad, "v 1 2\nf 1 2 3\n", 14);
@@ -89,16 +90,18 @@ static void test_the_whole_pipeline_on_the_hand_surface(void **state)
 {
     (void)state;
     const char *dir = sk_test_path("scan/hand");
-    assert_int_equal(sk_test_cli(&g_run, "hand scan -o '%s' --lines 160 --points 128 --slices 30", dir), 0);
+    assert_int_equal(
+        sk_test_cli(&g_run, "hand scan -o '%s' --lines 160 --points 128 --slices 30", dir), 0);
     /* the summary: the registration per marker and Table 4.1 beside the thesis */
     assert_non_null(strstr(g_run.out, "registration"));
     assert_int_equal(count_substrings(g_run.out, " residual "), 9);
     assert_non_null(strstr(g_run.out, "Table 4.1"));
-    static const char *const files[] = {"table-4.1.json", "table-4.1.txt", "registration.json", "patches.json",
-                                        "patches.obj", "polygons.obj", "polygons-thesis.obj", "scan-palm.png",
-                                        "scan-back.png", "registered.png", "slices.png", "polygons.png",
-                                        "polygons-thesis.png", "patches.png", "patches-posed.png", "cloud.ply",
-                                        "cast.obj"};
+    static const char *const files[] = {"table-4.1.json",      "table-4.1.txt", "registration.json",
+                                        "patches.json",        "patches.obj",   "polygons.obj",
+                                        "polygons-thesis.obj", "scan-palm.png", "scan-back.png",
+                                        "registered.png",      "slices.png",    "polygons.png",
+                                        "polygons-thesis.png", "patches.png",   "patches-posed.png",
+                                        "cloud.ply",           "cast.obj"};
     char path[1024];
     for (size_t k = 0; k < sizeof files / sizeof files[0]; k++) {
         snprintf(path, sizeof path, "%s/%s", dir, files[k]);
@@ -148,7 +151,8 @@ static void test_a_users_mesh_and_point_cloud(void **state)
     snprintf(ply, sizeof ply, "%s", sk_test_path("scan/hand/cloud.ply"));
     assert_true(sk_test_file_exists(obj) && sk_test_file_exists(ply));
     const char *dir = sk_test_path("scan/user-mesh");
-    assert_int_equal(sk_test_cli(&g_run, "hand scan --input '%s' -o '%s' --no-pictures " SMALL, obj, dir), 0);
+    assert_int_equal(
+        sk_test_cli(&g_run, "hand scan --input '%s' -o '%s' --no-pictures " SMALL, obj, dir), 0);
     snprintf(path, sizeof path, "%s/table-4.1.json", dir);
     assert_true(sk_test_file_exists(path));
     snprintf(path, sizeof path, "%s/slices.png", dir);
@@ -160,7 +164,8 @@ static void test_a_users_mesh_and_point_cloud(void **state)
     snprintf(path, sizeof path, "%s/table-4.1.json", dir);
     char *table = NULL;
     read_text(path, &table);
-    assert_true(json_value(table, "truth") && strncmp(json_value(table, "truth"), "null", 4) == 0); /* unknown */
+    assert_true(json_value(table, "truth") &&
+                strncmp(json_value(table, "truth"), "null", 4) == 0); /* unknown */
     /* both sides kept from the cloud's "side" attribute */
     const char *fitted = json_value(table, "patches_fitted");
     assert_non_null(fitted);

@@ -88,8 +88,10 @@ static void test_flesh_errors(void **state)
         assert_int_not_equal(r, SK_OK);
         assert_non_null(strstr(err.message, "t.json"));
     }
-    sk_hand_flesh_parse("{\"fingers\": {\"I\": {\"breadth_mm\": [20, 20, 20, 200]}}}", 50, "t.json", &f, &err);
-    const char *ok = "{\"fingers\": {\"M\": {\"thickness_mm\": [21, 19, 16, 13]}}, \"blend\": {\"root_mm\": 4}}";
+    sk_hand_flesh_parse("{\"fingers\": {\"I\": {\"breadth_mm\": [20, 20, 20, 200]}}}", 50, "t.json",
+                        &f, &err);
+    const char *ok =
+        "{\"fingers\": {\"M\": {\"thickness_mm\": [21, 19, 16, 13]}}, \"blend\": {\"root_mm\": 4}}";
     assert_int_equal(sk_hand_flesh_parse(ok, strlen(ok), "t.json", &f, &err), SK_OK);
     assert_true(f.finger[SK_HAND_MIDDLE].thickness_mm[1] == 19 && f.blend_root_mm == 4);
 }
@@ -120,7 +122,8 @@ static long check_manifold(const sk_mesh *m)
             assert_int_not_equal(e[3 * t + k].a, e[3 * t + k].b);
         }
     qsort(e, 3 * T, sizeof *e, edge_cmp);
-    for (size_t i = 0; i + 1 < 3 * T; i++) assert_false(e[i].a == e[i + 1].a && e[i].b == e[i + 1].b);
+    for (size_t i = 0; i + 1 < 3 * T; i++)
+        assert_false(e[i].a == e[i + 1].a && e[i].b == e[i + 1].b);
     for (size_t i = 0; i < 3 * T; i++) {
         edge rev = {e[i].b, e[i].a, 0};
         assert_non_null(bsearch(&rev, e, 3 * T, sizeof *e, edge_cmp));
@@ -153,9 +156,11 @@ static double signed_volume(const sk_mesh *m)
 {
     double vol = 0;
     for (size_t t = 0; t < m->triangle_count; t++) {
-        const float *a = m->positions + 3 * m->indices[3 * t], *b = m->positions + 3 * m->indices[3 * t + 1],
+        const float *a = m->positions + 3 * m->indices[3 * t],
+                    *b = m->positions + 3 * m->indices[3 * t + 1],
                     *c = m->positions + 3 * m->indices[3 * t + 2];
-        vol += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+        vol += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+               a[2] * (b[0] * c[1] - b[1] * c[0]);
     }
     return vol / 6.0;
 }
@@ -172,18 +177,21 @@ static void test_mesh_closed_manifold_genus0(void **state)
 }
 
 /* Segment pq crosses triangle abc strictly inside (Moller-Trumbore). */
-static bool segment_hits(const double *p, const double *q, const double *a, const double *b, const double *c)
+static bool segment_hits(const double *p, const double *q, const double *a, const double *b,
+                         const double *c)
 {
     double d[3], e1[3], e2[3], h[3], s[3], qv[3];
     for (int k = 0; k < 3; k++) d[k] = q[k] - p[k], e1[k] = b[k] - a[k], e2[k] = c[k] - a[k];
-    h[0] = d[1] * e2[2] - d[2] * e2[1], h[1] = d[2] * e2[0] - d[0] * e2[2], h[2] = d[0] * e2[1] - d[1] * e2[0];
+    h[0] = d[1] * e2[2] - d[2] * e2[1], h[1] = d[2] * e2[0] - d[0] * e2[2],
+    h[2] = d[0] * e2[1] - d[1] * e2[0];
     double det = e1[0] * h[0] + e1[1] * h[1] + e1[2] * h[2];
     if (fabs(det) < 1e-12) return false;
     double inv = 1.0 / det;
     for (int k = 0; k < 3; k++) s[k] = p[k] - a[k];
     double u = inv * (s[0] * h[0] + s[1] * h[1] + s[2] * h[2]);
     if (u <= 1e-9 || u >= 1 - 1e-9) return false;
-    qv[0] = s[1] * e1[2] - s[2] * e1[1], qv[1] = s[2] * e1[0] - s[0] * e1[2], qv[2] = s[0] * e1[1] - s[1] * e1[0];
+    qv[0] = s[1] * e1[2] - s[2] * e1[1], qv[1] = s[2] * e1[0] - s[0] * e1[2],
+    qv[2] = s[0] * e1[1] - s[1] * e1[0];
     double v = inv * (d[0] * qv[0] + d[1] * qv[1] + d[2] * qv[2]);
     if (v <= 1e-9 || u + v >= 1 - 1e-9) return false;
     double t = inv * (e2[0] * qv[0] + e2[1] * qv[1] + e2[2] * qv[2]);
@@ -197,7 +205,8 @@ static int count_self_intersections(const sk_mesh *m)
     sk_vec3f lo, hi;
     sk_mesh_bounds(m, &lo, &hi);
     const double cell = 6.0;
-    int nx = (int)((hi.x - lo.x) / cell) + 1, ny = (int)((hi.y - lo.y) / cell) + 1, nz = (int)((hi.z - lo.z) / cell) + 1;
+    int nx = (int)((hi.x - lo.x) / cell) + 1, ny = (int)((hi.y - lo.y) / cell) + 1,
+        nz = (int)((hi.z - lo.z) / cell) + 1;
     size_t cells = (size_t)nx * ny * nz;
     int *head = malloc(cells * sizeof *head), *next = malloc(T * sizeof *next);
     for (size_t i = 0; i < cells; i++) head[i] = -1;
@@ -206,7 +215,8 @@ static int count_self_intersections(const sk_mesh *m)
         double c[3] = {0, 0, 0};
         for (int k = 0; k < 3; k++)
             for (int j = 0; j < 3; j++) c[j] += m->positions[3 * m->indices[3 * t + k] + j] / 3.0;
-        int ix = (int)((c[0] - lo.x) / cell), iy = (int)((c[1] - lo.y) / cell), iz = (int)((c[2] - lo.z) / cell);
+        int ix = (int)((c[0] - lo.x) / cell), iy = (int)((c[1] - lo.y) / cell),
+            iz = (int)((c[2] - lo.z) / cell);
         size_t id = ((size_t)iz * ny + iy) * nx + ix;
         next[t] = head[id];
         head[id] = (int)t;
@@ -217,8 +227,10 @@ static int count_self_intersections(const sk_mesh *m)
         double pa[3][3];
         double c[3] = {0, 0, 0};
         for (int k = 0; k < 3; k++)
-            for (int j = 0; j < 3; j++) pa[k][j] = m->positions[3 * A[k] + j], c[j] += pa[k][j] / 3.0;
-        int ix = (int)((c[0] - lo.x) / cell), iy = (int)((c[1] - lo.y) / cell), iz = (int)((c[2] - lo.z) / cell);
+            for (int j = 0; j < 3; j++)
+                pa[k][j] = m->positions[3 * A[k] + j], c[j] += pa[k][j] / 3.0;
+        int ix = (int)((c[0] - lo.x) / cell), iy = (int)((c[1] - lo.y) / cell),
+            iz = (int)((c[2] - lo.z) / cell);
         for (int dz = -1; dz <= 1; dz++)
             for (int dy = -1; dy <= 1; dy++)
                 for (int dx = -1; dx <= 1; dx++) {
@@ -312,7 +324,8 @@ static void test_field_and_distance(void **state)
     sk_hand_relaxed(s, q);
     sk_hand_forward(s, q, &fr);
     /* inside the middle finger's proximal phalanx, outside far away */
-    sk_vec3d mid = sk_v3d_scale(sk_v3d_add(fr.point[sk_hand_link_point(13)], fr.point[sk_hand_link_point(14)]), 0.5);
+    sk_vec3d mid = sk_v3d_scale(
+        sk_v3d_add(fr.point[sk_hand_link_point(13)], fr.point[sk_hand_link_point(14)]), 0.5);
     assert_true(sk_hand_surface_field(fx->surface, mid) < -5.0);
     assert_true(sk_hand_surface_field(fx->surface, sk_v3d(0, 100, 200)) > 50.0);
     /* mesh vertices lie on the surface; stepping along the normal gives that distance */
@@ -320,7 +333,9 @@ static void test_field_and_distance(void **state)
     size_t off = 0;
     double worst = 0;
     for (size_t v = 0; v < m->vertex_count; v++) {
-        double f = fabs(sk_hand_surface_field(fx->surface, sk_v3d(m->positions[3 * v], m->positions[3 * v + 1], m->positions[3 * v + 2])));
+        double f = fabs(
+            sk_hand_surface_field(fx->surface, sk_v3d(m->positions[3 * v], m->positions[3 * v + 1],
+                                                      m->positions[3 * v + 2])));
         off += f > 0.05;
         worst = fmax(worst, f);
     }
@@ -336,7 +351,8 @@ static void test_field_and_distance(void **state)
         assert_true(fabs(sk_hand_surface_field(fx->surface, c)) < 1e-5);
         /* the left hand's field is the mirror */
         sk_vec3d pm = sk_v3d(-p.x, p.y, p.z);
-        assert_float_equal(sk_hand_surface_field(fx->mirror, pm), sk_hand_surface_field(fx->small, p), 1e-12);
+        assert_float_equal(sk_hand_surface_field(fx->mirror, pm),
+                           sk_hand_surface_field(fx->small, p), 1e-12);
     }
 }
 
@@ -384,7 +400,8 @@ static void test_rigid_skinning_moves_with_link(void **state)
     sk_hand_frames f0, f1;
     sk_hand_forward(&fx->right, q0, &f0);
     sk_hand_forward(&fx->right, q, &f1);
-    float *pos = malloc(3 * m->vertex_count * sizeof *pos), *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
+    float *pos = malloc(3 * m->vertex_count * sizeof *pos),
+          *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
     const uint16_t *ln, *ls;
     const float *ws;
     sk_hand_surface_weights(s, SK_HAND_WEIGHTS_NEAREST, &ln, NULL);
@@ -397,13 +414,17 @@ static void test_rigid_skinning_moves_with_link(void **state)
             bool single = method == SK_HAND_SKINNING_RIGID || ws[4 * v + 1] == 0.0f;
             if (!single) continue;
             int j = method == SK_HAND_SKINNING_RIGID ? ln[4 * v] : ls[4 * v];
-            sk_vec3d p = sk_v3d(m->positions[3 * v], m->positions[3 * v + 1], m->positions[3 * v + 2]);
-            sk_vec3d local = sk_m3d_apply(sk_m3d_transpose(f0.rotation[j]), sk_v3d_sub(p, f0.point[sk_hand_link_point(j)]));
-            sk_vec3d want = sk_v3d_add(f1.point[sk_hand_link_point(j)], sk_m3d_apply(f1.rotation[j], local));
+            sk_vec3d p =
+                sk_v3d(m->positions[3 * v], m->positions[3 * v + 1], m->positions[3 * v + 2]);
+            sk_vec3d local = sk_m3d_apply(sk_m3d_transpose(f0.rotation[j]),
+                                          sk_v3d_sub(p, f0.point[sk_hand_link_point(j)]));
+            sk_vec3d want =
+                sk_v3d_add(f1.point[sk_hand_link_point(j)], sk_m3d_apply(f1.rotation[j], local));
             assert_float_equal(pos[3 * v], want.x, 2e-3);
             assert_float_equal(pos[3 * v + 1], want.y, 2e-3);
             assert_float_equal(pos[3 * v + 2], want.z, 2e-3);
-            float nl = sqrtf(nrm[3 * v] * nrm[3 * v] + nrm[3 * v + 1] * nrm[3 * v + 1] + nrm[3 * v + 2] * nrm[3 * v + 2]);
+            float nl = sqrtf(nrm[3 * v] * nrm[3 * v] + nrm[3 * v + 1] * nrm[3 * v + 1] +
+                             nrm[3 * v + 2] * nrm[3 * v + 2]);
             assert_float_equal(nl, 1.0, 1e-4);
             checked++;
         }
@@ -432,7 +453,8 @@ static void test_lbs_matches_definition(void **state)
     q[sk_hand_dof_find("L.MCP.abd")] = -0.3;
     q[1] = 12.0;
     sk_hand_forward(&fx->right, q, &f1);
-    float *pos = malloc(3 * m->vertex_count * sizeof *pos), *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
+    float *pos = malloc(3 * m->vertex_count * sizeof *pos),
+          *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
     sk_hand_surface_deform(s, &f1, SK_HAND_SKINNING_LBS, pos, nrm);
     const uint16_t *ls;
     const float *ws;
@@ -444,7 +466,8 @@ static void test_lbs_matches_definition(void **state)
         for (int k = 0; k < 4 && ws[4 * v + k] > 0; k++) {
             int j = ls[4 * v + k];
             sk_mat3d r = sk_m3d_mul(f1.rotation[j], sk_m3d_transpose(f0.rotation[j]));
-            sk_vec3d t = sk_v3d_sub(f1.point[sk_hand_link_point(j)], sk_m3d_apply(r, f0.point[sk_hand_link_point(j)]));
+            sk_vec3d t = sk_v3d_sub(f1.point[sk_hand_link_point(j)],
+                                    sk_m3d_apply(r, f0.point[sk_hand_link_point(j)]));
             want = sk_v3d_add(want, sk_v3d_scale(sk_v3d_add(sk_m3d_apply(r, p), t), ws[4 * v + k]));
             wn = sk_v3d_add(wn, sk_v3d_scale(sk_m3d_apply(r, n), ws[4 * v + k]));
         }
@@ -474,25 +497,31 @@ static void test_dqs_keeps_radius_under_twist(void **state)
     sk_hand_forward(&fx->right, q, &rest);
     tw = rest;
     int link = 14; /* the middle finger's middle phalanx */
-    sk_vec3d axis = sk_v3d(rest.rotation[link].m[0][1], rest.rotation[link].m[1][1], rest.rotation[link].m[2][1]);
+    sk_vec3d axis = sk_v3d(rest.rotation[link].m[0][1], rest.rotation[link].m[1][1],
+                           rest.rotation[link].m[2][1]);
     sk_vec3d base = rest.point[sk_hand_link_point(link)];
     sk_mat3d twist = sk_qd_to_m3d(sk_qd_axis_angle(axis, 0.5 * SK_PI));
     for (int j = link; j <= link + 1; j++) {
         tw.rotation[j] = sk_m3d_mul(twist, rest.rotation[j]);
-        tw.point[sk_hand_link_point(j)] = sk_v3d_add(base, sk_m3d_apply(twist, sk_v3d_sub(rest.point[sk_hand_link_point(j)], base)));
+        tw.point[sk_hand_link_point(j)] = sk_v3d_add(
+            base, sk_m3d_apply(twist, sk_v3d_sub(rest.point[sk_hand_link_point(j)], base)));
     }
     const uint16_t *ls;
     const float *ws;
     sk_hand_surface_weights(s, SK_HAND_WEIGHTS_SMOOTH, &ls, &ws);
-    float *pos = malloc(3 * m->vertex_count * sizeof *pos), *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
+    float *pos = malloc(3 * m->vertex_count * sizeof *pos),
+          *nrm = malloc(3 * m->vertex_count * sizeof *nrm);
     double radius[3] = {0, 0, 0};
     int n = 0;
     for (int pass = 0; pass < 3; pass++) {
-        if (pass) sk_hand_surface_deform(s, &tw, pass == 1 ? SK_HAND_SKINNING_LBS : SK_HAND_SKINNING_DQS, pos, nrm);
+        if (pass)
+            sk_hand_surface_deform(s, &tw, pass == 1 ? SK_HAND_SKINNING_LBS : SK_HAND_SKINNING_DQS,
+                                   pos, nrm);
         n = 0;
         for (size_t v = 0; v < m->vertex_count; v++) {
             /* blended about equally between the twisted phalanx and the proximal one */
-            bool pair = (ls[4 * v] == link && ls[4 * v + 1] == link - 1) || (ls[4 * v] == link - 1 && ls[4 * v + 1] == link);
+            bool pair = (ls[4 * v] == link && ls[4 * v + 1] == link - 1) ||
+                        (ls[4 * v] == link - 1 && ls[4 * v + 1] == link);
             if (!pair || ws[4 * v + 1] < 0.3f) continue;
             const float *p = pass ? pos + 3 * v : m->positions + 3 * v;
             sk_vec3d d = sk_v3d_sub(sk_v3d(p[0], p[1], p[2]), base);
@@ -503,7 +532,7 @@ static void test_dqs_keeps_radius_under_twist(void **state)
     }
     assert_true(n >= 4);
     for (int i = 0; i < 3; i++) radius[i] /= n;
-    assert_true(radius[1] < 0.9 * radius[0]);          /* LBS shrinks */
+    assert_true(radius[1] < 0.9 * radius[0]);                   /* LBS shrinks */
     assert_float_equal(radius[2], radius[0], 0.03 * radius[0]); /* DQS keeps */
     free(pos);
     free(nrm);
@@ -516,7 +545,9 @@ static void test_defect_measure(void **state)
     sk_hand_relaxed(&fx->right, q);
     sk_hand_defect d;
     /* in the relaxed pose nothing moves */
-    assert_int_equal(sk_hand_surface_defect(fx->surface, q, SK_HAND_SKINNING_RIGID, SK_HAND_INDEX, &d, NULL), SK_OK);
+    assert_int_equal(
+        sk_hand_surface_defect(fx->surface, q, SK_HAND_SKINNING_RIGID, SK_HAND_INDEX, &d, NULL),
+        SK_OK);
     assert_float_equal(d.volume_lost_mm3, 0.0, 1e-6 * d.rest_volume_mm3);
     assert_int_equal(d.inside_count, 0);
     assert_true(d.vertex_count > 200);
@@ -525,11 +556,17 @@ static void test_defect_measure(void **state)
     q[sk_hand_dof_find("I.PIP.flex")] = 100 * SK_DEG_TO_RAD;
     q[sk_hand_dof_find("I.DIP.flex")] = 80 * SK_DEG_TO_RAD;
     sk_hand_defect rigid, dqs;
-    assert_int_equal(sk_hand_surface_defect(fx->surface, q, SK_HAND_SKINNING_RIGID, SK_HAND_INDEX, &rigid, NULL), SK_OK);
-    assert_int_equal(sk_hand_surface_defect(fx->surface, q, SK_HAND_SKINNING_DQS, SK_HAND_INDEX, &dqs, NULL), SK_OK);
+    assert_int_equal(
+        sk_hand_surface_defect(fx->surface, q, SK_HAND_SKINNING_RIGID, SK_HAND_INDEX, &rigid, NULL),
+        SK_OK);
+    assert_int_equal(
+        sk_hand_surface_defect(fx->surface, q, SK_HAND_SKINNING_DQS, SK_HAND_INDEX, &dqs, NULL),
+        SK_OK);
     assert_true(rigid.inside_count > 0);
     assert_true(isfinite(dqs.volume_lost_mm3));
-    assert_int_not_equal(sk_hand_surface_defect(fx->surface, q, SK_HAND_SKINNING_DQS, (sk_hand_finger)7, &d, NULL), SK_OK);
+    assert_int_not_equal(
+        sk_hand_surface_defect(fx->surface, q, SK_HAND_SKINNING_DQS, (sk_hand_finger)7, &d, NULL),
+        SK_OK);
 }
 
 /* ------------------------------------------------------------ desc, threads */
@@ -550,14 +587,14 @@ static void test_desc_errors_and_threads(void **state)
     sk_threads_set(1);
     assert_int_equal(sk_hand_surface_create(&a, &fx->right, &d, NULL), SK_OK);
     sk_threads_set(0);
-    const sk_mesh *ma = sk_hand_surface_mesh(a), *mb = sk_hand_surface_mesh(fx->small); /* all threads */
+    const sk_mesh *ma = sk_hand_surface_mesh(a),
+                  *mb = sk_hand_surface_mesh(fx->small); /* all threads */
     assert_int_equal(ma->vertex_count, mb->vertex_count);
     assert_memory_equal(ma->positions, mb->positions, 3 * ma->vertex_count * sizeof(float));
     assert_memory_equal(ma->indices, mb->indices, 3 * ma->triangle_count * sizeof(uint32_t));
     assert_int_equal(check_manifold(ma), 2);
     sk_hand_surface_destroy(a);
 }
-
 
 /* ------------------------------------------------------------ LOD, atlas, files */
 static void test_levels_of_detail(void **state)
@@ -569,7 +606,8 @@ static void test_levels_of_detail(void **state)
     sk_hand_surface_weights(fx->surface, SK_HAND_WEIGHTS_SMOOTH, &bl, &bw);
     for (int l = 1; l < SK_HAND_LOD_COUNT; l++) {
         sk_hand_surface *c;
-        assert_int_equal(sk_hand_surface_simplify(&c, fx->surface, sk_hand_lod_triangles[l], NULL), SK_OK);
+        assert_int_equal(sk_hand_surface_simplify(&c, fx->surface, sk_hand_lod_triangles[l], NULL),
+                         SK_OK);
         const sk_mesh *m = sk_hand_surface_mesh(c);
         /* one closed surface of genus 0 at every level, as the full mesh */
         assert_int_equal(check_manifold(m), 2);
@@ -582,7 +620,9 @@ static void test_levels_of_detail(void **state)
         sk_hand_surface_weights(c, SK_HAND_WEIGHTS_SMOOTH, &cl, &cw);
         size_t j = 0;
         for (size_t v = 0; v < m->vertex_count; v++) {
-            while (j < base->vertex_count && memcmp(base->positions + 3 * j, m->positions + 3 * v, 3 * sizeof(float)) != 0) j++;
+            while (j < base->vertex_count &&
+                   memcmp(base->positions + 3 * j, m->positions + 3 * v, 3 * sizeof(float)) != 0)
+                j++;
             assert_true(j < base->vertex_count);
             assert_memory_equal(cw + 4 * v, bw + 4 * j, 4 * sizeof(float));
             assert_memory_equal(cl + 4 * v, bl + 4 * j, 4 * sizeof(uint16_t));
@@ -591,7 +631,8 @@ static void test_levels_of_detail(void **state)
            chart, so one texture serves every level */
         sk_mesh ce, be;
         assert_int_equal(sk_hand_surface_export_mesh(c, NULL, NULL, false, &ce, NULL), SK_OK);
-        assert_int_equal(sk_hand_surface_export_mesh(fx->surface, NULL, NULL, false, &be, NULL), SK_OK);
+        assert_int_equal(sk_hand_surface_export_mesh(fx->surface, NULL, NULL, false, &be, NULL),
+                         SK_OK);
         size_t matched = 0;
         for (size_t v = 0; v < ce.vertex_count; v += 7)
             for (size_t k = 0; k < be.vertex_count; k++)
@@ -619,7 +660,8 @@ static void test_atlas_export(void **state)
     sk_mesh e;
     assert_int_equal(sk_hand_surface_export_mesh(fx->surface, NULL, NULL, true, &e, NULL), SK_OK);
     assert_int_equal(e.triangle_count, m->triangle_count);
-    assert_true(e.vertex_count > m->vertex_count && e.vertex_count < m->vertex_count * 3 / 2); /* the seam only */
+    assert_true(e.vertex_count > m->vertex_count &&
+                e.vertex_count < m->vertex_count * 3 / 2); /* the seam only */
     size_t n;
     const uint32_t *map = sk_hand_surface_export_map(fx->surface, &n);
     assert_int_equal(n, e.vertex_count);
@@ -629,8 +671,10 @@ static void test_atlas_export(void **state)
         assert_true(u > 0 && u < 1 && w > 0 && w < 1);
         assert_memory_equal(e.positions + 3 * v, m->positions + 3 * map[v], 3 * sizeof(float));
         /* the back chart on the left faces -z (dorsal), the palm chart +z */
-        if (u < 0.5f) back += m->normals[3 * map[v] + 2] < 0;
-        else palm += m->normals[3 * map[v] + 2] > 0;
+        if (u < 0.5f)
+            back += m->normals[3 * map[v] + 2] < 0;
+        else
+            palm += m->normals[3 * map[v] + 2] > 0;
     }
     assert_true(back + palm > (int)e.vertex_count * 8 / 10);
     /* each triangle lies in one chart */
@@ -640,7 +684,8 @@ static void test_atlas_export(void **state)
         assert_true((e.uvs[2 * tv[1]] < 0.5f) == left && (e.uvs[2 * tv[2]] < 0.5f) == left);
         for (int k = 0; k < 3; k++) assert_int_equal(map[tv[k]], m->indices[3 * t + k]);
     }
-    const sk_mesh_attribute *j = sk_mesh_find_attribute(&e, "joints"), *w = sk_mesh_find_attribute(&e, "weights");
+    const sk_mesh_attribute *j = sk_mesh_find_attribute(&e, "joints"),
+                            *w = sk_mesh_find_attribute(&e, "weights");
     assert_non_null(j);
     assert_non_null(w);
     assert_non_null(sk_mesh_find_attribute(&e, "nail"));
@@ -680,7 +725,8 @@ static void test_texture_bake(void **state)
     sk_image_free(&albedo);
     sk_image_free(&normal);
     d.size = 10;
-    assert_int_equal(sk_hand_texture_bake(fx->surface, &d, &albedo, &normal, NULL), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_hand_texture_bake(fx->surface, &d, &albedo, &normal, NULL),
+                     SK_ERROR_INVALID_ARGUMENT);
 }
 
 static void test_landmarks_and_pose_file(void **state)
@@ -698,15 +744,18 @@ static void test_landmarks_and_pose_file(void **state)
     assert_int_equal(sk_hand_pose_parse(text, strlen(text), "p.json", &fx->right, q, NULL), SK_OK);
     assert_float_equal(q[sk_hand_dof_find("I.PIP.flex")], 0.5 * SK_PI, 1e-12);
     assert_float_equal(q[0], 5.0, 1e-12);
-    assert_float_equal(q[sk_hand_dof_find("M.PIP.flex")], fx->right.dof[sk_hand_dof_find("M.PIP.flex")].relaxed, 1e-12);
+    assert_float_equal(q[sk_hand_dof_find("M.PIP.flex")],
+                       fx->right.dof[sk_hand_dof_find("M.PIP.flex")].relaxed, 1e-12);
     sk_error err = {0};
     const char *bad = "{\"dofs\": {\"I.PIP.flx\": 90}}";
-    assert_int_not_equal(sk_hand_pose_parse(bad, strlen(bad), "p.json", &fx->right, q, &err), SK_OK);
+    assert_int_not_equal(sk_hand_pose_parse(bad, strlen(bad), "p.json", &fx->right, q, &err),
+                         SK_OK);
     assert_non_null(strstr(err.message, "I.PIP.flx"));
     /* two frames of landmarks as CSV: 21 rows each, the tip where the skeleton says */
     memcpy(q + SK_HAND_DOF_COUNT, q, sizeof(double) * SK_HAND_DOF_COUNT);
     const char *path = sk_test_path("landmarks.csv");
-    assert_int_equal(sk_hand_landmarks_write(&fx->right, q, 2, SK_HAND_POSITIONS_CSV, path, NULL), SK_OK);
+    assert_int_equal(sk_hand_landmarks_write(&fx->right, q, 2, SK_HAND_POSITIONS_CSV, path, NULL),
+                     SK_OK);
     char *csv;
     size_t size;
     assert_int_equal(sk_read_file(path, 0, &csv, &size, NULL), SK_OK);
@@ -723,7 +772,10 @@ static void test_cli_hand_mesh(void **state)
     assert_int_equal(sk_test_cli(&run, "hand mesh --help"), 0);
     assert_non_null(strstr(run.out, "--skinning"));
     const char *ply = sk_test_path("cli/hand.ply");
-    assert_int_equal(sk_test_cli(&run, "hand mesh -q --pin I.PIP.flex=90 --skinning lbs --lod 2 --left -o %s", ply), 0);
+    assert_int_equal(
+        sk_test_cli(&run, "hand mesh -q --pin I.PIP.flex=90 --skinning lbs --lod 2 --left -o %s",
+                    ply),
+        0);
     sk_mesh m;
     assert_int_equal(sk_mesh_read_ply(&m, ply, NULL, NULL), SK_OK);
     assert_true(m.triangle_count <= 500 && m.uvs != NULL);
@@ -742,8 +794,11 @@ static void test_cli_hand_mesh(void **state)
     assert_int_equal(sk_test_count_lines(run.err), 1);
     assert_false(sk_test_file_exists(none));
     const char *dir = sk_test_path("cli/frames");
-    assert_int_equal(sk_test_cli(&run, "hand animate -q %s/hand/little-mcp.json --meshes-dir %s --mesh-frames 0,24 --landmarks %s",
-                                 SK_TEST_PRESET_DIR, dir, sk_test_path("cli/lm.json")), 0);
+    assert_int_equal(sk_test_cli(&run,
+                                 "hand animate -q %s/hand/little-mcp.json --meshes-dir %s "
+                                 "--mesh-frames 0,24 --landmarks %s",
+                                 SK_TEST_PRESET_DIR, dir, sk_test_path("cli/lm.json")),
+                     0);
     char p[600];
     snprintf(p, sizeof p, "%s/frame_0024.obj", dir);
     assert_int_equal(sk_mesh_read_obj(&m, p, NULL, NULL), SK_OK);
@@ -751,7 +806,11 @@ static void test_cli_hand_mesh(void **state)
     sk_mesh_free(&m);
     snprintf(p, sizeof p, "%s/frame_0001.obj", dir);
     assert_false(sk_test_file_exists(p));
-    assert_int_equal(sk_test_cli(&run, "hand animate -q %s/hand/little-mcp.json --meshes-dir %s --mesh-frames 0,99", SK_TEST_PRESET_DIR, dir), 2);
+    assert_int_equal(
+        sk_test_cli(&run,
+                    "hand animate -q %s/hand/little-mcp.json --meshes-dir %s --mesh-frames 0,99",
+                    SK_TEST_PRESET_DIR, dir),
+        2);
 }
 
 int main(void)

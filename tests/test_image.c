@@ -572,27 +572,36 @@ static void test_exr_parallel_chunks(void **state)
     (void)state;
     sk_image im, back;
     /* 5 MB of floats (1.7 MB under the sanitizers), more than one thread's share */
-    const int W = getenv("SK_TEST_SANITIZED") ? 400 : 700, H = getenv("SK_TEST_SANITIZED") ? 350 : 600;
+    const int W = getenv("SK_TEST_SANITIZED") ? 400 : 700,
+              H = getenv("SK_TEST_SANITIZED") ? 350 : 600;
     SK_ASSERT_OK(sk_image_create(&im, W, H, 3, &e_));
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++)
             for (int c = 0; c < 3; c++)
-                sk_image_pixel(&im, x, y)[c] = (float)floor(1024.0 * sin(0.01 * x + c) * cos(0.013 * y)) / 1024.0f;
+                sk_image_pixel(&im, x, y)[c] =
+                    (float)floor(1024.0 * sin(0.01 * x + c) * cos(0.013 * y)) / 1024.0f;
     const struct {
         sk_exr_compression c;
         int level, tile;
         sk_exr_pixel_type type;
-    } kinds[] = {{SK_EXR_COMPRESSION_ZIP, 1, 0, 0},   {SK_EXR_COMPRESSION_ZIP, 9, 0, 0},
-                 {SK_EXR_COMPRESSION_ZIPS, 4, 0, 0},  {SK_EXR_COMPRESSION_DEFAULT, 0, 0, 0},
-                 {SK_EXR_COMPRESSION_PIZ, 0, 0, 0},   {SK_EXR_COMPRESSION_RLE, 0, 0, 0},
-                 {SK_EXR_COMPRESSION_NONE, 0, 0, 0},  {SK_EXR_COMPRESSION_ZIP, 0, 64, 0},
+    } kinds[] = {{SK_EXR_COMPRESSION_ZIP, 1, 0, 0},
+                 {SK_EXR_COMPRESSION_ZIP, 9, 0, 0},
+                 {SK_EXR_COMPRESSION_ZIPS, 4, 0, 0},
+                 {SK_EXR_COMPRESSION_DEFAULT, 0, 0, 0},
+                 {SK_EXR_COMPRESSION_PIZ, 0, 0, 0},
+                 {SK_EXR_COMPRESSION_RLE, 0, 0, 0},
+                 {SK_EXR_COMPRESSION_NONE, 0, 0, 0},
+                 {SK_EXR_COMPRESSION_ZIP, 0, 64, 0},
                  {SK_EXR_COMPRESSION_DEFAULT, 0, 0, SK_EXR_PIXEL_HALF}};
     int threads = sk_threads_max();
     long none_size = 0;
     for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
-        const char *one = sk_test_path("image/chunks1.exr"), *two = sk_test_path("image/chunks2.exr");
-        sk_exr_write_desc wd = {.compression = kinds[k].c, .compression_level = kinds[k].level,
-                                .tile_size = kinds[k].tile, .pixel_type = kinds[k].type};
+        const char *one = sk_test_path("image/chunks1.exr"),
+                   *two = sk_test_path("image/chunks2.exr");
+        sk_exr_write_desc wd = {.compression = kinds[k].c,
+                                .compression_level = kinds[k].level,
+                                .tile_size = kinds[k].tile,
+                                .pixel_type = kinds[k].type};
         sk_threads_set(1);
         SK_ASSERT_OK(sk_image_write_exr(&im, one, &wd, &e_));
         sk_threads_set(2);
@@ -604,7 +613,8 @@ static void test_exr_parallel_chunks(void **state)
             float want = im.data[i];
             if (kinds[k].type == SK_EXR_PIXEL_HALF) {
                 if (fabsf(back.data[i] - want) > fabsf(want) * 0x1p-11f + 0x1p-25f)
-                    fail_msg("kind %zu sample %zu: %.9g came back as %.9g", k, i, want, back.data[i]);
+                    fail_msg("kind %zu sample %zu: %.9g came back as %.9g", k, i, want,
+                             back.data[i]);
             } else if (back.data[i] != want) {
                 fail_msg("kind %zu sample %zu: %.9g came back as %.9g", k, i, want, back.data[i]);
             }
@@ -616,7 +626,8 @@ static void test_exr_parallel_chunks(void **state)
     assert_true(none_size >= W * H * 3 * 4);
     sk_error err = {0};
     sk_exr_write_desc bad = {.compression = SK_EXR_COMPRESSION_ZIP, .compression_level = 10};
-    assert_int_equal(sk_image_write_exr(&im, sk_test_path("image/bad.exr"), &bad, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_image_write_exr(&im, sk_test_path("image/bad.exr"), &bad, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "compression_level = 10 is out of range [1, 9]"));
     sk_image_free(&im);
 }
@@ -1010,8 +1021,10 @@ static void test_codes_match_png_writer(void **state)
             sk_image back;
             sk_png_read_desc rd = {.encoding = SK_PNG_ENCODING_LINEAR};
             assert_int_equal(sk_image_read_png(&back, path, &rd, NULL, NULL, NULL), SK_OK);
-            if (depth == 8) sk_image_codes8(img.data, (size_t)img.width * img.height, 4, encodings[e], c8);
-            else sk_image_codes16(img.data, (size_t)img.width * img.height, 4, encodings[e], c16);
+            if (depth == 8)
+                sk_image_codes8(img.data, (size_t)img.width * img.height, 4, encodings[e], c8);
+            else
+                sk_image_codes16(img.data, (size_t)img.width * img.height, 4, encodings[e], c16);
             double max = depth == 8 ? 255.0 : 65535.0;
             for (size_t i = 0; i < n; i++) {
                 long file_code = lround(back.data[i] * max);

@@ -64,7 +64,8 @@ static unsigned code_reference(float v, int channel, int channels, int depth, sk
 /* Values that hit the interesting places: out of range, NaN, both ends, code boundaries. */
 static float test_value(uint64_t seed, size_t i)
 {
-    static const float special[] = {-1.0f, 0.0f, 1.0f, 2.0f, 1e-7f, 0.5f, 0.9999999f, NAN, INFINITY};
+    static const float special[] = {-1.0f, 0.0f,       1.0f, 2.0f,    1e-7f,
+                                    0.5f,  0.9999999f, NAN,  INFINITY};
     uint64_t h = sk_hash(seed, i, 0, 0);
     if (h % 17 == 0) return special[(h >> 8) % (sizeof special / sizeof special[0])];
     if (h % 5 == 0) { /* right at an sRGB boundary, or one float either side */
@@ -131,7 +132,8 @@ static void decode_png(const char *path, decoded *d)
 static void check_layout(int width, int height, int channels, int depth, sk_png_encoding enc)
 {
     char name[96];
-    snprintf(name, sizeof name, "png/exact_%dx%d_%d_%d_%d.png", width, height, channels, depth, (int)enc);
+    snprintf(name, sizeof name, "png/exact_%dx%d_%d_%d_%d.png", width, height, channels, depth,
+             (int)enc);
     const char *path = sk_test_path(name);
     sk_image im;
     SK_ASSERT_OK(sk_image_create(&im, width, height, channels, &e_));
@@ -144,16 +146,18 @@ static void check_layout(int width, int height, int channels, int depth, sk_png_
     SK_ASSERT_OK(sk_image_write_png(&im, path, &wd, &e_));
     decoded d;
     decode_png(path, &d);
-    static const int types[5] = {0, PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
-                                 PNG_COLOR_TYPE_RGB_ALPHA};
+    static const int types[5] = {0, PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA,
+                                 PNG_COLOR_TYPE_RGB, PNG_COLOR_TYPE_RGB_ALPHA};
     assert_int_equal(d.width, width);
     assert_int_equal(d.height, height);
     assert_int_equal(d.depth, depth);
     assert_int_equal(d.color_type, types[channels]);
     for (size_t i = 0; i < n; i++) {
-        unsigned want = code_reference(im.data[i], (int)(i % (size_t)channels), channels, depth, enc);
+        unsigned want =
+            code_reference(im.data[i], (int)(i % (size_t)channels), channels, depth, enc);
         if (d.codes[i] != want)
-            fail_msg("%s sample %zu (%.9g): code %u, want %u", name, i, im.data[i], d.codes[i], want);
+            fail_msg("%s sample %zu (%.9g): code %u, want %u", name, i, im.data[i], d.codes[i],
+                     want);
     }
     bool srgb = enc == SK_PNG_ENCODING_SRGB;
     assert_int_equal(d.srgb, srgb);
@@ -185,7 +189,8 @@ static void test_png_strips_decode_exactly(void **state)
 {
     (void)state;
     bool small = sanitized();
-    check_layout(700, small ? 600 : 1700, 3, 8, SK_PNG_ENCODING_SRGB); /* 1.3 or 3.6 MB: 2 or 4 strips */
+    check_layout(700, small ? 600 : 1700, 3, 8,
+                 SK_PNG_ENCODING_SRGB); /* 1.3 or 3.6 MB: 2 or 4 strips */
     check_layout(301, small ? 500 : 2000, 4, 16, SK_PNG_ENCODING_LINEAR); /* 1.2 or 9.6 MB */
     check_layout(16, 65536, 1, 8, SK_PNG_ENCODING_LINEAR); /* 17-byte rows: 2 strips */
     /* flat data compresses to a few bytes per strip; every level joins */
@@ -228,7 +233,8 @@ static void test_png_memory_equals_file(void **state)
     free(file);
     sk_png_write_desc bad = {.bit_depth = 12};
     bytes = (uint8_t *)path;
-    assert_int_equal(sk_image_write_png_memory(&im, &bad, &bytes, &size, NULL), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_image_write_png_memory(&im, &bad, &bytes, &size, NULL),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_null(bytes);
     assert_int_equal(size, 0);
     sk_image_free(&im);
@@ -244,7 +250,8 @@ typedef struct rows_of_image {
 static void image_row(void *user, int y, float *row)
 {
     rows_of_image *r = user;
-    memcpy(row, sk_image_pixel(r->image, 0, y), sizeof(float) * (size_t)r->image->width * (size_t)r->image->channels);
+    memcpy(row, sk_image_pixel(r->image, 0, y),
+           sizeof(float) * (size_t)r->image->width * (size_t)r->image->channels);
 #pragma omp atomic
     r->calls++;
 }
@@ -263,10 +270,12 @@ static void test_png_rows_equal_image(void **state)
             SK_ASSERT_OK(sk_image_create(&im, w, h, c, &e_));
             for (size_t i = 0; i < (size_t)w * h * c; i++) im.data[i] = test_value(21 + s, i);
             sk_png_write_desc d = {.bit_depth = depth,
-                                   .encoding = depth == 8 ? SK_PNG_ENCODING_SRGB : SK_PNG_ENCODING_LINEAR};
+                                   .encoding =
+                                       depth == 8 ? SK_PNG_ENCODING_SRGB : SK_PNG_ENCODING_LINEAR};
             SK_ASSERT_OK(sk_image_write_png(&im, a, &d, &e_));
             rows_of_image user = {&im, 0};
-            sk_image_rows rows = {.width = w, .height = h, .channels = c, .get_row = image_row, .user = &user};
+            sk_image_rows rows = {
+                .width = w, .height = h, .channels = c, .get_row = image_row, .user = &user};
             SK_ASSERT_OK(sk_image_write_png_rows(&rows, b, &d, &e_));
             assert_true(sk_test_same_file(a, b));
             assert_true(user.calls >= h);
@@ -275,7 +284,8 @@ static void test_png_rows_equal_image(void **state)
     sk_image_rows none = {.width = 4, .height = 4, .channels = 3};
     assert_int_equal(sk_image_write_png_rows(&none, b, NULL, NULL), SK_ERROR_INVALID_ARGUMENT);
     rows_of_image user = {NULL, 0};
-    sk_image_rows wide = {.width = 70000, .height = 4, .channels = 3, .get_row = image_row, .user = &user};
+    sk_image_rows wide = {
+        .width = 70000, .height = 4, .channels = 3, .get_row = image_row, .user = &user};
     assert_int_not_equal(sk_image_write_png_rows(&wide, b, NULL, NULL), SK_OK);
     assert_int_equal(user.calls, 0);
 }
@@ -315,7 +325,8 @@ static void test_srgb8_table_matches_curve(void **state)
         }
         for (float v = lo; v <= hi; v = nextafterf(v, 2.0f))
             if (sk__png_srgb8_code(q, v) != srgb8_reference(v))
-                fail_msg("boundary %d: %.9g gives %u, want %u", k, v, sk__png_srgb8_code(q, v), srgb8_reference(v));
+                fail_msg("boundary %d: %.9g gives %u, want %u", k, v, sk__png_srgb8_code(q, v),
+                         srgb8_reference(v));
     }
     /* every bucket spans at most one boundary: its last float is at most one code on */
     for (uint32_t b = 0; b < SK__SRGB8_BUCKETS; b++) {
@@ -330,7 +341,8 @@ static void test_srgb8_table_matches_curve(void **state)
         memcpy(&v, &bits, sizeof v);
         assert_int_equal(sk__png_srgb8_code(q, v), srgb8_reference(v));
     }
-    const float special[] = {-0.0f, -1.0f, NAN, INFINITY, -INFINITY, 1.0f, 0x1p-20f, 0x1p-21f, 1e-30f};
+    const float special[] = {-0.0f, -1.0f,    NAN,      INFINITY, -INFINITY,
+                             1.0f,  0x1p-20f, 0x1p-21f, 1e-30f};
     for (size_t i = 0; i < sizeof special / sizeof special[0]; i++)
         assert_int_equal(sk__png_srgb8_code(q, special[i]), srgb8_reference(special[i]));
     free(q);
@@ -370,7 +382,8 @@ static void test_deflate_join(void **state)
             uint32_t adler = 1;
             for (int k = 0; k < 4; k++) {
                 fill_pattern(raw + at, sizes[k], (uint64_t)(level * 10 + kind * 3 + k), kind);
-                size_t m = libdeflate_deflate_compress(c, raw + at, sizes[k], joined + out, 2 * total + 1000 - out);
+                size_t m = libdeflate_deflate_compress(c, raw + at, sizes[k], joined + out,
+                                                       2 * total + 1000 - out);
                 assert_true(m > 0);
                 if (k < 3) {
                     size_t h, e;
@@ -384,7 +397,8 @@ static void test_deflate_join(void **state)
                 at += sizes[k];
             }
             size_t got = 0;
-            assert_int_equal(libdeflate_deflate_decompress(dec, joined, out, back, total, &got), LIBDEFLATE_SUCCESS);
+            assert_int_equal(libdeflate_deflate_decompress(dec, joined, out, back, total, &got),
+                             LIBDEFLATE_SUCCESS);
             assert_int_equal(got, total);
             assert_memory_equal(back, raw, total);
             assert_int_equal(adler, libdeflate_adler32(1, raw, total));
@@ -408,7 +422,8 @@ static void test_deflate_store_and_bad_streams(void **state)
     size_t b = sk__deflate_store(raw, n, true, s + a);
     assert_true(a <= sk__deflate_stored_bound(n));
     size_t got = 0;
-    assert_int_equal(libdeflate_deflate_decompress(dec, s, a + b, back, 2 * n, &got), LIBDEFLATE_SUCCESS);
+    assert_int_equal(libdeflate_deflate_decompress(dec, s, a + b, back, 2 * n, &got),
+                     LIBDEFLATE_SUCCESS);
     assert_int_equal(got, 2 * n);
     assert_memory_equal(back, raw, n);
     assert_memory_equal(back + n, raw, n);
@@ -417,7 +432,8 @@ static void test_deflate_store_and_bad_streams(void **state)
     assert_true(sk__deflate_stream_end(s + a, b, &h, &e));
     struct libdeflate_compressor *c = libdeflate_alloc_compressor(6);
     size_t m = libdeflate_deflate_compress(c, raw, n, s, 2 * n);
-    for (size_t cut = 0; cut < m; cut += m / 50 + 1) assert_false(sk__deflate_stream_end(s, cut, &h, &e));
+    for (size_t cut = 0; cut < m; cut += m / 50 + 1)
+        assert_false(sk__deflate_stream_end(s, cut, &h, &e));
     fill_pattern(s, 4096, 3, 0);
     s[0] |= 6; /* block type 3 is reserved */
     assert_false(sk__deflate_stream_end(s, 4096, &h, &e));

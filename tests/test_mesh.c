@@ -342,7 +342,7 @@ static void test_obj_roundtrip(void **state)
     SK_ASSERT_OK(sk_mesh_write_obj(&m, path, NULL, &e_));
     SK_ASSERT_OK(sk_mesh_read_obj(&back, path, NULL, &e_));
     assert_int_equal(back.vertex_count, 12);
-    assert_int_equal(back.attribute_count, 0); /* OBJ has no attributes */
+    assert_int_equal(back.attribute_count, 0);       /* OBJ has no attributes */
     assert_same_triangles(&m, &back, OBJ_COLOR_TOL); /* %.9g: bit-exact floats */
     sk_mesh_free(&back);
 
@@ -523,7 +523,6 @@ static void test_obj_material(void **state)
     sk_mesh_free(&m);
 }
 
-
 /* Files hold vertex colours sRGB-encoded, as Blender and MeshLab read them: a linear 0.5
  * is 0.735356987 in an OBJ and code 188 in a PLY (written linearly, Blender showed 0.21), and
  * both read back as 0.5. */
@@ -553,7 +552,7 @@ static void test_vertex_colors_are_srgb_in_files(void **state)
     const char *body = strstr(text, "end_header\n") + 11;
     const unsigned char *rgb = (const unsigned char *)body + 12;
     assert_int_equal(rgb[0], 188);
-    assert_int_equal(rgb[1], 5);   /* 255 * 12.92 * 0.00157 = 5.2 */
+    assert_int_equal(rgb[1], 5); /* 255 * 12.92 * 0.00157 = 5.2 */
     assert_int_equal(rgb[2], 255);
     free(text);
     SK_ASSERT_OK(sk_mesh_read_ply(&back, ply, NULL, &e_));
@@ -569,9 +568,11 @@ static void test_obj_objects_and_materials(void **state)
     (void)state;
     sk_mesh m, back;
     make_grid(&m, false);
-    const sk_obj_material mats[2] = {{"oak", {0.5f, 0.25f, 0.125f}, "oak.png"}, {"paint", {1, 0, 0}, NULL}};
+    const sk_obj_material mats[2] = {{"oak", {0.5f, 0.25f, 0.125f}, "oak.png"},
+                                     {"paint", {1, 0, 0}, NULL}};
     const sk_obj_group groups[3] = {{"lid", 4, 0}, {"side", 6, 1}, {"base", 2, -1}};
-    sk_obj_write_desc desc = {.materials = mats, .material_count = 2, .groups = groups, .group_count = 3};
+    sk_obj_write_desc desc = {
+        .materials = mats, .material_count = 2, .groups = groups, .group_count = 3};
     const char *path = sk_test_path("mesh/objects.obj");
     SK_ASSERT_OK(sk_mesh_write_obj(&m, path, &desc, &e_));
     char *text;
@@ -594,16 +595,17 @@ static void test_obj_objects_and_materials(void **state)
     const sk_obj_group short_groups[1] = {{"lid", 4, 0}};
     desc.groups = short_groups;
     desc.group_count = 1;
-    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &desc, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "the groups hold 4 triangles, the mesh has 12");
+    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &desc, &err),
+                           &err, SK_ERROR_INVALID_ARGUMENT,
+                           "the groups hold 4 triangles, the mesh has 12");
     const sk_obj_group bad_material[1] = {{"all", 12, 2}};
     desc.groups = bad_material;
-    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &desc, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "groups[0].material = 2");
+    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &desc, &err),
+                           &err, SK_ERROR_INVALID_ARGUMENT, "groups[0].material = 2");
     const sk_obj_material bad_kd[1] = {{"x", {2, 0, 0}, NULL}};
     sk_obj_write_desc kd = {.materials = bad_kd, .material_count = 1};
-    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &kd, &err), &err,
-                           SK_ERROR_INVALID_ARGUMENT, "materials[0].diffuse[0]");
+    sk_test_expect_failure(sk_mesh_write_obj(&m, sk_test_path("mesh/bad_groups.obj"), &kd, &err),
+                           &err, SK_ERROR_INVALID_ARGUMENT, "materials[0].diffuse[0]");
     assert_false(sk_test_file_exists(sk_test_path("mesh/bad_groups.obj")));
     sk_mesh_free(&m);
 }

@@ -64,7 +64,8 @@ static void test_seamless_wraps(void **state)
     d.seamless = false;
     sk_image plain = render(&d, NULL);
     double plain_across = 0;
-    for (int y = 0; y < 80; y++) plain_across += fabsf(plain.data[y * 128] - plain.data[y * 128 + 127]);
+    for (int y = 0; y < 80; y++)
+        plain_across += fabsf(plain.data[y * 128] - plain.data[y * 128 + 127]);
     assert_true(plain_across > 3.0 * inside);
     sk_image_free(&plain);
     sk_image_free(&img);
@@ -111,12 +112,15 @@ static void test_cli_writes_maps(void **state)
     assert_int_equal(img.height, 64);
     /* same bytes for 1 and 2 threads */
     const char *t1 = sk_test_path("noise/t1.png"), *t2 = sk_test_path("noise/t2.png");
-    assert_int_equal(sk_test_cli(&g_run, "noise --preset grain --size 80x48 --threads 1 -o '%s'", t1), 0);
-    assert_int_equal(sk_test_cli(&g_run, "noise --preset grain --size 80x48 --threads 2 -o '%s'", t2), 0);
+    assert_int_equal(
+        sk_test_cli(&g_run, "noise --preset grain --size 80x48 --threads 1 -o '%s'", t1), 0);
+    assert_int_equal(
+        sk_test_cli(&g_run, "noise --preset grain --size 80x48 --threads 2 -o '%s'", t2), 0);
     assert_true(sk_test_same_file(t1, t2));
     /* --region gives the full map's pixels */
     const char *r = sk_test_path("noise/r.png");
-    assert_int_equal(sk_test_cli(&g_run, "noise --preset clouds --size 64 --region 10,20,30,12 -o '%s'", r), 0);
+    assert_int_equal(
+        sk_test_cli(&g_run, "noise --preset clouds --size 64 --region 10,20,30,12 -o '%s'", r), 0);
     sk_image part = read_png(r);
     assert_int_equal(part.width, 30);
     for (int y = 0; y < 12; y++)
@@ -189,15 +193,17 @@ static void test_cli_progress_bar_on_terminal(void **state)
     const char *out = sk_test_path("noise/progress.png");
     const char *log = sk_test_path("noise/progress.log");
     char cmd[4096];
-    snprintf(cmd, sizeof cmd, "script -qfec \"'%s' noise --size 1500 -o '%s'\" /dev/null > '%s' 2>&1",
-             SK_TEST_CLI, out, log);
+    snprintf(cmd, sizeof cmd,
+             "script -qfec \"'%s' noise --size 1500 -o '%s'\" /dev/null > '%s' 2>&1", SK_TEST_CLI,
+             out, log);
     assert_int_equal(system(cmd), 0);
     char *text;
     assert_int_equal(sk_read_file(log, 0, &text, NULL, NULL), SK_OK);
     assert_non_null(strstr(text, "ETA"));
     assert_non_null(strstr(text, "100%"));
     free(text);
-    snprintf(cmd, sizeof cmd, "script -qfec \"'%s' noise --quiet --size 1500 -o '%s'\" /dev/null > '%s' 2>&1",
+    snprintf(cmd, sizeof cmd,
+             "script -qfec \"'%s' noise --quiet --size 1500 -o '%s'\" /dev/null > '%s' 2>&1",
              SK_TEST_CLI, out, log);
     assert_int_equal(system(cmd), 0);
     assert_int_equal(sk_read_file(log, 0, &text, NULL, NULL), SK_OK);

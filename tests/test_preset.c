@@ -10,7 +10,9 @@
 #include "test_support.h"
 
 /* A schema shaped like the skin module's: levels of profiles of points. */
-typedef struct t_point { float xz[2]; } t_point;
+typedef struct t_point {
+    float xz[2];
+} t_point;
 typedef struct t_segment {
     int point_count;
     t_point points[4];
@@ -38,32 +40,64 @@ typedef struct t_desc {
 } t_desc;
 
 static const sk_schema_field k_point_fields[] = {
-    {.key = NULL, .type = SK_FIELD_FLOATS, .offset = offsetof(t_point, xz), .min = 0, .max = 10,
-     .count = 2, .count_offset = SK_FIELD_FIXED, .doc = "control point (x, z)"},
+    {.key = NULL,
+     .type = SK_FIELD_FLOATS,
+     .offset = offsetof(t_point, xz),
+     .min = 0,
+     .max = 10,
+     .count = 2,
+     .count_offset = SK_FIELD_FIXED,
+     .doc = "control point (x, z)"},
 };
 static const sk_schema k_point_schema = {"point", k_point_fields, 1};
 
 static const sk_schema_field k_segment_fields[] = {
-    {.key = "points", .type = SK_FIELD_ARRAY, .offset = offsetof(t_segment, points), .count = 4,
-     .min_count = 4, .count_offset = offsetof(t_segment, point_count), .elem_size = sizeof(t_point),
-     .schema = &k_point_schema, .doc = "4 Bezier control points"},
+    {.key = "points",
+     .type = SK_FIELD_ARRAY,
+     .offset = offsetof(t_segment, points),
+     .count = 4,
+     .min_count = 4,
+     .count_offset = offsetof(t_segment, point_count),
+     .elem_size = sizeof(t_point),
+     .schema = &k_point_schema,
+     .doc = "4 Bezier control points"},
 };
 static const sk_schema k_segment_schema = {"segment", k_segment_fields, 1};
 
 static const char *const k_layouts[] = {"default", "triangular", "square", "random", NULL};
 static const sk_schema_field k_level_fields[] = {
-    {.key = "layout", .type = SK_FIELD_ENUM, .offset = offsetof(t_level, layout), .names = k_layouts},
-    {.key = "jitter", .type = SK_FIELD_FLOAT, .offset = offsetof(t_level, jitter), .min = 0, .max = 1},
-    {.key = "angle_deg", .type = SK_FIELD_FLOAT, .offset = offsetof(t_level, angle), .min = -180,
-     .max = 180, .scale = SK_DEG_TO_RAD},
-    {.key = "profile", .type = SK_FIELD_ARRAY, .offset = offsetof(t_level, profile), .count = 3,
-     .min_count = 1, .count_offset = offsetof(t_level, segment_count),
-     .elem_size = sizeof(t_segment), .schema = &k_segment_schema},
+    {.key = "layout",
+     .type = SK_FIELD_ENUM,
+     .offset = offsetof(t_level, layout),
+     .names = k_layouts},
+    {.key = "jitter",
+     .type = SK_FIELD_FLOAT,
+     .offset = offsetof(t_level, jitter),
+     .min = 0,
+     .max = 1},
+    {.key = "angle_deg",
+     .type = SK_FIELD_FLOAT,
+     .offset = offsetof(t_level, angle),
+     .min = -180,
+     .max = 180,
+     .scale = SK_DEG_TO_RAD},
+    {.key = "profile",
+     .type = SK_FIELD_ARRAY,
+     .offset = offsetof(t_level, profile),
+     .count = 3,
+     .min_count = 1,
+     .count_offset = offsetof(t_level, segment_count),
+     .elem_size = sizeof(t_segment),
+     .schema = &k_segment_schema},
 };
 static const sk_schema k_level_schema = {"level", k_level_fields, 4};
 
 static const sk_schema_field k_noise_fields[] = {
-    {.key = "octaves", .type = SK_FIELD_INT, .offset = offsetof(t_noise, octaves), .min = 1, .max = 16},
+    {.key = "octaves",
+     .type = SK_FIELD_INT,
+     .offset = offsetof(t_noise, octaves),
+     .min = 1,
+     .max = 16},
     {.key = "gain", .type = SK_FIELD_DOUBLE, .offset = offsetof(t_noise, gain), .min = 0, .max = 1},
 };
 static const sk_schema k_noise_schema = {"noise", k_noise_fields, 2};
@@ -72,11 +106,24 @@ static const sk_schema_field k_desc_fields[] = {
     {.key = "seed", .type = SK_FIELD_SEED, .offset = offsetof(t_desc, seed)},
     {.key = "tile", .type = SK_FIELD_BOOL, .offset = offsetof(t_desc, tile)},
     {.key = "name", .type = SK_FIELD_STRING, .offset = offsetof(t_desc, name), .count = 8},
-    {.key = "light", .type = SK_FIELD_FLOATS, .offset = offsetof(t_desc, light), .min = -1, .max = 1,
-     .count = 3, .count_offset = SK_FIELD_FIXED},
-    {.key = "noise", .type = SK_FIELD_OBJECT, .offset = offsetof(t_desc, noise), .schema = &k_noise_schema},
-    {.key = "levels", .type = SK_FIELD_ARRAY, .offset = offsetof(t_desc, levels), .count = 3,
-     .min_count = 1, .count_offset = offsetof(t_desc, level_count), .elem_size = sizeof(t_level),
+    {.key = "light",
+     .type = SK_FIELD_FLOATS,
+     .offset = offsetof(t_desc, light),
+     .min = -1,
+     .max = 1,
+     .count = 3,
+     .count_offset = SK_FIELD_FIXED},
+    {.key = "noise",
+     .type = SK_FIELD_OBJECT,
+     .offset = offsetof(t_desc, noise),
+     .schema = &k_noise_schema},
+    {.key = "levels",
+     .type = SK_FIELD_ARRAY,
+     .offset = offsetof(t_desc, levels),
+     .count = 3,
+     .min_count = 1,
+     .count_offset = offsetof(t_desc, level_count),
+     .elem_size = sizeof(t_level),
      .schema = &k_level_schema},
 };
 static const sk_schema k_desc_schema = {"test", k_desc_fields, 6};
@@ -155,9 +202,11 @@ static void test_bind_errors_name_key_path(void **state)
     const bad_case cases[] = {
         {"{\"levels\": [{\"profile\": [{\"points\": [[0,3],[2,3],[12,3],[8,3]]}]}]}",
          "levels[0].profile[0].points[2][0] = 12 is out of range [0, 10]"},
-        {"{\"levels\": [{\"jiter\": 0.5}]}", "levels[0].jiter: unknown key (did you mean 'jitter'?)"},
+        {"{\"levels\": [{\"jiter\": 0.5}]}",
+         "levels[0].jiter: unknown key (did you mean 'jitter'?)"},
         {"{\"zzzzzzzzz\": 1}", "zzzzzzzzz: unknown key; accepted keys: seed, tile, name, light"},
-        {"{\"levels\": [{\"jitter\": \"high\"}]}", "levels[0].jitter: expected a number, got the string \"high\""},
+        {"{\"levels\": [{\"jitter\": \"high\"}]}",
+         "levels[0].jitter: expected a number, got the string \"high\""},
         {"{\"levels\": [{\"jitter\": 1e999}]}", "levels[0].jitter is not a finite number"},
         {"{\"levels\": []}", "levels: array length 0 is out of range [1, 3]"},
         {"{\"levels\": [{}, {}, {}, {}]}", "levels: array length 4 is out of range [1, 3]"},
@@ -216,8 +265,12 @@ static void test_set_overrides(void **state)
     assert_int_equal(d.levels[0].layout, 3); /* bare word taken as a string */
     assert_int_equal(bind_with_set(k_good, "light=[0,0,1]", &d, &err), SK_OK);
     assert_true(d.light[2] == 1.0f && d.light[0] == 0.0f);
-    assert_int_equal(bind_with_set(k_good, "levels[2]={\"jitter\":0.1,\"profile\":[{\"points\":[[0,1],[1,1],[2,1],[10,0]]}]}",
-                                   &d, &err), SK_OK);
+    assert_int_equal(
+        bind_with_set(
+            k_good,
+            "levels[2]={\"jitter\":0.1,\"profile\":[{\"points\":[[0,1],[1,1],[2,1],[10,0]]}]}", &d,
+            &err),
+        SK_OK);
     assert_int_equal(d.level_count, 3);
     assert_int_equal(bind_with_set(k_good, "levels[1].profile[0].points[3][1]=2", &d, &err), SK_OK);
     assert_true(d.levels[1].profile[0].points[3].xz[1] == 2.0f);
@@ -226,12 +279,15 @@ static void test_set_overrides(void **state)
     assert_int_equal(bind_with_set(k_good, "tile=null", &d, &err), SK_OK); /* back to default */
     assert_false(d.tile);
     /* NaN and out-of-range values are reported with the key path */
-    assert_int_equal(bind_with_set(k_good, "levels[0].jitter=nan", &d, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(bind_with_set(k_good, "levels[0].jitter=nan", &d, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "levels[0].jitter is not a finite number"));
-    assert_int_equal(bind_with_set(k_good, "levels[0].jitter=2", &d, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(bind_with_set(k_good, "levels[0].jitter=2", &d, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "levels[0].jitter = 2 is out of range [0, 1]"));
     /* bad assignments */
-    assert_int_equal(bind_with_set(k_good, "levels[5].jitter=0.1", &d, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(bind_with_set(k_good, "levels[5].jitter=0.1", &d, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "index 5 is out of range [0, 2]"));
     assert_int_equal(bind_with_set(k_good, "jitter", &d, &err), SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "expected key.path=value"));

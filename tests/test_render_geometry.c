@@ -107,7 +107,9 @@ static void test_cylinder_and_capsule(void **state)
     (void)state;
     sk_render_object_desc o[2] = {
         {.shape = SK_RENDER_SHAPE_CYLINDER, .radius = 1, .height = 4, .uv = SK_RENDER_UV_UNIT},
-        {.shape = SK_RENDER_SHAPE_CAPSULE, .radius = 1, .height = 4,
+        {.shape = SK_RENDER_SHAPE_CAPSULE,
+         .radius = 1,
+         .height = 4,
          .transform = {.translate = {10, 0, 0}}},
     };
     sk_render_scene *s = make_scene(o, 2);
@@ -131,7 +133,7 @@ static void test_cylinder_and_capsule(void **state)
     h = cast(s, sk_v3f(10, -1, 5), sk_v3f(0, 0, -1));
     assert_near(h.distance, 4, EPS);
     assert_near(h.uv.y, SK_PI / 2 + 1, 1e-4); /* quarter circle plus 1 of the straight part */
-    assert_near(h.uv.x, SK_PI, 1e-4);          /* half way round: u = pi r */
+    assert_near(h.uv.x, SK_PI, 1e-4);         /* half way round: u = pi r */
     sk_render_scene_destroy(s);
 }
 
@@ -140,10 +142,14 @@ static void test_transformed_instances(void **state)
 {
     (void)state;
     sk_render_object_desc o[2] = {
-        {.shape = SK_RENDER_SHAPE_PLANE, .size = {2, 0, 2},
+        {.shape = SK_RENDER_SHAPE_PLANE,
+         .size = {2, 0, 2},
          .transform = {.translate = {0, 0, -3}, .rotate = {(float)(SK_PI / 2), 0, 0}}},
         /* a sphere squashed to half height: the normal of a slanted point is not radial */
-        {.shape = SK_RENDER_SHAPE_SPHERE, .radius = 1, .segments = 512, .rings = 256,
+        {.shape = SK_RENDER_SHAPE_SPHERE,
+         .radius = 1,
+         .segments = 512,
+         .rings = 256,
          .transform = {.translate = {5, 0, 0}, .scale = {1, 0.5f, 1}}},
     };
     sk_render_scene *s = make_scene(o, 2);
@@ -169,8 +175,12 @@ static void test_primitive_meshes(void **state)
 {
     (void)state;
     for (int shape = SK_RENDER_SHAPE_PLANE; shape < SK_RENDER_SHAPE_COUNT; shape++) {
-        sk_render_object_desc o = {.shape = shape, .size = {2, 3, 4}, .radius = 1.5f,
-                                   .height = 2, .segments = 48, .rings = 24};
+        sk_render_object_desc o = {.shape = shape,
+                                   .size = {2, 3, 4},
+                                   .radius = 1.5f,
+                                   .height = 2,
+                                   .segments = 48,
+                                   .rings = 24};
         sk_mesh m;
         sk_error err = {0};
         assert_int_equal(sk_render_make_primitive(&o, &m, &err), SK_OK);
@@ -190,9 +200,11 @@ static void test_primitive_meshes(void **state)
             sk_vec3f p[3], nsum = sk_v3f(0, 0, 0);
             sk_vec2f uv[3];
             for (int k = 0; k < 3; k++) {
-                p[k] = sk_v3f(m.positions[3 * ix[k]], m.positions[3 * ix[k] + 1], m.positions[3 * ix[k] + 2]);
+                p[k] = sk_v3f(m.positions[3 * ix[k]], m.positions[3 * ix[k] + 1],
+                              m.positions[3 * ix[k] + 2]);
                 uv[k] = sk_v2f(m.uvs[2 * ix[k]], m.uvs[2 * ix[k] + 1]);
-                nsum = sk_v3f_add(nsum, sk_v3f(m.normals[3 * ix[k]], m.normals[3 * ix[k] + 1], m.normals[3 * ix[k] + 2]));
+                nsum = sk_v3f_add(nsum, sk_v3f(m.normals[3 * ix[k]], m.normals[3 * ix[k] + 1],
+                                               m.normals[3 * ix[k] + 2]));
             }
             sk_vec3f face = sk_v3f_cross(sk_v3f_sub(p[1], p[0]), sk_v3f_sub(p[2], p[0]));
             assert_true(sk_v3f_length(face) > 0);
@@ -234,7 +246,8 @@ static void test_compute_tangents(void **state)
         const sk_mesh_attribute *t = sk_mesh_find_attribute(&m, "tangent");
         assert_non_null(t);
         for (int i = 0; i < 4; i++) {
-            assert_vec(sk_v3f(t->data[4 * i], t->data[4 * i + 1], t->data[4 * i + 2]), 1, 0, 0, 1e-5f);
+            assert_vec(sk_v3f(t->data[4 * i], t->data[4 * i + 1], t->data[4 * i + 2]), 1, 0, 0,
+                       1e-5f);
             /* v along -z: cross(n, t) = (0,1,0) x (1,0,0) = (0,0,-1) agrees (w = +1) */
             assert_near(t->data[4 * i + 3], mirrored ? -1 : 1, 0);
         }
@@ -248,7 +261,8 @@ static void test_instances_and_framing(void **state)
     (void)state;
     sk_render_object_desc o[3];
     for (int i = 0; i < 3; i++)
-        o[i] = (sk_render_object_desc){.shape = SK_RENDER_SHAPE_SPHERE, .radius = 1,
+        o[i] = (sk_render_object_desc){.shape = SK_RENDER_SHAPE_SPHERE,
+                                       .radius = 1,
                                        .transform = {.translate = {3.0f * (float)i, 0, 0}}};
     sk_render_scene *s = make_scene(o, 3);
     for (int i = 0; i < 3; i++) {
@@ -271,12 +285,9 @@ static void test_instances_and_framing(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_sphere_hits),
-        cmocka_unit_test(test_box_faces),
-        cmocka_unit_test(test_cylinder_and_capsule),
-        cmocka_unit_test(test_transformed_instances),
-        cmocka_unit_test(test_primitive_meshes),
-        cmocka_unit_test(test_compute_tangents),
+        cmocka_unit_test(test_sphere_hits),           cmocka_unit_test(test_box_faces),
+        cmocka_unit_test(test_cylinder_and_capsule),  cmocka_unit_test(test_transformed_instances),
+        cmocka_unit_test(test_primitive_meshes),      cmocka_unit_test(test_compute_tangents),
         cmocka_unit_test(test_instances_and_framing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

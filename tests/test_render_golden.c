@@ -105,17 +105,19 @@ static void check_scene(const char *name)
         if (d > 4) large++;
     }
     double mean = sum / (double)n;
-    print_message("%s: mean difference %.3f codes, %zu of %zu values differ by more than 4\n",
-                  name, mean, large, n);
+    print_message("%s: mean difference %.3f codes, %zu of %zu values differ by more than 4\n", name,
+                  mean, large, n);
     if (mean > 0.5 || (double)large > 0.01 * (double)n)
-        fail_msg("%s differs from its reference (mean %.3f codes, %zu values > 4 codes)", name, mean, large);
+        fail_msg("%s differs from its reference (mean %.3f codes, %zu values > 4 codes)", name,
+                 mean, large);
     sk_image_free(&one);
     sk_image_free(&two);
     sk_image_free(&display);
     sk_image_free(&ref);
 }
 
-static const char *const k_scenes[] = {"wrist", "piano", "wood-turntable", "fig9-board", "hand-blend"};
+static const char *const k_scenes[] = {"wrist", "piano", "wood-turntable", "fig9-board",
+                                       "hand-blend"};
 #define SCENE_COUNT ((int)(sizeof k_scenes / sizeof k_scenes[0]))
 
 static void test_scene(void **state) { check_scene((const char *)*state); }
@@ -147,7 +149,8 @@ int main(void)
 {
     struct CMUnitTest tests[SCENE_COUNT + 1];
     for (int i = 0; i < SCENE_COUNT; i++)
-        tests[i] = (struct CMUnitTest){k_scenes[i], test_scene, NULL, NULL, (void *)(uintptr_t)k_scenes[i]};
+        tests[i] = (struct CMUnitTest){k_scenes[i], test_scene, NULL, NULL,
+                                       (void *)(uintptr_t)k_scenes[i]};
     tests[SCENE_COUNT] = (struct CMUnitTest)cmocka_unit_test(test_every_scene_is_covered);
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -91,7 +91,8 @@ static void test_plain_wood_is_lambertian(void **state)
 {
     (void)state;
     double theta = 40 * SK_DEG_TO_RAD;
-    sk_render_scene_desc *d = tiny_view(sk_v3f(3, 0, -2), sk_v3f((float)sin(theta), (float)cos(theta), 0));
+    sk_render_scene_desc *d =
+        tiny_view(sk_v3f(3, 0, -2), sk_v3f((float)sin(theta), (float)cos(theta), 0));
     sk_render_material_desc *m = &d->materials[0];
     m->type = SK_RENDER_MATERIAL_WOOD;
     const float c[3] = {0.7f, 0.5f, 0.3f};
@@ -192,7 +193,7 @@ static void test_preset_references(void **state)
     if (sk_render_scene_desc_load(path, d, &err) != SK_OK) fail_msg("%s", err.message);
     assert_int_equal(d->materials[0].type, SK_RENDER_MATERIAL_SKIN);
     assert_int_equal(d->materials[0].skin.level_count, 3);
-    assert_near(d->materials[0].skin.levels[0].stretch[0], 5, 0); /* Fig. 19(f) */
+    assert_near(d->materials[0].skin.levels[0].stretch[0], 5, 0);  /* Fig. 19(f) */
     assert_near(d->materials[0].skin.size_mm[0], 23.561945, 1e-5); /* the skin_set edit */
     free(d);
 
@@ -200,27 +201,36 @@ static void test_preset_references(void **state)
     const char *msg;
     const char *wood = "{\"rings\": {\"width_mm\": 2.5}}";
     sk_test_write_file(sk_test_path("materials/scenes/w.json"), wood, strlen(wood));
-    assert_null(scene_error("{\"materials\": [{\"name\": \"w\", \"type\": \"wood\", \"wood_preset\": \"w.json\"}]}"));
+    assert_null(scene_error(
+        "{\"materials\": [{\"name\": \"w\", \"type\": \"wood\", \"wood_preset\": \"w.json\"}]}"));
     assert_string_equal(
-        scene_error("{\"materials\": [{\"name\": \"w\", \"type\": \"wood\", \"wood_preset\": \"w.json\", "
-                    "\"wood_set\": [\"rings.width_mm=-1\"]}]}"),
+        scene_error(
+            "{\"materials\": [{\"name\": \"w\", \"type\": \"wood\", \"wood_preset\": \"w.json\", "
+            "\"wood_set\": [\"rings.width_mm=-1\"]}]}"),
         "materials[0].wood_preset = \"w.json\": rings.width_mm = -1 is out of range [0, 50]");
-    msg = scene_error("{\"materials\": [{\"name\": \"w\", \"type\": \"wood\", \"wood_preset\": \"w.json\", "
-                      "\"wood_set\": [\"rings..x=1\"]}]}");
+    msg = scene_error(
+        "{\"materials\": [{\"name\": \"w\", \"type\": \"wood\", \"wood_preset\": \"w.json\", "
+        "\"wood_set\": [\"rings..x=1\"]}]}");
     assert_non_null(msg);
     assert_true(strncmp(msg, "materials[0].wood_set[0]: ", 26) == 0);
     assert_non_null(strstr(msg, "rings..x"));
-    msg = scene_error("{\"materials\": [{\"name\": \"s\", \"type\": \"skin\", \"skin_preset\": \"fig99\"}]}");
+    msg = scene_error(
+        "{\"materials\": [{\"name\": \"s\", \"type\": \"skin\", \"skin_preset\": \"fig99\"}]}");
     assert_non_null(msg);
-    assert_non_null(strstr(msg, "materials[0].skin_preset = \"fig99\" is not a shipped skin preset"));
+    assert_non_null(
+        strstr(msg, "materials[0].skin_preset = \"fig99\" is not a shipped skin preset"));
     assert_string_equal(
-        scene_error("{\"materials\": [{\"name\": \"s\", \"type\": \"skin\", \"skin_set\": [\"seed=2\"]}]}"),
-        "materials[0].skin_set needs materials[0].skin_preset (edit the skin keys directly otherwise)");
+        scene_error(
+            "{\"materials\": [{\"name\": \"s\", \"type\": \"skin\", \"skin_set\": [\"seed=2\"]}]}"),
+        "materials[0].skin_set needs materials[0].skin_preset (edit the skin keys directly "
+        "otherwise)");
     assert_string_equal(
-        scene_error("{\"materials\": [{\"name\": \"w\", \"type\": \"wood\", \"wood_preset\": \"w.json\", "
-                    "\"wood\": {\"seed\": 3}}]}"),
+        scene_error(
+            "{\"materials\": [{\"name\": \"w\", \"type\": \"wood\", \"wood_preset\": \"w.json\", "
+            "\"wood\": {\"seed\": 3}}]}"),
         "materials[0]: give either wood_preset or wood, not both (use wood_set to edit a preset)");
-    msg = scene_error("{\"materials\": [{\"name\": \"s\", \"type\": \"skin\", \"skin\": {\"levels\": []}}]}");
+    msg = scene_error(
+        "{\"materials\": [{\"name\": \"s\", \"type\": \"skin\", \"skin\": {\"levels\": []}}]}");
     assert_non_null(msg);
     assert_true(strncmp(msg, "materials[0].skin.levels", 24) == 0);
 }
@@ -284,7 +294,8 @@ static void test_shared_tree_and_images(void **state)
     sk_image built = render_image(d);
 
     sk_image albedo_read, normal_read;
-    sk_png_read_desc srgb = {.encoding = SK_PNG_ENCODING_SRGB}, lin = {.encoding = SK_PNG_ENCODING_LINEAR};
+    sk_png_read_desc srgb = {.encoding = SK_PNG_ENCODING_SRGB},
+                     lin = {.encoding = SK_PNG_ENCODING_LINEAR};
     assert_int_equal(sk_image_read_png(&albedo_read, albedo_path, &srgb, NULL, NULL, &err), SK_OK);
     assert_int_equal(sk_image_read_png(&normal_read, normal_path, &lin, NULL, NULL, &err), SK_OK);
     sk_wood *tree = NULL;
@@ -305,7 +316,8 @@ static void test_shared_tree_and_images(void **state)
     assert_int_equal(sk_render_scene_create(d, &s, &err), SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "materials[1].normal_image"));
     sk_image_free(&built), sk_image_free(&shared), sk_image_free(&again);
-    sk_image_free(&albedo), sk_image_free(&normal), sk_image_free(&albedo_read), sk_image_free(&normal_read);
+    sk_image_free(&albedo), sk_image_free(&normal), sk_image_free(&albedo_read),
+        sk_image_free(&normal_read);
     sk_wood_destroy(tree);
     free(d);
 }

@@ -12,7 +12,10 @@
 
 static sk_test_run g_run;
 
-static void write_text(const char *path, const char *text) { sk_test_write_file(path, text, strlen(text)); }
+static void write_text(const char *path, const char *text)
+{
+    sk_test_write_file(path, text, strlen(text));
+}
 
 /* A unit cube OBJ (no normals: shaded flat) and a scene using it from the same folder. */
 static const char *k_cube_obj =
@@ -27,7 +30,8 @@ static const char *k_scene =
     "  \"materials\": [{\"name\": \"floor\", \"albedo\": [0.5, 0.5, 0.5], \"specular\": 0.2}],\n"
     "  \"objects\": [\n"
     "    {\"name\": \"cube\", \"file\": \"cube.obj\", \"material\": \"floor\",\n"
-    "     \"transform\": {\"translate\": [0, 0, -1], \"rotate_deg\": [0, 0, 0], \"scale\": [0.5, 0.5, 0.5]}},\n"
+    "     \"transform\": {\"translate\": [0, 0, -1], \"rotate_deg\": [0, 0, 0], \"scale\": [0.5, "
+    "0.5, 0.5]}},\n"
     "    {\"shape\": \"sphere\", \"radius\": 0.5, \"transform\": {\"translate\": [2, 0, 0]}}\n"
     "  ],\n"
     "  \"lights\": [{\"type\": \"directional\", \"direction\": [-1, -1, -1]}]\n"
@@ -77,7 +81,8 @@ static void test_ply_mesh_instances(void **state)
     sk_mesh_free(&m);
     const char *json =
         "{\"objects\": [{\"file\": \"box.ply\", \"transform\": {\"translate\": [-3, 0, 0]}},\n"
-        "  {\"file\": \"box.ply\", \"transform\": {\"translate\": [3, 0, 0], \"scale\": [-1, 1, 2]}}]}";
+        "  {\"file\": \"box.ply\", \"transform\": {\"translate\": [3, 0, 0], \"scale\": [-1, 1, "
+        "2]}}]}";
     const char *path = sk_test_path("ply/scene.json");
     write_text(path, json);
     sk_render_scene_desc *d = calloc(1, sizeof *d);
@@ -123,14 +128,16 @@ static const char *bind_error(const char *from, const char *to)
 
 static void assert_starts(const char *text, const char *prefix)
 {
-    if (strncmp(text, prefix, strlen(prefix)) != 0) fail_msg("\"%s\" does not start with \"%s\"", text, prefix);
+    if (strncmp(text, prefix, strlen(prefix)) != 0)
+        fail_msg("\"%s\" does not start with \"%s\"", text, prefix);
 }
 
 static void test_bad_scenes_name_the_key(void **state)
 {
     (void)state;
-    assert_string_equal(bind_error("\"material\": \"floor\"", "\"material\": \"flor\""),
-                        "objects[0].material = \"flor\" is not a material of the scene (materials: floor)");
+    assert_string_equal(
+        bind_error("\"material\": \"floor\"", "\"material\": \"flor\""),
+        "objects[0].material = \"flor\" is not a material of the scene (materials: floor)");
     assert_starts(bind_error("cube.obj", "missing.obj"), "objects[0].file = \"missing.obj\": ");
     write_text(sk_test_path("nan.obj"), "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
     const char *msg = bind_error("cube.obj", "nan.obj");
@@ -143,11 +150,14 @@ static void test_bad_scenes_name_the_key(void **state)
     assert_string_equal(bind_error("\"shape\": \"sphere\"", "\"shape\": \"spere\""),
                         "objects[1].shape = \"spere\" is not one of: mesh, plane, box, sphere, "
                         "cylinder, capsule");
-    assert_string_equal(bind_error("\"scale\": [0.5, 0.5, 0.5]", "\"scale\": [0.5, 0, 0.5]"),
-                        "objects[0].transform.scale[1] = 0: a scale must not be 0 (all three 0 mean 1)");
-    assert_string_equal(bind_error("\"target\": [0, 0, 0]", "\"target\": [0, 0, 6]"),
-                        "camera.position = camera.target = [0, 0, 6]: the camera has no view direction");
-    assert_string_equal(bind_error("\"name\": \"cube\", \"file\": \"cube.obj\"", "\"file\": \"cube.obj\", \"shape\": \"mesh\", \"file\": \"x\""),
+    assert_string_equal(
+        bind_error("\"scale\": [0.5, 0.5, 0.5]", "\"scale\": [0.5, 0, 0.5]"),
+        "objects[0].transform.scale[1] = 0: a scale must not be 0 (all three 0 mean 1)");
+    assert_string_equal(
+        bind_error("\"target\": [0, 0, 0]", "\"target\": [0, 0, 6]"),
+        "camera.position = camera.target = [0, 0, 6]: the camera has no view direction");
+    assert_string_equal(bind_error("\"name\": \"cube\", \"file\": \"cube.obj\"",
+                                   "\"file\": \"cube.obj\", \"shape\": \"mesh\", \"file\": \"x\""),
                         "objects[0].file: key given twice");
     assert_string_equal(bind_error("\"samples\": 2", "\"samples\": 1e9"),
                         "image.samples = 1e+09 is out of range [1, 4096]");
@@ -161,7 +171,8 @@ static void test_bad_desc_from_c(void **state)
     sk_error err = {0};
     d->camera.fov = NAN;
     assert_int_equal(sk_render_scene_desc_validate(d, &err), SK_ERROR_INVALID_ARGUMENT);
-    assert_string_equal(err.message, "camera.fov_deg is not a finite number (got nan; accepted: [0.001, 179])");
+    assert_string_equal(err.message,
+                        "camera.fov_deg is not a finite number (got nan; accepted: [0.001, 179])");
     d->camera.fov = 0;
     d->light_count = 1;
     d->lights[0].type = SK_RENDER_LIGHT_RECT;
@@ -205,7 +216,8 @@ static void test_cli_render(void **state)
     remove(png), remove(exr);
     assert_int_equal(sk_test_cli(&g_run, "render --help"), 0);
     assert_non_null(strstr(g_run.out, "usage: shitsukan render"));
-    sk_test_cli(&g_run, "render '%s' -o '%s' --exr '%s' --size 20x12 --spp 3 --stats -q", scene, png, exr);
+    sk_test_cli(&g_run, "render '%s' -o '%s' --exr '%s' --size 20x12 --spp 3 --stats -q", scene,
+                png, exr);
     assert_int_equal(g_run.status, 0);
     assert_non_null(strstr(g_run.err, "camera rays/s"));
     sk_image a, b;
@@ -246,8 +258,18 @@ static void test_cli_same_bytes_any_thread_count(void **state)
     char one[1024], two[1024];
     snprintf(one, sizeof one, "%s", sk_test_path("threads1.exr"));
     snprintf(two, sizeof two, "%s", sk_test_path("threads2.exr"));
-    assert_int_equal(sk_test_cli(&g_run, "render '%s' -o '%s' --threads 1 -q --set environment.ambient_occlusion=true --set environment.radiance=[1,1,1]", scene, one), 0);
-    assert_int_equal(sk_test_cli(&g_run, "render '%s' -o '%s' --threads 2 -q --set environment.ambient_occlusion=true --set environment.radiance=[1,1,1]", scene, two), 0);
+    assert_int_equal(
+        sk_test_cli(&g_run,
+                    "render '%s' -o '%s' --threads 1 -q --set environment.ambient_occlusion=true "
+                    "--set environment.radiance=[1,1,1]",
+                    scene, one),
+        0);
+    assert_int_equal(
+        sk_test_cli(&g_run,
+                    "render '%s' -o '%s' --threads 2 -q --set environment.ambient_occlusion=true "
+                    "--set environment.radiance=[1,1,1]",
+                    scene, two),
+        0);
     assert_true(sk_test_same_file(one, two));
 }
 

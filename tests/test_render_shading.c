@@ -44,7 +44,8 @@ static void render(const sk_render_scene_desc *d, sk_image *img)
     sk_render_scene *s = NULL;
     sk_error err = {0};
     if (sk_render_scene_create(d, &s, &err) != SK_OK) fail_msg("scene: %s", err.message);
-    if (sk_render_scene_render(s, NULL, img, NULL, &err) != SK_OK) fail_msg("render: %s", err.message);
+    if (sk_render_scene_render(s, NULL, img, NULL, &err) != SK_OK)
+        fail_msg("render: %s", err.message);
     sk_render_scene_destroy(s);
 }
 
@@ -127,7 +128,7 @@ static void test_point_and_area_light_irradiance(void **state)
     sk_image_free(&img);
 
     l->type = SK_RENDER_LIGHT_RECT;
-    l->intensity = 3;         /* radiance */
+    l->intensity = 3; /* radiance */
     l->size[0] = l->size[1] = 2;
     l->direction[1] = -1;
     l->samples = 16;
@@ -209,7 +210,8 @@ static void test_blinn_phong_energy(void **state)
                 }
             }
             double albedo = sum * (1.0 / nt) * (2 * SK_PI / np);
-            if (albedo > 1.0 + 1e-3) fail_msg("n = %g, view %g deg: albedo %g > 1", exponents[e], view_deg[v], albedo);
+            if (albedo > 1.0 + 1e-3)
+                fail_msg("n = %g, view %g deg: albedo %g > 1", exponents[e], view_deg[v], albedo);
             if (v == 0 && fabs(albedo - 1) > 0.01)
                 fail_msg("n = %g: normal-incidence albedo %g", exponents[e], albedo);
         }
@@ -245,9 +247,9 @@ static void test_bump_matches_tilted_plane(void **state)
         float g[2], uv_scale;
         float rot_deg[3];
     } cases[] = {
-        {{0.4f, 0}, 1, {0, 0, 21.801409f}},   /* atan(0.4) */
-        {{0, 0.3f}, 1, {16.699244f, 0, 0}},   /* atan(0.3) */
-        {{0.25f, 0}, 2, {0, 0, 26.565051f}},  /* atan(0.5) */
+        {{0.4f, 0}, 1, {0, 0, 21.801409f}},  /* atan(0.4) */
+        {{0, 0.3f}, 1, {16.699244f, 0, 0}},  /* atan(0.3) */
+        {{0.25f, 0}, 2, {0, 0, 26.565051f}}, /* atan(0.5) */
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         float bumped[3], tilted[3];
@@ -346,7 +348,8 @@ static void test_texture_blend(void **state)
     sk_image img;
     render(d, &img);
     for (int c = 0; c < 3; c++)
-        assert_near(pixel(&img, 1, 0)[c], 0.3 * 2 / SK_PI + 0.7 * d->materials[0].albedo[c] * 0.5, 1e-6);
+        assert_near(pixel(&img, 1, 0)[c], 0.3 * 2 / SK_PI + 0.7 * d->materials[0].albedo[c] * 0.5,
+                    1e-6);
     sk_image_free(&img);
     free(d);
 }
@@ -365,7 +368,10 @@ static void test_albedo_texture_orientation(void **state)
     assert_int_equal(sk_image_write_png(&tex, path, NULL, &err), SK_OK);
     sk_image_free(&tex);
     /* the 100-unit plane with uv_scale 1/100: st = (x + 50, 50 - z) / 100 */
-    const struct { float x, z; float rgb[3]; } at[] = {
+    const struct {
+        float x, z;
+        float rgb[3];
+    } at[] = {
         {-25, -25, {1, 0, 0}}, {25, -25, {0, 1, 0}}, {-25, 25, {0, 0, 1}}, {25, 25, {1, 1, 1}}};
     for (int i = 0; i < 4; i++) {
         sk_render_scene_desc *d = plane_scene(1, 4, 1e-4f);
@@ -391,14 +397,16 @@ static void test_no_self_shadowing(void **state)
     (void)state;
     sk_render_scene_desc *d = plane_scene(32, 2, 2);
     sk_render_object_desc *o = &d->objects[0];
-    o->transform.translate[0] = 2000, o->transform.translate[1] = -3000, o->transform.translate[2] = 1500;
+    o->transform.translate[0] = 2000, o->transform.translate[1] = -3000,
+    o->transform.translate[2] = 1500;
     o->transform.rotate[0] = 0.3f, o->transform.rotate[1] = 0.7f;
     o->size[0] = o->size[2] = 20;
     sk_mat4f m = sk__transform_matrix(&o->transform);
     sk_vec3f n = sk_v3f_normalize(sk_m4f_apply_dir(m, sk_v3f(0, 1, 0)));
     sk_vec3f t = sk_v3f_normalize(sk_m4f_apply_dir(m, sk_v3f(1, 0, 0)));
     double grazing = 85 * SK_DEG_TO_RAD;
-    sk_vec3f to_light = sk_v3f_add(sk_v3f_scale(n, (float)cos(grazing)), sk_v3f_scale(t, (float)sin(grazing)));
+    sk_vec3f to_light =
+        sk_v3f_add(sk_v3f_scale(n, (float)cos(grazing)), sk_v3f_scale(t, (float)sin(grazing)));
     add_directional(d, to_light, 1);
     /* look at the plane's centre along its normal */
     sk_vec3f c = sk__v3f_from(o->transform.translate);
@@ -410,7 +418,8 @@ static void test_no_self_shadowing(void **state)
     render(d, &img);
     double expect = 0.5 * cos(grazing) / SK_PI;
     for (int y = 0; y < 32; y++)
-        for (int x = 0; x < 32; x++) assert_near(pixel(&img, x, y)[0], expect, 1e-4 * expect + 1e-7);
+        for (int x = 0; x < 32; x++)
+            assert_near(pixel(&img, x, y)[0], expect, 1e-4 * expect + 1e-7);
     sk_image_free(&img);
     free(d);
 }
@@ -425,7 +434,8 @@ static void test_tonemap_curves(void **state)
     memcpy(lin.data, px, sizeof px);
     sk_render_film_desc film = {0};
     assert_int_equal(sk_render_tonemap(&lin, &film, &out, &err), SK_OK);
-    assert_near(out.data[0], 0.5, 0), assert_near(out.data[1], 1, 0), assert_near(out.data[3], 1, 0);
+    assert_near(out.data[0], 0.5, 0), assert_near(out.data[1], 1, 0),
+        assert_near(out.data[3], 1, 0);
     assert_near(out.data[4], 0.5, 1e-7); /* un-premultiplied: 0.25 / 0.5 */
     assert_near(out.data[7], 0.5, 0);
     assert_near(out.data[8], 0, 0), assert_near(out.data[11], 0, 0);

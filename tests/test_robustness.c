@@ -70,7 +70,8 @@ static void test_hand_json_is_as_strict_as_presets(void **state)
     assert_non_null(strstr(err.message, "unexpected text after the JSON value"));
     assert_int_not_equal(parse_constraints("{\"rows\": [], \"rows\": []}", &err), SK_OK);
     assert_non_null(strstr(err.message, "rows: key given twice"));
-    assert_int_not_equal(parse_animation("{\"keys\": [{\"pin\": {\"L.MCP.flex\": 10}}]}x", &err), SK_OK);
+    assert_int_not_equal(parse_animation("{\"keys\": [{\"pin\": {\"L.MCP.flex\": 10}}]}x", &err),
+                         SK_OK);
     assert_non_null(strstr(err.message, "unexpected text after the JSON value"));
     assert_int_not_equal(
         parse_animation("{\"keys\": [{\"pin\": {\"L.MCP.flex\": 10, \"L.MCP.flex\": 20}}]}", &err),
@@ -87,7 +88,8 @@ static void test_json_refuses_inexact_integers(void **state)
     (void)state;
     sk_preset *p = NULL;
     sk_error err = {0};
-    const char *exact = "{\"seed\": 9007199254740992, \"x\": 1.5e300, \"s\": \"12345678901234567890\"}";
+    const char *exact =
+        "{\"seed\": 9007199254740992, \"x\": 1.5e300, \"s\": \"12345678901234567890\"}";
     assert_int_equal(sk_preset_parse(&p, exact, strlen(exact), "p", &err), SK_OK);
     sk_preset_free(p);
     const char *inexact = "{\"seed\": 9007199254740993}";
@@ -157,9 +159,9 @@ static void test_calibration_refuses_overflow(void **state)
     int pairs[1][2] = {{dx, dy}};
     sk_hand_fit fit;
     sk_error err = {0};
-    assert_int_equal(sk_hand_calibrate(columns, 4, (const int(*)[2])pairs, 1, SK_HAND_WEIGHT_THESIS,
-                                       &fit, &err),
-                     SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(
+        sk_hand_calibrate(columns, 4, (const int(*)[2])pairs, 1, SK_HAND_WEIGHT_THESIS, &fit, &err),
+        SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "L.MCP.flex:R.MCP.flex"));
     /* and the samples file refuses such values, naming the range */
     const char *csv = "L.MCP.flex,R.MCP.flex\n1e308,1\n2,3\n4,5\n";
@@ -187,7 +189,7 @@ static void test_documented_endpoints_are_accepted(void **state)
     assert_true(sk_in_range_f(1e300, 0, 1e301));
 
     static const char *const sets[] = {
-        "view.width_mm=0.01",          "fibre.cell_mm=0.005", "rings.latewood_fraction=0.01",
+        "view.width_mm=0.01",           "fibre.cell_mm=0.005",   "rings.latewood_fraction=0.01",
         "rings.latewood_fraction=0.99", "rings.transition=0.99",
     };
     for (size_t i = 0; i < sizeof sets / sizeof sets[0]; i++) {
@@ -220,11 +222,17 @@ static void test_documented_endpoints_are_accepted(void **state)
  * never says that very value is out of range (a key may still be refused with another, as
  * a pair of keys that must be ordered). */
 typedef sk_result (*validate_fn)(const void *desc, sk_error *err);
-static sk_result validate_skin(const void *d, sk_error *err) { return sk_skin_desc_validate(d, err); }
-static sk_result validate_wood(const void *d, sk_error *err) { return sk_wood_desc_validate(d, err); }
+static sk_result validate_skin(const void *d, sk_error *err)
+{
+    return sk_skin_desc_validate(d, err);
+}
+static sk_result validate_wood(const void *d, sk_error *err)
+{
+    return sk_wood_desc_validate(d, err);
+}
 
-static int sweep_endpoints(const sk_schema *schema, const cJSON *fields, const char *prefix, validate_fn validate,
-                           size_t desc_size, int *checked)
+static int sweep_endpoints(const sk_schema *schema, const cJSON *fields, const char *prefix,
+                           validate_fn validate, size_t desc_size, int *checked)
 {
     int failures = 0;
     const cJSON *f;
@@ -236,12 +244,14 @@ static int sweep_endpoints(const sk_schema *schema, const cJSON *fields, const c
         char path[256];
         snprintf(path, sizeof path, "%s%s%s", prefix, prefix[0] ? "." : "", key->valuestring);
         if (strcmp(type->valuestring, "object") == 0) {
-            failures += sweep_endpoints(schema, cJSON_GetObjectItemCaseSensitive(f, "fields"), path, validate,
-                                        desc_size, checked);
+            failures += sweep_endpoints(schema, cJSON_GetObjectItemCaseSensitive(f, "fields"), path,
+                                        validate, desc_size, checked);
             continue;
         }
-        if (strcmp(type->valuestring, "float") != 0 && strcmp(type->valuestring, "double") != 0) continue;
-        const cJSON *ends[2] = {cJSON_GetObjectItemCaseSensitive(f, "min"), cJSON_GetObjectItemCaseSensitive(f, "max")};
+        if (strcmp(type->valuestring, "float") != 0 && strcmp(type->valuestring, "double") != 0)
+            continue;
+        const cJSON *ends[2] = {cJSON_GetObjectItemCaseSensitive(f, "min"),
+                                cJSON_GetObjectItemCaseSensitive(f, "max")};
         for (int e = 0; e < 2; e++) {
             if (!cJSON_IsNumber(ends[e])) continue;
             char set[320];
@@ -284,8 +294,9 @@ static void test_every_schema_endpoint_is_accepted(void **state)
         cJSON *root = cJSON_Parse(text);
         free(text);
         assert_non_null(root);
-        failures += sweep_endpoints(schemas[i].schema, cJSON_GetObjectItemCaseSensitive(root, "fields"), "",
-                                    schemas[i].validate, schemas[i].size, &checked);
+        failures +=
+            sweep_endpoints(schemas[i].schema, cJSON_GetObjectItemCaseSensitive(root, "fields"), "",
+                            schemas[i].validate, schemas[i].size, &checked);
         cJSON_Delete(root);
     }
     assert_true(checked > 40);
@@ -426,7 +437,8 @@ static void test_atomic_file_takes_the_longest_names(void **state)
         name[len] = '\0';
         snprintf(path, sizeof path, "%s/%s", dir, name);
         sk_error err = {0};
-        if (write_text(path, "long", &err) != SK_OK) fail_msg("%d characters: %s", len, err.message);
+        if (write_text(path, "long", &err) != SK_OK)
+            fail_msg("%d characters: %s", len, err.message);
         assert_true(sk_test_file_exists(path));
         /* the same name in an output set */
         sk_output_set *set = NULL;
@@ -640,8 +652,10 @@ static void test_output_set_file_inside_its_folder(void **state)
         snprintf(path, sizeof path, "%s/albedo.png", sf);
         assert_int_equal(write_text(path, "A", &err), SK_OK);
         /* nothing in place before the commit (the earlier file, the second time) */
-        if (existing) read_text(shaded, buf, sizeof buf), assert_string_equal(buf, "S");
-        else assert_false(sk_test_file_exists(shaded));
+        if (existing)
+            read_text(shaded, buf, sizeof buf), assert_string_equal(buf, "S");
+        else
+            assert_false(sk_test_file_exists(shaded));
         assert_int_equal(sk_output_set_commit(set, &err), SK_OK);
         read_text(shaded, buf, sizeof buf);
         assert_string_equal(buf, existing ? "S2" : "S");

@@ -23,8 +23,10 @@ static void test_grid_and_repeat(void **state)
     const char *a = write_test_png("sheet/a.png", 60, 30, 0.1f);
     const char *b = write_test_png("sheet/b.png", 20, 30, 0.4f);
     const char *out = sk_test_path("sheet/out.png");
-    assert_int_equal(sk_test_cli(&g_run, "sheet --columns 2 --label '(a)' '%s' --label '(b)' '%s' -o '%s'",
-                                 a, b, out), 0);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "sheet --columns 2 --label '(a)' '%s' --label '(b)' '%s' -o '%s'",
+                                 a, b, out),
+                     0);
     sk_image sheet = {0};
     assert_int_equal(sk_image_read_png(&sheet, out, NULL, NULL, NULL, NULL), SK_OK);
     /* two cells of the widest tile (60, wider than the labels) plus padding 8 */

@@ -48,7 +48,8 @@ static sk_render_scene_desc *test_stage(void)
     snprintf(d->objects[0].material, sizeof d->objects[0].material, "floor");
     d->film.opaque = true;
     d->light_count = 1;
-    d->lights[0].direction[0] = 0.3f, d->lights[0].direction[1] = -1, d->lights[0].direction[2] = -0.4f;
+    d->lights[0].direction[0] = 0.3f, d->lights[0].direction[1] = -1,
+    d->lights[0].direction[2] = -0.4f;
     return d;
 }
 
@@ -106,11 +107,14 @@ static int setup(void **state)
     if (sk_hand_constraints_load_file(path, &fx.skeleton, fx.constraints, &err) != SK_OK) return -1;
     sk_hand_surface_desc sd = {.triangles = 2000};
     if (sk_hand_surface_create(&fx.surface, &fx.skeleton, &sd, &err) != SK_OK) return -1;
-    if (sk_image_create(&fx.albedo, 8, 8, 3, &err) != SK_OK || sk_image_create(&fx.normal, 8, 8, 3, &err) != SK_OK)
+    if (sk_image_create(&fx.albedo, 8, 8, 3, &err) != SK_OK ||
+        sk_image_create(&fx.normal, 8, 8, 3, &err) != SK_OK)
         return -1;
     for (int i = 0; i < 64; i++) {
-        fx.albedo.data[3 * i] = 0.8f, fx.albedo.data[3 * i + 1] = 0.6f, fx.albedo.data[3 * i + 2] = 0.5f;
-        fx.normal.data[3 * i] = 0.5f, fx.normal.data[3 * i + 1] = 0.5f, fx.normal.data[3 * i + 2] = 1.0f;
+        fx.albedo.data[3 * i] = 0.8f, fx.albedo.data[3 * i + 1] = 0.6f,
+                           fx.albedo.data[3 * i + 2] = 0.5f;
+        fx.normal.data[3 * i] = 0.5f, fx.normal.data[3 * i + 1] = 0.5f,
+                           fx.normal.data[3 * i + 2] = 1.0f;
     }
     fx.stage = test_stage();
     fx.forearm = calloc(1, sizeof *fx.forearm);
@@ -118,7 +122,8 @@ static int setup(void **state)
     if (sk_tissue_character_load(path, fx.forearm, &err) != SK_OK) return -1;
     snprintf(path, sizeof path, "%s/showcase/melody.txt", SK_TEST_DATA_DIR);
     if (sk_melody_load(path, &fx.melody, &err) != SK_OK) return -1;
-    if (sk_melody_copy(&fx.melody, &fx.short_melody, &err) != SK_OK || sk_melody_cut(&fx.short_melody, 0.7, &err) != SK_OK)
+    if (sk_melody_copy(&fx.melody, &fx.short_melody, &err) != SK_OK ||
+        sk_melody_cut(&fx.short_melody, 0.7, &err) != SK_OK)
         return -1;
     fx.showcase = make_showcase(&fx.melody, 32, 18);
     return 0;
@@ -179,10 +184,12 @@ static void test_presses_and_releases(void **state)
         int first = (int)ceil(n->start_s * fps - 1e-9), after = (int)ceil(e * fps - 1e-9);
         /* down at the first frame at or after the start, by the chosen finger; up before */
         sk_showcase_pose p = pose_at(first / fps);
-        if (!(p.key_angle[k] >= half - tol)) fail_msg("note %d (key %d) not down at frame %d", i, n->key, first);
+        if (!(p.key_angle[k] >= half - tol))
+            fail_msg("note %d (key %d) not down at frame %d", i, n->key, first);
         assert_int_equal(p.key_finger[k], n->finger);
         p = pose_at((first - 1) / fps);
-        if (!(p.key_angle[k] < half + tol)) fail_msg("note %d (key %d) down before its start", i, n->key);
+        if (!(p.key_angle[k] < half + tol))
+            fail_msg("note %d (key %d) down before its start", i, n->key);
         /* held on every frame of the note, up at the first frame at or after its end */
         for (int f = first + 1; f < after; f++) {
             p = pose_at(f / fps);
@@ -190,14 +197,16 @@ static void test_presses_and_releases(void **state)
                 fail_msg("note %d (key %d) not held at frame %d", i, n->key, f);
         }
         p = pose_at(after / fps);
-        if (!(p.key_angle[k] < half + tol)) fail_msg("note %d (key %d) still down at frame %d", i, n->key, after);
+        if (!(p.key_angle[k] < half + tol))
+            fail_msg("note %d (key %d) still down at frame %d", i, n->key, after);
     }
     /* keys no note plays stay up */
     for (int f = 0; f < sk_showcase_frame_count(fx.showcase); f += 3) {
         sk_showcase_pose p = pose_at(f / fps);
         for (int k = 0; k < SK_PIANO_KEY_COUNT; k++) {
             bool played = false;
-            for (int i = 0; i < m->note_count; i++) played = played || m->notes[i].key == k + SK_PIANO_KEY_FIRST;
+            for (int i = 0; i < m->note_count; i++)
+                played = played || m->notes[i].key == k + SK_PIANO_KEY_FIRST;
             if (!played) assert_true(p.key_angle[k] < half);
         }
     }
@@ -231,7 +240,8 @@ static void test_no_fingertip_through_a_key(void **state)
         double t = p.time_s;
         for (int f = 0; f < 5; f++) {
             /* the pad, and the distal phalanx as that sphere swept back to its joint */
-            sk_vec3d joint = sk_showcase_hand_to_scene(fx.showcase, p.frames.point[sk_hand_link_point(distal_link(f))]);
+            sk_vec3d joint = sk_showcase_hand_to_scene(
+                fx.showcase, p.frames.point[sk_hand_link_point(distal_link(f))]);
             for (int k = 0; k < SK_PIANO_KEY_COUNT; k++) {
                 const sk_piano_key *key = &piano->keys[k];
                 if (fabs(key->x_mm - p.tip_centre[f].x) > 40) continue;
@@ -240,10 +250,12 @@ static void test_no_fingertip_through_a_key(void **state)
                     sk_vec3d q = {p.tip_centre[f].x + (joint.x - p.tip_centre[f].x) * a,
                                   p.tip_centre[f].y + (joint.y - p.tip_centre[f].y) * a,
                                   p.tip_centre[f].z + (joint.z - p.tip_centre[f].z) * a};
-                    double gap = sk_piano_key_distance(piano, key, p.key_angle[k], q) - p.tip_radius[f];
+                    double gap =
+                        sk_piano_key_distance(piano, key, p.key_angle[k], q) - p.tip_radius[f];
                     if (gap < worst) worst = gap;
                     if (gap < -0.1)
-                        fail_msg("t = %.3f: finger %d is %.2f mm inside key %d", t, f + 1, -gap, key->key);
+                        fail_msg("t = %.3f: finger %d is %.2f mm inside key %d", t, f + 1, -gap,
+                                 key->key);
                 }
             }
         }
@@ -260,19 +272,23 @@ static void test_no_finger_through_its_neighbour(void **state)
         const sk_showcase_pose p = *sample;
         double t = p.time_s;
         for (int f = 0; f < 4; f++) {
-            int a_links[2] = {distal_link(f) - 1, distal_link(f)}, b_links[2] = {distal_link(f + 1) - 1, distal_link(f + 1)};
+            int a_links[2] = {distal_link(f) - 1, distal_link(f)},
+                b_links[2] = {distal_link(f + 1) - 1, distal_link(f + 1)};
             for (int i = 0; i < 2; i++)
                 for (int j = 0; j < 2; j++) {
                     int la = a_links[i], lb = b_links[j];
                     const sk_vec3d *pt = p.frames.point;
-                    double d = segment_distance(pt[sk_hand_link_point(la)], pt[sk_hand_link_end_point(la)],
-                                                pt[sk_hand_link_point(lb)], pt[sk_hand_link_end_point(lb)]);
-                    double ra = sk_showcase_link_radius(fx.showcase, la), rb = sk_showcase_link_radius(fx.showcase, lb);
+                    double d = segment_distance(
+                        pt[sk_hand_link_point(la)], pt[sk_hand_link_end_point(la)],
+                        pt[sk_hand_link_point(lb)], pt[sk_hand_link_end_point(lb)]);
+                    double ra = sk_showcase_link_radius(fx.showcase, la),
+                           rb = sk_showcase_link_radius(fx.showcase, lb);
                     assert_true(ra > 3 && rb > 3);
                     /* the flesh may press together, the bones may not come through it */
                     if (d < 0.5 * (ra + rb))
-                        fail_msg("t = %.3f: fingers %d and %d are %.2f mm apart (flesh radii %.1f, %.1f)", t, f + 1,
-                                 f + 2, d, ra, rb);
+                        fail_msg("t = %.3f: fingers %d and %d are %.2f mm apart (flesh radii %.1f, "
+                                 "%.1f)",
+                                 t, f + 1, f + 2, d, ra, rb);
                 }
         }
     }
@@ -344,7 +360,8 @@ static void test_frames_for_any_split_and_threads(void **state)
 static double flesh_offset(sk_showcase *sc, int frame, float *skin, float *carried)
 {
     sk_error err = {0};
-    if (sk_showcase_forearm_at(sc, frame, skin, carried, &err) != SK_OK) fail_msg("%s", err.message);
+    if (sk_showcase_forearm_at(sc, frame, skin, carried, &err) != SK_OK)
+        fail_msg("%s", err.message);
     size_t n = sk_showcase_forearm_points(sc);
     double worst = 0;
     for (size_t i = 0; i < n; i++) {
@@ -378,15 +395,19 @@ static void test_forearm_swings_and_settles(void **state)
         sk_showcase_pose p;
         assert_int_equal(sk_showcase_pose_at(sc, f / fps, &p, &err), SK_OK);
         sk_vec3d wrist = p.frames.point[0];
-        bool still = f > 0 && fabs(wrist.x - before.x) + fabs(wrist.y - before.y) + fabs(wrist.z - before.z) < 0.05;
+        bool still =
+            f > 0 &&
+            fabs(wrist.x - before.x) + fabs(wrist.y - before.y) + fabs(wrist.z - before.z) < 0.05;
         if (still && f / fps > 0.4) still_swing = fmax(still_swing, offset);
         peak = fmax(peak, offset);
         before = wrist, last = offset;
     }
     /* the flesh swings by a visible amount while the wrist holds still */
-    if (!(still_swing > 0.3)) fail_msg("the flesh moves %.3f mm while the wrist is still (peak %.3f)", still_swing, peak);
+    if (!(still_swing > 0.3))
+        fail_msg("the flesh moves %.3f mm while the wrist is still (peak %.3f)", still_swing, peak);
     /* and is back on its bones a second after the last note */
-    if (!(last < 0.02 * peak)) fail_msg("the flesh is still %.4f mm off its bones at the end (peak %.3f)", last, peak);
+    if (!(last < 0.02 * peak))
+        fail_msg("the flesh is still %.4f mm off its bones at the end (peak %.3f)", last, peak);
     free(skin), free(carried);
     sk_showcase_destroy(sc);
     sk_melody_free(&leap);
@@ -407,17 +428,22 @@ static void test_forearm_any_start(void **state)
     float *xa = malloc(3 * n * sizeof *xa), *xb = malloc(3 * n * sizeof *xb);
     int target = sk_showcase_frame_count(a) / 2;
     sk_threads_set(1);
-    for (int f = 0; f <= target; f++) assert_int_equal(sk_showcase_forearm_at(a, f, xa, NULL, &err), SK_OK);
+    for (int f = 0; f <= target; f++)
+        assert_int_equal(sk_showcase_forearm_at(a, f, xa, NULL, &err), SK_OK);
     sk_threads_set(2);
     assert_int_equal(sk_showcase_forearm_at(b, target + 3, xb, NULL, &err), SK_OK);
-    assert_int_equal(sk_showcase_forearm_at(b, target, xb, NULL, &err), SK_OK); /* back: a restart */
+    assert_int_equal(sk_showcase_forearm_at(b, target, xb, NULL, &err),
+                     SK_OK); /* back: a restart */
     assert_memory_equal(xa, xb, 3 * n * sizeof *xa);
     sk_threads_set(0);
     free(xa), free(xb);
     sk_showcase_destroy(a), sk_showcase_destroy(b);
 }
 
-static uint32_t le32(const unsigned char *p) { return p[0] | p[1] << 8 | p[2] << 16 | (uint32_t)p[3] << 24; }
+static uint32_t le32(const unsigned char *p)
+{
+    return p[0] | p[1] << 8 | p[2] << 16 | (uint32_t)p[3] << 24;
+}
 
 /* Power of a signal at frequency f (Goertzel). */
 static double power_at(const float *x, size_t n, double f, double rate)
@@ -441,8 +467,8 @@ static void test_sound(void **state)
     assert_int_equal(sk_read_file(path, 0, &data, &size, &err), SK_OK);
     const unsigned char *h = (const unsigned char *)data;
     assert_memory_equal(h, "RIFF", 4), assert_memory_equal(h + 8, "WAVEfmt ", 8);
-    assert_int_equal(h[20] | h[21] << 8, 1);  /* PCM */
-    assert_int_equal(h[22] | h[23] << 8, 1);  /* mono */
+    assert_int_equal(h[20] | h[21] << 8, 1); /* PCM */
+    assert_int_equal(h[22] | h[23] << 8, 1); /* mono */
     assert_int_equal(le32(h + 24), 44100);
     assert_int_equal(h[34] | h[35] << 8, 16); /* bits */
     size_t samples = le32(h + 40) / 2;
@@ -474,7 +500,8 @@ static void test_sound(void **state)
     assert_true(power_at(one, window, 440.0, 44100) > 20 * power_at(one, window, 660.0, 44100));
     /* it decays, and the damper ends it */
     double early = 0, late = 0;
-    for (size_t i = 0; i < window; i++) early += one[i] * one[i], late += one[i + 3 * window] * one[i + 3 * window];
+    for (size_t i = 0; i < window; i++)
+        early += one[i] * one[i], late += one[i + 3 * window] * one[i + 3 * window];
     assert_true(late < 0.05 * early);
     free(one), free(two);
 }
@@ -497,7 +524,8 @@ static void test_piano_keys(void **state)
     assert_int_equal(sk_piano_key_under(&piano, cs4->x_mm, cs4->front_mm - 10), 61);
     assert_int_equal(sk_piano_key_under(&piano, c4->x_mm + 11.0, c4->front_mm - 80), 61);
     /* full dip at the front */
-    double dip = sk_piano_key_top_at(&piano, c4, 0, c4->front_mm) - sk_piano_key_top_at(&piano, c4, piano.max_angle, c4->front_mm);
+    double dip = sk_piano_key_top_at(&piano, c4, 0, c4->front_mm) -
+                 sk_piano_key_top_at(&piano, c4, piano.max_angle, c4->front_mm);
     assert_true(fabs(dip - 10 / sqrt(1 - (10.0 / 250) * (10.0 / 250))) < 1e-9); /* tan of asin */
     /* the renderer sees the turned keys where the piano says they are */
     sk_render_scene_desc *d = calloc(1, sizeof *d);
@@ -514,10 +542,12 @@ static void test_piano_keys(void **state)
     for (int i = 0; i < 3; i++) {
         sk_render_hit hit;
         double x = i == 2 ? 0.5 * (c4->back_x0_mm + c4->back_x1_mm) : c4->x_mm;
-        sk_render_scene_intersect(scene, sk_v3f((float)x, 2000, (float)zs[i]), sk_v3f(0, -1, 0), 1e5f, &hit);
+        sk_render_scene_intersect(scene, sk_v3f((float)x, 2000, (float)zs[i]), sk_v3f(0, -1, 0),
+                                  1e5f, &hit);
         assert_true(hit.hit);
         double expect = sk_piano_key_top_at(&piano, c4, angle, zs[i]);
-        if (fabs(hit.point.y - expect) > 0.02) fail_msg("key top at z %.1f: %.3f, expected %.3f", zs[i], hit.point.y, expect);
+        if (fabs(hit.point.y - expect) > 0.02)
+            fail_msg("key top at z %.1f: %.3f, expected %.3f", zs[i], hit.point.y, expect);
         sk_vec3d p = {x, expect + 1, zs[i]};
         assert_true(fabs(sk_piano_key_distance(&piano, c4, angle, p) - 1) < 0.01);
         p.y = expect - 1;
@@ -525,8 +555,10 @@ static void test_piano_keys(void **state)
     }
     sk_render_hit hit;
     double angle_b = 0.3 * piano.max_angle, zb = cs4->front_mm - 20;
-    sk_render_scene_intersect(scene, sk_v3f((float)cs4->x_mm, 2000, (float)zb), sk_v3f(0, -1, 0), 1e5f, &hit);
-    assert_true(hit.hit && fabs(hit.point.y - sk_piano_key_top_at(&piano, cs4, angle_b, zb)) < 0.02);
+    sk_render_scene_intersect(scene, sk_v3f((float)cs4->x_mm, 2000, (float)zb), sk_v3f(0, -1, 0),
+                              1e5f, &hit);
+    assert_true(hit.hit &&
+                fabs(hit.point.y - sk_piano_key_top_at(&piano, cs4, angle_b, zb)) < 0.02);
     sk_render_scene_destroy(scene);
     free(d);
     sk_piano_desc bad = {.dip_mm = 50};
@@ -562,10 +594,11 @@ static void test_command(void **state)
     assert_int_equal(sk_test_cli(&run, "showcase --help"), 0);
     assert_non_null(strstr(run.out, "--frames"));
     /* a whole tiny run of an odd size: frames, sound, fingering, and the MP4 */
-    int status = sk_test_cli(&run,
-                             "showcase --melody %s --duration 0.6 --size 33x19 --spp 1 --fps 6 --texture-size 64 "
-                             "--hand-triangles 500 -q -o %s",
-                             melody, dir);
+    int status = sk_test_cli(
+        &run,
+        "showcase --melody %s --duration 0.6 --size 33x19 --spp 1 --fps 6 --texture-size 64 "
+        "--hand-triangles 500 -q -o %s",
+        melody, dir);
     if (status != 0) fail_msg("%s", run.err);
     char path[600];
     snprintf(path, sizeof path, "%s/frames/frame_0000.png", dir);
@@ -583,7 +616,8 @@ static void test_command(void **state)
     assert_true(sk_test_file_exists(path));
     char cmd[1400], out[512] = {0};
     snprintf(cmd, sizeof cmd,
-             "ffprobe -v error -show_entries stream=codec_type,codec_name,width,height:format=duration -of csv=p=0 %s",
+             "ffprobe -v error -show_entries "
+             "stream=codec_type,codec_name,width,height:format=duration -of csv=p=0 %s",
              path);
     FILE *pipe = popen(cmd, "r");
     assert_non_null(pipe);
@@ -602,7 +636,8 @@ static void test_command(void **state)
     }
     double duration = atof(last ? last + 1 : out);
     double frames_s = (floor(1.6 * 6) + 1) / 6.0;
-    if (!(fabs(duration - frames_s) < 0.15)) fail_msg("MP4 lasts %.3f s, the frames %.3f s (%s)", duration, frames_s, out);
+    if (!(fabs(duration - frames_s) < 0.15))
+        fail_msg("MP4 lasts %.3f s, the frames %.3f s (%s)", duration, frames_s, out);
 }
 
 int main(void)

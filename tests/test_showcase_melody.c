@@ -16,7 +16,8 @@ static sk_melody parse_ok(const char *text)
 {
     sk_melody m;
     sk_error err = {0};
-    if (sk_melody_parse_text(text, strlen(text), "t.txt", &m, &err) != SK_OK) fail_msg("%s", err.message);
+    if (sk_melody_parse_text(text, strlen(text), "t.txt", &m, &err) != SK_OK)
+        fail_msg("%s", err.message);
     return m;
 }
 
@@ -56,7 +57,8 @@ static void test_note_names(void **state)
         assert_true(sk_note_parse(name, &k));
         assert_int_equal(k, key);
     }
-    assert_true(sk_note_is_black(61)), assert_false(sk_note_is_black(60)), assert_true(sk_note_is_black(70));
+    assert_true(sk_note_is_black(61)), assert_false(sk_note_is_black(60)),
+        assert_true(sk_note_is_black(70));
 }
 
 static void test_text_format(void **state)
@@ -80,7 +82,8 @@ static void test_text_format(void **state)
     sk_melody_free(&m);
     /* beats */
     m = parse_ok("bpm 120\nC4 2 1\n");
-    assert_true(fabs(m.notes[0].start_s - 1.0) < 1e-12 && fabs(m.notes[0].duration_s - 0.5) < 1e-12);
+    assert_true(fabs(m.notes[0].start_s - 1.0) < 1e-12 &&
+                fabs(m.notes[0].duration_s - 0.5) < 1e-12);
     sk_melody_free(&m);
     /* the same key again once the first has ended */
     m = parse_ok("C4 0 1\nC4 1 1\n");
@@ -135,8 +138,20 @@ static void put(bytes *o, const void *data, size_t n)
 static bytes smf(int format, int division, int tracks, const bytes *body)
 {
     bytes o = {{0}, 0};
-    uint8_t h[14] = {'M', 'T', 'h', 'd', 0, 0, 0, 6, 0, (uint8_t)format, 0, (uint8_t)tracks,
-                     (uint8_t)(division >> 8), (uint8_t)division};
+    uint8_t h[14] = {'M',
+                     'T',
+                     'h',
+                     'd',
+                     0,
+                     0,
+                     0,
+                     6,
+                     0,
+                     (uint8_t)format,
+                     0,
+                     (uint8_t)tracks,
+                     (uint8_t)(division >> 8),
+                     (uint8_t)division};
     put(&o, h, sizeof h);
     for (int t = 0; t < tracks; t++) {
         uint8_t c[8] = {'M', 'T', 'r', 'k', 0, 0, (uint8_t)(body[t].n >> 8), (uint8_t)body[t].n};
@@ -169,17 +184,17 @@ static void test_midi_reading(void **state)
     /* 96 ticks a quarter; tempo 1 s a quarter from tick 0, 0.5 s from tick 192; running
        status; a note-on of velocity 0 ends a note; a text meta event and a sysex skipped;
        a second track with a note that never ends (it ends with its track) */
-    const uint8_t t1[] = {0x00, 0xff, 0x51, 0x03, 0x0f, 0x42, 0x40,        /* 1000000 us */
-                          0x00, 0xff, 0x01, 0x02, 'h', 'i',                /* text */
-                          0x00, 0x90, 60, 100,                            /* C4 on at 0 */
-                          0x60, 64, 90,                                   /* E4 on at 96 (running) */
-                          0x00, 0xf0, 0x02, 0x7e, 0xf7,                   /* sysex */
-                          0x60, 0x80, 60, 0,                              /* C4 off at 192 */
-                          0x00, 0xff, 0x51, 0x03, 0x07, 0xa1, 0x20,        /* 500000 us */
-                          0x00, 0x90, 64, 0,                              /* E4 off at 192 */
-                          0x60, 0xff, 0x2f, 0x00};                        /* end at 288 */
-    const uint8_t t2[] = {0x81, 0x40, 0x91, 67, 50, /* G4 on at 192 (delta 192 as a 2-byte VLQ) */
-                          0x81, 0x40, 0xff, 0x2f, 0x00};                  /* end at 384 */
+    const uint8_t t1[] = {0x00, 0xff, 0x51, 0x03, 0x0f, 0x42, 0x40, /* 1000000 us */
+                          0x00, 0xff, 0x01, 0x02, 'h',  'i',        /* text */
+                          0x00, 0x90, 60,   100,                    /* C4 on at 0 */
+                          0x60, 64,   90,                           /* E4 on at 96 (running) */
+                          0x00, 0xf0, 0x02, 0x7e, 0xf7,             /* sysex */
+                          0x60, 0x80, 60,   0,                      /* C4 off at 192 */
+                          0x00, 0xff, 0x51, 0x03, 0x07, 0xa1, 0x20, /* 500000 us */
+                          0x00, 0x90, 64,   0,                      /* E4 off at 192 */
+                          0x60, 0xff, 0x2f, 0x00};                  /* end at 288 */
+    const uint8_t t2[] = {0x81, 0x40, 0x91, 67,   50, /* G4 on at 192 (delta 192 as a 2-byte VLQ) */
+                          0x81, 0x40, 0xff, 0x2f, 0x00}; /* end at 384 */
     bytes body[2] = {track(t1, sizeof t1), track(t2, sizeof t2)};
     bytes f = smf(1, 96, 2, body);
     sk_melody m;
@@ -224,7 +239,8 @@ static void test_midi_errors(void **state)
     f = smf(0, 96, 1, &body);
     midi_fails(&f, "byte 23:", "meta event 0x01");
     /* running status after a meta event */
-    const uint8_t bad_running[] = {0x00, 0x90, 60, 100, 0x00, 0xff, 0x01, 0x00, 0x10, 62, 90, 0x00, 0xff, 0x2f, 0x00};
+    const uint8_t bad_running[] = {0x00, 0x90, 60, 100,  0x00, 0xff, 0x01, 0x00,
+                                   0x10, 62,   90, 0x00, 0xff, 0x2f, 0x00};
     body = track(bad_running, sizeof bad_running);
     f = smf(0, 96, 1, &body);
     midi_fails(&f, "byte 31:", "without a status");
@@ -332,15 +348,18 @@ static void test_fingering(void **state)
     /* errors: wider than a hand reaches, six notes at once, given fingers out of order */
     sk_melody m = parse_ok("C4 0 1\nC6 0.5 1\n");
     sk_error err = {0};
-    assert_int_equal(sk_melody_choose_fingers(&m, NULL, NULL, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_melody_choose_fingers(&m, NULL, NULL, NULL, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "t.txt:2:"));
     sk_melody_free(&m);
     m = parse_ok("C4 0 1\nD4 0 1\nE4 0 1\nF4 0 1\nG4 0 1\nA4 0 1\n");
-    assert_int_equal(sk_melody_choose_fingers(&m, NULL, NULL, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_melody_choose_fingers(&m, NULL, NULL, NULL, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "more than 5 notes"));
     sk_melody_free(&m);
     m = parse_ok("C4 0 1 3\nD4 0 1 2\n");
-    assert_int_equal(sk_melody_choose_fingers(&m, NULL, NULL, NULL, &err), SK_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(sk_melody_choose_fingers(&m, NULL, NULL, NULL, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
     assert_non_null(strstr(err.message, "t.txt:2:"));
     sk_melody_free(&m);
 }
@@ -348,12 +367,9 @@ static void test_fingering(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_note_names),
-        cmocka_unit_test(test_text_format),
-        cmocka_unit_test(test_text_errors),
-        cmocka_unit_test(test_midi_reading),
-        cmocka_unit_test(test_midi_errors),
-        cmocka_unit_test(test_midi_round_trip),
+        cmocka_unit_test(test_note_names),  cmocka_unit_test(test_text_format),
+        cmocka_unit_test(test_text_errors), cmocka_unit_test(test_midi_reading),
+        cmocka_unit_test(test_midi_errors), cmocka_unit_test(test_midi_round_trip),
         cmocka_unit_test(test_fingering),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

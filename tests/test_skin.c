@@ -646,19 +646,28 @@ static void test_cells_and_furrows_only(void **state)
     sk_error err = {0};
     for (int furrow_level = 1; furrow_level <= 3; furrow_level++)
         for (int id_level = 1; id_level <= 3; id_level++) {
-            sk_skin_render_desc all = {.width = W, .height = H, .height_mm = height, .normal = normal,
-                                       .furrow = furrow, .cell_id = ids,
-                                       .furrow_level = furrow_level, .id_level = id_level};
+            sk_skin_render_desc all = {.width = W,
+                                       .height = H,
+                                       .height_mm = height,
+                                       .normal = normal,
+                                       .furrow = furrow,
+                                       .cell_id = ids,
+                                       .furrow_level = furrow_level,
+                                       .id_level = id_level};
             assert_int_equal(sk_skin_render(skin, &all, &err), SK_OK);
-            sk_skin_render_desc some = {.width = W, .height = H, .furrow = furrow_only,
-                                        .cell_id = ids_only, .furrow_level = furrow_level,
+            sk_skin_render_desc some = {.width = W,
+                                        .height = H,
+                                        .furrow = furrow_only,
+                                        .cell_id = ids_only,
+                                        .furrow_level = furrow_level,
                                         .id_level = id_level};
             assert_int_equal(sk_skin_render(skin, &some, &err), SK_OK);
             assert_memory_equal(furrow, furrow_only, sizeof furrow);
             assert_memory_equal(ids, ids_only, sizeof ids);
             /* one output alone too */
             memset(ids_only, 0, sizeof ids_only);
-            sk_skin_render_desc one = {.width = W, .height = H, .cell_id = ids_only, .id_level = id_level};
+            sk_skin_render_desc one = {
+                .width = W, .height = H, .cell_id = ids_only, .id_level = id_level};
             assert_int_equal(sk_skin_render(skin, &one, &err), SK_OK);
             assert_memory_equal(ids, ids_only, sizeof ids);
         }
@@ -938,7 +947,8 @@ static void test_height_range(void **state)
     float *height = malloc(sizeof(float) * n * n);
     sk_skin_render_desc rd = {.width = n, .height = n, .height_mm = height};
     assert_int_equal(sk_skin_render(skin, &rd, NULL), SK_OK);
-    for (int i = 0; i < n * n; i++) seen_lo = fminf(seen_lo, height[i]), seen_hi = fmaxf(seen_hi, height[i]);
+    for (int i = 0; i < n * n; i++)
+        seen_lo = fminf(seen_lo, height[i]), seen_hi = fmaxf(seen_hi, height[i]);
     free(height);
     if (!(lo <= seen_lo && seen_hi <= hi))
         fail_msg("heights %g .. %g outside the range %g .. %g", seen_lo, seen_hi, lo, hi);
@@ -969,8 +979,8 @@ static void test_height_range(void **state)
         lo = strtof(sk_image_metadata_get(m, "shitsukan:height_min_mm"), NULL);
         hi = strtof(sk_image_metadata_get(m, "shitsukan:height_max_mm"), NULL);
         if (!(lo <= seen_lo && seen_hi <= hi))
-            fail_msg("height.exr spans %g .. %g mm, its metadata says %g .. %g", seen_lo,
-                     seen_hi, lo, hi);
+            fail_msg("height.exr spans %g .. %g mm, its metadata says %g .. %g", seen_lo, seen_hi,
+                     lo, hi);
     }
     /* no code of height.png is clipped: each decodes to its height.exr value */
     snprintf(path, sizeof path, "%s/height.exr", dir);

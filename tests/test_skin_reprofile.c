@@ -24,10 +24,16 @@ typedef struct maps {
 
 static void render(const sk_skin *skin, int level, maps *m)
 {
-    sk_skin_render_desc rd = {.width = W, .height = H, .height_mm = m->height,
-                              .normal = m->normal, .furrow = m->furrow, .cell_id = m->ids,
-                              .preview = m->preview, .edges = m->edges,
-                              .furrow_level = level, .id_level = level};
+    sk_skin_render_desc rd = {.width = W,
+                              .height = H,
+                              .height_mm = m->height,
+                              .normal = m->normal,
+                              .furrow = m->furrow,
+                              .cell_id = m->ids,
+                              .preview = m->preview,
+                              .edges = m->edges,
+                              .furrow_level = level,
+                              .id_level = level};
     sk_error err = {0};
     if (sk_skin_render(skin, &rd, &err) != SK_OK) fail_msg("render: %s", err.message);
     sk_skin_height_range(skin, &m->range[0], &m->range[1]);
@@ -49,7 +55,8 @@ static sk_skin_desc preset(const char *name)
     sk_error err = {0};
     if (sk_preset_load_file(&p, path, &err) != SK_OK) fail_msg("%s: %s", name, err.message);
     sk_skin_desc d = {0};
-    if (sk_preset_bind(p, &sk_skin_schema, &d, &err) != SK_OK) fail_msg("%s: %s", name, err.message);
+    if (sk_preset_bind(p, &sk_skin_schema, &d, &err) != SK_OK)
+        fail_msg("%s: %s", name, err.message);
     sk_preset_free(p);
     return d;
 }
@@ -68,8 +75,8 @@ static sk_skin_desc reprofiled(const sk_skin_desc *a)
         memcpy(lv->segments[1].points, second, sizeof second);
         lv->roundness = 0.55f - 0.1f * k;
     }
-    b.normal_model = b.normal_model == SK_SKIN_NORMAL_PROFILE ? SK_SKIN_NORMAL_GRADIENT
-                                                              : SK_SKIN_NORMAL_PROFILE;
+    b.normal_model =
+        b.normal_model == SK_SKIN_NORMAL_PROFILE ? SK_SKIN_NORMAL_GRADIENT : SK_SKIN_NORMAL_PROFILE;
     b.pores.hair = (sk_skin_pore_kind){.depth_mm = 0.03f, .radius_mm = 0.05f, .density = 0.7f};
     b.pores.sweat = (sk_skin_pore_kind){.depth_mm = 0.01f, .radius_mm = 0.02f, .density = 0.4f};
     b.pores.sweat_level = b.level_count;

@@ -83,7 +83,8 @@ static int setup(void **state)
     if (g_server == 0) {
         dup2(pipefd[1], 1);
         close(pipefd[0]);
-        execl(SK_TEST_CLI, SK_TEST_CLI, "studio", "--port", "0", "--quiet", "--root", g_root, (char *)NULL);
+        execl(SK_TEST_CLI, SK_TEST_CLI, "studio", "--port", "0", "--quiet", "--root", g_root,
+              (char *)NULL);
         _exit(127);
     }
     close(pipefd[1]);
@@ -138,9 +139,18 @@ static void test_serves_files_with_types_and_isolation(void **state)
 static void test_nothing_outside_the_root(void **state)
 {
     (void)state;
-    const char *bad[] = {"/../outside.txt", "/js/../../outside.txt", "/%2e%2e/outside.txt", "/%2E%2E%2Foutside.txt",
-                         "/.secret", "/js/..%5c..%5coutside.txt", "/link.txt", "/js/./main.js", "//etc/passwd",
-                         "/js", "/nope.html", "/a%00b"};
+    const char *bad[] = {"/../outside.txt",
+                         "/js/../../outside.txt",
+                         "/%2e%2e/outside.txt",
+                         "/%2E%2E%2Foutside.txt",
+                         "/.secret",
+                         "/js/..%5c..%5coutside.txt",
+                         "/link.txt",
+                         "/js/./main.js",
+                         "//etc/passwd",
+                         "/js",
+                         "/nope.html",
+                         "/a%00b"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         int s = get_status(bad[i]);
         if (s != 404 && s != 400) fprintf(stderr, "%s -> %d\n", bad[i], s);

@@ -41,14 +41,18 @@ static void test_skin_and_layers(void **state)
 {
     (void)state;
     sk_test_run *run = malloc(sizeof *run);
-    const char *obj = sk_test_path("tissue-cli/arm.obj"), *layers = sk_test_path("tissue-cli/layers");
-    assert_int_equal(sk_test_cli(run, "tissue skin --character arm " COARSE " -q -o '%s' --layers '%s'", obj, layers), 0);
+    const char *obj = sk_test_path("tissue-cli/arm.obj"),
+               *layers = sk_test_path("tissue-cli/layers");
+    assert_int_equal(sk_test_cli(run,
+                                 "tissue skin --character arm " COARSE " -q -o '%s' --layers '%s'",
+                                 obj, layers),
+                     0);
     sk_mesh mesh;
     SK_ASSERT_OK(sk_mesh_read_obj(&mesh, obj, NULL, &e_));
     assert_true(mesh.triangle_count > 100);
     sk_mesh_free(&mesh);
-    static const char *const files[] = {"skin.ply", "fat.ply", "muscle.ply", "bone.ply", "bones.obj", "muscles.obj",
-                                        "rest.obj", "layers.png"};
+    static const char *const files[] = {"skin.ply",  "fat.ply",     "muscle.ply", "bone.ply",
+                                        "bones.obj", "muscles.obj", "rest.obj",   "layers.png"};
     char path[1024];
     for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
         snprintf(path, sizeof path, "%s/%s", layers, files[i]);
@@ -66,9 +70,11 @@ static void test_run_writes_its_files(void **state)
 {
     (void)state;
     sk_test_run *run = malloc(sizeof *run);
-    const char *dir = sk_test_path("tissue-cli/curl"), *plot = sk_test_path("tissue-cli/curl-plot.png");
-    assert_int_equal(sk_test_cli(run, "tissue run --character arm --motion curl " COARSE
-                                      " --fps 10 --frames 5:15 --obj-frames --plot '%s' -o '%s'",
+    const char *dir = sk_test_path("tissue-cli/curl"),
+               *plot = sk_test_path("tissue-cli/curl-plot.png");
+    assert_int_equal(sk_test_cli(run,
+                                 "tissue run --character arm --motion curl " COARSE
+                                 " --fps 10 --frames 5:15 --obj-frames --plot '%s' -o '%s'",
                                  plot, dir),
                      0);
     assert_non_null(strstr(run->out, "11 frames at 10 fps"));
@@ -89,7 +95,8 @@ static void test_run_writes_its_files(void **state)
         float x, y, z;
         assert_int_equal(sscanf(line + 2, "%f %f %f", &x, &y, &z), 3);
         const float *want = pc.xyz + (4 * (size_t)pc.points + (size_t)v) * 3;
-        if (x != want[0] || y != want[1] || z != want[2]) fail_msg("vertex %d: OBJ frame and point cache differ", v);
+        if (x != want[0] || y != want[1] || z != want[2])
+            fail_msg("vertex %d: OBJ frame and point cache differ", v);
         v++;
     }
     assert_int_equal(v, pc.points);
@@ -102,11 +109,14 @@ static void test_run_writes_its_files(void **state)
     float *rest = NULL, *target = NULL;
     size_t count;
     int components;
-    SK_ASSERT_OK(sk_gltf_doc_read_accessor(doc, sk_gltf_doc_mesh_accessor(doc, 0, "POSITION"), &rest, &count, &components, &e_));
+    SK_ASSERT_OK(sk_gltf_doc_read_accessor(doc, sk_gltf_doc_mesh_accessor(doc, 0, "POSITION"),
+                                           &rest, &count, &components, &e_));
     assert_int_equal((int)count, pc.points);
-    SK_ASSERT_OK(sk_gltf_doc_read_accessor(doc, sk_gltf_doc_mesh_target_accessor(doc, 0, 4, "POSITION"), &target, &count,
-                                           &components, &e_));
-    for (size_t i = 0; i < 3 * count; i++) assert_true(fabsf(rest[i] + target[i] - pc.xyz[4 * 3 * (size_t)pc.points + i]) < 1e-3f);
+    SK_ASSERT_OK(sk_gltf_doc_read_accessor(doc,
+                                           sk_gltf_doc_mesh_target_accessor(doc, 0, 4, "POSITION"),
+                                           &target, &count, &components, &e_));
+    for (size_t i = 0; i < 3 * count; i++)
+        assert_true(fabsf(rest[i] + target[i] - pc.xyz[4 * 3 * (size_t)pc.points + i]) < 1e-3f);
     free(rest);
     free(target);
     sk_gltf_doc_free(doc);
@@ -143,24 +153,37 @@ static void test_errors_are_one_line_with_status_2(void **state)
     assert_int_equal(sk_test_cli(run, "tissue skin --character nobody -o '%s/x.obj'", folder), 2);
     assert_non_null(strstr(run->err, "nobody"));
     assert_int_equal(sk_test_count_lines(run->err), 1);
-    assert_int_equal(sk_test_cli(run, "tissue skin --character arm --set skin.threshold=2 -o '%s/x.obj'", folder), 2);
+    assert_int_equal(sk_test_cli(run,
+                                 "tissue skin --character arm --set skin.threshold=2 -o '%s/x.obj'",
+                                 folder),
+                     2);
     assert_non_null(strstr(run->err, "skin.threshold"));
     assert_false(sk_test_file_exists(sk_test_path("tissue-cli/bad/x.obj")));
     /* a broken motion: the line and the reason, and nothing written */
     const char *bvh = sk_test_path("tissue-cli/bad/broken.bvh");
-    const char *broken = "HIERARCHY\nROOT RightArm\n{\n\tOFFSET 0 0 0\n\tCHANNELS 3 Zrotation Qrotation Xrotation\n}\n";
+    const char *broken = "HIERARCHY\nROOT RightArm\n{\n\tOFFSET 0 0 0\n\tCHANNELS 3 Zrotation "
+                         "Qrotation Xrotation\n}\n";
     sk_test_write_file(bvh, broken, strlen(broken));
-    assert_int_equal(sk_test_cli(run, "tissue run --character arm " COARSE " --motion '%s' -o '%s/run'", bvh, folder), 2);
+    assert_int_equal(sk_test_cli(run,
+                                 "tissue run --character arm " COARSE " --motion '%s' -o '%s/run'",
+                                 bvh, folder),
+                     2);
     assert_non_null(strstr(run->err, "line 5: unknown channel \"Qrotation\""));
     assert_false(sk_test_file_exists(sk_test_path("tissue-cli/bad/run/skin.pc2")));
-    assert_int_equal(sk_test_cli(run, "tissue run --character arm --motion curl --frames 5:2 -o '%s/run'", folder), 2);
+    assert_int_equal(
+        sk_test_cli(run, "tissue run --character arm --motion curl --frames 5:2 -o '%s/run'",
+                    folder),
+        2);
     assert_non_null(strstr(run->err, "--frames '5:2'"));
-    assert_int_equal(sk_test_cli(run, "tissue run --character arm --motion dance -o '%s/run'", folder), 2);
+    assert_int_equal(
+        sk_test_cli(run, "tissue run --character arm --motion dance -o '%s/run'", folder), 2);
     assert_non_null(strstr(run->err, "no such file or shipped motion"));
     const char *junk = sk_test_path("tissue-cli/bad/junk.state");
     sk_test_write_file(junk, "not a state", 11);
-    assert_int_equal(sk_test_cli(run, "tissue run --character arm " COARSE " --motion curl --resume '%s' -o '%s/run'", junk,
-                                 folder),
+    assert_int_equal(sk_test_cli(run,
+                                 "tissue run --character arm " COARSE
+                                 " --motion curl --resume '%s' -o '%s/run'",
+                                 junk, folder),
                      2);
     assert_non_null(strstr(run->err, "not a tissue simulation state"));
     assert_false(sk_test_file_exists(sk_test_path("tissue-cli/bad/run/skin.pc2")));
@@ -182,7 +205,8 @@ static void test_shipped_motions_are_generated(void **state)
         snprintf(shipped, sizeof shipped, "%s/tissue/%s.bvh", SK_TEST_PRESET_DIR, kinds[i]);
         assert_int_equal(sk_test_cli(run, "tissue motion %s -o '%s'", kinds[i], made), 0);
         if (!sk_test_same_file(made, shipped))
-            fail_msg("presets/tissue/%s.bvh differs from 'shitsukan tissue motion %s'", kinds[i], kinds[i]);
+            fail_msg("presets/tissue/%s.bvh differs from 'shitsukan tissue motion %s'", kinds[i],
+                     kinds[i]);
     }
     free(run);
 }

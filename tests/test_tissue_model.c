@@ -26,7 +26,8 @@ static void test_muscle_keeps_volume_and_ratio(void **state)
     for (int i = 0; i < 500; i++) {
         sk_quatd local[SK_TISSUE_MAX_JOINTS];
         for (int j = 0; j < 3; j++)
-            local[j] = sk_qd_normalize(sk_qd(1.0, sk_rng_range(&rng, -0.8, 0.8), sk_rng_range(&rng, -0.8, 0.8),
+            local[j] = sk_qd_normalize(sk_qd(1.0, sk_rng_range(&rng, -0.8, 0.8),
+                                             sk_rng_range(&rng, -0.8, 0.8),
                                              sk_rng_range(&rng, -0.8, 0.8)));
         sk_tissue_pose pose;
         sk__skeleton_pose(&m->skeleton, local, sk_v3d(sk_rng_range(&rng, -100, 100), 0, 0), &pose);
@@ -70,13 +71,17 @@ static void check_closed_manifold(const sk_mesh *mesh)
     edge *e = malloc(ne * sizeof *e);
     assert_non_null(e);
     for (size_t t = 0; t < nt; t++)
-        for (int k = 0; k < 3; k++) e[3 * t + (size_t)k] = (edge){mesh->indices[3 * t + (size_t)k], mesh->indices[3 * t + (size_t)(k + 1) % 3]};
+        for (int k = 0; k < 3; k++)
+            e[3 * t + (size_t)k] = (edge){mesh->indices[3 * t + (size_t)k],
+                                          mesh->indices[3 * t + (size_t)(k + 1) % 3]};
     qsort(e, ne, sizeof *e, compare_edge);
     for (size_t i = 0; i + 1 < ne; i++)
-        if (e[i].a == e[i + 1].a && e[i].b == e[i + 1].b) fail_msg("directed edge %u-%u used twice", e[i].a, e[i].b);
+        if (e[i].a == e[i + 1].a && e[i].b == e[i + 1].b)
+            fail_msg("directed edge %u-%u used twice", e[i].a, e[i].b);
     for (size_t i = 0; i < ne; i++) {
         edge back = {e[i].b, e[i].a};
-        if (!bsearch(&back, e, ne, sizeof *e, compare_edge)) fail_msg("edge %u-%u has no twin: the skin is open", e[i].a, e[i].b);
+        if (!bsearch(&back, e, ne, sizeof *e, compare_edge))
+            fail_msg("edge %u-%u has no twin: the skin is open", e[i].a, e[i].b);
     }
     /* one fan per vertex: following "next edge around" from one triangle visits all */
     size_t nv = mesh->vertex_count;
@@ -91,8 +96,10 @@ static void check_closed_manifold(const sk_mesh *mesh)
         size_t lo = 0, hi = ne;
         while (lo < hi) {
             size_t mid = (lo + hi) / 2;
-            if (compare_edge(&e[mid], &key) < 0) lo = mid + 1;
-            else hi = mid;
+            if (compare_edge(&e[mid], &key) < 0)
+                lo = mid + 1;
+            else
+                hi = mid;
         }
         first = &e[lo];
         assert_int_equal(first->a, v);
@@ -103,13 +110,16 @@ static void check_closed_manifold(const sk_mesh *mesh)
             uint32_t next = UINT32_MAX;
             for (size_t t = 0; t < nt && next == UINT32_MAX; t++)
                 for (int k = 0; k < 3; k++)
-                    if (mesh->indices[3 * t + (size_t)k] == cur && mesh->indices[3 * t + (size_t)(k + 1) % 3] == v)
+                    if (mesh->indices[3 * t + (size_t)k] == cur &&
+                        mesh->indices[3 * t + (size_t)(k + 1) % 3] == v)
                         next = mesh->indices[3 * t + (size_t)(k + 2) % 3];
             assert_true(next != UINT32_MAX);
             cur = next;
             steps++;
         } while (cur != first->b && steps <= incident[v]);
-        if (steps != incident[v]) fail_msg("vertex %zu: %d of its %d triangles in one fan (not manifold)", v, steps, incident[v]);
+        if (steps != incident[v])
+            fail_msg("vertex %zu: %d of its %d triangles in one fan (not manifold)", v, steps,
+                     incident[v]);
     }
     free(incident);
     free(e);
@@ -125,17 +135,22 @@ static void test_skin_is_closed_manifold_on_grid_points(void **state)
     check_closed_manifold(&skin);
     const sk__grid *g = &m->grid;
     for (size_t v = 0; v < skin.vertex_count; v++) {
-        double c[3] = {(skin.positions[3 * v] - g->origin.x) / g->spacing, (skin.positions[3 * v + 1] - g->origin.y) / g->spacing,
+        double c[3] = {(skin.positions[3 * v] - g->origin.x) / g->spacing,
+                       (skin.positions[3 * v + 1] - g->origin.y) / g->spacing,
                        (skin.positions[3 * v + 2] - g->origin.z) / g->spacing};
         for (int k = 0; k < 3; k++)
-            if (fabs(c[k] - round(c[k])) > 1e-3) fail_msg("skin vertex %zu is not on a grid point", v);
+            if (fabs(c[k] - round(c[k])) > 1e-3)
+                fail_msg("skin vertex %zu is not on a grid point", v);
     }
     /* the skin encloses the tissue: its signed volume is that of a body, not zero */
     double volume = 0.0;
     for (size_t t = 0; t < skin.triangle_count; t++) {
-        const float *a = skin.positions + 3 * skin.indices[3 * t], *b = skin.positions + 3 * skin.indices[3 * t + 1],
+        const float *a = skin.positions + 3 * skin.indices[3 * t],
+                    *b = skin.positions + 3 * skin.indices[3 * t + 1],
                     *c = skin.positions + 3 * skin.indices[3 * t + 2];
-        volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+        volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                   a[2] * (b[0] * c[1] - b[1] * c[0])) /
+                  6.0;
     }
     assert_true(volume > 220.0 * SK_PI * 12 * 12); /* more than the bones, outward normals */
     sk_mesh_free(&skin);
@@ -149,12 +164,14 @@ static void test_skin_is_closed_manifold_on_grid_points(void **state)
     check_closed_manifold(&skin);
     size_t moved = 0;
     for (size_t v = 0; v < skin.vertex_count; v++) {
-        sk_vec3d p = sk_v3d(skin.positions[3 * v], skin.positions[3 * v + 1], skin.positions[3 * v + 2]);
+        sk_vec3d p =
+            sk_v3d(skin.positions[3 * v], skin.positions[3 * v + 1], skin.positions[3 * v + 2]);
         moved += sk_v3d_length(sk_v3d_sub(p, m->rest[v])) > 1e-3;
         for (int b = 0; b < 2; b++)
             for (int k = 0; k < 3; k++) {
-                sk__ellipsoid e = sk__ellipsoid_transform(&smooth->bones[b].part[k], sk_m3d_identity(),
-                                                          smooth->skeleton.rest[smooth->bones[b].joint]);
+                sk__ellipsoid e =
+                    sk__ellipsoid_transform(&smooth->bones[b].part[k], sk_m3d_identity(),
+                                            smooth->skeleton.rest[smooth->bones[b].joint]);
                 assert_true(sk__ellipsoid_level(&e, p) > 1.0);
             }
     }
@@ -174,7 +191,8 @@ static bool inside_mesh(const sk_mesh *mesh, sk_vec3d p)
     for (size_t t = 0; t < mesh->triangle_count; t++) {
         double v[3][3];
         for (int k = 0; k < 3; k++)
-            for (int c = 0; c < 3; c++) v[k][c] = mesh->positions[3 * mesh->indices[3 * t + (size_t)k] + (size_t)c];
+            for (int c = 0; c < 3; c++)
+                v[k][c] = mesh->positions[3 * mesh->indices[3 * t + (size_t)k] + (size_t)c];
         /* ray p + s (1, dy, dz): project onto the plane perpendicular to x */
         double a[3][2];
         bool left = true, right = true;
@@ -186,12 +204,14 @@ static bool inside_mesh(const sk_mesh *mesh, sk_vec3d p)
         }
         if (left) continue;
         double w[3];
-        for (int k = 0; k < 3; k++) w[k] = a[(k + 1) % 3][0] * a[(k + 2) % 3][1] - a[(k + 2) % 3][0] * a[(k + 1) % 3][1];
+        for (int k = 0; k < 3; k++)
+            w[k] = a[(k + 1) % 3][0] * a[(k + 2) % 3][1] - a[(k + 2) % 3][0] * a[(k + 1) % 3][1];
         bool in = (w[0] > 0 && w[1] > 0 && w[2] > 0) || (w[0] < 0 && w[1] < 0 && w[2] < 0);
         if (!in) continue;
         if (!right) {
             /* the crossing's x by barycentric weights */
-            double sum = w[0] + w[1] + w[2], x = (w[0] * v[0][0] + w[1] * v[1][0] + w[2] * v[2][0]) / sum;
+            double sum = w[0] + w[1] + w[2],
+                   x = (w[0] * v[0][0] + w[1] * v[1][0] + w[2] * v[2][0]) / sum;
             if (x < p.x) continue;
         }
         crossings++;
@@ -212,7 +232,8 @@ static void test_classification(void **state)
     t->muscle_count = 1;
     for (int b = 0; b < 2; b++)
         for (int k = 0; k < 3; k++)
-            t->bone[b][k] = sk__ellipsoid_transform(&m->bones[b].part[k], sk_m3d_identity(), m->skeleton.rest[m->bones[b].joint]);
+            t->bone[b][k] = sk__ellipsoid_transform(&m->bones[b].part[k], sk_m3d_identity(),
+                                                    m->skeleton.rest[m->bones[b].joint]);
     sk__muscle_shape(&m->muscles[0], &rest, &t->muscle[0]);
     sk_mesh skin;
     SK_ASSERT_OK(sk_tissue_model_rest_skin(m, &skin, &e_));
@@ -237,7 +258,8 @@ static void test_classification(void **state)
     for (size_t p = m->skin_count + m->fat_count; p < m->point_count; p++) {
         bool muscle = p < m->skin_count + m->fat_count + m->muscle_count;
         sk__label l = sk__tissue_label_at(t, m->rest[p]);
-        assert_true(muscle ? l >= SK__LABEL_MUSCLE0 : (l != SK__LABEL_NONE && l < SK__LABEL_MUSCLE0));
+        assert_true(muscle ? l >= SK__LABEL_MUSCLE0
+                           : (l != SK__LABEL_NONE && l < SK__LABEL_MUSCLE0));
         int c[3];
         sk__grid_coords(&m->grid, m->grid_of[p], c);
         bool touches = false;
@@ -246,7 +268,8 @@ static void test_classification(void **state)
             int q[3];
             sk__grid_coords(&m->grid, m->grid_of[f], q);
             int d[3] = {q[0] - c[0], q[1] - c[1], q[2] - c[2]};
-            touches = sk__lattice_direction_index(f < m->skin_count ? all : dirs, f < m->skin_count ? na : nd, d) >= 0;
+            touches = sk__lattice_direction_index(f < m->skin_count ? all : dirs,
+                                                  f < m->skin_count ? na : nd, d) >= 0;
         }
         if (!touches) fail_msg("%s point %zu touches no fat point", muscle ? "muscle" : "bone", p);
     }
@@ -256,15 +279,22 @@ static void test_classification(void **state)
         size_t i = m->spring_i[s], j = m->spring_j[s];
         bool si = i < m->skin_count, sj = j < m->skin_count, fi = i < nfree, fj = j < nfree;
         switch (m->spring_class[s]) {
-        case SK__SPRING_SKIN: assert_true(si && sj); break;
-        case SK__SPRING_SKIN_FAT: assert_true((si && fj && !sj) || (sj && fi && !si)); break;
-        case SK__SPRING_FAT: assert_true(fi && fj && !si && !sj); break;
+        case SK__SPRING_SKIN:
+            assert_true(si && sj);
+            break;
+        case SK__SPRING_SKIN_FAT:
+            assert_true((si && fj && !sj) || (sj && fi && !si));
+            break;
+        case SK__SPRING_FAT:
+            assert_true(fi && fj && !si && !sj);
+            break;
         case SK__SPRING_ANCHOR:
             assert_true(fi != fj);
             if (si) assert_int_equal(skin_fat[i], 0);
             if (sj) assert_int_equal(skin_fat[j], 0);
             break;
-        default: fail();
+        default:
+            fail();
         }
     }
     int *held = calloc(m->skin_count, sizeof *held);
@@ -314,7 +344,8 @@ static void expect_character_error(const char *json, const char *needle)
     SK_ASSERT_OK(sk_preset_parse(&p, json, strlen(json), "c.json", &e_));
     sk_tissue_character_desc *d = malloc(sizeof *d);
     sk_result r = sk_tissue_character_bind(p, d, &err);
-    if (r == SK_OK || !strstr(err.message, needle)) fail_msg("%s: got \"%s\", want \"%s\"", json, err.message, needle);
+    if (r == SK_OK || !strstr(err.message, needle))
+        fail_msg("%s: got \"%s\", want \"%s\"", json, err.message, needle);
     sk_preset_free(p);
     free(d);
 }
@@ -322,39 +353,53 @@ static void expect_character_error(const char *json, const char *needle)
 static void test_character_errors_name_the_key(void **state)
 {
     (void)state;
-    const char *j = "{\"joints\": [{\"name\": \"A\"}, {\"name\": \"B\", \"parent\": \"A\", \"offset_mm\": [0, -100, 0]}]";
+    const char *j = "{\"joints\": [{\"name\": \"A\"}, {\"name\": \"B\", \"parent\": \"A\", "
+                    "\"offset_mm\": [0, -100, 0]}]";
     char buf[1024];
-#define CASE(extra, needle)                                                                                            \
-    do {                                                                                                                \
-        snprintf(buf, sizeof buf, "%s, %s}", j, extra);                                                                 \
-        expect_character_error(buf, needle);                                                                            \
+#define CASE(extra, needle)                                                                        \
+    do {                                                                                           \
+        snprintf(buf, sizeof buf, "%s, %s}", j, extra);                                            \
+        expect_character_error(buf, needle);                                                       \
     } while (0)
     CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"C\", \"end\": \"B\", \"radius_mm\": 10}]",
          "bones[0].joint = \"C\" is not a joint (joints: A, B)");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\"}]", "bones[0].radius_mm = 0 is out of range (0, 1000] (required)");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 2000}]", "bones[0].radius_mm = 2000 is out of range");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], \"muscles\": [{\"name\": \"m\", "
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\"}]",
+         "bones[0].radius_mm = 0 is out of range (0, 1000] (required)");
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 2000}]",
+         "bones[0].radius_mm = 2000 is out of range");
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], "
+         "\"muscles\": [{\"name\": \"m\", "
          "\"origin\": {\"bone\": \"x\"}, \"insertion\": {\"bone\": \"b\"}, \"thickness_mm\": 5}]",
          "muscles[0].origin.bone = \"x\" is not a bone (bones: b)");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], \"skin\": {\"threshold\": 0.9999}",
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], "
+         "\"skin\": {\"threshold\": 0.9999}",
          "skin.threshold = 0.9999 is out of range");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], \"skin\": {\"neighbourhood\": 6}",
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], "
+         "\"skin\": {\"neighbourhood\": 6}",
          "skin.neighbourhood = 6 must be 18 or 26");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], \"material\": {\"fat_stifness\": 3}",
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], "
+         "\"material\": {\"fat_stifness\": 3}",
          "fat_stifness");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], \"fat\": [{\"around\": \"q\", "
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], "
+         "\"fat\": [{\"around\": \"q\", "
          "\"thickness_mm\": 5}]",
          "fat[0].around = \"q\" is not a bone (bones: b)");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], \"joint_map\": [{\"motion\": "
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], "
+         "\"joint_map\": [{\"motion\": "
          "\"x\", \"joint\": \"Z\"}]",
          "joint_map[0].joint = \"Z\" is not a joint");
-    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], \"simulation\": {\"step_hz\": 30}",
+    CASE("\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}], "
+         "\"simulation\": {\"step_hz\": 30}",
          "simulation.step_hz = 30 is out of range [60, 20000]");
 #undef CASE
-    expect_character_error("{\"joints\": [{\"name\": \"A\", \"parent\": \"B\"}, {\"name\": \"B\", \"parent\": \"A\"}], "
-                           "\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}]}",
-                           "joints: no root");
-    expect_character_error("{\"joints\": [{\"name\": \"A\"}, {\"name\": \"A\", \"parent\": \"A\"}]}", "joints[1].name = \"A\" is also joints[0]'s");
+    expect_character_error(
+        "{\"joints\": [{\"name\": \"A\", \"parent\": \"B\"}, {\"name\": \"B\", \"parent\": "
+        "\"A\"}], "
+        "\"bones\": [{\"name\": \"b\", \"joint\": \"A\", \"end\": \"B\", \"radius_mm\": 10}]}",
+        "joints: no root");
+    expect_character_error(
+        "{\"joints\": [{\"name\": \"A\"}, {\"name\": \"A\", \"parent\": \"A\"}]}",
+        "joints[1].name = \"A\" is also joints[0]'s");
     /* a build that cannot make a skin says why */
     sk_tissue_character_desc *d = sk_test_rod_desc(5.0);
     d->skin.spacing_mm = 0.5f;
@@ -362,7 +407,8 @@ static void test_character_errors_name_the_key(void **state)
     d->joints[2].offset_mm[1] = -20000;
     sk_tissue_model *m = NULL;
     sk_error err = {0};
-    sk_test_expect_failure(sk_tissue_model_build(d, NULL, &m, &err), &err, SK_ERROR_LIMIT, "more than 2^28");
+    sk_test_expect_failure(sk_tissue_model_build(d, NULL, &m, &err), &err, SK_ERROR_LIMIT,
+                           "more than 2^28");
     free(d);
 }
 

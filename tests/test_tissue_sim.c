@@ -32,7 +32,8 @@ static double max_offset(const sk_tissue_sim *s)
     double worst = 0.0;
     for (size_t p = 0; p < s->nfree; p++) {
         sk_vec3d q = sk__sim_carried(s, &s->pose, s->muscle, p);
-        worst = fmax(worst, sk_v3d_length(sk_v3d_sub(q, sk_v3d(s->x[3 * p], s->x[3 * p + 1], s->x[3 * p + 2]))));
+        worst = fmax(worst, sk_v3d_length(sk_v3d_sub(
+                                q, sk_v3d(s->x[3 * p], s->x[3 * p + 1], s->x[3 * p + 2]))));
     }
     return worst;
 }
@@ -102,13 +103,16 @@ static void test_one_spring_period_and_damping(void **state)
         if (step > 0 && ((prev_v > 0) != (v[0] > 0))) peaks[npeaks++] = fabs(d);
         prev_v = v[0];
     }
-    double period = (last_cross - first_cross) / (crossings - 1), expected = 2 * SK_PI * sqrt(mass / k);
+    double period = (last_cross - first_cross) / (crossings - 1),
+           expected = 2 * SK_PI * sqrt(mass / k);
     assert_true(crossings >= 3);
-    if (fabs(period / expected - 1) > 0.01) fail_msg("period %.5f s, expected %.5f s", period, expected);
+    if (fabs(period / expected - 1) > 0.01)
+        fail_msg("period %.5f s, expected %.5f s", period, expected);
     /* peaks a period apart: ratio exp(-2 zeta pi / sqrt(1 - zeta^2)) */
     assert_true(npeaks >= 4);
     double ratio = peaks[3] / peaks[1], want = exp(-2 * zeta * SK_PI / sqrt(1 - zeta * zeta));
-    if (fabs(ratio / want - 1) > 0.05) fail_msg("decay over a period %.4f, expected %.4f", ratio, want);
+    if (fabs(ratio / want - 1) > 0.05)
+        fail_msg("decay over a period %.4f, expected %.4f", ratio, want);
     sk__solver_xpbd.destroy(solver);
     free(m);
 }
@@ -124,7 +128,9 @@ static void test_at_rest_nothing_moves(void **state)
     SK_ASSERT_OK(sk_tissue_sim_advance(s, 1.0, &e_));
     double worst = 0.0;
     for (size_t p = 0; p < s->n; p++)
-        worst = fmax(worst, sk_v3d_length(sk_v3d_sub(m->rest[p], sk_v3d(s->x[3 * p], s->x[3 * p + 1], s->x[3 * p + 2]))));
+        worst =
+            fmax(worst, sk_v3d_length(sk_v3d_sub(
+                            m->rest[p], sk_v3d(s->x[3 * p], s->x[3 * p + 1], s->x[3 * p + 2]))));
     if (worst > 1e-9) fail_msg("at rest a point moved %g mm", worst);
     double pe, ke;
     sk_tissue_sim_energy(s, &pe, &ke);
@@ -157,14 +163,16 @@ static void test_sudden_stop_overshoots_and_settles(void **state)
         double d = mean_offset_x(s);
         if (nc == 0) first_peak = fmax(first_peak, d);
         if (nc == 1) second = fmin(second, d);
-        if ((prev > 0) != (d > 0) && nc < 8) crossings[nc++] = t_prev + (t - t_prev) * prev / (prev - d);
+        if ((prev > 0) != (d > 0) && nc < 8)
+            crossings[nc++] = t_prev + (t - t_prev) * prev / (prev - d);
         prev = d;
         t_prev = t;
     }
     SK_ASSERT_OK(sk_tissue_sim_advance(s, 3.0, &e_));
     double settled = max_offset(s);
     /* no lag while moving steadily; forward after the stop, then back past rest */
-    if (fabs(steady) > 0.02 * first_peak) fail_msg("steady lag %g mm (peak %g mm)", steady, first_peak);
+    if (fabs(steady) > 0.02 * first_peak)
+        fail_msg("steady lag %g mm (peak %g mm)", steady, first_peak);
     assert_true(first_peak > 0.01);
     assert_true(second < -0.05 * first_peak);
     assert_true(nc >= 3);
@@ -184,7 +192,8 @@ static void test_sudden_stop_overshoots_and_settles(void **state)
         stiffness += kk * c * c;
     }
     double rigid = 2 * SK_PI * sqrt(mass / stiffness);
-    if (period < 0.9 * rigid || period > 20 * rigid) fail_msg("period %g s, the fat as one body %g s", period, rigid);
+    if (period < 0.9 * rigid || period > 20 * rigid)
+        fail_msg("period %g s, the fat as one body %g s", period, rigid);
     sk_tissue_sim_destroy(s);
     sk_tissue_model_destroy(m);
 }
@@ -211,7 +220,9 @@ static void test_returns_exactly_to_rest(void **state)
     SK_ASSERT_OK(sk_tissue_sim_advance(s, 3.8, &e_));
     double worst = 0.0;
     for (size_t p = 0; p < s->nfree; p++)
-        worst = fmax(worst, sk_v3d_length(sk_v3d_sub(m->rest[p], sk_v3d(s->x[3 * p], s->x[3 * p + 1], s->x[3 * p + 2]))));
+        worst =
+            fmax(worst, sk_v3d_length(sk_v3d_sub(
+                            m->rest[p], sk_v3d(s->x[3 * p], s->x[3 * p + 1], s->x[3 * p + 2]))));
     if (worst > 1e-6) fail_msg("3 s after the motion a point is %g mm from rest", worst);
     sk_tissue_sim_destroy(s);
     sk_tissue_model_destroy(m);
@@ -231,11 +242,14 @@ static void test_energy_stays_bounded_under_random_motion(void **state)
         double pe, ke;
         sk_tissue_sim_energy(s, &pe, &ke);
         assert_true(isfinite(pe) && isfinite(ke));
-        if (k <= steps / 2) early = fmax(early, pe + ke);
-        else late = fmax(late, pe + ke);
+        if (k <= steps / 2)
+            early = fmax(early, pe + ke);
+        else
+            late = fmax(late, pe + ke);
     }
     for (size_t i = 0; i < 3 * s->n; i++) assert_true(isfinite(s->x[i]));
-    if (!(late < 3.0 * early)) fail_msg("energy grew: at most %g J in the first half, %g J in the second", early, late);
+    if (!(late < 3.0 * early))
+        fail_msg("energy grew: at most %g J in the first half, %g J in the second", early, late);
     sk_tissue_sim_destroy(s);
     sk_tissue_model_destroy(m);
 }
@@ -247,7 +261,8 @@ static void check_outside_bones(const sk_tissue_sim *s)
         for (int k = 0; k < 3; k++) {
             const sk__ellipsoid *e = &s->obstacles[b].part[k].e;
             for (size_t p = 0; p < s->nfree; p++)
-                if (sk__ellipsoid_level(e, sk_v3d(s->x[3 * p], s->x[3 * p + 1], s->x[3 * p + 2])) < 1.0 - 1e-9)
+                if (sk__ellipsoid_level(e, sk_v3d(s->x[3 * p], s->x[3 * p + 1], s->x[3 * p + 2])) <
+                    1.0 - 1e-9)
                     fail_msg("point %zu is inside bone %d", p, b);
         }
 }
@@ -304,7 +319,8 @@ static void test_teleports_and_extreme_stiffness_stay_bounded(void **state)
     motion = sk_test_motion_get(&rnd, 2.0);
     for (int i = 0; i < 2; i++) {
         d->simulation.teleport_speed_m_s = 0;
-        d->material.fat_stiffness = d->material.skin_stiffness = d->material.anchor_stiffness = stiffness[i];
+        d->material.fat_stiffness = d->material.skin_stiffness = d->material.anchor_stiffness =
+            stiffness[i];
         sk_tissue_character_desc_resolve(d);
         sk_tissue_model *mk = NULL;
         SK_ASSERT_OK(sk_tissue_model_build(d, NULL, &mk, &e_));
@@ -340,8 +356,10 @@ static void test_frame_rate_independence(void **state)
         sk_tissue_sim *s = make_sim(m, &motion);
         for (int f = 0; f <= rates[r]; f++) {
             float *xyz = skin_at(s, (double)f / rates[r]);
-            if (f % (rates[r] / 6) == 0) shared[r][f / (rates[r] / 6)] = xyz;
-            else free(xyz);
+            if (f % (rates[r] / 6) == 0)
+                shared[r][f / (rates[r] / 6)] = xyz;
+            else
+                free(xyz);
         }
         sk_tissue_sim_destroy(s);
     }
@@ -357,9 +375,11 @@ static void test_frame_rate_independence(void **state)
     SK_ASSERT_OK(sk_tissue_sim_advance(s, 11.0 / 480, &e_));
     float *b = malloc(bytes);
     SK_ASSERT_OK(sk_tissue_sim_skin(s, 11.0 / 480, b, &e_));
-    for (size_t i = 0; i < 3 * m->skin_count; i++) assert_true(fabsf(mid[i] - 0.5f * (a[i] + b[i])) < 1e-3f);
+    for (size_t i = 0; i < 3 * m->skin_count; i++)
+        assert_true(fabsf(mid[i] - 0.5f * (a[i] + b[i])) < 1e-3f);
     sk_error err = {0};
-    sk_test_expect_failure(sk_tissue_sim_skin(s, 1.0 / 480, b, &err), &err, SK_ERROR_INVALID_ARGUMENT, "before the last two steps");
+    sk_test_expect_failure(sk_tissue_sim_skin(s, 1.0 / 480, b, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "before the last two steps");
     free(a);
     free(mid);
     free(b);
@@ -404,7 +424,8 @@ static double model_clock(void)
 {
     const sk_tissue_sim *s = clock_sim;
     bool two = s->probe_phase == 2 || (s->probe_phase == 0 && s->threads > 1);
-    for (; clock_step < s->step; clock_step++) clock_now += !two ? 1.0 : clock_step < busy_from ? 0.5 : 3.0;
+    for (; clock_step < s->step; clock_step++)
+        clock_now += !two ? 1.0 : clock_step < busy_from ? 0.5 : 3.0;
     clock_calls++;
     return clock_now;
 }
@@ -431,8 +452,10 @@ static void test_thread_choice_follows_the_machine(void **state)
         SK_ASSERT_OK(sk_tissue_sim_advance(s, (double)k / s->step_hz, &e_));
         assert_int_equal(s->step, k);
         /* the first choice took 12 steps on one thread and 12 on two, over three frames */
-        if (k >= start + 24) assert_int_equal(s->threads, 2), assert_int_equal(s->probe_phase, 0);
-        else assert_int_not_equal(s->probe_phase, 0);
+        if (k >= start + 24)
+            assert_int_equal(s->threads, 2), assert_int_equal(s->probe_phase, 0);
+        else
+            assert_int_not_equal(s->probe_phase, 0);
     }
     assert_float_equal(s->one_thread_step_s, 1.0, 1e-12);
     assert_int_equal(s->next_probe, start + 24 + 1200);
@@ -516,12 +539,14 @@ static void test_bake_equals_live_equals_resumed(void **state)
     sk_tissue_sim *s = make_sim(m, &motion);
     for (int f = 0; f <= 24; f++) {
         float *xyz = skin_at(s, f / 30.0);
-        if (memcmp(xyz, baked.xyz + (size_t)f * frame, frame * sizeof(float)) != 0) fail_msg("frame %d: baked != live", f);
+        if (memcmp(xyz, baked.xyz + (size_t)f * frame, frame * sizeof(float)) != 0)
+            fail_msg("frame %d: baked != live", f);
         free(xyz);
     }
     sk_tissue_sim_destroy(s);
     /* resumed: frames 0..12 saving the state, then 12..24 from it */
-    const char *first = sk_test_path("tissue-bake/first"), *second = sk_test_path("tissue-bake/second");
+    const char *first = sk_test_path("tissue-bake/first"),
+               *second = sk_test_path("tissue-bake/second");
     const char *state_path = sk_test_path("tissue-bake/state.bin");
     d.output_dir = first;
     d.last_frame = 12;
@@ -543,8 +568,8 @@ static void test_bake_equals_live_equals_resumed(void **state)
     sk_tissue_model *other = sk_test_rod_model(5.0);
     s = make_sim(other, &motion);
     sk_error err = {0};
-    sk_test_expect_failure(sk_tissue_sim_load_state_file(s, state_path, &err), &err, SK_ERROR_INVALID_ARGUMENT,
-                           "belongs to another character");
+    sk_test_expect_failure(sk_tissue_sim_load_state_file(s, state_path, &err), &err,
+                           SK_ERROR_INVALID_ARGUMENT, "belongs to another character");
     sk_tissue_sim_destroy(s);
     sk_tissue_model_destroy(other);
     /* a state at a step the simulation cannot go on from (beyond 1e7 s) is refused, the

@@ -118,9 +118,12 @@ static void test_interlocked_and_table_phase(void **state)
         sk_wood_eval(w, p, sk_v3f(1, 0, 0), &s);
         double t = r / 2.0; /* round rings of 2 mm */
         double y = p.y, table;
-        if (y <= 100.0) table = 0.05 * y * y / 200.0;
-        else if (y <= 300.0) table = 2.5 + 0.05 * (y - 100.0) - 0.1 * (y - 100.0) * (y - 100.0) / 400.0;
-        else table = 2.5 + 0.0 - 0.05 * (y - 300.0);
+        if (y <= 100.0)
+            table = 0.05 * y * y / 200.0;
+        else if (y <= 300.0)
+            table = 2.5 + 0.05 * (y - 100.0) - 0.1 * (y - 100.0) * (y - 100.0) / 400.0;
+        else
+            table = 2.5 + 0.0 - 0.05 * (y - 300.0);
         double expect = (0.1 * sin(2.0 * SK_PI * t / 12.0) * y + table) / r;
         assert_true(fabs(s.t - t) < 1e-4);
         assert_true(fabs(s.phase - expect) <= 1e-4 * fabs(expect) + 1e-5);
@@ -148,7 +151,8 @@ static void test_fluctuation_bound_and_phase_derivative(void **state)
         assert_true(fabs(dg) <= 0.02 + 1e-6);
         peak = fmax(peak, fabs(dg));
         double h = 1e-3;
-        double dPhi = (sk__phase_eval(g, t, y + h, NULL) - sk__phase_eval(g, t, y - h, NULL)) / (2 * h);
+        double dPhi =
+            (sk__phase_eval(g, t, y + h, NULL) - sk__phase_eval(g, t, y - h, NULL)) / (2 * h);
         assert_true(fabs(dPhi - G) < 1e-4);
     }
     assert_true(peak > 0.015); /* "dg up to 0.02" is reached, not just bounded */
@@ -220,7 +224,8 @@ static void test_latewood_profile_and_filter(void **state)
     for (int i = 0; i < 200; i++) {
         double t = 3.0 + i * 0.037, half = 0.05 + 0.001 * i, sum = 0.0;
         int n = 4000;
-        for (int k = 0; k < n; k++) sum += sk__attributes_latewood(a, t - half + (k + 0.5) * 2 * half / n, 0.0);
+        for (int k = 0; k < n; k++)
+            sum += sk__attributes_latewood(a, t - half + (k + 0.5) * 2 * half / n, 0.0);
         assert_true(fabs(sum / n - sk__attributes_latewood(a, t, half)) < 2e-3);
     }
     sk_wood_destroy(w);
@@ -228,8 +233,8 @@ static void test_latewood_profile_and_filter(void **state)
 
 /* ------------------------------------------------------------------ vessels */
 
-static double brute_force_coverage(const sk_wood *w, double x0, double z0, double fw,
-                                   double extent, int rings)
+static double brute_force_coverage(const sk_wood *w, double x0, double z0, double fw, double extent,
+                                   int rings)
 {
     const sk__vessels *v = &w->vessels;
     double best = 0.0;
@@ -277,8 +282,8 @@ static void check_index_against_scan(const sk_wood *w, double extent, int rings,
             theta[k] = atan2(z[k], x[k]);
             t[k] = sk__rings_T(&w->rings, r[k], theta[k], NULL, NULL);
             at[k] = sk__rings_at_angle(&w->rings, theta[k]);
-            double indexed = sk__vessels_coverage(&w->vessels, &w->rings, x[k], z[k], r[k],
-                                                  theta[k], t[k], fw);
+            double indexed =
+                sk__vessels_coverage(&w->vessels, &w->rings, x[k], z[k], r[k], theta[k], t[k], fw);
             scanned[k] = brute_force_coverage(w, x[k], z[k], fw, extent, rings);
             if (indexed != scanned[k])
                 fprintf(stderr, "point %d (%g, %g): index %.17g, scan %.17g\n", i, x[k], z[k],
@@ -311,7 +316,8 @@ static void test_diffuse_index_matches_scan(void **state)
     d.vessels.diffuse.radius_mm = 0.035f;
     d.vessels.diffuse.radius_sd_mm = 0.004f;
     w = make_wood(&d);
-    assert_true(sk__vessel_reach(w->vessels.diffuse.size.hi, 0.02) <= 0.5 * w->vessels.diffuse.cell);
+    assert_true(sk__vessel_reach(w->vessels.diffuse.size.hi, 0.02) <=
+                0.5 * w->vessels.diffuse.cell);
     check_index_against_scan(w, 3.0, 0, 0.0, n);
     check_index_against_scan(w, 3.0, 0, 0.02, n / 3);
     sk_wood_destroy(w);
@@ -407,10 +413,10 @@ static void test_fibre_direction_on_cylinder(void **state)
         sk_vec3d f = sk_v3f_to_d(s.fibre);
         assert_true(fabs(sk_v3d_length(f) - 1.0) < 1e-6);
         sk_vec3d er = sk_v3d(p.x / r, 0, p.z / r), et = sk_v3d(-p.z / r, 0, p.x / r);
-        assert_true(fabs(sk_v3d_dot(f, er)) < 1e-6);                  /* on its cylinder */
+        assert_true(fabs(sk_v3d_dot(f, er)) < 1e-6); /* on its cylinder */
         double G = sk__grain_slope(&w->grain, s.t, p.y);
-        assert_true(fabs(sk_v3d_dot(f, et) / f.y - G) < 1e-5);          /* r dtheta/dy = G */
-        assert_true(f.y > 0.0);                                          /* up the tree */
+        assert_true(fabs(sk_v3d_dot(f, et) / f.y - G) < 1e-5); /* r dtheta/dy = G */
+        assert_true(f.y > 0.0);                                /* up the tree */
     }
     sk_wood_destroy(w);
 }
@@ -477,7 +483,8 @@ static void test_shading_equals_eq4(void **state)
     d.shading.specular = 0.3f;
     d.shading.exponent = 50.0f;
     sk_wood *w = make_wood(&d);
-    const double angles[][2] = {{7.2, 5.0}, {0.0, 5.0}, {-7.2, 5.0}, {20.0, -10.0}, {-30.0, 12.0}, {45.0, 0.0}};
+    const double angles[][2] = {{7.2, 5.0},    {0.0, 5.0},    {-7.2, 5.0},
+                                {20.0, -10.0}, {-30.0, 12.0}, {45.0, 0.0}};
     for (size_t i = 0; i < sizeof angles / sizeof angles[0]; i++) {
         double delta = angles[i][0] * SK_DEG_TO_RAD, alpha = angles[i][1] * SK_DEG_TO_RAD;
         sk_wood_sample s = {0};
@@ -816,7 +823,10 @@ static void test_knot_is_a_cone_from_the_pith(void **state)
         for (int it = 0; it < 40; it++) {
             double mid = 0.5 * (lo + hi);
             sk_wood_eval(w, knot_point(y0, theta, r, mid, 0.0), n, &out);
-            if (fabs(sk_v3f_dot(out.fibre, axis)) > 0.5) lo = mid; else hi = mid;
+            if (fabs(sk_v3f_dot(out.fibre, axis)) > 0.5)
+                lo = mid;
+            else
+                hi = mid;
         }
         double half_width = lo;
         if (fabs(half_width / r - 0.2) > 0.01)
@@ -864,12 +874,15 @@ static void test_knot_deflection_is_smooth_and_follows_the_fibre(void **state)
         double look = th + h.theta_shift, slope = -h.psi_y / h.psi_u; /* du / dy, G = 0 */
         sk__knot_hit h2, h3;
         double straight = 0.0, along;
-        assert_true(sk__knots_hit(k, &w->rings, r, th + slope * eps / r, y0 + up + eps, t_stem, 0.0, &h2));
+        assert_true(
+            sk__knots_hit(k, &w->rings, r, th + slope * eps / r, y0 + up + eps, t_stem, 0.0, &h2));
         along = fabs(th + slope * eps / r + h2.theta_shift - look);
         if (sk__knots_hit(k, &w->rings, r, th, y0 + up + eps, t_stem, 0.0, &h3))
             straight = fabs(th + h3.theta_shift - look);
         if (straight < 1e-9) continue;
-        if (!(along < 0.02 * straight + 1e-8)) fail_msg("across %g up %g (a %g): along %g straight %g psi_u %g psi_y %g", across, up, a, along, straight, h.psi_u, h.psi_y);
+        if (!(along < 0.02 * straight + 1e-8))
+            fail_msg("across %g up %g (a %g): along %g straight %g psi_u %g psi_y %g", across, up,
+                     a, along, straight, h.psi_u, h.psi_y);
         checked++;
     }
     assert_true(checked > 50);
@@ -885,7 +898,8 @@ static void test_dead_knot(void **state)
     sk_wood *w = knot_wood(12.0f, &y0, &theta);
     sk_vec3f n = sk_v3f(0, 1, 0), axis = sk_v3f((float)cos(theta), 0.0f, (float)sin(theta));
     double a = 0.2 * 3.0 * 12.0; /* 7.2 mm */
-    sk_vec3f bark = sk_v3f(sk_linear_from_srgb(0.24f), sk_linear_from_srgb(0.15f), sk_linear_from_srgb(0.09f));
+    sk_vec3f bark =
+        sk_v3f(sk_linear_from_srgb(0.24f), sk_linear_from_srgb(0.15f), sk_linear_from_srgb(0.09f));
     for (double r = 45.0; r <= 60.0; r += 5.0) { /* past 36 mm, the stem when it died */
         sk_wood_sample s;
         sk_wood_eval(w, knot_point(y0, theta, r, 0.5 * a, 0.0), n, &s);
@@ -908,7 +922,8 @@ static void test_dead_knot(void **state)
 static double radial_part(const sk_wood *w, double r, double theta, double y)
 {
     sk_wood_sample s;
-    sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), (float)y, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+    sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), (float)y, (float)(r * sin(theta))),
+                 sk_v3f(0, 1, 0), &s);
     return fabs(s.fibre.x * cos(theta) + s.fibre.z * sin(theta));
 }
 
@@ -937,7 +952,8 @@ static void test_rays_are_radial_ribbons(void **state)
         if (radial_part(w, r, theta, y) < 0.99) continue;
         in++;
         sk_wood_sample s;
-        sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), (float)y, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+        sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), (float)y, (float)(r * sin(theta))),
+                     sk_v3f(0, 1, 0), &s);
         assert_true(s.vessel == 0.0f);
         stays += radial_part(w, r + 2.0, theta, y) > 0.99;
         leaves += radial_part(w, r, theta + 1.0 / r, y) < 0.5; /* 1 mm round the tree */
@@ -1016,7 +1032,8 @@ static void test_bad_parameters(void **state)
     d.rings.width_mm = 0.5f;
     d.vessels.diffuse.density_per_mm2 = 10.0f;
     d.vessels.diffuse.radius_mm = 0.3f;
-    expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "vessels.diffuse.radius_mm = 0.3 is too large", NULL);
+    expect_error(&d, SK_ERROR_INVALID_ARGUMENT, "vessels.diffuse.radius_mm = 0.3 is too large",
+                 NULL);
 
     d = (sk_wood_desc){0};
     d.grain.wavy_amplitude = 0.2f;
@@ -1156,9 +1173,11 @@ static void test_presets_bind_and_build(void **state)
         /* every vessel a preset can draw lies within the 20-400 um diameters of Kawai 2000
            sec. 3.2 (radius ~ Normal cut at 3 sd, at least a tenth of the mean) */
         sk_wood_desc rd = sk_wood_desc_resolved(&desc);
-        const float *sizes[2][2] = {{&rd.vessels.diffuse.radius_mm, &rd.vessels.diffuse.radius_sd_mm},
-                                    {&rd.vessels.ring.radius_mm, &rd.vessels.ring.radius_sd_mm}};
-        bool on[2] = {rd.vessels.diffuse.density_per_mm2 > 0.0f, rd.vessels.ring.linear_density > 0.0f};
+        const float *sizes[2][2] = {
+            {&rd.vessels.diffuse.radius_mm, &rd.vessels.diffuse.radius_sd_mm},
+            {&rd.vessels.ring.radius_mm, &rd.vessels.ring.radius_sd_mm}};
+        bool on[2] = {rd.vessels.diffuse.density_per_mm2 > 0.0f,
+                      rd.vessels.ring.linear_density > 0.0f};
         for (int k = 0; k < 2; k++) {
             if (!on[k]) continue;
             double mean = *sizes[k][0], sd = *sizes[k][1];
@@ -1189,7 +1208,7 @@ static void test_figure_presets_hold_the_paper_values(void **state)
         float spiral, amplitude, wavelength, fluctuation, shift, specular;
         bool ring_fluctuation; /* the figure shows R(t, theta) fluctuating (sec. 4.4) */
     } figs[] = {
-        {"fig5a", 0, 0, 0, 0, 0, 0, false},       {"fig5b", 0.12f, 0, 0, 0.02f, 0, 0, false},
+        {"fig5a", 0, 0, 0, 0, 0, 0, false},         {"fig5b", 0.12f, 0, 0, 0.02f, 0, 0, false},
         {"fig5c", 0, 0.2f, 40, 0.02f, 0, 0, false}, {"fig6b", 0.12f, 0, 0, 0.02f, 0, 0, false},
         {"fig6c", 0, 0.2f, 40, 0.02f, 0, 0, false}, {"fig7", 0, 0.15f, 15, 0, 0.4f, 0, true},
         {"fig9", 0, 0.15f, 20, 0, 0, 0.3f, false},
@@ -1269,7 +1288,8 @@ static void test_brightness_shift_modes(void **state)
             /* end grain, mid-ring (t = k + 0.5): the ring profile is earlywood */
             double r = 3.0 * (5 + i % 20) + 1.5, theta = i * 0.7;
             sk_wood_sample s;
-            sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), 0.0f, (float)(r * sin(theta))), sk_v3f(0, 1, 0), &s);
+            sk_wood_eval(w, sk_v3f((float)(r * cos(theta)), 0.0f, (float)(r * sin(theta))),
+                         sk_v3f(0, 1, 0), &s);
             double v = mode == SK_WOOD_SHIFT_ADD ? sk_srgb_from_linear(s.albedo.y) - ew
                                                  : s.albedo.y / sk_linear_from_srgb((float)ew);
             lo = fmin(lo, v);
@@ -1279,8 +1299,8 @@ static void test_brightness_shift_modes(void **state)
         }
         if (mode == SK_WOOD_SHIFT_ADD) {
             assert_true(lo >= -0.2 - 1e-3 && hi <= 0.2 + 1e-3); /* within 40 % of each other */
-            assert_true(lo < -0.18 && hi > 0.18);              /* and filling that range */
-            assert_true(fabs(sum / n) < 0.01);                 /* centred: the ring keeps its mean */
+            assert_true(lo < -0.18 && hi > 0.18);               /* and filling that range */
+            assert_true(fabs(sum / n) < 0.01); /* centred: the ring keeps its mean */
         } else {
             assert_true(lo >= 0.6 - 1e-5 && hi <= 1.0 + 1e-6);
             assert_true(lo < 0.62);
@@ -1298,17 +1318,24 @@ static void test_cli_cut_and_region(void **state)
     (void)state;
     const char *full = sk_test_path("wood/full.png"), *part = sk_test_path("wood/part.png");
     const char *maps = sk_test_path("wood/maps/x");
-    assert_int_equal(sk_test_cli(&g_run, "wood cut --preset oak --size 48x40 --samples 1 -q "
-                                         "--maps '%s' -o '%s'", maps, full), 0);
-    assert_int_equal(sk_test_cli(&g_run, "wood cut --preset oak --size 48x40 --samples 1 -q "
-                                         "--region 7,5,20,11 -o '%s'", part), 0);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "wood cut --preset oak --size 48x40 --samples 1 -q "
+                                 "--maps '%s' -o '%s'",
+                                 maps, full),
+                     0);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "wood cut --preset oak --size 48x40 --samples 1 -q "
+                                 "--region 7,5,20,11 -o '%s'",
+                                 part),
+                     0);
     sk_image a = {0}, b = {0};
     assert_int_equal(sk_image_read_png(&a, full, NULL, NULL, NULL, NULL), SK_OK);
     assert_int_equal(sk_image_read_png(&b, part, NULL, NULL, NULL, NULL), SK_OK);
     assert_int_equal(b.width, 20);
     assert_int_equal(b.height, 11);
     for (int y = 0; y < 11; y++)
-        assert_memory_equal(sk_image_pixel(&b, 0, y), sk_image_pixel(&a, 7, 5 + y), 20 * 3 * sizeof(float));
+        assert_memory_equal(sk_image_pixel(&b, 0, y), sk_image_pixel(&a, 7, 5 + y),
+                            20 * 3 * sizeof(float));
     sk_image_free(&a);
     sk_image_free(&b);
     /* the maps: albedo, fibre directions (unit after decoding), pores */
@@ -1341,8 +1368,11 @@ static void test_cli_cut_and_region(void **state)
     char clear[1300];
     snprintf(clear, sizeof clear, "rm -rf '%s'", fresh);
     assert_int_equal(system(clear), 0);
-    assert_int_equal(sk_test_cli(&g_run, "wood cut --preset oak --size 24 --samples 1 -q "
-                                         "--maps '%s' -o '%s'", fresh, inside), 0);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "wood cut --preset oak --size 24 --samples 1 -q "
+                                 "--maps '%s' -o '%s'",
+                                 fresh, inside),
+                     0);
     assert_true(sk_test_file_exists(inside));
     snprintf(path, sizeof path, "%s/albedo.png", fresh);
     assert_true(sk_test_file_exists(path));
@@ -1353,7 +1383,8 @@ static void expect_cli_error(const char *args, const char *needle)
     const char *out = sk_test_path("wood/never.png");
     remove(out);
     int status = sk_test_cli(&g_run, "%s -q -o '%s'", args, out);
-    if (status != 2 || !strstr(g_run.err, needle)) fprintf(stderr, "%s -> %d: %s", args, status, g_run.err);
+    if (status != 2 || !strstr(g_run.err, needle))
+        fprintf(stderr, "%s -> %d: %s", args, status, g_run.err);
     assert_int_equal(status, 2);
     assert_non_null(strstr(g_run.err, needle));
     assert_int_equal(sk_test_count_lines(g_run.err), 1);
@@ -1364,9 +1395,11 @@ static void test_cli_errors(void **state)
 {
     (void)state;
     expect_cli_error("wood cut --size 8 --set rings.width_mm=-1", "rings.width_mm");
-    expect_cli_error("wood cut --size 8 --set grain.wavy_amplitude=0.2", "grain.wavy_wavelength_mm");
+    expect_cli_error("wood cut --size 8 --set grain.wavy_amplitude=0.2",
+                     "grain.wavy_wavelength_mm");
     expect_cli_error("wood cut --size 8 --set vessels.ring.linear_density=3 "
-                     "--set vessels.ring.radius_mm=1.9", "too large");
+                     "--set vessels.ring.radius_mm=1.9",
+                     "too large");
     expect_cli_error("wood cut --size 8 --set rings.fluctuation=nan", "rings.fluctuation");
     expect_cli_error("wood cut --size 8 --plane diagonal", "--plane");
     expect_cli_error("wood cut --size 8 --tilt 120", "tilt");
@@ -1385,8 +1418,11 @@ static void test_cli_sweep_and_sheet(void **state)
 {
     (void)state;
     const char *dir = sk_test_path("wood/sweep/x");
-    assert_int_equal(sk_test_cli(&g_run, "wood sweep --preset fig9 --size 24 --samples 1 --frames 3 "
-                                         "-q -o '%s'", dir), 0);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "wood sweep --preset fig9 --size 24 --samples 1 --frames 3 "
+                                 "-q -o '%s'",
+                                 dir),
+                     0);
     char a[1200], b[1200], c[1200];
     snprintf(a, sizeof a, "%s/frame_0001.png", dir);
     snprintf(b, sizeof b, "%s/frame_0002.png", dir);
@@ -1400,8 +1436,11 @@ static void test_cli_sweep_and_sheet(void **state)
     sk_image_free(&i1);
     sk_image_free(&i3);
     const char *sheet = sk_test_path("wood/sheet.png");
-    assert_int_equal(sk_test_cli(&g_run, "sheet '%s' '%s' '%s' --label a --label b --columns 3 "
-                                         "--title T -o '%s'", a, b, c, sheet), 0);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "sheet '%s' '%s' '%s' --label a --label b --columns 3 "
+                                 "--title T -o '%s'",
+                                 a, b, c, sheet),
+                     0);
     assert_int_equal(sk_image_read_png(&i1, sheet, NULL, NULL, NULL, NULL), SK_OK);
     assert_true(i1.width >= 3 * 24 && i1.height > 24);
     sk_image_free(&i1);

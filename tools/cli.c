@@ -34,13 +34,16 @@ int cli_fail(int status, const char *fmt, ...)
 int cli_exit_status(sk_result result)
 {
     switch (result) {
-    case SK_OK: return CLI_EXIT_OK;
+    case SK_OK:
+        return CLI_EXIT_OK;
     case SK_ERROR_INVALID_ARGUMENT:
     case SK_ERROR_PARSE:
     case SK_ERROR_LIMIT:
     case SK_ERROR_UNSUPPORTED:
-    case SK_ERROR_NOT_FOUND: return CLI_EXIT_USAGE;
-    default: return CLI_EXIT_RUNTIME;
+    case SK_ERROR_NOT_FOUND:
+        return CLI_EXIT_USAGE;
+    default:
+        return CLI_EXIT_RUNTIME;
     }
 }
 
@@ -80,7 +83,8 @@ void cli_group_subcommands(const char *group, char *out, size_t size)
     for (int i = 0; cli_commands[i] && used < size; i++) {
         const char *name = cli_commands[i]->name;
         if (strncmp(name, group, n) == 0 && name[n] == ' ')
-            used += (size_t)snprintf(out + used, size - used, "%s%s", used ? ", " : "", name + n + 1);
+            used +=
+                (size_t)snprintf(out + used, size - used, "%s%s", used ? ", " : "", name + n + 1);
     }
 }
 
@@ -178,9 +182,9 @@ static int find_common(const cli_command *command, const char *name, size_t len,
 {
     for (int i = 0; i < COMMON_COUNT; i++) {
         if (!(common_mask(command) & k_common[i].bit)) continue;
-        if (short_name ? k_common[i].short_name == short_name
-                       : (strlen(k_common[i].name) == len &&
-                          strncmp(k_common[i].name, name, len) == 0))
+        if (short_name
+                ? k_common[i].short_name == short_name
+                : (strlen(k_common[i].name) == len && strncmp(k_common[i].name, name, len) == 0))
             return i;
     }
     return -1;
@@ -201,8 +205,12 @@ static int apply_common(const cli_command *command, int which, const char *value
 {
     cli_common *c = &args->common;
     switch (k_common[which].bit) {
-    case CLI_COMMON_OUTPUT: c->output = value; break;
-    case CLI_COMMON_PRESET: c->preset = value; break;
+    case CLI_COMMON_OUTPUT:
+        c->output = value;
+        break;
+    case CLI_COMMON_PRESET:
+        c->preset = value;
+        break;
     case CLI_COMMON_SET:
         if (c->set_count == CLI_MAX_SETS)
             return cli_fail(CLI_EXIT_USAGE, "%s: more than %d --set options", command->name,
@@ -222,7 +230,9 @@ static int apply_common(const cli_command *command, int which, const char *value
         c->threads = (int)t;
         break;
     }
-    case CLI_COMMON_QUIET: c->quiet = true; break;
+    case CLI_COMMON_QUIET:
+        c->quiet = true;
+        break;
     case CLI_COMMON_MEMORY:
         if (!cli_parse_memory_size(value, &c->max_memory))
             return cli_fail(CLI_EXIT_USAGE,
@@ -295,7 +305,8 @@ int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args)
         if (opt < 0 && common < 0)
             return cli_fail(CLI_EXIT_USAGE, "%s: unknown option '%s' (see 'shitsukan %s --help')",
                             command->name, a, command->name);
-        const char *arg_name = opt >= 0 ? command->options[opt].arg_name : k_common[common].arg_name;
+        const char *arg_name =
+            opt >= 0 ? command->options[opt].arg_name : k_common[common].arg_name;
         const char *value = "";
         if (arg_name) {
             if (inline_value) {
@@ -303,8 +314,8 @@ int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args)
             } else if (k + 1 < argc) {
                 value = argv[++k];
             } else {
-                return cli_fail(CLI_EXIT_USAGE, "%s: option '%s' needs a value (%s)",
-                                command->name, a, arg_name);
+                return cli_fail(CLI_EXIT_USAGE, "%s: option '%s' needs a value (%s)", command->name,
+                                a, arg_name);
             }
         } else if (inline_value) {
             return cli_fail(CLI_EXIT_USAGE, "%s: option '%s' takes no value", command->name, a);
@@ -316,9 +327,11 @@ int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args)
     if (args->positional_count < command->min_positional ||
         args->positional_count > command->max_positional) {
         if (command->max_positional == 0)
-            return cli_fail(CLI_EXIT_USAGE, "%s: unexpected argument '%s' (see 'shitsukan %s --help')",
+            return cli_fail(CLI_EXIT_USAGE,
+                            "%s: unexpected argument '%s' (see 'shitsukan %s --help')",
                             command->name, args->positional[0], command->name);
-        return cli_fail(CLI_EXIT_USAGE, "%s: expected %d to %d arguments, got %d (see 'shitsukan %s --help')",
+        return cli_fail(CLI_EXIT_USAGE,
+                        "%s: expected %d to %d arguments, got %d (see 'shitsukan %s --help')",
                         command->name, command->min_positional, command->max_positional,
                         args->positional_count, command->name);
     }
@@ -375,8 +388,8 @@ int cli_get_int(const cli_command *command, const cli_args *args, const char *na
     char *end;
     long long x = strtoll(v, &end, 10);
     if (!v[0] || *end || errno || x < lo || x > hi)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be an integer in [%lld, %lld]", name, v,
-                        lo, hi);
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be an integer in [%lld, %lld]", name, v, lo,
+                        hi);
     *out = x;
     return 0;
 }
@@ -421,8 +434,8 @@ int cli_get_double(const cli_command *command, const cli_args *args, const char 
     return 0;
 }
 
-int cli_get_size(const cli_command *command, const cli_args *args, const char *name,
-                 int fallback_w, int fallback_h, int max, int *w, int *h)
+int cli_get_size(const cli_command *command, const cli_args *args, const char *name, int fallback_w,
+                 int fallback_h, int max, int *w, int *h)
 {
     const char *v = cli_get(command, args, name);
     if (!v) {
@@ -506,11 +519,23 @@ bool cli_parse_memory_size(const char *text, uint64_t *bytes)
     static const struct {
         const char *suffix;
         double scale;
-    } units[] = {{"", 1},           {"B", 1},           {"K", 1024.0},      {"KB", 1024.0},
-                 {"KiB", 1024.0},   {"M", 1048576.0},   {"MB", 1048576.0},  {"MiB", 1048576.0},
-                 {"G", 1073741824.0}, {"GB", 1073741824.0}, {"GiB", 1073741824.0},
-                 {"T", 1099511627776.0}, {"TB", 1099511627776.0}, {"TiB", 1099511627776.0},
-                 {"P", 1125899906842624.0}, {"PB", 1125899906842624.0}, {"PiB", 1125899906842624.0}};
+    } units[] = {{"", 1},
+                 {"B", 1},
+                 {"K", 1024.0},
+                 {"KB", 1024.0},
+                 {"KiB", 1024.0},
+                 {"M", 1048576.0},
+                 {"MB", 1048576.0},
+                 {"MiB", 1048576.0},
+                 {"G", 1073741824.0},
+                 {"GB", 1073741824.0},
+                 {"GiB", 1073741824.0},
+                 {"T", 1099511627776.0},
+                 {"TB", 1099511627776.0},
+                 {"TiB", 1099511627776.0},
+                 {"P", 1125899906842624.0},
+                 {"PB", 1125899906842624.0},
+                 {"PiB", 1125899906842624.0}};
     for (size_t i = 0; i < sizeof units / sizeof units[0]; i++) {
         if (strcasecmp(text + n, units[i].suffix) != 0) continue;
         double b = v * units[i].scale;
@@ -547,7 +572,8 @@ int cli_check_image(int width, int height, int channels, const char *driver)
     return cli_fail(CLI_EXIT_USAGE,
                     "%s of %d float channel(s) needs %.1f GiB, more than the %.0f GiB an image may "
                     "hold (make it smaller, or render parts with --region)",
-                    driver, channels, bytes / 1073741824.0, (double)SK_IMAGE_MAX_BYTES / 1073741824.0);
+                    driver, channels, bytes / 1073741824.0,
+                    (double)SK_IMAGE_MAX_BYTES / 1073741824.0);
 }
 
 int cli_output_format(const char *option, const char *path, const char *const *accepted,
@@ -700,8 +726,7 @@ int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset 
     }
     if (args->common.has_seed) {
         char assignment[64];
-        snprintf(assignment, sizeof assignment, "seed=%llu",
-                 (unsigned long long)args->common.seed);
+        snprintf(assignment, sizeof assignment, "seed=%llu", (unsigned long long)args->common.seed);
         if (sk_preset_set(preset, assignment, &err) != SK_OK) {
             sk_preset_free(preset);
             return cli_fail_error(&err);

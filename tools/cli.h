@@ -80,7 +80,7 @@ typedef struct cli_command {
     const char *examples;    /* example lines for --help, or NULL */
     const cli_option *options;
     int option_count;
-    unsigned common;         /* CLI_COMMON_* mask */
+    unsigned common; /* CLI_COMMON_* mask */
     int min_positional, max_positional;
     const char *preset_module; /* folder under presets/ for --preset NAME, or NULL */
     const sk_schema *schema;   /* preset schema (for --help-keys), or NULL */
@@ -133,8 +133,8 @@ int cli_get_double(const cli_command *command, const cli_args *args, const char 
  * leading or trailing text) that is finite: true and *out, else false. */
 bool cli_parse_decimal(const char *text, double *out);
 /* "N" (square) or "WxH", each in [1, max]. */
-int cli_get_size(const cli_command *command, const cli_args *args, const char *name,
-                 int fallback_w, int fallback_h, int max, int *w, int *h);
+int cli_get_size(const cli_command *command, const cli_args *args, const char *name, int fallback_w,
+                 int fallback_h, int max, int *w, int *h);
 /* Parses `count` comma-separated decimal numbers ("X,Y,Z") of option --`option`. */
 int cli_parse_numbers(const char *option, const char *text, int count, double *out);
 /* Parses "x,y,w,h" (a sub-rectangle of a width x height image). */

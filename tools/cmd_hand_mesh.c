@@ -16,29 +16,39 @@
 #include "shitsukan/hand.h"
 
 static const cli_option mesh_options[] = {
-    {"pose", 0, "FILE", "pose JSON ({\"dofs\": {...}} in degrees, as `hand pose -o` writes)", false},
-    {"pin", 0, "DOF=DEG", "hold a DOF at an absolute angle (the others follow the natural coupling); repeatable", true},
-    {"constraints", 0, "SET", "coupling of --pin: natural (default), yasumuro-table-3.2, none, or a JSON file", false},
-    {"potential", 0, "FILE", "coupling of --pin: a calibrated potential (hand calibrate) instead of --constraints", false},
+    {"pose", 0, "FILE", "pose JSON ({\"dofs\": {...}} in degrees, as `hand pose -o` writes)",
+     false},
+    {"pin", 0, "DOF=DEG",
+     "hold a DOF at an absolute angle (the others follow the natural coupling); repeatable", true},
+    {"constraints", 0, "SET",
+     "coupling of --pin: natural (default), yasumuro-table-3.2, none, or a JSON file", false},
+    {"potential", 0, "FILE",
+     "coupling of --pin: a calibrated potential (hand calibrate) instead of --constraints", false},
     {"skinning", 0, "METHOD", "rigid (the thesis: nearest link), lbs or dqs (default)", false},
     {"lod", 0, "N", "level of detail: 0 = 8000 triangles (default), 1 = 2000, 2 = 500", false},
     {"left", 0, NULL, "a left hand (the exact mirror image)", false},
     {"triangles", 0, "N", "triangles of level 0 (default 8000)", false},
-    {"flesh", 0, "FILE", "flesh sizes JSON (default presets/hand/flesh.json's built-in values)", false},
-    {"texture", 0, "PREFIX", "also bake the skin texture: PREFIX-albedo.png and PREFIX-normal.png (OBJ: an MTL)", false},
+    {"flesh", 0, "FILE", "flesh sizes JSON (default presets/hand/flesh.json's built-in values)",
+     false},
+    {"texture", 0, "PREFIX",
+     "also bake the skin texture: PREFIX-albedo.png and PREFIX-normal.png (OBJ: an MTL)", false},
     {"texture-size", 0, "N", "atlas size in pixels (default 1024)", false},
-    {"material", 0, "KIND", ".glb material: blend (the thesis's 0.3 lit : 0.7 unlit texture, default) or pbr", false},
+    {"material", 0, "KIND",
+     ".glb material: blend (the thesis's 0.3 lit : 0.7 unlit texture, default) or pbr", false},
 };
 
 /* --pin solved with the coupling of --constraints ("natural", "yasumuro-table-3.2", "none"
    or a file) or a calibrated --potential. */
-static int solve_pins(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel, double *q)
+static int solve_pins(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel,
+                      double *q)
 {
     sk_hand_input in;
     int rc = hand_parse_inputs(cmd, args, &in);
     if (rc) return rc;
-    const char *set = cli_get(cmd, args, "constraints"), *potential = cli_get(cmd, args, "potential");
-    if (set && potential) return cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints");
+    const char *set = cli_get(cmd, args, "constraints"),
+               *potential = cli_get(cmd, args, "potential");
+    if (set && potential)
+        return cli_fail(CLI_EXIT_USAGE, "--potential does not go with --constraints");
     hand_poser poser;
     rc = hand_poser_open(&poser, skel, potential, set ? set : "natural", NULL, 0);
     sk_hand_solve_info info;
@@ -71,7 +81,8 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
     if (rc) return rc;
     sk_error err = {0};
     sk_hand_skeleton skel;
-    sk_hand_skeleton_desc sd = {.side = cli_has(cmd, args, "left") ? SK_HAND_SIDE_LEFT : SK_HAND_SIDE_RIGHT};
+    sk_hand_skeleton_desc sd = {.side = cli_has(cmd, args, "left") ? SK_HAND_SIDE_LEFT
+                                                                   : SK_HAND_SIDE_RIGHT};
     if (sk_hand_skeleton_init(&skel, &sd, &err) != SK_OK) return cli_fail_error(&err);
     double q[SK_HAND_DOF_COUNT];
     const char *pose = cli_get(cmd, args, "pose");
@@ -79,7 +90,8 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
     if (!pose && (rc = solve_pins(cmd, args, &skel, q))) return rc;
     /* a .glb holds all three levels of detail, unless --lod chose one */
     int lod_count = glb && !cli_has(cmd, args, "lod") ? SK_HAND_LOD_COUNT : 1;
-    if ((rc = hand_surface_plan_check_memory(args, &plan, &skel, glb || plan.texture, lod > 0 ? 2 : lod_count)))
+    if ((rc = hand_surface_plan_check_memory(args, &plan, &skel, glb || plan.texture,
+                                             lod > 0 ? 2 : lod_count)))
         return rc;
     /* the mesh, its MTL and textures appear together or not at all */
     const cli_output outputs[] = {{"-o", &out, k_formats, false}};
@@ -88,13 +100,18 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
     rc = hand_surface_plan_reserve(&plan, written, glb || format == 1 ? NULL : args->common.output);
     sk_hand_surface *surface = NULL;
     if (!rc) rc = hand_build_surface(&plan, &skel, (int)lod, &surface);
-    if (!rc && glb) rc = hand_write_glb(&plan, surface, q, 1, 30.0, false, lod_count, out);
-    else if (!rc) rc = hand_write_posed_mesh(&plan, surface, q, out);
+    if (!rc && glb)
+        rc = hand_write_glb(&plan, surface, q, 1, 30.0, false, lod_count, out);
+    else if (!rc)
+        rc = hand_write_posed_mesh(&plan, surface, q, out);
     rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet)
-        fprintf(stderr, "shitsukan: %zu vertices, %zu triangles (%s skinning)\n", sk_hand_surface_mesh(surface)->vertex_count,
+        fprintf(stderr, "shitsukan: %zu vertices, %zu triangles (%s skinning)\n",
+                sk_hand_surface_mesh(surface)->vertex_count,
                 sk_hand_surface_mesh(surface)->triangle_count,
-                plan.method == SK_HAND_SKINNING_RIGID ? "rigid" : plan.method == SK_HAND_SKINNING_LBS ? "lbs" : "dqs");
+                plan.method == SK_HAND_SKINNING_RIGID ? "rigid"
+                : plan.method == SK_HAND_SKINNING_LBS ? "lbs"
+                                                      : "dqs");
     sk_hand_surface_destroy(surface);
     return rc;
 }
@@ -102,8 +119,9 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
 const cli_command cmd_hand_mesh = {
     .name = "hand mesh",
     .summary = "the hand's skin surface in a pose (OBJ, PLY or glTF binary)",
-    .usage = "shitsukan hand mesh [--pose pose.json | --pin DOF=DEG ...] [--skinning rigid|lbs|dqs]\n"
-             "       [--lod 0|1|2] [--left] -o hand.obj|hand.ply|hand.glb",
+    .usage =
+        "shitsukan hand mesh [--pose pose.json | --pin DOF=DEG ...] [--skinning rigid|lbs|dqs]\n"
+        "       [--lod 0|1|2] [--left] -o hand.obj|hand.ply|hand.glb",
     .description =
         "Builds the skin surface of Yasumuro's thesis (sec. 4.1) from the skeleton: flesh of\n"
         "published sizes around every link, blended into one implicit surface and meshed in\n"

@@ -15,24 +15,31 @@
 
 /* ------------------------------------------------------------ samples */
 
-int hand_read_samples(const cli_command *cmd, const cli_args *args, const char *path, sk_hand_samples *out)
+int hand_read_samples(const cli_command *cmd, const cli_args *args, const char *path,
+                      sk_hand_samples *out)
 {
     sk_hand_samples_desc desc = {0};
     const char *units = cli_get(cmd, args, "units");
-    if (units && strcmp(units, "rad") == 0) desc.units = SK_HAND_UNIT_RAD;
-    else if (units && strcmp(units, "deg") == 0) desc.units = SK_HAND_UNIT_DEG;
-    else if (units) return cli_fail(CLI_EXIT_USAGE, "--units '%s' must be rad or deg", units);
+    if (units && strcmp(units, "rad") == 0)
+        desc.units = SK_HAND_UNIT_RAD;
+    else if (units && strcmp(units, "deg") == 0)
+        desc.units = SK_HAND_UNIT_DEG;
+    else if (units)
+        return cli_fail(CLI_EXIT_USAGE, "--units '%s' must be rad or deg", units);
     desc.group_column = cli_get(cmd, args, "group");
     desc.ignore_columns = cli_get(cmd, args, "ignore-columns");
     sk_error err = {0};
     if (sk_hand_samples_read(path, &desc, out, &err) != SK_OK) return cli_fail_error(&err);
     if (out->units_suspect && !args->common.quiet) {
         if (desc.units == SK_HAND_UNIT_RAD)
-            fprintf(stderr, "shitsukan: warning: %s: angles up to %.0f read as radians look like degrees (--units deg?)\n",
+            fprintf(stderr,
+                    "shitsukan: warning: %s: angles up to %.0f read as radians look like degrees "
+                    "(--units deg?)\n",
                     path, out->max_abs_angle);
         else
             fprintf(stderr,
-                    "shitsukan: warning: %s: every angle is within +-%.2f, read as degrees; these look like radians "
+                    "shitsukan: warning: %s: every angle is within +-%.2f, read as degrees; these "
+                    "look like radians "
                     "(--units rad?)\n",
                     path, out->max_abs_angle * SK_RAD_TO_DEG);
     }
@@ -45,11 +52,13 @@ int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_han
     if (strcmp(name, "none") == 0) return 0;
     char path[PATH_MAX];
     bool looks_like_file = strchr(name, '/') || strstr(name, ".json");
-    if (looks_like_file) snprintf(path, sizeof path, "%s", name);
+    if (looks_like_file)
+        snprintf(path, sizeof path, "%s", name);
     else if (!cli_find_preset("hand", name, path, sizeof path))
         return cli_fail(CLI_EXIT_USAGE,
                         "--constraints '%s': no such set (natural, yasumuro-table-3.2, none, or a "
-                        "JSON file)", name);
+                        "JSON file)",
+                        name);
     sk_error err = {0};
     if (sk_hand_constraints_load_file(path, skel, out, &err) != SK_OK) return cli_fail_error(&err);
     return 0;
@@ -64,7 +73,8 @@ int hand_lut_options(const cli_command *cmd, const cli_args *args, sk_hand_lut_d
     if (rc) return rc;
     out->resolution = (int)resolution;
     const char *interp = cli_get(cmd, args, "lut-interp");
-    if (interp && strcmp(interp, "bilinear") == 0) out->interp = SK_HAND_LUT_INTERP_BILINEAR;
+    if (interp && strcmp(interp, "bilinear") == 0)
+        out->interp = SK_HAND_LUT_INTERP_BILINEAR;
     else if (interp && strcmp(interp, "hermite") != 0)
         return cli_fail(CLI_EXIT_USAGE, "--lut-interp '%s' must be hermite or bilinear", interp);
     return 0;
@@ -76,20 +86,24 @@ int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weigh
 {
     const char *w = cli_get(cmd, args, "weights");
     *out = fallback;
-    if (w && strcmp(w, "thesis") == 0) *out = SK_HAND_WEIGHT_THESIS;
-    else if (w && strcmp(w, "inverse-variance") == 0) *out = SK_HAND_WEIGHT_INVERSE_VARIANCE;
-    else if (w) return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
+    if (w && strcmp(w, "thesis") == 0)
+        *out = SK_HAND_WEIGHT_THESIS;
+    else if (w && strcmp(w, "inverse-variance") == 0)
+        *out = SK_HAND_WEIGHT_INVERSE_VARIANCE;
+    else if (w)
+        return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
     return 0;
 }
 
-int hand_poser_open(hand_poser *poser, const sk_hand_skeleton *skel, const char *potential_path, const char *set_name,
-                    const sk_hand_lut *luts, int lut_count)
+int hand_poser_open(hand_poser *poser, const sk_hand_skeleton *skel, const char *potential_path,
+                    const char *set_name, const sk_hand_lut *luts, int lut_count)
 {
     memset(poser, 0, sizeof *poser);
     sk_error err = {0};
     if (potential_path) {
         sk_hand_potential pot;
-        if (sk_hand_potential_load_file(potential_path, skel, &pot, &err) != SK_OK) return cli_fail_error(&err);
+        if (sk_hand_potential_load_file(potential_path, skel, &pot, &err) != SK_OK)
+            return cli_fail_error(&err);
         sk_result r = sk_hand_potential_solver_create(&poser->potential, skel, &pot, NULL, &err);
         sk_hand_potential_free(&pot);
         return r == SK_OK ? 0 : cli_fail_error(&err);
@@ -103,11 +117,13 @@ int hand_poser_open(hand_poser *poser, const sk_hand_skeleton *skel, const char 
     return rc;
 }
 
-int hand_poser_solve(hand_poser *poser, const sk_hand_input *in, double *q, sk_hand_solve_info *info)
+int hand_poser_solve(hand_poser *poser, const sk_hand_input *in, double *q,
+                     sk_hand_solve_info *info)
 {
     sk_error err = {0};
-    sk_result r = poser->potential ? sk_hand_potential_solve(poser->potential, in, q, info, NULL, &err)
-                                   : sk_hand_solve(poser->solver, in, q, info, &err);
+    sk_result r = poser->potential
+                      ? sk_hand_potential_solve(poser->potential, in, q, info, NULL, &err)
+                      : sk_hand_solve(poser->solver, in, q, info, &err);
     return r == SK_OK ? 0 : cli_fail_error(&err);
 }
 
@@ -121,15 +137,19 @@ void hand_poser_close(hand_poser *poser)
 /* --method, --components, --prior-strength, --seed and, for --method pairs, --pairs (the
  * candidates, parsed into `pairs`), --weights, --weight-scale, --max-pairs into a
  * potential desc. */
-static int potential_options(const cli_command *cmd, const cli_args *args, sk_hand_potential_desc *d,
-                             int (*pairs)[2])
+static int potential_options(const cli_command *cmd, const cli_args *args,
+                             sk_hand_potential_desc *d, int (*pairs)[2])
 {
     memset(d, 0, sizeof *d);
     const char *method = cli_get(cmd, args, "method");
-    if (!method || strcmp(method, "mixture") == 0) d->method = SK_HAND_POTENTIAL_MIXTURE;
-    else if (strcmp(method, "gaussian") == 0) d->method = SK_HAND_POTENTIAL_GAUSSIAN;
-    else if (strcmp(method, "pairs") == 0) d->method = SK_HAND_POTENTIAL_PAIRS;
-    else return cli_fail(CLI_EXIT_USAGE, "--method '%s' must be mixture, gaussian or pairs", method);
+    if (!method || strcmp(method, "mixture") == 0)
+        d->method = SK_HAND_POTENTIAL_MIXTURE;
+    else if (strcmp(method, "gaussian") == 0)
+        d->method = SK_HAND_POTENTIAL_GAUSSIAN;
+    else if (strcmp(method, "pairs") == 0)
+        d->method = SK_HAND_POTENTIAL_PAIRS;
+    else
+        return cli_fail(CLI_EXIT_USAGE, "--method '%s' must be mixture, gaussian or pairs", method);
     long long comps = 0, max_pairs = 0;
     double strength = 0.0;
     int rc = cli_get_int(cmd, args, "components", 0, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS, &comps);
@@ -142,10 +162,13 @@ static int potential_options(const cli_command *cmd, const cli_args *args, sk_ha
     d->prior_strength = strength;
     d->seed = args->common.has_seed ? args->common.seed : 1;
     if (d->method != SK_HAND_POTENTIAL_PAIRS) {
-        if (cli_has(cmd, args, "max-pairs")) return cli_fail(CLI_EXIT_USAGE, "--max-pairs needs --method pairs");
+        if (cli_has(cmd, args, "max-pairs"))
+            return cli_fail(CLI_EXIT_USAGE, "--max-pairs needs --method pairs");
         return 0;
     }
-    if (comps > 1) return cli_fail(CLI_EXIT_USAGE, "--components does not go with --method pairs (one component)");
+    if (comps > 1)
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--components does not go with --method pairs (one component)");
     rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_INVERSE_VARIANCE, &d->weight_rule);
     if (!rc) rc = cli_get_double(cmd, args, "weight-scale", 0.0, 1e-6, 1e6, &d->weight_scale);
     if (!rc) rc = cli_get_int(cmd, args, "max-pairs", 16, 1, 64, &max_pairs);
@@ -169,7 +192,8 @@ static void print_pair_rows(const sk_hand_potential *pot)
     const sk_hand_constraints *c = &pot->component[0].constraints;
     printf("weight scale %g; fitted rows:\n", pot->weight_scale);
     for (int k = c->row_count - pot->pair_count; k < c->row_count; k++)
-        printf("  %-24s A %7.4f  W %.4g\n", c->rows[k].label, c->rows[k].coeff[0], c->rows[k].weight);
+        printf("  %-24s A %7.4f  W %.4g\n", c->rows[k].label, c->rows[k].coeff[0],
+               c->rows[k].weight);
 }
 
 int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
@@ -198,17 +222,22 @@ int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
     char note[700];
     if (desc.method == SK_HAND_POTENTIAL_PAIRS)
         snprintf(note, sizeof note,
-                 "fitted from %d samples of %s (prior strength %g, %d pair rows chosen on held-out samples, weight "
+                 "fitted from %d samples of %s (prior strength %g, %d pair rows chosen on held-out "
+                 "samples, weight "
                  "scale %g, base set %s)",
-                 samples.count, path, pot.prior_strength, pot.pair_count, pot.weight_scale, base_name ? base_name : "natural");
-    else
-        snprintf(note, sizeof note, "fitted from %d samples of %s (prior strength %g, %d component%s, base set %s)",
-                 samples.count, path, pot.prior_strength, pot.component_count, pot.component_count == 1 ? "" : "s",
+                 samples.count, path, pot.prior_strength, pot.pair_count, pot.weight_scale,
                  base_name ? base_name : "natural");
-    if (!rc && sk_hand_potential_write_json(&pot, note, args->common.output, &err) != SK_OK) rc = cli_fail_error(&err);
+    else
+        snprintf(note, sizeof note,
+                 "fitted from %d samples of %s (prior strength %g, %d component%s, base set %s)",
+                 samples.count, path, pot.prior_strength, pot.component_count,
+                 pot.component_count == 1 ? "" : "s", base_name ? base_name : "natural");
+    if (!rc && sk_hand_potential_write_json(&pot, note, args->common.output, &err) != SK_OK)
+        rc = cli_fail_error(&err);
     if (!rc && !args->common.quiet)
-        printf("%d DOFs from %d samples: %d component%s, prior strength %g, scale %.4g\n", pot.dof_count, samples.count,
-               pot.component_count, pot.component_count == 1 ? "" : "s", pot.prior_strength, pot.scale);
+        printf("%d DOFs from %d samples: %d component%s, prior strength %g, scale %.4g\n",
+               pot.dof_count, samples.count, pot.component_count,
+               pot.component_count == 1 ? "" : "s", pot.prior_strength, pot.scale);
     if (!rc && !args->common.quiet && desc.method == SK_HAND_POTENTIAL_PAIRS) print_pair_rows(&pot);
     sk_hand_potential_free(&pot);
     sk_hand_samples_free(&samples);
@@ -219,35 +248,50 @@ int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
 /* ------------------------------------------------------------ hand evaluate */
 
 static const cli_option evaluate_options[] = {
-    {"pins", 0, "A,B", "DOFs pinned to their measured values (the others are predicted); repeatable, one set each", true},
-    {"folds", 0, "K", "hold out K contiguous blocks of samples (default 5); with --group, at most K folds of groups", false},
-    {"group", 0, "COLUMN", "hold out whole groups: the CSV column naming the trial or person of each sample", false},
+    {"pins", 0, "A,B",
+     "DOFs pinned to their measured values (the others are predicted); repeatable, one set each",
+     true},
+    {"folds", 0, "K",
+     "hold out K contiguous blocks of samples (default 5); with --group, at most K folds of groups",
+     false},
+    {"group", 0, "COLUMN",
+     "hold out whole groups: the CSV column naming the trial or person of each sample", false},
     {"units", 0, "UNIT", "angles of the CSV: deg (default) or rad", false},
     {"ignore-columns", 0, "A,B", "CSV columns to skip (besides frame and time)", false},
-    {"model", 0, "MODEL", "calibrated (default), pairs (eq. 3.18 lines of --pairs), lookup-tables (3.2.3: tables of "
-                          "--pairs added to --base), or a fixed set: natural, yasumuro-table-3.2, none, FILE",
+    {"model", 0, "MODEL",
+     "calibrated (default), pairs (eq. 3.18 lines of --pairs), lookup-tables (3.2.3: tables of "
+     "--pairs added to --base), or a fixed set: natural, yasumuro-table-3.2, none, FILE",
      false},
     {"lut-resolution", 0, "N", "lookup-tables: grid nodes per axis (default 100)", false},
     {"lut-weight", 0, "W", "lookup-tables: weight of each table (default 1)", false},
     {"lut-interp", 0, "MODE", "lookup-tables: hermite (default) or bilinear", false},
-    {"method", 0, "METHOD", "calibrated model: mixture (default; components chosen on held-out samples), gaussian, "
-                            "or pairs (the thesis's form: pair rows and weight scale chosen on held-out samples)", false},
+    {"method", 0, "METHOD",
+     "calibrated model: mixture (default; components chosen on held-out samples), gaussian, "
+     "or pairs (the thesis's form: pair rows and weight scale chosen on held-out samples)",
+     false},
     {"max-pairs", 0, "N", "--method pairs: fitted rows at most (default 16)", false},
     {"components", 0, "N", "calibrated mixture: fixed component count (default: chosen)", false},
-    {"prior-strength", 0, "S", "pseudo-samples of the base set's Gaussian (default: chosen; 0 = none)", false},
-    {"base", 0, "SET", "base set: shrinkage target, springs of the pair model (default natural)", false},
-    {"pairs", 0, "A:B,...", "pair model: the DOF pairs of its lines; --method pairs: the candidates (default all)", false},
-    {"weights", 0, "RULE", "pair model: thesis (eq. 3.18, default) or inverse-variance (default of --method pairs)", false},
-    {"weight-scale", 0, "S", "pair model: multiplies every weight (default 1; --method pairs: chosen)", false},
+    {"prior-strength", 0, "S",
+     "pseudo-samples of the base set's Gaussian (default: chosen; 0 = none)", false},
+    {"base", 0, "SET", "base set: shrinkage target, springs of the pair model (default natural)",
+     false},
+    {"pairs", 0, "A:B,...",
+     "pair model: the DOF pairs of its lines; --method pairs: the candidates (default all)", false},
+    {"weights", 0, "RULE",
+     "pair model: thesis (eq. 3.18, default) or inverse-variance (default of --method pairs)",
+     false},
+    {"weight-scale", 0, "S",
+     "pair model: multiplies every weight (default 1; --method pairs: chosen)", false},
     {"pca-k", 0, "K", "components of the PCA prior baseline (default 6)", false},
     {"report", 0, "FILE.json", "write the results as JSON (one entry per pin set)", false},
     {"plot", 0, "FILE.png", "bar chart of the per-joint errors, one panel per pin set", false},
     {"plot-title", 0, "TEXT", "title of the plot", false},
 };
 
-static int evaluation_model(const cli_command *cmd, const cli_args *args, const sk_hand_skeleton *skel,
-                            sk_hand_evaluation_desc *d, sk_hand_constraints *fixed, sk_hand_constraints *base,
-                            int (*pairs)[2], const char **model_name)
+static int evaluation_model(const cli_command *cmd, const cli_args *args,
+                            const sk_hand_skeleton *skel, sk_hand_evaluation_desc *d,
+                            sk_hand_constraints *fixed, sk_hand_constraints *base, int (*pairs)[2],
+                            const char **model_name)
 {
     const char *model = cli_get(cmd, args, "model");
     const char *base_name = cli_get(cmd, args, "base");
@@ -295,7 +339,8 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
 {
     const char *pin_texts[SK_HAND_EVAL_MAX_PIN_SETS + 1];
     int np = cli_get_all(cmd, args, "pins", pin_texts, SK_HAND_EVAL_MAX_PIN_SETS + 1);
-    if (np == 0) return cli_fail(CLI_EXIT_USAGE, "--pins is required (e.g. --pins I.MCP.flex,I.PIP.flex)");
+    if (np == 0)
+        return cli_fail(CLI_EXIT_USAGE, "--pins is required (e.g. --pins I.MCP.flex,I.PIP.flex)");
     if (np > SK_HAND_EVAL_MAX_PIN_SETS)
         return cli_fail(CLI_EXIT_USAGE, "at most %d --pins sets", SK_HAND_EVAL_MAX_PIN_SETS);
     if (cli_has(cmd, args, "plot-title") && !cli_has(cmd, args, "plot"))
@@ -320,7 +365,8 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
     /* the report and the plot appear together at the end, or neither */
     const char *report = cli_get(cmd, args, "report"), *plot = cli_get(cmd, args, "plot");
     static const char *const k_json[] = {".json", NULL}, *const k_png[] = {".png", NULL};
-    const cli_output outputs[] = {{"--report", &report, k_json, false}, {"--plot", &plot, k_png, false}};
+    const cli_output outputs[] = {{"--report", &report, k_json, false},
+                                  {"--plot", &plot, k_png, false}};
     sk_output_set *written = NULL;
     if ((rc = cli_reserve_outputs(outputs, 2, &written))) return rc;
     sk_hand_constraints *fixed = malloc(sizeof *fixed), *base = malloc(sizeof *base);
@@ -342,11 +388,13 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
             rc = cli_fail_error(&err);
         }
     }
-    if (!rc && report && sk_hand_evaluation_write_json(eval, report, &err) != SK_OK) rc = cli_fail_error(&err);
+    if (!rc && report && sk_hand_evaluation_write_json(eval, report, &err) != SK_OK)
+        rc = cli_fail_error(&err);
     if (!rc && plot) {
         sk_plot_desc pd = {.title = cli_get(cmd, args, "plot-title")};
         sk_image img;
-        if (sk_hand_plot_evaluation(eval, model_name, &pd, &img, &err) != SK_OK) rc = cli_fail_error(&err);
+        if (sk_hand_plot_evaluation(eval, model_name, &pd, &img, &err) != SK_OK)
+            rc = cli_fail_error(&err);
         else {
             if (sk_image_write_png(&img, plot, NULL, &err) != SK_OK) rc = cli_fail_error(&err);
             sk_image_free(&img);
@@ -355,14 +403,17 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
     for (int p = 0; !rc && p < eval->pin_set_count; p++)
         if (eval->result[p].unconverged > 0)
             fprintf(stderr,
-                    "shitsukan: warning: %d of %d solves did not converge (largest residual %.2g); their last "
+                    "shitsukan: warning: %d of %d solves did not converge (largest residual %.2g); "
+                    "their last "
                     "iterates are counted\n",
-                    eval->result[p].unconverged, eval->result[p].solves, eval->result[p].max_residual);
+                    eval->result[p].unconverged, eval->result[p].solves,
+                    eval->result[p].max_residual);
     rc = cli_finish_outputs(written, rc);
     if (!rc && !args->common.quiet) {
         sk_hand_evaluation_print(eval, model_name, stdout);
         if (desc.model == SK_HAND_EVAL_MODEL_CALIBRATED)
-            printf("calibrated model: %.1f mixture component(s) on average over the folds\n", eval->mean_components);
+            printf("calibrated model: %.1f mixture component(s) on average over the folds\n",
+                   eval->mean_components);
     }
     sk_hand_samples_free(&samples);
     free(fixed);
@@ -373,9 +424,12 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
 
 const cli_command cmd_hand_evaluate = {
     .name = "hand evaluate",
-    .summary = "held-out error of the natural-posture model against the mean, linear regression and a PCA prior",
-    .usage = "shitsukan hand evaluate SAMPLES.csv --pins A,B [--pins C...] [--folds K | --group COLUMN]\n"
-             "       [--report FILE.json] [--plot FILE.png] [--units rad|deg] [--ignore-columns A,B]",
+    .summary = "held-out error of the natural-posture model against the mean, linear regression "
+               "and a PCA prior",
+    .usage =
+        "shitsukan hand evaluate SAMPLES.csv --pins A,B [--pins C...] [--folds K | --group "
+        "COLUMN]\n"
+        "       [--report FILE.json] [--plot FILE.png] [--units rad|deg] [--ignore-columns A,B]",
     .description =
         "Cross-validates the model on joint-angle samples: per fold the model is calibrated on\n"
         "the other samples (the whole potential of eq. 3.17: relaxed posture, springs and rows\n"
@@ -389,9 +443,12 @@ const cli_command cmd_hand_evaluate = {
         "pair lines refitted per fold (eq. 3.18 weights); --model lookup-tables the tables of\n"
         "3.2.3 built per fold. Every solve either converges or is counted as not converged\n"
         "(the table's last line, the report's \"solves\", a warning).",
-    .examples = "  shitsukan hand evaluate glove.csv --pins I.MCP.flex,I.PIP.flex --pins L.MCP.flex --group person\n"
-                "  shitsukan hand evaluate glove.csv --pins M.MCP.flex,M.PIP.flex --folds 10 --report eval.json --plot eval.png\n"
-                "  shitsukan hand evaluate glove.csv --pins L.MCP.flex --model natural --ignore-columns trial",
+    .examples = "  shitsukan hand evaluate glove.csv --pins I.MCP.flex,I.PIP.flex --pins "
+                "L.MCP.flex --group person\n"
+                "  shitsukan hand evaluate glove.csv --pins M.MCP.flex,M.PIP.flex --folds 10 "
+                "--report eval.json --plot eval.png\n"
+                "  shitsukan hand evaluate glove.csv --pins L.MCP.flex --model natural "
+                "--ignore-columns trial",
     .options = evaluate_options,
     .option_count = (int)(sizeof evaluate_options / sizeof evaluate_options[0]),
     .common = CLI_COMMON_QUIET | CLI_COMMON_SEED,
@@ -426,14 +483,17 @@ static int run_synthesize(const cli_command *cmd, const cli_args *args)
     d.noise_deg = noise > 0 ? noise : -1.0;
     d.seed = args->common.has_seed ? args->common.seed : 1;
     sk_error err = {0};
-    if (sk_hand_synthetic_grasps_write(&d, args->common.output, &err) != SK_OK) return cli_fail_error(&err);
+    if (sk_hand_synthetic_grasps_write(&d, args->common.output, &err) != SK_OK)
+        return cli_fail_error(&err);
     return 0;
 }
 
 const cli_command cmd_hand_synthesize = {
     .name = "hand synthesize",
-    .summary = "synthetic glove recordings of finger flexion (grasp types, people, noise) for calibration",
-    .usage = "shitsukan hand synthesize -o samples.csv [--people N] [--trials N] [--frames N] [--noise DEG] [--seed S]",
+    .summary =
+        "synthetic glove recordings of finger flexion (grasp types, people, noise) for calibration",
+    .usage = "shitsukan hand synthesize -o samples.csv [--people N] [--trials N] [--frames N] "
+             "[--noise DEG] [--seed S]",
     .description =
         "Writes a CSV of the 12 finger flexion DOFs (index to little: MCP, PIP, DIP, degrees)\n"
         "for several people grasping ten object types in trials of reach, hold and release,\n"

@@ -8,7 +8,8 @@
 
 /* Reads a samples CSV with the command's --units, --group and --ignore-columns (each
  * must be an option of the command), warning when the units look wrong. */
-int hand_read_samples(const cli_command *cmd, const cli_args *args, const char *path, sk_hand_samples *out);
+int hand_read_samples(const cli_command *cmd, const cli_args *args, const char *path,
+                      sk_hand_samples *out);
 /* "natural", "yasumuro-table-3.2", "none" or a file (`out` is zeroed for "none"). */
 int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out);
 /* --weights: thesis or inverse-variance (`fallback` when absent). */
@@ -29,7 +30,8 @@ typedef struct hand_poser {
 /* potential_path NULL: the set `set_name` ("natural", a preset, "none" or a file). */
 int hand_poser_open(hand_poser *poser, const sk_hand_skeleton *skel, const char *potential_path,
                     const char *set_name, const sk_hand_lut *luts, int lut_count);
-int hand_poser_solve(hand_poser *poser, const sk_hand_input *in, double *q, sk_hand_solve_info *info);
+int hand_poser_solve(hand_poser *poser, const sk_hand_input *in, double *q,
+                     sk_hand_solve_info *info);
 void hand_poser_close(hand_poser *poser);
 
 #endif

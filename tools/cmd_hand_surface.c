@@ -29,10 +29,14 @@ static const char *base_name(const char *path)
 
 int hand_parse_skinning(const char *text, sk_hand_skinning *out)
 {
-    if (!text || strcmp(text, "dqs") == 0) *out = SK_HAND_SKINNING_DQS;
-    else if (strcmp(text, "lbs") == 0) *out = SK_HAND_SKINNING_LBS;
-    else if (strcmp(text, "rigid") == 0) *out = SK_HAND_SKINNING_RIGID;
-    else return cli_fail(CLI_EXIT_USAGE, "--skinning '%s' must be rigid, lbs or dqs", text);
+    if (!text || strcmp(text, "dqs") == 0)
+        *out = SK_HAND_SKINNING_DQS;
+    else if (strcmp(text, "lbs") == 0)
+        *out = SK_HAND_SKINNING_LBS;
+    else if (strcmp(text, "rigid") == 0)
+        *out = SK_HAND_SKINNING_RIGID;
+    else
+        return cli_fail(CLI_EXIT_USAGE, "--skinning '%s' must be rigid, lbs or dqs", text);
     return 0;
 }
 
@@ -47,9 +51,12 @@ int hand_surface_plan_parse(const cli_command *cmd, const cli_args *args, hand_s
     p->desc.triangles = (int)triangles;
     p->texture_size = (int)size;
     const char *material = cli_get(cmd, args, "material");
-    if (!material || strcmp(material, "blend") == 0) p->material = SK_HAND_GLTF_MATERIAL_BLEND;
-    else if (strcmp(material, "pbr") == 0) p->material = SK_HAND_GLTF_MATERIAL_PBR;
-    else return cli_fail(CLI_EXIT_USAGE, "--material '%s' must be blend or pbr", material);
+    if (!material || strcmp(material, "blend") == 0)
+        p->material = SK_HAND_GLTF_MATERIAL_BLEND;
+    else if (strcmp(material, "pbr") == 0)
+        p->material = SK_HAND_GLTF_MATERIAL_PBR;
+    else
+        return cli_fail(CLI_EXIT_USAGE, "--material '%s' must be blend or pbr", material);
     const char *flesh = cli_get(cmd, args, "flesh");
     sk_error err = {0};
     if (flesh) {
@@ -58,7 +65,8 @@ int hand_surface_plan_parse(const cli_command *cmd, const cli_args *args, hand_s
     }
     p->texture = cli_get(cmd, args, "texture");
     if (p->texture) {
-        if (!p->texture[0]) return cli_fail(CLI_EXIT_USAGE, "--texture needs a PREFIX for its file names");
+        if (!p->texture[0])
+            return cli_fail(CLI_EXIT_USAGE, "--texture needs a PREFIX for its file names");
         snprintf(p->albedo, sizeof p->albedo, "%s-albedo.png", p->texture);
         snprintf(p->normal, sizeof p->normal, "%s-normal.png", p->texture);
         p->albedo_out = p->albedo;
@@ -67,8 +75,8 @@ int hand_surface_plan_parse(const cli_command *cmd, const cli_args *args, hand_s
     return 0;
 }
 
-int hand_surface_plan_check_memory(const cli_args *args, const hand_surface_plan *p, const sk_hand_skeleton *skel,
-                                   bool bake, int lod_count)
+int hand_surface_plan_check_memory(const cli_args *args, const hand_surface_plan *p,
+                                   const sk_hand_skeleton *skel, bool bake, int lod_count)
 {
     sk_hand_surface_desc d = p->desc;
     double bytes = sk_hand_surface_memory(skel, &d);
@@ -91,8 +99,11 @@ int hand_surface_plan_reserve(hand_surface_plan *p, sk_output_set *set, const ch
         if (r == SK_OK) r = sk_output_set_file(set, p->normal, &p->normal_out, &err);
     }
     struct stat st;
-    if (r == SK_OK && obj && p->texture && stat(obj, &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)))
-        return cli_fail(CLI_EXIT_USAGE, "--texture with -o '%s' (a device or FIFO): the MTL needs an .obj file name", obj);
+    if (r == SK_OK && obj && p->texture && stat(obj, &st) == 0 &&
+        (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)))
+        return cli_fail(
+            CLI_EXIT_USAGE,
+            "--texture with -o '%s' (a device or FIFO): the MTL needs an .obj file name", obj);
     if (r == SK_OK && obj && p->texture) {
         char *mtl = sk_obj_mtl_path(obj);
         if (!mtl) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
@@ -107,7 +118,8 @@ int hand_surface_plan_reserve(hand_surface_plan *p, sk_output_set *set, const ch
     return 0;
 }
 
-int hand_build_surface(const hand_surface_plan *p, const sk_hand_skeleton *skel, int lod, sk_hand_surface **out)
+int hand_build_surface(const hand_surface_plan *p, const sk_hand_skeleton *skel, int lod,
+                       sk_hand_surface **out)
 {
     *out = NULL;
     sk_error err = {0};
@@ -129,7 +141,8 @@ int hand_load_skin(const char *name, sk_skin **out)
 {
     *out = NULL;
     char path[PATH_MAX];
-    if (!cli_find_preset("skin", name, path, sizeof path)) return cli_fail(CLI_EXIT_RUNTIME, "skin preset '%s' not found", name);
+    if (!cli_find_preset("skin", name, path, sizeof path))
+        return cli_fail(CLI_EXIT_RUNTIME, "skin preset '%s' not found", name);
     sk_error err = {0};
     sk_preset *p = NULL;
     sk_skin_desc d = {0};
@@ -141,7 +154,8 @@ int hand_load_skin(const char *name, sk_skin **out)
 }
 
 /* The atlas's albedo and normal map at --texture-size, with the skin module's microrelief. */
-static int bake_texture(const hand_surface_plan *p, const sk_hand_surface *surface, sk_image *albedo, sk_image *normal)
+static int bake_texture(const hand_surface_plan *p, const sk_hand_surface *surface,
+                        sk_image *albedo, sk_image *normal)
 {
     sk_skin *back = NULL, *palm = NULL;
     int rc;
@@ -172,14 +186,16 @@ static int write_texture(const hand_surface_plan *p, const sk_hand_surface *surf
     return r == SK_OK ? 0 : cli_fail_error(&err);
 }
 
-int hand_write_posed_mesh(const hand_surface_plan *p, const sk_hand_surface *surface, const double *dofs,
-                          const char *path)
+int hand_write_posed_mesh(const hand_surface_plan *p, const sk_hand_surface *surface,
+                          const double *dofs, const char *path)
 {
     sk_error err = {0};
     sk_mesh posed, out;
-    if (sk_hand_surface_pose(surface, dofs, p->method, &posed, &err) != SK_OK) return cli_fail_error(&err);
+    if (sk_hand_surface_pose(surface, dofs, p->method, &posed, &err) != SK_OK)
+        return cli_fail_error(&err);
     bool ply = has_suffix(path, ".ply");
-    sk_result r = sk_hand_surface_export_mesh(surface, posed.positions, posed.normals, ply, &out, &err);
+    sk_result r =
+        sk_hand_surface_export_mesh(surface, posed.positions, posed.normals, ply, &out, &err);
     sk_mesh_free(&posed);
     if (r != SK_OK) return cli_fail_error(&err);
     int rc = p->texture ? write_texture(p, surface) : 0;
@@ -202,18 +218,26 @@ int hand_write_posed_mesh(const hand_surface_plan *p, const sk_hand_surface *sur
     return rc;
 }
 
-int hand_write_glb(const hand_surface_plan *p, const sk_hand_surface *surface, const double *dofs, int frame_count,
-                   double fps, bool animation, int lod_count, const char *path)
+int hand_write_glb(const hand_surface_plan *p, const sk_hand_surface *surface, const double *dofs,
+                   int frame_count, double fps, bool animation, int lod_count, const char *path)
 {
-    sk_hand_gltf_desc d = {.dofs = dofs, .frame_count = frame_count, .fps = fps, .animation = animation,
+    sk_hand_gltf_desc d = {.dofs = dofs,
+                           .frame_count = frame_count,
+                           .fps = fps,
+                           .animation = animation,
                            .material = p->material,
-                           .weights = p->method == SK_HAND_SKINNING_RIGID ? SK_HAND_WEIGHTS_NEAREST : SK_HAND_WEIGHTS_SMOOTH};
+                           .weights = p->method == SK_HAND_SKINNING_RIGID ? SK_HAND_WEIGHTS_NEAREST
+                                                                          : SK_HAND_WEIGHTS_SMOOTH};
     const sk_hand_surface *lods[SK_HAND_LOD_COUNT] = {surface};
     sk_hand_surface *coarse[SK_HAND_LOD_COUNT] = {NULL};
-    int count = lod_count < 1 ? 1 : lod_count > SK_HAND_LOD_COUNT ? SK_HAND_LOD_COUNT : lod_count, rc = 0;
+    int count = lod_count < 1                   ? 1
+                : lod_count > SK_HAND_LOD_COUNT ? SK_HAND_LOD_COUNT
+                                                : lod_count,
+        rc = 0;
     sk_error err = {0};
     for (int l = 1; l < count && !rc; l++) {
-        if (sk_hand_surface_simplify(&coarse[l], surface, sk_hand_lod_triangles[l], &err) != SK_OK) rc = cli_fail_error(&err);
+        if (sk_hand_surface_simplify(&coarse[l], surface, sk_hand_lod_triangles[l], &err) != SK_OK)
+            rc = cli_fail_error(&err);
         lods[l] = coarse[l];
     }
     d.lods = lods;
@@ -238,10 +262,12 @@ static int parse_frames(const char *text, int frame_count, bool *use)
     while (*p) {
         char *end;
         long f = strtol(p, &end, 10);
-        if (end == p || (*end && *end != ',') || (*end == ',' && !end[1]) || f < 0 || f >= frame_count ||
-            (*p < '0' || *p > '9'))
-            return cli_fail(CLI_EXIT_USAGE, "--mesh-frames '%s': expected frame numbers in [0, %d], comma-separated", text,
-                            frame_count - 1);
+        if (end == p || (*end && *end != ',') || (*end == ',' && !end[1]) || f < 0 ||
+            f >= frame_count || (*p < '0' || *p > '9'))
+            return cli_fail(
+                CLI_EXIT_USAGE,
+                "--mesh-frames '%s': expected frame numbers in [0, %d], comma-separated", text,
+                frame_count - 1);
         use[f] = true;
         p = *end ? end + 1 : end;
     }
@@ -249,7 +275,8 @@ static int parse_frames(const char *text, int frame_count, bool *use)
     return 0;
 }
 
-int hand_animate_surface_parse(const cli_command *cmd, const cli_args *args, int frame_count, hand_animate_surface *s)
+int hand_animate_surface_parse(const cli_command *cmd, const cli_args *args, int frame_count,
+                               hand_animate_surface *s)
 {
     memset(s, 0, sizeof *s);
     s->glb = cli_get(cmd, args, "glb");
@@ -268,29 +295,35 @@ void hand_animate_surface_free(hand_animate_surface *s)
     s->use = NULL;
 }
 
-int hand_animate_surface_write(const hand_animate_surface *s, const sk_hand_skeleton *skel, const double *dofs,
-                               int frame_count, double fps)
+int hand_animate_surface_write(const hand_animate_surface *s, const sk_hand_skeleton *skel,
+                               const double *dofs, int frame_count, double fps)
 {
     sk_error err = {0};
     if (s->landmarks) {
-        sk_hand_positions_format fmt = has_suffix(s->landmarks, ".json") ? SK_HAND_POSITIONS_JSON : SK_HAND_POSITIONS_CSV;
-        if (sk_hand_landmarks_write(skel, dofs, frame_count, fmt, s->landmarks, &err) != SK_OK) return cli_fail_error(&err);
+        sk_hand_positions_format fmt =
+            has_suffix(s->landmarks, ".json") ? SK_HAND_POSITIONS_JSON : SK_HAND_POSITIONS_CSV;
+        if (sk_hand_landmarks_write(skel, dofs, frame_count, fmt, s->landmarks, &err) != SK_OK)
+            return cli_fail_error(&err);
     }
     if (!s->glb && !s->meshes_dir) return 0;
     sk_hand_surface *surface = NULL;
     int rc = hand_build_surface(&s->plan, skel, 0, &surface);
-    if (!rc && s->glb) rc = hand_write_glb(&s->plan, surface, dofs, frame_count, fps, true, SK_HAND_LOD_COUNT, s->glb);
+    if (!rc && s->glb)
+        rc = hand_write_glb(&s->plan, surface, dofs, frame_count, fps, true, SK_HAND_LOD_COUNT,
+                            s->glb);
     if (!rc && s->meshes_dir && s->plan.texture) rc = write_texture(&s->plan, surface);
     for (int f = 0; f < frame_count && !rc && s->meshes_dir; f++) {
         if (!s->use[f]) continue;
         char path[PATH_MAX];
         snprintf(path, sizeof path, "%s/frame_%04d.obj", s->meshes_dir, f);
         sk_mesh posed, out;
-        if (sk_hand_surface_pose(surface, dofs + (size_t)f * SK_HAND_DOF_COUNT, s->plan.method, &posed, &err) != SK_OK) {
+        if (sk_hand_surface_pose(surface, dofs + (size_t)f * SK_HAND_DOF_COUNT, s->plan.method,
+                                 &posed, &err) != SK_OK) {
             rc = cli_fail_error(&err);
             break;
         }
-        sk_result r = sk_hand_surface_export_mesh(surface, posed.positions, posed.normals, false, &out, &err);
+        sk_result r =
+            sk_hand_surface_export_mesh(surface, posed.positions, posed.normals, false, &out, &err);
         sk_mesh_free(&posed);
         if (r == SK_OK) {
             r = sk_mesh_write_obj(&out, path, NULL, &err);

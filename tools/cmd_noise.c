@@ -5,7 +5,8 @@
 #include "shitsukan/noise_map.h"
 
 static const cli_option k_options[] = {
-    {"size", 0, "N|WxH", "map size in pixels (overrides the preset's width/height); default 512", false},
+    {"size", 0, "N|WxH", "map size in pixels (overrides the preset's width/height); default 512",
+     false},
     {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full map)", false},
     {"bits", 0, "8|16", "PNG bit depth; default 16", false},
 };
@@ -27,8 +28,8 @@ static int run_noise(const cli_command *command, const cli_args *args)
     if ((status = cli_get_int(command, args, "bits", 16, 8, 16, &bits))) return status;
     if (bits != 8 && bits != 16) return cli_fail(CLI_EXIT_USAGE, "--bits must be 8 or 16");
     if (cli_has(command, args, "size") &&
-        (status = cli_get_size(command, args, "size", 512, 512, SK_IMAGE_MAX_DIMENSION,
-                               &desc.width, &desc.height)))
+        (status = cli_get_size(command, args, "size", 512, 512, SK_IMAGE_MAX_DIMENSION, &desc.width,
+                               &desc.height)))
         return status;
     desc = sk_noise_map_desc_resolved(&desc);
     if (sk_noise_map_desc_validate(&desc, &err) != SK_OK) return cli_fail_error(&err);
@@ -47,7 +48,8 @@ static int run_noise(const cli_command *command, const cli_args *args)
         return status;
 
     sk_image image = {0};
-    if (sk_image_create(&image, region[2], region[3], 1, &err) != SK_OK) return cli_fail_error(&err);
+    if (sk_image_create(&image, region[2], region[3], 1, &err) != SK_OK)
+        return cli_fail_error(&err);
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "noise", !args->common.quiet);
     desc.progress = sk_progress_bar_sink(&bar);
@@ -63,9 +65,8 @@ static int run_noise(const cli_command *command, const cli_args *args)
             sk_exr_write_desc exr = {.metadata = &meta};
             r = sk_image_write_exr(&image, output, &exr, &err);
         } else {
-            sk_png_write_desc png = {.bit_depth = (int)bits,
-                                     .encoding = SK_PNG_ENCODING_LINEAR,
-                                     .metadata = &meta};
+            sk_png_write_desc png = {
+                .bit_depth = (int)bits, .encoding = SK_PNG_ENCODING_LINEAR, .metadata = &meta};
             r = sk_image_write_png(&image, output, &png, &err);
         }
     }

@@ -16,11 +16,14 @@ static const cli_option k_options[] = {
     {"exposure", 0, "EV", "exposure in stops (overrides film.exposure)", false},
     {"exr", 0, "PATH", "also write the linear radiance as EXR", false},
     {"stats", 0, NULL, "print camera rays per second and the intersection / shading split", false},
-    {"export", 0, "FILE", "write the scene's geometry and approximated materials as .glb or .obj "
-                          "(without -o: no image is rendered)", false},
-    {"texture-size", 0, "N", "pixels per side of the textures --export bakes (default 1024)", false},
-    {"no-textures", 0, NULL, "--export bakes no textures: wood gets its mean colour, skin no normal map",
+    {"export", 0, "FILE",
+     "write the scene's geometry and approximated materials as .glb or .obj "
+     "(without -o: no image is rendered)",
      false},
+    {"texture-size", 0, "N", "pixels per side of the textures --export bakes (default 1024)",
+     false},
+    {"no-textures", 0, NULL,
+     "--export bakes no textures: wood gets its mean colour, skin no normal map", false},
 };
 
 static bool find_preset(void *user, const char *module, const char *name, char *path, size_t size)
@@ -84,21 +87,23 @@ static int write_image(const sk_image *image, const sk_render_film_desc *film, c
     sk_image_metadata_set(&meta, "Software", "shitsukan " SK_VERSION_STRING, NULL);
     sk_image_metadata_set(&meta, "shitsukan:scene", scene_path, NULL);
     sk_image_metadata_set(&meta, "shitsukan:samples_per_pixel", spp, NULL);
-    sk_image_metadata_set(&meta, "shitsukan:units", "linear radiance, W sr^-1 m^-2 per unit light intensity", NULL);
+    sk_image_metadata_set(&meta, "shitsukan:units",
+                          "linear radiance, W sr^-1 m^-2 per unit light intensity", NULL);
     if (sk_render_write(image, film, path, &meta, &err) != SK_OK) return cli_fail_error(&err);
     return 0;
 }
 
 /* --export: the scene's geometry for other tools, its files reserved in the run's output
  * set (they appear with the image, or nothing does), its memory checked first. */
-static int export_scene(const cli_command *command, const cli_args *args, const sk_render_scene *scene,
-                        long long size, sk_output_set *outputs)
+static int export_scene(const cli_command *command, const cli_args *args,
+                        const sk_render_scene *scene, long long size, sk_output_set *outputs)
 {
     sk_render_export_desc desc = {.texture_size = (int)size,
                                   .no_textures = cli_has(command, args, "no-textures"),
                                   .outputs = outputs};
-    int status = cli_check_memory(args, sk_render_scene_export_memory(scene, &desc),
-                                  "--export (its textures: --texture-size; and the scene's meshes)");
+    int status =
+        cli_check_memory(args, sk_render_scene_export_memory(scene, &desc),
+                         "--export (its textures: --texture-size; and the scene's meshes)");
     if (status) return status;
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "export", !args->common.quiet);
@@ -121,12 +126,15 @@ static int run_render(const cli_command *command, const cli_args *args)
     const char *export_path = cli_get(command, args, "export");
     static const char *const k_export[] = {".glb", ".obj", NULL};
     int export_format;
-    if (!export_path && (cli_has(command, args, "texture-size") || cli_has(command, args, "no-textures")))
+    if (!export_path &&
+        (cli_has(command, args, "texture-size") || cli_has(command, args, "no-textures")))
         return cli_fail(CLI_EXIT_USAGE, "--%s needs --export",
                         cli_has(command, args, "texture-size") ? "texture-size" : "no-textures");
     if (export_path && !args->common.output && cli_get(command, args, "exr"))
-        return cli_fail(CLI_EXIT_USAGE, "--exr with --export needs -o (without -o, --export renders no image)");
-    if (export_path && (status = cli_output_format("--export", export_path, k_export, &export_format)))
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--exr with --export needs -o (without -o, --export renders no image)");
+    if (export_path &&
+        (status = cli_output_format("--export", export_path, k_export, &export_format)))
         return status;
     if (export_path) {
         sk_error check = {0};
@@ -232,8 +240,10 @@ static int run_render(const cli_command *command, const cli_args *args)
     status = write_image(&image, &d->film, staged_output, scene_path, d->image.samples);
     if (!status && exr)
         status = write_image(&image, &d->film, staged_exr, scene_path, d->image.samples);
-    if (!status && sk_output_set_commit(outputs, &err) != SK_OK) status = cli_fail_error(&err);
-    else if (status) sk_output_set_abort(outputs);
+    if (!status && sk_output_set_commit(outputs, &err) != SK_OK)
+        status = cli_fail_error(&err);
+    else if (status)
+        sk_output_set_abort(outputs);
     if (!status && options.timing) {
         double busy = stats.intersect_seconds + stats.shade_seconds;
         fprintf(stderr,
@@ -264,10 +274,11 @@ const cli_command cmd_render = {
         "(base colour, roughness; wood baked into a base colour texture, skin as a normal\n"
         "map of one tile; see docs/render.md, \"Export\"). With --export and no -o, nothing\n"
         "is rendered.",
-    .examples = "  shitsukan render presets/scenes/wrist.json --size 1280x720 --spp 16 -o wrist.png\n"
-                "  shitsukan render --preset wrist -o wrist.exr\n"
-                "  shitsukan render scene.json --set camera.projection=orthographic --stats\n"
-                "  shitsukan render --preset piano --export piano.glb",
+    .examples =
+        "  shitsukan render presets/scenes/wrist.json --size 1280x720 --spp 16 -o wrist.png\n"
+        "  shitsukan render --preset wrist -o wrist.exr\n"
+        "  shitsukan render scene.json --set camera.projection=orthographic --stats\n"
+        "  shitsukan render --preset piano --export piano.glb",
     .options = k_options,
     .option_count = sizeof k_options / sizeof k_options[0],
     .common = CLI_COMMON_ALL,

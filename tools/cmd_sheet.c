@@ -56,7 +56,8 @@ static int run_sheet(const cli_command *command, const cli_args *args)
     int rep_c = 0, rep_r = 0;
     if (cli_has(command, args, "repeat")) {
         if (count != 1) return cli_fail(CLI_EXIT_USAGE, "sheet: --repeat takes exactly one image");
-        if ((status = cli_get_size(command, args, "repeat", 2, 2, 64, &rep_c, &rep_r))) return status;
+        if ((status = cli_get_size(command, args, "repeat", 2, 2, 64, &rep_c, &rep_r)))
+            return status;
     }
 
     static const char *const k_formats[] = {".png", ".exr", NULL};
@@ -66,8 +67,8 @@ static int run_sheet(const cli_command *command, const cli_args *args)
         /* every tile scaled to tile_size^2 (float RGBA) and the sheet that holds them */
         char driver[96];
         snprintf(driver, sizeof driver, "--tile-size %lld for %d image(s)", tile_size, count);
-        if ((status = cli_check_memory(args, 2.0 * count * cli_image_bytes(tile_size, tile_size, 16),
-                                       driver)))
+        if ((status = cli_check_memory(
+                 args, 2.0 * count * cli_image_bytes(tile_size, tile_size, 16), driver)))
             return status;
     }
     sk_error err = {0};
@@ -85,8 +86,8 @@ static int run_sheet(const cli_command *command, const cli_args *args)
         input_bytes += cli_image_bytes(images[i].width, images[i].height, 4.0 * images[i].channels);
         double plan = rep_c > 0 ? input_bytes * (1.0 + 1.25 * rep_c * rep_r) : 3.0 * input_bytes;
         char driver[96];
-        snprintf(driver, sizeof driver, "%s %d input image(s)", rep_c > 0 ? "--repeat of" : "a sheet of",
-                 i + 1);
+        snprintf(driver, sizeof driver, "%s %d input image(s)",
+                 rep_c > 0 ? "--repeat of" : "a sheet of", i + 1);
         if ((status = cli_check_memory(args, plan, driver))) break;
     }
     if (status) {

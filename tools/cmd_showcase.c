@@ -13,16 +13,20 @@
 #include "shitsukan/showcase.h"
 
 static const cli_option k_options[] = {
-    {"melody", 0, "FILE", "the melody: text (docs/showcase.md) or a Standard MIDI File (.mid)", false},
-    {"frames", 0, "A:B", "render only frames A..B (inclusive; default all); any split gives the same frames", false},
+    {"melody", 0, "FILE", "the melody: text (docs/showcase.md) or a Standard MIDI File (.mid)",
+     false},
+    {"frames", 0, "A:B",
+     "render only frames A..B (inclusive; default all); any split gives the same frames", false},
     {"size", 0, "WxH", "frame size in pixels (default 1280x720)", false},
     {"spp", 0, "N", "camera samples per pixel (default 16)", false},
     {"fps", 0, "N", "frames per second (default 24)", false},
     {"duration", 0, "S", "play only the first S seconds of the melody", false},
     {"constraints", 0, "NAME|FILE", "the hand's coupling potential (default natural)", false},
     {"texture-size", 0, "N", "the hand's skin texture (atlas) in pixels (default 1024)", false},
-    {"hand-triangles", 0, "N", "triangles of the hand's surface (default 8000, the thesis's)", false},
-    {"forearm", 0, "NAME|FILE", "the forearm's tissue character (default presets/showcase/forearm.json)", false},
+    {"hand-triangles", 0, "N", "triangles of the hand's surface (default 8000, the thesis's)",
+     false},
+    {"forearm", 0, "NAME|FILE",
+     "the forearm's tissue character (default presets/showcase/forearm.json)", false},
     {"no-forearm", 0, NULL, "leave the forearm out (the hand ends at its wrist)", false},
     {"join", 0, NULL, "render nothing: make the MP4 from the frames already in the folder", false},
     {"no-video", 0, NULL, "do not make the MP4", false},
@@ -68,18 +72,19 @@ static int load_stage(const cli_command *command, const cli_args *args, sk_rende
 }
 
 /* A shipped preset's name or a file's path into `path`. */
-static int preset_path(const char *option, const char *name, const char *module, const char *example, char *path,
-                       size_t size)
+static int preset_path(const char *option, const char *name, const char *module,
+                       const char *example, char *path, size_t size)
 {
     if (strchr(name, '/') || strstr(name, ".json"))
         snprintf(path, size, "%s", name);
     else if (!cli_find_preset(module, name, path, size))
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': no such preset in %s (e.g. %s)", option, name, module, example);
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': no such preset in %s (e.g. %s)", option, name,
+                        module, example);
     return 0;
 }
 
-static int load_constraints(const cli_command *command, const cli_args *args, const sk_hand_skeleton *skeleton,
-                            sk_hand_constraints *out)
+static int load_constraints(const cli_command *command, const cli_args *args,
+                            const sk_hand_skeleton *skeleton, sk_hand_constraints *out)
 {
     const char *name = cli_get(command, args, "constraints");
     if (!name) name = "natural";
@@ -87,7 +92,8 @@ static int load_constraints(const cli_command *command, const cli_args *args, co
     int status = preset_path("constraints", name, "hand", "natural", path, sizeof path);
     if (status) return status;
     sk_error err = {0};
-    if (sk_hand_constraints_load_file(path, skeleton, out, &err) != SK_OK) return cli_fail_error(&err);
+    if (sk_hand_constraints_load_file(path, skeleton, out, &err) != SK_OK)
+        return cli_fail_error(&err);
     return 0;
 }
 
@@ -96,17 +102,20 @@ static int parse_frames(const char *text, int *first, int *last)
     char *end;
     long a = strtol(text, &end, 10);
     if (end == text || *end != ':' || a < 0 || a > 10000000)
-        return cli_fail(CLI_EXIT_USAGE, "--frames '%s': expected A:B, two frame numbers (A <= B, from 0)", text);
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--frames '%s': expected A:B, two frame numbers (A <= B, from 0)", text);
     const char *b_text = end + 1;
     long b = strtol(b_text, &end, 10);
     if (end == b_text || *end || b < a || b > 10000000)
-        return cli_fail(CLI_EXIT_USAGE, "--frames '%s': expected A:B, two frame numbers (A <= B, from 0)", text);
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--frames '%s': expected A:B, two frame numbers (A <= B, from 0)", text);
     *first = (int)a, *last = (int)b;
     return 0;
 }
 
 /* The forearm's tissue character (NULL with --no-forearm). */
-static int load_forearm(const cli_command *command, const cli_args *args, sk_tissue_character_desc **out)
+static int load_forearm(const cli_command *command, const cli_args *args,
+                        sk_tissue_character_desc **out)
 {
     *out = NULL;
     if (cli_has(command, args, "no-forearm")) return 0;
@@ -147,7 +156,8 @@ static void run_state_free(run_state *s)
  * forearm's tissue grid (its character's skin.spacing_mm) and a frame's render buffers
  * (--size; 32 bytes a pixel: radiance, samples and the 8-bit image). */
 static int check_memory(const cli_args *args, const sk_hand_skeleton *skeleton,
-                        const sk_tissue_character_desc *forearm, int width, int height, int texture, int triangles)
+                        const sk_tissue_character_desc *forearm, int width, int height, int texture,
+                        int triangles)
 {
     sk_hand_surface_desc surface = {.triangles = triangles};
     sk_hand_texture_desc bake = {.size = texture};
@@ -156,18 +166,22 @@ static int check_memory(const cli_args *args, const sk_hand_skeleton *skeleton,
     if (forearm) {
         double tissue = 0;
         sk_error err = {0};
-        if (sk_tissue_model_memory(forearm, &tissue, NULL, &err) != SK_OK) return cli_fail_error(&err);
+        if (sk_tissue_model_memory(forearm, &tissue, NULL, &err) != SK_OK)
+            return cli_fail_error(&err);
         bytes += tissue;
     }
-    return cli_check_memory(args, bytes,
-                            "the showcase (--hand-triangles, --texture-size, --size and the forearm's "
-                            "skin.spacing_mm)");
+    return cli_check_memory(
+        args, bytes,
+        "the showcase (--hand-triangles, --texture-size, --size and the forearm's "
+        "skin.spacing_mm)");
 }
 
 static int run(const cli_command *command, const cli_args *args, run_state *s)
 {
     const char *melody_path = cli_get(command, args, "melody");
-    if (!melody_path) return cli_fail(CLI_EXIT_USAGE, "no melody: give --melody FILE (e.g. presets/showcase/twinkle.txt)");
+    if (!melody_path)
+        return cli_fail(CLI_EXIT_USAGE,
+                        "no melody: give --melody FILE (e.g. presets/showcase/twinkle.txt)");
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "no output folder: give -o DIR");
     int status, width, height;
     long long spp, fps;
@@ -175,9 +189,11 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     if ((status = cli_get_size(command, args, "size", 1280, 720, 8192, &width, &height)) ||
         (status = cli_get_int(command, args, "spp", 16, 1, 1024, &spp)) ||
         (status = cli_get_int(command, args, "fps", 24, 1, 240, &fps)) ||
-        (status = cli_get_double(command, args, "duration", 0, 0.001, SK_MELODY_MAX_SECONDS, &duration)))
+        (status =
+             cli_get_double(command, args, "duration", 0, 0.001, SK_MELODY_MAX_SECONDS, &duration)))
         return status;
-    if (width < 16 || height < 16) return cli_fail(CLI_EXIT_USAGE, "--size %dx%d: at least 16x16", width, height);
+    if (width < 16 || height < 16)
+        return cli_fail(CLI_EXIT_USAGE, "--size %dx%d: at least 16x16", width, height);
     int first = 0, last = -1;
     const char *frames = cli_get(command, args, "frames");
     if (frames && (status = parse_frames(frames, &first, &last))) return status;
@@ -202,9 +218,11 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     if ((status = cli_get_int(command, args, "texture-size", 1024, 64, 8192, &texture)) ||
         (status = cli_get_int(command, args, "hand-triangles", 8000, 500, 200000, &triangles)))
         return status;
-    if ((status = check_memory(args, &skeleton, s->forearm, width, height, (int)texture, (int)triangles)))
+    if ((status = check_memory(args, &skeleton, s->forearm, width, height, (int)texture,
+                               (int)triangles)))
         return status;
-    if ((status = hand_load_skin("back-of-hand", &s->back_skin)) || (status = hand_load_skin("palm", &s->palm_skin)))
+    if ((status = hand_load_skin("back-of-hand", &s->back_skin)) ||
+        (status = hand_load_skin("palm", &s->palm_skin)))
         return status;
     sk_showcase_desc desc = {0};
     desc.back_skin = s->back_skin;
@@ -219,7 +237,8 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     if (sk_showcase_create(&desc, &s->showcase, &err) != SK_OK) return cli_fail_error(&err);
     int count = sk_showcase_frame_count(s->showcase);
     if (last >= count || first >= count)
-        return cli_fail(CLI_EXIT_USAGE, "--frames %s: the piece has frames 0:%d", frames, count - 1);
+        return cli_fail(CLI_EXIT_USAGE, "--frames %s: the piece has frames 0:%d", frames,
+                        count - 1);
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "showcase", !args->common.quiet);
     run_desc.first_frame = first;
@@ -234,13 +253,17 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
         double total = posture + stats.seconds_tissue + stats.seconds_skin + stats.seconds_scene +
                        stats.seconds_render + stats.seconds_write;
         if (stats.frames > 0 && total > 0)
-            fprintf(stderr, "showcase: %d frames (%d in the piece), %.2f s a frame: render %.0f%%, scene %.0f%%, "
-                            "posture %.0f%%, forearm %.0f%%, files %.0f%%\n",
+            fprintf(stderr,
+                    "showcase: %d frames (%d in the piece), %.2f s a frame: render %.0f%%, scene "
+                    "%.0f%%, "
+                    "posture %.0f%%, forearm %.0f%%, files %.0f%%\n",
                     stats.frames, count, total / stats.frames, 100 * stats.seconds_render / total,
-                    100 * stats.seconds_scene / total, 100 * posture / total, 100 * stats.seconds_tissue / total,
-                    100 * stats.seconds_write / total);
-        if (stats.video_written) fprintf(stderr, "showcase: %s/showcase.mp4\n", args->common.output);
-        else if (stats.video_note[0]) fprintf(stderr, "showcase: %s\n", stats.video_note);
+                    100 * stats.seconds_scene / total, 100 * posture / total,
+                    100 * stats.seconds_tissue / total, 100 * stats.seconds_write / total);
+        if (stats.video_written)
+            fprintf(stderr, "showcase: %s/showcase.mp4\n", args->common.output);
+        else if (stats.video_note[0])
+            fprintf(stderr, "showcase: %s\n", stats.video_note);
     }
     return 0;
 }
@@ -264,18 +287,22 @@ const cli_command cmd_showcase = {
         "its finger (MCP and PIP flexion, thesis Fig. 4.21), the fingertips push the keys\n"
         "down, the wrist travels to reach the notes, a fingering is chosen where the melody\n"
         "gives none; the forearm is a tissue character (presets/showcase/forearm.json) whose fat\n"
-        "swings as the wrist travels and strikes. Writes DIR/frames/frame_NNNN.png, DIR/showcase.wav (44.1 kHz 16-bit),\n"
+        "swings as the wrist travels and strikes. Writes DIR/frames/frame_NNNN.png, "
+        "DIR/showcase.wav (44.1 kHz 16-bit),\n"
         "DIR/fingering.txt and, once every frame is in DIR and ffmpeg runs, DIR/showcase.mp4.\n"
         "--frames A:B renders a part (the same frames as a whole run), so a job can be split;\n"
         "the run that completes the folder joins the frames (or run again with --join).\n"
         "The stage (cabinet, lights, film) is presets/showcase/stage.json; --preset takes\n"
         "another and --set changes any of its keys.",
-    .examples = "  shitsukan showcase --melody presets/showcase/twinkle.txt -o twinkle\n"
-                "  shitsukan showcase --melody presets/showcase/ode-to-joy.mid --size 640x360 --spp 4 -o preview\n"
-                "  shitsukan showcase --melody presets/showcase/twinkle.txt --frames 0:99 -o twinkle",
+    .examples =
+        "  shitsukan showcase --melody presets/showcase/twinkle.txt -o twinkle\n"
+        "  shitsukan showcase --melody presets/showcase/ode-to-joy.mid --size 640x360 --spp 4 -o "
+        "preview\n"
+        "  shitsukan showcase --melody presets/showcase/twinkle.txt --frames 0:99 -o twinkle",
     .options = k_options,
     .option_count = sizeof k_options / sizeof k_options[0],
-    .common = CLI_COMMON_OUTPUT | CLI_COMMON_PRESET | CLI_COMMON_SET | CLI_COMMON_THREADS | CLI_COMMON_QUIET,
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_PRESET | CLI_COMMON_SET | CLI_COMMON_THREADS |
+              CLI_COMMON_QUIET,
     .min_positional = 0,
     .max_positional = 0,
     .preset_module = "showcase",
@@ -312,10 +339,12 @@ const cli_command cmd_showcase_midi = {
     .name = "showcase midi",
     .summary = "write a melody as a Standard MIDI File",
     .usage = "shitsukan showcase midi --melody FILE -o OUT.mid",
-    .description = "Writes the melody as a format-0 Standard MIDI File (480 ticks per quarter note at\n"
-                   "120 bpm, so every time lands on a tick of 1/960 s; velocities kept; MIDI has no\n"
-                   "fingering). presets/showcase/ode-to-joy.mid is made this way from ode-to-joy.txt.",
-    .examples = "  shitsukan showcase midi --melody presets/showcase/ode-to-joy.txt -o ode-to-joy.mid",
+    .description =
+        "Writes the melody as a format-0 Standard MIDI File (480 ticks per quarter note at\n"
+        "120 bpm, so every time lands on a tick of 1/960 s; velocities kept; MIDI has no\n"
+        "fingering). presets/showcase/ode-to-joy.mid is made this way from ode-to-joy.txt.",
+    .examples =
+        "  shitsukan showcase midi --melody presets/showcase/ode-to-joy.txt -o ode-to-joy.mid",
     .options = k_midi_options,
     .option_count = sizeof k_midi_options / sizeof k_midi_options[0],
     .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET,

@@ -22,8 +22,8 @@
 #define SKIN_FAST_PNG_PIXELS (2048 * 2048)
 
 static const cli_option k_preview_options[] = {
-    {"size", 0, "N|WxH", "image size in pixels; default 400 (the paper's) on the tile's shorter side",
-     false},
+    {"size", 0, "N|WxH",
+     "image size in pixels; default 400 (the paper's) on the tile's shorter side", false},
     {"mm-per-px", 0, "MM", "pixel size in mm (the tile becomes size x MM); default from size_mm",
      false},
     {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full image)",
@@ -199,8 +199,10 @@ static int run_preview(const cli_command *command, const cli_args *args)
         describe(skin, w, h, &meta);
         /* deflate level 2: a shaded preview comes out about as small as at the default 6,
            in half the time */
-        sk_png_write_desc png = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB,
-                                 .metadata = &meta, .compression_level = 2};
+        sk_png_write_desc png = {.bit_depth = 8,
+                                 .encoding = SK_PNG_ENCODING_SRGB,
+                                 .metadata = &meta,
+                                 .compression_level = 2};
         r = sk_image_write_png(&image, output, &png, &err);
     }
     times.files = phase_now();
@@ -307,9 +309,11 @@ static void map_row(void *user, int y, float *row)
 
 static sk_result write_map_rows(map_rows *r, map_file *f, sk_error *err)
 {
-    sk_image_rows rows = {.width = r->m->w, .height = r->m->h,
+    sk_image_rows rows = {.width = r->m->w,
+                          .height = r->m->h,
                           .channels = r->which == MAP_HEIGHT || r->which == MAP_FURROW ? 1 : 3,
-                          .get_row = map_row, .user = r};
+                          .get_row = map_row,
+                          .user = r};
     f->png.metadata = &f->meta;
     return sk_image_write_png_rows(&rows, f->path, &f->png, err);
 }
@@ -331,12 +335,12 @@ static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, 
        faster. */
     bool fast = m->n >= SKIN_FAST_PNG_PIXELS;
     int level = fast ? 1 : 0;
-    sk_png_write_desc png16 = {.bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR,
-                               .compression_level = level};
-    sk_png_write_desc png8 = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_LINEAR,
-                              .compression_level = level};
-    sk_png_write_desc srgb = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB,
-                              .compression_level = level};
+    sk_png_write_desc png16 = {
+        .bit_depth = 16, .encoding = SK_PNG_ENCODING_LINEAR, .compression_level = level};
+    sk_png_write_desc png8 = {
+        .bit_depth = 8, .encoding = SK_PNG_ENCODING_LINEAR, .compression_level = level};
+    sk_png_write_desc srgb = {
+        .bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB, .compression_level = level};
 
     sk_image_metadata height_meta = meta;
     sk_image_metadata_set(&height_meta, "shitsukan:units", "mm", NULL);
@@ -347,7 +351,8 @@ static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, 
     char path[4096];
     snprintf(path, sizeof path, "%s/height.exr", dir);
     sk_exr_write_desc exr = {.metadata = &height_meta,
-                             .compression = fast ? SK_EXR_COMPRESSION_NONE : SK_EXR_COMPRESSION_DEFAULT};
+                             .compression =
+                                 fast ? SK_EXR_COMPRESSION_NONE : SK_EXR_COMPRESSION_DEFAULT};
     sk_result r = sk_image_write_exr(&m->height, path, &exr, err);
     if (r != SK_OK) return r;
 
@@ -356,8 +361,8 @@ static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, 
     snprintf(f.path, sizeof f.path, "%s/height.png", dir);
     snprintf(v, sizeof v, "height_mm = %.9g + value * %.9g (value = code / 65535)", lo, hi - lo);
     sk_image_metadata_set(&f.meta, "shitsukan:decode", v, NULL);
-    map_rows rows = {.skin = skin, .m = m, .which = MAP_HEIGHT, .directx = directx, .lo = lo,
-                     .span = hi - lo};
+    map_rows rows = {
+        .skin = skin, .m = m, .which = MAP_HEIGHT, .directx = directx, .lo = lo, .span = hi - lo};
     if ((r = write_map_rows(&rows, &f, err)) != SK_OK) return r;
     sk_image_free(&m->height);
 
@@ -380,7 +385,7 @@ static sk_result write_maps(const sk_skin *skin, map_store *m, const char *dir, 
                                   directx ? "directx" : "opengl", NULL);
         rows.which = which;
         r = which == MAP_PREVIEW && m->preview.data ? write_png_file(&m->preview, &f, err)
-                                                     : write_map_rows(&rows, &f, err);
+                                                    : write_map_rows(&rows, &f, err);
         if (r != SK_OK) return r;
         if (which == MAP_CELLS) free(m->ids), m->ids = NULL;
     }
@@ -401,7 +406,8 @@ typedef struct band_job {
 
 /* Renders band b (rows from b * SKIN_BAND_ROWS) into the store, through the thread's own
  * normal and furrow buffers (the height goes straight into the store). */
-static sk_result render_band(const band_job *job, int b, float *normal, float *furrow, sk_error *err)
+static sk_result render_band(const band_job *job, int b, float *normal, float *furrow,
+                             sk_error *err)
 {
     map_store *m = job->m;
     int rw = job->region[2], y0 = b * SKIN_BAND_ROWS;
@@ -449,7 +455,8 @@ static sk_result render_maps(const band_job *job, sk_progress_bar *bar, sk_error
 #pragma omp parallel if (work >= SKIN_PARALLEL_WORK && bands > 1)
     {
         size_t band_px = (size_t)job->region[2] * SKIN_BAND_ROWS;
-        float *normal = malloc(sizeof(float) * 3 * band_px), *furrow = malloc(sizeof(float) * band_px);
+        float *normal = malloc(sizeof(float) * 3 * band_px),
+              *furrow = malloc(sizeof(float) * band_px);
 #pragma omp for schedule(dynamic, 1)
         for (int b = 0; b < bands; b++) {
             bool stop;
@@ -469,7 +476,8 @@ static sk_result render_maps(const band_job *job, sk_progress_bar *bar, sk_error
                     failed = true;
                 }
                 rows_done += r == SK_OK ? SKIN_BAND_ROWS : 0;
-                if (r == SK_OK) sk_progress_bar_update(bar, (double)(rows_done < rh ? rows_done : rh) / rh);
+                if (r == SK_OK)
+                    sk_progress_bar_update(bar, (double)(rows_done < rh ? rows_done : rh) / rh);
             }
         }
         free(normal), free(furrow);
@@ -543,18 +551,25 @@ static int run_maps(const cli_command *command, const cli_args *args)
     sk_progress_bar bar;
     sk_progress_bar_begin(&bar, "skin maps", !args->common.quiet);
     if (r == SK_OK)
-        r = render_maps(&(band_job){.skin = skin, .m = &m, .w = w, .h = h,
+        r = render_maps(&(band_job){.skin = skin,
+                                    .m = &m,
+                                    .w = w,
+                                    .h = h,
                                     .region = {region[0], region[1], region[2], region[3]},
-                                    .furrow_level = (int)furrow_level, .id_level = (int)id_level,
-                                    .samples = (int)samples, .edges = edges, .furrow_max = furrow_max},
+                                    .furrow_level = (int)furrow_level,
+                                    .id_level = (int)id_level,
+                                    .samples = (int)samples,
+                                    .edges = edges,
+                                    .furrow_max = furrow_max},
                         &bar, &err);
     sk_progress_bar_end(&bar);
     times.shading = phase_now();
     if (r == SK_OK)
-        r = write_maps(skin, &m, staged, w, h, directx, edges, (int)furrow_level, furrow_max,
-                       &err);
-    if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
-    else sk_output_set_abort(outputs);
+        r = write_maps(skin, &m, staged, w, h, directx, edges, (int)furrow_level, furrow_max, &err);
+    if (r == SK_OK)
+        r = sk_output_set_commit(outputs, &err);
+    else
+        sk_output_set_abort(outputs);
     times.files = phase_now();
     if (r == SK_OK && !args->common.quiet) {
         float lo, hi;

@@ -73,7 +73,8 @@ static int run_studio(const cli_command *command, const cli_args *args)
     if (!host) host = "127.0.0.1";
     struct in_addr address;
     if (inet_pton(AF_INET, host, &address) != 1)
-        return cli_fail(CLI_EXIT_USAGE, "--host '%s' must be an IPv4 address such as 127.0.0.1", host);
+        return cli_fail(CLI_EXIT_USAGE, "--host '%s' must be an IPv4 address such as 127.0.0.1",
+                        host);
     char root[PATH_MAX];
     const char *given = cli_get(command, args, "root");
     if (given) {
@@ -81,10 +82,12 @@ static int run_studio(const cli_command *command, const cli_args *args)
         struct stat st;
         if (stat(root, &st) != 0 || !S_ISDIR(st.st_mode))
             return cli_fail(CLI_EXIT_USAGE, "--root '%s' must be a folder", given);
-        if (!has_page(root)) return cli_fail(CLI_EXIT_USAGE, "--root '%s': no index.html there", given);
+        if (!has_page(root))
+            return cli_fail(CLI_EXIT_USAGE, "--root '%s': no index.html there", given);
     } else if (!find_root(root, sizeof root)) {
-        return cli_fail(CLI_EXIT_USAGE,
-                        "the studio is not built: run 'make studio' (needs emscripten), or give --root DIR");
+        return cli_fail(
+            CLI_EXIT_USAGE,
+            "the studio is not built: run 'make studio' (needs emscripten), or give --root DIR");
     }
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -93,8 +96,8 @@ static int run_studio(const cli_command *command, const cli_args *args)
     sigaction(SIGTERM, &sa, NULL);
     ready_note note = {host, root};
     char error[512];
-    if (http_serve(root, host, (int)port, &g_stop, on_ready, &note, args->common.quiet ? NULL : stderr, error,
-                   sizeof error) != 0)
+    if (http_serve(root, host, (int)port, &g_stop, on_ready, &note,
+                   args->common.quiet ? NULL : stderr, error, sizeof error) != 0)
         return cli_fail(CLI_EXIT_RUNTIME, "%s", error);
     return CLI_EXIT_OK;
 }

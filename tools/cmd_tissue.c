@@ -13,8 +13,10 @@
 #include "cmd_tissue.h"
 
 static const cli_option k_skin_options[] = {
-    {"character", 0, "arm|body|FILE", "the character: a shipped one (presets/tissue/) or a JSON file", false},
-    {"layers", 0, "DIR", "also write the layers: bone, muscle, fat, skin point clouds (PLY) and pictures", false},
+    {"character", 0, "arm|body|FILE",
+     "the character: a shipped one (presets/tissue/) or a JSON file", false},
+    {"layers", 0, "DIR",
+     "also write the layers: bone, muscle, fat, skin point clouds (PLY) and pictures", false},
     {"stats", 0, "FILE", "write the build's counts and timings as JSON", false},
 };
 
@@ -24,8 +26,10 @@ static int run_skin(const cli_command *cmd, const cli_args *args)
         return cli_fail(CLI_EXIT_USAGE, "nothing to write: give -o rest.obj and/or --layers DIR");
     /* the rest skin, the layers and the stats appear together, or none */
     static const char *const k_mesh[] = {".obj", ".ply", NULL}, *const k_json[] = {".json", NULL};
-    const char *out = args->common.output, *layers = cli_get(cmd, args, "layers"), *stats = cli_get(cmd, args, "stats");
-    const cli_output outputs[] = {{"-o", &out, k_mesh, false}, {"--layers", &layers, NULL, true},
+    const char *out = args->common.output, *layers = cli_get(cmd, args, "layers"),
+               *stats = cli_get(cmd, args, "stats");
+    const cli_output outputs[] = {{"-o", &out, k_mesh, false},
+                                  {"--layers", &layers, NULL, true},
                                   {"--stats", &stats, k_json, false}};
     sk_output_set *written = NULL;
     int status = cli_reserve_outputs(outputs, 3, &written);
@@ -55,15 +59,20 @@ const cli_command cmd_tissue_skin = {
     .name = "tissue skin",
     .summary = "a character's generated rest skin (Shigemori & Kawai) and its layers",
     .usage = "shitsukan tissue skin --character arm|body|FILE -o rest.obj [--layers DIR] [options]",
-    .description =
-        "Builds the character of Shigemori & Kawai's fat model: bones of three ellipsoids, volume-keeping\n"
-        "muscles, a grid over the tissue dilated and cut at a threshold into a skin whose vertices lie on\n"
-        "grid points, and the fat, skin, muscle and bone points with their springs. Writes the rest skin\n"
-        "(OBJ or PLY by extension); --layers writes bone.ply, muscle.ply, fat.ply, skin.ply (points),\n"
-        "bones.obj, muscles.obj (ellipsoids) and layers.png (the layers cut open). Character keys can be\n"
-        "changed with --set, e.g. --set skin.spacing_mm=2 (see --help-keys).",
-    .examples = "shitsukan tissue skin --character arm -o arm.obj --layers arm-layers\n"
-                "shitsukan tissue skin --character body --set skin.smooth_iterations=10 -o body.obj",
+    .description = "Builds the character of Shigemori & Kawai's fat model: bones of three "
+                   "ellipsoids, volume-keeping\n"
+                   "muscles, a grid over the tissue dilated and cut at a threshold into a skin "
+                   "whose vertices lie on\n"
+                   "grid points, and the fat, skin, muscle and bone points with their springs. "
+                   "Writes the rest skin\n"
+                   "(OBJ or PLY by extension); --layers writes bone.ply, muscle.ply, fat.ply, "
+                   "skin.ply (points),\n"
+                   "bones.obj, muscles.obj (ellipsoids) and layers.png (the layers cut open). "
+                   "Character keys can be\n"
+                   "changed with --set, e.g. --set skin.spacing_mm=2 (see --help-keys).",
+    .examples =
+        "shitsukan tissue skin --character arm -o arm.obj --layers arm-layers\n"
+        "shitsukan tissue skin --character body --set skin.smooth_iterations=10 -o body.obj",
     .options = k_skin_options,
     .option_count = sizeof k_skin_options / sizeof k_skin_options[0],
     .common = CLI_COMMON_OUTPUT | CLI_COMMON_SET | CLI_COMMON_THREADS | CLI_COMMON_QUIET,

@@ -33,8 +33,10 @@ const cli_command cmd_tissue_motion = {
     .name = "tissue motion",
     .summary = "the shipped tissue motions (arm curl, jump, walk) as BVH",
     .usage = "shitsukan tissue motion curl|jump|walk -o FILE.bvh",
-    .description = "Generates one of the motions shipped in presets/tissue: 'curl' for the arm character, 'jump' and\n"
-                   "'walk' for the full body (joint names as the characters', centimetres, 60 frames per second).",
+    .description = "Generates one of the motions shipped in presets/tissue: 'curl' for the arm "
+                   "character, 'jump' and\n"
+                   "'walk' for the full body (joint names as the characters', centimetres, 60 "
+                   "frames per second).",
     .examples = "shitsukan tissue motion jump -o jump.bvh",
     .common = CLI_COMMON_OUTPUT,
     .min_positional = 1,

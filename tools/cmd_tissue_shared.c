@@ -11,10 +11,14 @@ int tissue_cli_build(const cli_command *cmd, const cli_args *args, sk_tissue_mod
 {
     *out = NULL;
     const char *character = cli_get(cmd, args, "character");
-    if (!character) return cli_fail(CLI_EXIT_USAGE, "--character is required (arm, body or a JSON file)");
+    if (!character)
+        return cli_fail(CLI_EXIT_USAGE, "--character is required (arm, body or a JSON file)");
     char found[PATH_MAX];
-    if (!strchr(character, '/') && !strstr(character, ".json") && !cli_find_preset("tissue", character, found, sizeof found))
-        return cli_fail(CLI_EXIT_USAGE, "--character '%s': no such character (arm, body or a JSON file; see 'shitsukan presets tissue')",
+    if (!strchr(character, '/') && !strstr(character, ".json") &&
+        !cli_find_preset("tissue", character, found, sizeof found))
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--character '%s': no such character (arm, body or a JSON file; see "
+                        "'shitsukan presets tissue')",
                         character);
     /* the character is a preset of the tissue module: reuse the preset loading with --set */
     cli_args *copy = malloc(sizeof *copy);
@@ -46,7 +50,8 @@ int tissue_cli_build(const cli_command *cmd, const cli_args *args, sk_tissue_mod
         return cli_fail(cli_exit_status(r), "--character %s: %s", character, err.message);
     }
     char driver[160];
-    snprintf(driver, sizeof driver, "--character %s (skin.spacing_mm = %g: a grid of %d x %d x %d points)", character,
+    snprintf(driver, sizeof driver,
+             "--character %s (skin.spacing_mm = %g: a grid of %d x %d x %d points)", character,
              desc->skin.spacing_mm > 0 ? desc->skin.spacing_mm : 4.0, grid[0], grid[1], grid[2]);
     if ((status = cli_check_memory(args, bytes, driver))) {
         free(desc);
@@ -58,15 +63,18 @@ int tissue_cli_build(const cli_command *cmd, const cli_args *args, sk_tissue_mod
     r = sk_tissue_model_build(desc, &options, out, &err);
     sk_progress_bar_end(&bar);
     free(desc);
-    if (r != SK_OK) return cli_fail(cli_exit_status(r), "--character %s: %s", character, err.message);
+    if (r != SK_OK)
+        return cli_fail(cli_exit_status(r), "--character %s: %s", character, err.message);
     return 0;
 }
 
 void tissue_cli_print_model(const sk_tissue_model *model)
 {
     sk_tissue_model_stats s = sk_tissue_model_get_stats(model);
-    printf("%s: grid %d x %d x %d at %g mm; %zu skin, %zu fat, %zu muscle, %zu bone points; %zu springs; "
+    printf("%s: grid %d x %d x %d at %g mm; %zu skin, %zu fat, %zu muscle, %zu bone points; %zu "
+           "springs; "
            "%zu skin triangles; built in %.2f s\n",
-           sk_tissue_model_desc(model)->name, s.grid[0], s.grid[1], s.grid[2], s.spacing_mm, s.skin_points,
-           s.fat_points, s.muscle_points, s.bone_points, s.springs, s.skin_triangles, s.seconds_total);
+           sk_tissue_model_desc(model)->name, s.grid[0], s.grid[1], s.grid[2], s.spacing_mm,
+           s.skin_points, s.fat_points, s.muscle_points, s.bone_points, s.springs, s.skin_triangles,
+           s.seconds_total);
 }

@@ -13,27 +13,31 @@
 #include "shitsukan/wood.h"
 
 /* Options shared by both commands: the cut plane, its framing and the image. */
-#define PLANE_OPTIONS                                                                          \
-    {"size", 0, "N|WxH", "image size in pixels; default 1024 (cut), 512 (sweep)", false},     \
-    {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full image)", \
-     false},                                                                                   \
-    {"plane", 0, "end|flat|quarter", "cut through the log (sets view.plane); default flat",    \
-     false},                                                                                   \
-    {"distance", 0, "MM",                                                                      \
-     "flat: the plane's distance from the pith; quarter, end: the view centre's (view."        \
-     "distance_mm)", false},                                                                   \
-    {"height", 0, "MM", "tree height y of the view centre (view.height_mm); default 0", false}, \
-    {"width-mm", 0, "MM", "width of the view in mm (view.width_mm); default 100", false},      \
-    {"tilt", 0, "DEG", "turn the plane about the image's horizontal axis (view.tilt_deg)",     \
-     false},                                                                                   \
-    {"point", 0, "X,Y,Z", "any plane: the image centre in scene mm (with --normal, --axis)",   \
-     false},                                                                                   \
-    {"normal", 0, "X,Y,Z", "any plane: its normal, towards the viewer", false},               \
-    {"axis", 0, "X,Y,Z", "any plane: the image's x direction (projected onto the plane)",     \
-     false},                                                                                   \
-    {"view-deg", 0, "DEG", "viewer turned from the normal towards the image top; default 0",  \
-     false},                                                                                   \
-    {"samples", 0, "N", "samples per pixel along each axis (1-8); default 2", false}
+#define PLANE_OPTIONS                                                                              \
+    {"size", 0, "N|WxH", "image size in pixels; default 1024 (cut), 512 (sweep)", false},          \
+        {"region", 0, "x,y,w,h", "render only this sub-rectangle (same pixels as the full image)", \
+         false},                                                                                   \
+        {"plane", 0, "end|flat|quarter", "cut through the log (sets view.plane); default flat",    \
+         false},                                                                                   \
+        {"distance", 0, "MM",                                                                      \
+         "flat: the plane's distance from the pith; quarter, end: the view centre's (view."        \
+         "distance_mm)",                                                                           \
+         false},                                                                                   \
+        {"height", 0, "MM", "tree height y of the view centre (view.height_mm); default 0",        \
+         false},                                                                                   \
+        {"width-mm", 0, "MM", "width of the view in mm (view.width_mm); default 100", false},      \
+        {"tilt", 0, "DEG", "turn the plane about the image's horizontal axis (view.tilt_deg)",     \
+         false},                                                                                   \
+        {"point", 0, "X,Y,Z", "any plane: the image centre in scene mm (with --normal, --axis)",   \
+         false},                                                                                   \
+        {"normal", 0, "X,Y,Z", "any plane: its normal, towards the viewer", false},                \
+        {"axis", 0, "X,Y,Z", "any plane: the image's x direction (projected onto the plane)",      \
+         false},                                                                                   \
+        {"view-deg", 0, "DEG", "viewer turned from the normal towards the image top; default 0",   \
+         false},                                                                                   \
+    {                                                                                              \
+        "samples", 0, "N", "samples per pixel along each axis (1-8); default 2", false             \
+    }
 
 static const cli_option k_cut_options[] = {
     PLANE_OPTIONS,
@@ -200,8 +204,8 @@ static void describe(const wood_job *job, const char *command, sk_image_metadata
 static const char *const k_color_formats[] = {".png", ".exr", NULL};
 
 /* A colour image: float EXR for .exr, else an 8-bit sRGB PNG. */
-static sk_result write_color(const sk_image *image, const char *path,
-                             const sk_image_metadata *meta, sk_error *err)
+static sk_result write_color(const sk_image *image, const char *path, const sk_image_metadata *meta,
+                             sk_error *err)
 {
     size_t n = strlen(path);
     if (n >= 4 && strcasecmp(path + n - 4, ".exr") == 0) {
@@ -215,7 +219,8 @@ static sk_result write_color(const sk_image *image, const char *path,
 static sk_result write_linear_png(const sk_image *image, const char *path, int bits,
                                   const sk_image_metadata *meta, sk_error *err)
 {
-    sk_png_write_desc png = {.bit_depth = bits, .encoding = SK_PNG_ENCODING_LINEAR, .metadata = meta};
+    sk_png_write_desc png = {
+        .bit_depth = bits, .encoding = SK_PNG_ENCODING_LINEAR, .metadata = meta};
     return sk_image_write_png(image, path, &png, err);
 }
 
@@ -285,8 +290,10 @@ static int run_cut(const cli_command *command, const cli_args *args)
         r = write_color(&shaded, staged_output, &meta, &err);
     }
     if (r == SK_OK && maps) r = write_maps(&job, staged_maps, &albedo, &fibre, &pores, &err);
-    if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
-    else sk_output_set_abort(outputs);
+    if (r == SK_OK)
+        r = sk_output_set_commit(outputs, &err);
+    else
+        sk_output_set_abort(outputs);
     sk_image_free(&shaded);
     sk_image_free(&albedo);
     sk_image_free(&fibre);
@@ -339,8 +346,10 @@ static int run_sweep(const cli_command *command, const cli_args *args)
         sk_progress_bar_update(&bar, (double)(f + 1) / (double)frames);
     }
     sk_progress_bar_end(&bar);
-    if (r == SK_OK) r = sk_output_set_commit(outputs, &err);
-    else sk_output_set_abort(outputs);
+    if (r == SK_OK)
+        r = sk_output_set_commit(outputs, &err);
+    else
+        sk_output_set_abort(outputs);
     sk_image_free(&frame);
     sk_wood_destroy(job.wood);
     return r == SK_OK ? CLI_EXIT_OK : cli_fail_error(&err);
@@ -360,10 +369,11 @@ const cli_command cmd_wood_cut = {
         "--maps DIR adds albedo.png (sRGB), fibre.png (16-bit linear: rgb = 0.5 + 0.5 f,\n"
         "f the unit fibre direction up the tree with x right, y up, z towards the\n"
         "viewer; a tangent map for anisotropic shaders) and pores.png (vessel coverage).",
-    .examples = "  shitsukan wood cut --preset fig9 --size 2048 -o cut.png\n"
-                "  shitsukan wood cut --preset oak --plane quarter --maps oak-maps -o oak.png\n"
-                "  shitsukan wood cut --preset maple --plane end --width-mm 20 -o end.png\n"
-                "  shitsukan wood cut --preset ash --point 0,0,60 --normal 0,0.5,1 --axis 1,0,0 -o o.png",
+    .examples =
+        "  shitsukan wood cut --preset fig9 --size 2048 -o cut.png\n"
+        "  shitsukan wood cut --preset oak --plane quarter --maps oak-maps -o oak.png\n"
+        "  shitsukan wood cut --preset maple --plane end --width-mm 20 -o end.png\n"
+        "  shitsukan wood cut --preset ash --point 0,0,60 --normal 0,0.5,1 --axis 1,0,0 -o o.png",
     .options = k_cut_options,
     .option_count = (int)(sizeof k_cut_options / sizeof k_cut_options[0]),
     .common = CLI_COMMON_ALL,

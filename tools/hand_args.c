@@ -11,21 +11,25 @@
 
 static int parse_side(const char *text, sk_hand_side *side)
 {
-    if (!text || strcmp(text, "right") == 0) *side = SK_HAND_SIDE_RIGHT;
-    else if (strcmp(text, "left") == 0) *side = SK_HAND_SIDE_LEFT;
-    else return cli_fail(CLI_EXIT_USAGE, "--side '%s' must be right or left", text);
+    if (!text || strcmp(text, "right") == 0)
+        *side = SK_HAND_SIDE_RIGHT;
+    else if (strcmp(text, "left") == 0)
+        *side = SK_HAND_SIDE_LEFT;
+    else
+        return cli_fail(CLI_EXIT_USAGE, "--side '%s' must be right or left", text);
     return 0;
 }
 
-int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side, double length_mm,
-                        double breadth_mm, sk_hand_skeleton *skel)
+int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side,
+                        double length_mm, double breadth_mm, sk_hand_skeleton *skel)
 {
     sk_error err = {0};
     sk_hand_anatomy anatomy;
     sk_hand_skeleton_desc desc = {0};
     const char *anatomy_path = cli_get(cmd, args, "anatomy");
     if (anatomy_path) {
-        if (sk_hand_anatomy_load_file(anatomy_path, &anatomy, &err) != SK_OK) return cli_fail_error(&err);
+        if (sk_hand_anatomy_load_file(anatomy_path, &anatomy, &err) != SK_OK)
+            return cli_fail_error(&err);
         desc.anatomy = &anatomy;
     }
     double hl = length_mm, hb = breadth_mm;
@@ -48,7 +52,9 @@ int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_si
 int hand_parse_assignment(const char *option, const char *text, int *dof, double *value)
 {
     const char *eq = strchr(text, '=');
-    if (!eq) return cli_fail(CLI_EXIT_USAGE, "--%s '%s': expected DOF=value, e.g. L.MCP.flex=60", option, text);
+    if (!eq)
+        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': expected DOF=value, e.g. L.MCP.flex=60", option,
+                        text);
     char name[64];
     size_t n = (size_t)(eq - text);
     if (n >= sizeof name) n = sizeof name - 1;
@@ -56,10 +62,12 @@ int hand_parse_assignment(const char *option, const char *text, int *dof, double
     name[n] = '\0';
     *dof = sk_hand_dof_find(name);
     if (*dof < 0)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)",
-                        option, text, name);
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--%s '%s': unknown DOF \"%s\" (see shitsukan hand pose --help)", option,
+                        text, name);
     if (!cli_parse_decimal(eq + 1, value) || fabs(*value) > INPUT_VALUE_MAX)
-        return cli_fail(CLI_EXIT_USAGE, "--%s '%s': the value must be a decimal number in [%.0f, %.0f]", option,
+        return cli_fail(CLI_EXIT_USAGE,
+                        "--%s '%s': the value must be a decimal number in [%.0f, %.0f]", option,
                         text, -INPUT_VALUE_MAX, INPUT_VALUE_MAX);
     return 0;
 }
@@ -67,9 +75,9 @@ int hand_parse_assignment(const char *option, const char *text, int *dof, double
 /* The values of repeatable option `option` ("DOF=value" each), in model units when
    `angles` (degrees to radians; mm stay mm), as given otherwise. `taken[dof]` names the
    option that already set a DOF (shared between the options of one input). */
-static int parse_dof_option(const cli_command *cmd, const cli_args *args, const char *option, bool angles,
-                            const char *taken[SK_HAND_DOF_COUNT], bool given[SK_HAND_DOF_COUNT],
-                            double value[SK_HAND_DOF_COUNT])
+static int parse_dof_option(const cli_command *cmd, const cli_args *args, const char *option,
+                            bool angles, const char *taken[SK_HAND_DOF_COUNT],
+                            bool given[SK_HAND_DOF_COUNT], double value[SK_HAND_DOF_COUNT])
 {
     if (!cli_takes(cmd, option)) return 0;
     const char *values[CLI_MAX_VALUES];
@@ -80,8 +88,8 @@ static int parse_dof_option(const cli_command *cmd, const cli_args *args, const 
         int rc = hand_parse_assignment(option, values[i], &dof, &v);
         if (rc) return rc;
         if (taken[dof])
-            return cli_fail(CLI_EXIT_USAGE, "--%s '%s': %s already has --%s (one value per DOF)", option,
-                            values[i], sk_hand_dof(dof)->name, taken[dof]);
+            return cli_fail(CLI_EXIT_USAGE, "--%s '%s': %s already has --%s (one value per DOF)",
+                            option, values[i], sk_hand_dof(dof)->name, taken[dof]);
         taken[dof] = option;
         given[dof] = true;
         value[dof] = angles && !sk_hand_dof(dof)->translation ? v * SK_DEG_TO_RAD : v;

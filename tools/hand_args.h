@@ -8,8 +8,8 @@
 /* Skeleton from --side, --hand-length, --hand-breadth, --anatomy (each may be absent from
  * the command's options); `side`, `length_mm`, `breadth_mm` are the fallbacks. Returns 0
  * or the exit status after printing the error. */
-int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side, double length_mm,
-                        double breadth_mm, sk_hand_skeleton *skel);
+int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side,
+                        double length_mm, double breadth_mm, sk_hand_skeleton *skel);
 /* "DOF=value" -> the DOF's index and the number (in file units: degrees, mm): a whole
  * decimal number of magnitude at most 1e6. */
 int hand_parse_assignment(const char *option, const char *text, int *dof, double *value);

@@ -16,11 +16,11 @@
 
 typedef enum http_parse_status {
     HTTP_PARSE_OK = 0,
-    HTTP_PARSE_INCOMPLETE, /* no blank line yet: read more */
-    HTTP_PARSE_BAD,        /* 400 */
-    HTTP_PARSE_TOO_LARGE,  /* head beyond HTTP_MAX_HEAD: 431 */
+    HTTP_PARSE_INCOMPLETE,   /* no blank line yet: read more */
+    HTTP_PARSE_BAD,          /* 400 */
+    HTTP_PARSE_TOO_LARGE,    /* head beyond HTTP_MAX_HEAD: 431 */
     HTTP_PARSE_URI_TOO_LONG, /* 414 */
-    HTTP_PARSE_VERSION     /* not HTTP/1.0 or 1.1: 505 */
+    HTTP_PARSE_VERSION       /* not HTTP/1.0 or 1.1: 505 */
 } http_parse_status;
 
 typedef struct http_request {

@@ -14,7 +14,8 @@ static int hex_value(char c)
 
 static bool is_token_char(char c)
 {
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' ||
+           c == '_';
 }
 
 /* Percent-decodes a request target's path part into out; false if malformed. */
@@ -55,7 +56,8 @@ http_parse_status http_parse_request(const char *data, size_t size, http_request
             end = i + 2;
             break;
         }
-        if (i + 3 < size && data[i] == '\r' && data[i + 1] == '\n' && data[i + 2] == '\r' && data[i + 3] == '\n') {
+        if (i + 3 < size && data[i] == '\r' && data[i + 1] == '\n' && data[i + 2] == '\r' &&
+            data[i + 3] == '\n') {
             end = i + 4;
             break;
         }
@@ -112,7 +114,7 @@ bool http_relative_path(const char *path, char *out, size_t size)
     while (*s) {
         const char *e = strchr(s, '/');
         size_t n = e ? (size_t)(e - s) : strlen(s);
-        if (n == 0) return false; /* "//" */
+        if (n == 0) return false;      /* "//" */
         if (s[0] == '.') return false; /* ".", "..", hidden files */
         for (size_t i = 0; i < n; i++) {
             unsigned char c = (unsigned char)s[i];

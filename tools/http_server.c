@@ -45,13 +45,12 @@ static bool send_all(int fd, const void *data, size_t size)
 
 /* Headers every response carries: cross-origin isolation (COOP/COEP, so the page may use
  * SharedArrayBuffer and precise timers), no sniffing, no caching of a changing build. */
-static const char k_common_headers[] =
-    "Cross-Origin-Opener-Policy: same-origin\r\n"
-    "Cross-Origin-Embedder-Policy: require-corp\r\n"
-    "Cross-Origin-Resource-Policy: same-origin\r\n"
-    "X-Content-Type-Options: nosniff\r\n"
-    "Cache-Control: no-cache\r\n"
-    "Connection: close\r\n";
+static const char k_common_headers[] = "Cross-Origin-Opener-Policy: same-origin\r\n"
+                                       "Cross-Origin-Embedder-Policy: require-corp\r\n"
+                                       "Cross-Origin-Resource-Policy: same-origin\r\n"
+                                       "X-Content-Type-Options: nosniff\r\n"
+                                       "Cache-Control: no-cache\r\n"
+                                       "Connection: close\r\n";
 
 static int send_status(int fd, int status, const char *reason, bool head_only, const char *allow)
 {
@@ -60,8 +59,8 @@ static int send_status(int fd, int status, const char *reason, bool head_only, c
     int n = snprintf(head, sizeof head,
                      "HTTP/1.1 %d %s\r\n%sContent-Type: text/plain; charset=utf-8\r\n"
                      "Content-Length: %d\r\n%s%s%s\r\n",
-                     status, reason, k_common_headers, blen, allow ? "Allow: " : "", allow ? allow : "",
-                     allow ? "\r\n" : "");
+                     status, reason, k_common_headers, blen, allow ? "Allow: " : "",
+                     allow ? allow : "", allow ? "\r\n" : "");
     send_all(fd, head, (size_t)n);
     if (!head_only) send_all(fd, body, (size_t)blen);
     return status;
@@ -97,11 +96,16 @@ static int respond(int fd, const char *root_real, const char *data, size_t size)
     http_request req;
     http_parse_status st = http_parse_request(data, size, &req);
     switch (st) {
-    case HTTP_PARSE_OK: break;
-    case HTTP_PARSE_TOO_LARGE: return send_status(fd, 431, "Request Header Fields Too Large", false, NULL);
-    case HTTP_PARSE_URI_TOO_LONG: return send_status(fd, 414, "URI Too Long", false, NULL);
-    case HTTP_PARSE_VERSION: return send_status(fd, 505, "HTTP Version Not Supported", false, NULL);
-    default: return send_status(fd, 400, "Bad Request", false, NULL);
+    case HTTP_PARSE_OK:
+        break;
+    case HTTP_PARSE_TOO_LARGE:
+        return send_status(fd, 431, "Request Header Fields Too Large", false, NULL);
+    case HTTP_PARSE_URI_TOO_LONG:
+        return send_status(fd, 414, "URI Too Long", false, NULL);
+    case HTTP_PARSE_VERSION:
+        return send_status(fd, 505, "HTTP Version Not Supported", false, NULL);
+    default:
+        return send_status(fd, 400, "Bad Request", false, NULL);
     }
     bool head_only = strcmp(req.method, "HEAD") == 0;
     if (!head_only && strcmp(req.method, "GET") != 0)
@@ -112,7 +116,8 @@ static int respond(int fd, const char *root_real, const char *data, size_t size)
     int status = open_file(root_real, req.path, &file, &length, real, sizeof real);
     if (status != 200) return send_status(fd, status, "Not Found", head_only, NULL);
     char head[1024];
-    int n = snprintf(head, sizeof head, "HTTP/1.1 200 OK\r\n%sContent-Type: %s\r\nContent-Length: %lld\r\n\r\n",
+    int n = snprintf(head, sizeof head,
+                     "HTTP/1.1 200 OK\r\n%sContent-Type: %s\r\nContent-Length: %lld\r\n\r\n",
                      k_common_headers, http_mime_type(real), (long long)length);
     bool ok = send_all(fd, head, (size_t)n);
     char buf[65536];

@@ -8,11 +8,10 @@
 
 static void print_tool_help(FILE *out)
 {
-    fprintf(out,
-            "usage: shitsukan <command> [options]\n"
-            "       shitsukan --version | --help\n\n"
-            "Builds how living and natural things look and move from their structure.\n\n"
-            "commands:\n");
+    fprintf(out, "usage: shitsukan <command> [options]\n"
+                 "       shitsukan --version | --help\n\n"
+                 "Builds how living and natural things look and move from their structure.\n\n"
+                 "commands:\n");
     for (int i = 0; cli_commands[i]; i++)
         fprintf(out, "  %-16s %s\n", cli_commands[i]->name, cli_commands[i]->summary);
     fprintf(out, "\n'shitsukan <command> --help' shows a command's options.\n"

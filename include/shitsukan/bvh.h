@@ -44,18 +44,18 @@ extern "C" {
  * children; end sites are joints too (no channels, end_site set), named
  * "<parent>_end". */
 typedef struct sk_bvh {
-    int joint_count;                                 /* joints and end sites */
+    int joint_count; /* joints and end sites */
     char name[SK_BVH_MAX_JOINTS][SK_BVH_NAME_SIZE];
-    int parent[SK_BVH_MAX_JOINTS];                   /* -1 for a ROOT */
+    int parent[SK_BVH_MAX_JOINTS]; /* -1 for a ROOT */
     bool end_site[SK_BVH_MAX_JOINTS];
-    sk_vec3d offset[SK_BVH_MAX_JOINTS];              /* from the parent, in file units */
-    int channel_count[SK_BVH_MAX_JOINTS];            /* 0..6 */
-    int channel_first[SK_BVH_MAX_JOINTS];            /* index of the first channel in a frame */
-    char channel[SK_BVH_MAX_JOINTS][6];              /* 'x','y','z' position, 'X','Y','Z' rotation */
+    sk_vec3d offset[SK_BVH_MAX_JOINTS];   /* from the parent, in file units */
+    int channel_count[SK_BVH_MAX_JOINTS]; /* 0..6 */
+    int channel_first[SK_BVH_MAX_JOINTS]; /* index of the first channel in a frame */
+    char channel[SK_BVH_MAX_JOINTS][6];   /* 'x','y','z' position, 'X','Y','Z' rotation */
     int frame_count;
     int channels_per_frame;
-    double frame_time;                               /* seconds per frame, > 0 */
-    double *motion;                                  /* frame_count x channels_per_frame */
+    double frame_time; /* seconds per frame, > 0 */
+    double *motion;    /* frame_count x channels_per_frame */
 } sk_bvh;
 
 /* ------------------------------------------------------------------ reading */

@@ -72,8 +72,7 @@ typedef enum sk_line_cap {
 /* A straight stroke of `width` pixels centred on the segment, with ROUND caps (so
  * segments drawn one by one join seamlessly). A zero-length line with round caps is a
  * disc of diameter `width`. width <= 0 draws nothing. */
-void sk_draw_line(sk_image *img, float x0, float y0, float x1, float y1, float width,
-                  sk_color c);
+void sk_draw_line(sk_image *img, float x0, float y0, float x1, float y1, float width, sk_color c);
 void sk_draw_line_capped(sk_image *img, float x0, float y0, float x1, float y1, float width,
                          sk_line_cap cap, sk_color c);
 
@@ -149,8 +148,7 @@ typedef enum sk_resize_filter {
  * (free it with free(out->data) or sk_image_free). Fails with SK_ERROR_INVALID_ARGUMENT
  * for a bad source or size < 1, SK_ERROR_LIMIT beyond SK_IMAGE_MAX_DIMENSION or
  * SK_IMAGE_MAX_BYTES. Alpha is not premultiplied: colour and alpha are filtered alike. */
-sk_result sk_image_resize(const sk_image *src, int width, int height, sk_image *out,
-                          sk_error *err);
+sk_result sk_image_resize(const sk_image *src, int width, int height, sk_image *out, sk_error *err);
 sk_result sk_image_resize_filter(const sk_image *src, int width, int height,
                                  sk_resize_filter filter, sk_image *out, sk_error *err);
 
@@ -162,22 +160,22 @@ typedef enum sk_label_position {
 } sk_label_position;
 
 typedef struct sk_contact_sheet_desc {
-    int columns;      /* 0 = ceil(sqrt(count)); range 0..4096 (at most count are used) */
-    int tile_size;    /* 0 = each tile at its own size, cells sized to the largest tile;
-                         > 0 = each tile scaled (aspect kept) to fit tile_size x tile_size;
-                         range 0..16384 */
-    int padding;      /* pixels around and between cells; 0 = 8; range 0..1024 */
-    int text_scale;   /* label text scale; 0 = 2; range 0..64 */
-    int title_scale;  /* title text scale; 0 = text_scale + 1; range 0..64 */
-    const char *title; /* NULL or "" = no title line */
+    int columns;         /* 0 = ceil(sqrt(count)); range 0..4096 (at most count are used) */
+    int tile_size;       /* 0 = each tile at its own size, cells sized to the largest tile;
+                            > 0 = each tile scaled (aspect kept) to fit tile_size x tile_size;
+                            range 0..16384 */
+    int padding;         /* pixels around and between cells; 0 = 8; range 0..1024 */
+    int text_scale;      /* label text scale; 0 = 2; range 0..64 */
+    int title_scale;     /* title text scale; 0 = text_scale + 1; range 0..64 */
+    const char *title;   /* NULL or "" = no title line */
     sk_color background; /* all zero = white {1, 1, 1, 1}; for a transparent sheet use a
                             tiny alpha such as {0, 0, 0, 1e-9f} with channels = 4 */
     sk_color text_color; /* all zero = black {0, 0, 0, 1} */
     int channels;        /* output channels 1..4; 0 = 3 */
     sk_label_position label_position; /* 0 = labels below the tiles */
-    int tile_border;      /* width in pixels of a thin frame drawn around each tile (in the
-                             padding, half-transparent text_color), so pale tiles stand out
-                             from the background; 0 = none; range 0..64 */
+    int tile_border;              /* width in pixels of a thin frame drawn around each tile (in the
+                                     padding, half-transparent text_color), so pale tiles stand out
+                                     from the background; 0 = none; range 0..64 */
     sk_resize_filter tile_filter; /* how tiles are scaled to tile_size; 0 = box when
                                      shrinking, bilinear when enlarging; NEAREST keeps
                                      hard pixels (masks, cell maps) */
@@ -247,16 +245,16 @@ typedef enum sk_legend_position {
 } sk_legend_position;
 
 typedef struct sk_plot_desc {
-    int width, height;   /* 0 = 800 x 500; range 0 or 64..16384 */
+    int width, height;                     /* 0 = 800 x 500; range 0 or 64..16384 */
     const char *title, *x_label, *y_label; /* NULL = none */
-    bool fixed_x, fixed_y; /* false = auto range from the data: x spans the data rounded
-                              out to ticks; y spans the data plus a 3% margin on each
-                              side, rounded out to half ticks; true = [min, max] below */
+    bool fixed_x, fixed_y;            /* false = auto range from the data: x spans the data rounded
+                                         out to ticks; y spans the data plus a 3% margin on each
+                                         side, rounded out to half ticks; true = [min, max] below */
     float x_min, x_max, y_min, y_max; /* used when fixed; finite, min < max */
-    int text_scale;      /* 0 = 2; range 0..16 (the title is drawn one scale larger) */
-    int channels;        /* output channels 1..4; 0 = 3 */
-    bool hide_grid;      /* false = light grid lines at the ticks */
-    sk_legend_position legend; /* 0 = auto corner (only if some series has a label) */
+    int text_scale;                   /* 0 = 2; range 0..16 (the title is drawn one scale larger) */
+    int channels;                     /* output channels 1..4; 0 = 3 */
+    bool hide_grid;                   /* false = light grid lines at the ticks */
+    sk_legend_position legend;        /* 0 = auto corner (only if some series has a label) */
 } sk_plot_desc;
 
 /* The desc with zero fields replaced by their defaults. */
@@ -282,16 +280,15 @@ static inline sk_vec2f sk_plot_map(const sk_plot_layout *l, double x, double y)
 
 /* Computes the layout sk_plot_lines would use (to place annotations on a plot). */
 sk_result sk_plot_compute_layout(const sk_plot_series *series, int series_count,
-                                 const sk_plot_desc *desc, sk_plot_layout *layout,
-                                 sk_error *err);
+                                 const sk_plot_desc *desc, sk_plot_layout *layout, sk_error *err);
 
 /* Draws the series as anti-aliased lines on shared axes with round ticks, tick labels,
  * axis labels, a title, a legend and a grid, into a newly allocated image (free with
  * free(out->data) or sk_image_free). series_count may be 0 (empty axes). Errors name the
  * field and range (e.g. "series[2].count = -1 is out of range [0, 100000000]");
  * SK_ERROR_LIMIT if the text leaves no room for the plot area. `desc` may be NULL. */
-sk_result sk_plot_lines(const sk_plot_series *series, int series_count,
-                        const sk_plot_desc *desc, sk_image *out, sk_error *err);
+sk_result sk_plot_lines(const sk_plot_series *series, int series_count, const sk_plot_desc *desc,
+                        sk_image *out, sk_error *err);
 
 #ifdef __cplusplus
 }

@@ -43,12 +43,12 @@ void sk_gltf_destroy(sk_gltf *gltf);
 
 /* ------------------------------------------------------------- materials */
 typedef struct sk_gltf_material_desc {
-    const char *name;          /* NULL = "material<N>" */
-    float base_color[4];       /* linear RGBA factor in [0, 1]; all zero = (1, 1, 1, 1); an
-                                  alpha below 1 (or a texture alpha below 1) makes the
-                                  material alphaMode BLEND */
-    float metallic;            /* [0, 1]; 0 = dielectric */
-    float roughness;           /* (0, 1]; 0 = 0.5 */
+    const char *name;    /* NULL = "material<N>" */
+    float base_color[4]; /* linear RGBA factor in [0, 1]; all zero = (1, 1, 1, 1); an
+                            alpha below 1 (or a texture alpha below 1) makes the
+                            material alphaMode BLEND */
+    float metallic;      /* [0, 1]; 0 = dielectric */
+    float roughness;     /* (0, 1]; 0 = 0.5 */
     /* Optional textures, embedded as PNG in the binary chunk. base_color: linear RGB(A)
        in [0, 1] (written sRGB as glTF requires); normal: tangent-space, components in
        [-1, 1] (written as 0.5 n + 0.5, linear), 3 channels; a mesh with this material
@@ -57,7 +57,7 @@ typedef struct sk_gltf_material_desc {
        (the caller's image may be freed after the call). */
     const sk_image *base_color_texture;
     const sk_image *normal_texture;
-    float normal_scale;        /* 0 = 1 */
+    float normal_scale; /* 0 = 1 */
     bool double_sided;
     /* Light the surface gives off whatever lights it (glTF's emissive): a linear RGB factor
        in [0, 1] (all zero = none) multiplying emissive_texture (linear RGB in [0, 1],
@@ -81,8 +81,8 @@ sk_result sk_gltf_add_material(sk_gltf *gltf, const sk_gltf_material_desc *desc,
 typedef struct sk_gltf_mesh_desc {
     const char *name;
     const sk_mesh *mesh;
-    bool uv_origin_bottom_left;  /* the mesh's v runs up (OBJ convention) */
-    int material;                /* SK_GLTF_NONE or an index from sk_gltf_add_material */
+    bool uv_origin_bottom_left; /* the mesh's v runs up (OBJ convention) */
+    int material;               /* SK_GLTF_NONE or an index from sk_gltf_add_material */
     /* Skinning (JOINTS_0 / WEIGHTS_0): 4 per vertex; joints index the skin's joint list;
        each vertex's weights are >= 0 and sum to 1 within 1e-3 (renormalised on write to
        the exactness the validator requires); unused slots have weight 0 (their joint is
@@ -110,14 +110,14 @@ sk_result sk_gltf_add_mesh(sk_gltf *gltf, const sk_gltf_mesh_desc *desc, int *ou
  * ignores both there: the joints place the mesh) and name a skin whose joints cover the
  * mesh's joint indices; a skin needs a skinned mesh. */
 typedef struct sk_gltf_node_desc {
-    const char *name;         /* NULL = "node<N>" */
-    int parent;               /* SK_GLTF_NONE = a root of the scene; else an earlier node */
+    const char *name; /* NULL = "node<N>" */
+    int parent;       /* SK_GLTF_NONE = a root of the scene; else an earlier node */
     double translation[3];
-    double rotation[4];       /* unit quaternion x, y, z, w (normalised within 1e-3 of unit
-                                 length, refused farther off); all zero = identity */
-    double scale[3];          /* all zero = (1, 1, 1) */
-    int mesh;                 /* SK_GLTF_NONE or a mesh index */
-    int skin;                 /* SK_GLTF_NONE or a skin index (needs a skinned mesh) */
+    double rotation[4]; /* unit quaternion x, y, z, w (normalised within 1e-3 of unit
+                           length, refused farther off); all zero = identity */
+    double scale[3];    /* all zero = (1, 1, 1) */
+    int mesh;           /* SK_GLTF_NONE or a mesh index */
+    int skin;           /* SK_GLTF_NONE or a skin index (needs a skinned mesh) */
 } sk_gltf_node_desc;
 
 /* A desc with no parent, mesh or skin and the identity transform. */
@@ -160,8 +160,8 @@ sk_result sk_gltf_add_channel(sk_gltf *gltf, int animation, int node, sk_gltf_pa
 
 /* ----------------------------------------------------------------- write */
 typedef struct sk_gltf_write_desc {
-    const char *generator;    /* asset.generator; NULL = "shitsukan <version>" */
-    const char *copyright;    /* NULL = none */
+    const char *generator; /* asset.generator; NULL = "shitsukan <version>" */
+    const char *copyright; /* NULL = none */
 } sk_gltf_write_desc;
 
 /* Writes the document as one .glb file (atomically: a failed write leaves no file). The
@@ -208,9 +208,9 @@ typedef struct sk_gltf_doc_counts {
 sk_gltf_doc_counts sk_gltf_doc_count(const sk_gltf_doc *doc);
 
 typedef struct sk_gltf_doc_node {
-    const char *name;          /* "" when unnamed; owned by the doc */
-    int parent;                /* SK_GLTF_NONE for roots */
-    int mesh, skin;            /* SK_GLTF_NONE when absent */
+    const char *name;                             /* "" when unnamed; owned by the doc */
+    int parent;                                   /* SK_GLTF_NONE for roots */
+    int mesh, skin;                               /* SK_GLTF_NONE when absent */
     double translation[3], rotation[4], scale[3]; /* from TRS or decomposed matrix */
 } sk_gltf_doc_node;
 sk_result sk_gltf_doc_get_node(const sk_gltf_doc *doc, int index, sk_gltf_doc_node *out,
@@ -232,8 +232,7 @@ int sk_gltf_doc_mesh_target_accessor(const sk_gltf_doc *doc, int mesh, int targe
 
 /* A skin's joints (node indices, owned by the doc) and its inverse-bind accessor. */
 sk_result sk_gltf_doc_get_skin(const sk_gltf_doc *doc, int index, const int **out_joints,
-                               int *out_joint_count, int *out_inverse_bind_accessor,
-                               sk_error *err);
+                               int *out_joint_count, int *out_inverse_bind_accessor, sk_error *err);
 
 /* An animation's channels: node, path, and the sampler's input/output accessors. */
 typedef struct sk_gltf_doc_channel {

@@ -89,14 +89,13 @@ const char *sk_hand_link_name(int link);
 int sk_hand_link_point(int link);
 int sk_hand_link_end_point(int link);
 
-
 /* ----------------------------------------------------- anatomy (data file) */
 /* Per-DOF data: limits, relaxed posture (theta_bar, eq. 3.7) and spring stiffness
  * (eq. 3.8). Angles in radians (translations in mm). */
 typedef struct sk_hand_dof_data {
-    double min, max;     /* anatomical limits of the absolute value */
-    double relaxed;      /* theta_bar */
-    double stiffness;    /* k_i > 0; torque units per radian (per mm for translations) */
+    double min, max;  /* anatomical limits of the absolute value */
+    double relaxed;   /* theta_bar */
+    double stiffness; /* k_i > 0; torque units per radian (per mm for translations) */
 } sk_hand_dof_data;
 
 /* Geometry as fractions of hand length (HL) and breadth (HB), after Buchholz et al.
@@ -131,9 +130,9 @@ sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *sou
 
 /* --------------------------------------------------------------- skeleton */
 typedef struct sk_hand_skeleton_desc {
-    double hand_length_mm;  /* 0 = the anatomy's (190 mm); range [60, 400] */
-    double hand_breadth_mm; /* 0 = the anatomy's (85 mm); range [30, 200] */
-    sk_hand_side side;      /* 0 = right */
+    double hand_length_mm;          /* 0 = the anatomy's (190 mm); range [60, 400] */
+    double hand_breadth_mm;         /* 0 = the anatomy's (85 mm); range [30, 200] */
+    sk_hand_side side;              /* 0 = right */
     const sk_hand_anatomy *anatomy; /* NULL = sk_hand_anatomy_default() */
 } sk_hand_skeleton_desc;
 
@@ -198,8 +197,8 @@ typedef struct sk_hand_constraints {
  * (unknown DOF names, non-positive weights or stiffness, malformed JSON) name the key
  * path, e.g. "rows[2].pair: unknown DOF \"L.MPC.flex\"". */
 sk_result sk_hand_constraints_parse(const char *text, size_t length, const char *source_name,
-                                    const sk_hand_skeleton *skeleton,
-                                    sk_hand_constraints *out, sk_error *err);
+                                    const sk_hand_skeleton *skeleton, sk_hand_constraints *out,
+                                    sk_error *err);
 sk_result sk_hand_constraints_load_file(const char *path, const sk_hand_skeleton *skeleton,
                                         sk_hand_constraints *out, sk_error *err);
 /* Appends a row y = slope * x + intercept between two DOFs (absolute angles when
@@ -228,21 +227,21 @@ typedef enum sk_hand_lut_interp {
 } sk_hand_lut_interp;
 
 typedef struct sk_hand_lut_desc {
-    int resolution;   /* grid nodes per axis; 0 = 100; range [8, 1024] */
-    double margin;    /* grid extends this fraction of the sample range beyond it on
-                         every side; 0 = 0.25; range [0, 4] */
-    double weight;    /* multiplies the potential; 0 = 1; range (0, 1e6] */
+    int resolution;            /* grid nodes per axis; 0 = 100; range [8, 1024] */
+    double margin;             /* grid extends this fraction of the sample range beyond it on
+                                  every side; 0 = 0.25; range [0, 4] */
+    double weight;             /* multiplies the potential; 0 = 1; range (0, 1e6] */
     sk_hand_lut_interp interp; /* 0 = Hermite */
 } sk_hand_lut_desc;
 
 typedef struct sk_hand_lut {
     int dof_x, dof_y;
-    int n;                 /* resolution */
+    int n;                   /* resolution */
     double x0, y0, h_x, h_y; /* node (i, j) at (x0 + i h_x, y0 + j h_y) */
     double weight;
     sk_hand_lut_interp interp; /* resolved */
-    double *value;          /* n*n, node (i, j) at value[j * n + i] */
-    double *grad_x, *grad_y; /* exact gradient of the squared distance at the nodes */
+    double *value;             /* n*n, node (i, j) at value[j * n + i] */
+    double *grad_x, *grad_y;   /* exact gradient of the squared distance at the nodes */
 } sk_hand_lut;
 
 /* Builds the tables from `count` samples (xs[i], ys[i]) in radians. */
@@ -260,7 +259,7 @@ double sk_hand_lut_eval(const sk_hand_lut *lut, double x, double y, double *gx, 
 /* ------------------------------------------------------------- solver */
 /* Inputs of one solve: directed torques tau_hat (eq. 3.9) and pinned DOFs. */
 typedef struct sk_hand_input {
-    double torque[SK_HAND_DOF_COUNT];   /* tau_hat; torque units = stiffness x radians */
+    double torque[SK_HAND_DOF_COUNT]; /* tau_hat; torque units = stiffness x radians */
     bool pinned[SK_HAND_DOF_COUNT];
     double pin_value[SK_HAND_DOF_COUNT]; /* absolute values of pinned DOFs (clamped into
                                             the limits) */
@@ -291,9 +290,8 @@ typedef struct sk_hand_solver sk_hand_solver;
  * skeleton, overridden by the constraint file's). `luts` (may be NULL when lut_count is
  * 0) are referenced, not copied: they must outlive the solver. */
 sk_result sk_hand_solver_create(sk_hand_solver **out, const sk_hand_skeleton *skeleton,
-                                const sk_hand_constraints *constraints,
-                                const sk_hand_lut *luts, int lut_count,
-                                const sk_hand_solver_desc *desc, sk_error *err);
+                                const sk_hand_constraints *constraints, const sk_hand_lut *luts,
+                                int lut_count, const sk_hand_solver_desc *desc, sk_error *err);
 void sk_hand_solver_destroy(sk_hand_solver *solver);
 /* Changes one stiffness k_i (> 0) or one row weight (> 0): drops cached factorisations. */
 sk_result sk_hand_solver_set_stiffness(sk_hand_solver *solver, int dof, double k, sk_error *err);
@@ -312,9 +310,9 @@ const double *sk_hand_solver_rhs_constant(const sk_hand_solver *solver);
 
 /* ----------------------------------------------------------- calibration */
 typedef enum sk_hand_weight_rule {
-    SK_HAND_WEIGHT_DEFAULT = 0,       /* = THESIS */
-    SK_HAND_WEIGHT_THESIS,            /* eq. (3.18): w_k = mean l^2 / max_k(mean l^2) */
-    SK_HAND_WEIGHT_INVERSE_VARIANCE   /* w_k = min_k(mean l^2) / mean l^2 */
+    SK_HAND_WEIGHT_DEFAULT = 0,     /* = THESIS */
+    SK_HAND_WEIGHT_THESIS,          /* eq. (3.18): w_k = mean l^2 / max_k(mean l^2) */
+    SK_HAND_WEIGHT_INVERSE_VARIANCE /* w_k = min_k(mean l^2) / mean l^2 */
 } sk_hand_weight_rule;
 
 typedef struct sk_hand_fit {
@@ -342,10 +340,10 @@ typedef struct sk_hand_samples {
     bool present[SK_HAND_DOF_COUNT];
     double *column[SK_HAND_DOF_COUNT]; /* radians / mm; NULL if absent */
     /* With a group column (the trial or person of each sample): */
-    int group_count;                   /* distinct values, numbered in order of appearance;
-                                          0 without a group column */
-    int *group;                        /* count entries; NULL without a group column */
-    char (*group_name)[64];            /* group_count names */
+    int group_count;        /* distinct values, numbered in order of appearance;
+                               0 without a group column */
+    int *group;             /* count entries; NULL without a group column */
+    char (*group_name)[64]; /* group_count names */
     /* Unit check: the largest |angle| in the rotational columns (radians after
        conversion) and whether it suggests the wrong --units: degrees that all lie
        within +-pi (radians read as degrees), or radians beyond 2 pi. */
@@ -418,8 +416,8 @@ typedef enum sk_hand_potential_method {
 
 typedef struct sk_hand_potential_desc {
     sk_hand_potential_method method; /* 0 = mixture */
-    int max_components;    /* mixture: 0 = 12; range [1, 16]; counts tried: 1, 2, 3, 4, 6,
-                              8, 12, 16 up to it */
+    int max_components;              /* mixture: 0 = 12; range [1, 16]; counts tried: 1, 2, 3, 4, 6,
+                                        8, 12, 16 up to it */
     int components;        /* mixture: 0 = chosen on held-out samples; else fixed [1, 16] */
     double prior_strength; /* pseudo-samples of the base set's Gaussian that the mean and
                               covariance shrink toward; 0 = chosen by held-out
@@ -431,18 +429,18 @@ typedef struct sk_hand_potential_desc {
     /* The pin patterns the held-out choices (prior strength, component count) are made
        for: pin these DOFs, predict the others. NULL = every calibrated DOF alone. */
     const sk_hand_pin_set *pin_sets;
-    int pin_set_count;      /* range [0, 16] */
+    int pin_set_count; /* range [0, 16] */
     /* PAIRS: the candidate pairs X:Y (row y = A x + b, fitted on the samples' moments
        shrunk toward the base set's Gaussian); NULL = every ordered pair of calibrated DOFs */
     const int (*pairs)[2];
-    int pair_count;          /* range [0, 256] */
+    int pair_count;                  /* range [0, 256] */
     sk_hand_weight_rule weight_rule; /* of the fitted rows; 0 = INVERSE_VARIANCE read in
                                         stiffness units (a row whose spread about its line
                                         is a spring's, 20 degrees, weighs 1); THESIS = eq.
                                         3.18 over the chosen rows */
-    double weight_scale;     /* multiplies the fitted rows' weights; 0 = chosen on held-out
-                                samples from 1/4, 1/2, 1, ..., 64; range [0, 1e6] */
-    int max_pairs;           /* fitted rows at most; 0 = 16; range [1, 64] */
+    double weight_scale;             /* multiplies the fitted rows' weights; 0 = chosen on held-out
+                                        samples from 1/4, 1/2, 1, ..., 64; range [0, 1e6] */
+    int max_pairs;                   /* fitted rows at most; 0 = 16; range [1, 64] */
 } sk_hand_potential_desc;
 
 typedef struct sk_hand_potential_component {
@@ -454,15 +452,15 @@ typedef struct sk_hand_potential_component {
 } sk_hand_potential_component;
 
 typedef struct sk_hand_potential {
-    int dof_count;                 /* calibrated DOFs (joint angles present in the samples) */
+    int dof_count; /* calibrated DOFs (joint angles present in the samples) */
     int dof[SK_HAND_DOF_COUNT];
-    double scale;                  /* K + A'WA = scale x precision (1/rad^2) on them, so
-                                      that torques keep the base set's units */
-    int sample_count;              /* samples fitted */
-    double prior_strength;         /* resolved (pseudo-samples) */
-    double weight_scale;           /* PAIRS: resolved scale of the fitted rows; else 0 */
-    int pair_count;                /* PAIRS: fitted rows (in component 0, after the base
-                                      rows kept) */
+    double scale;          /* K + A'WA = scale x precision (1/rad^2) on them, so
+                              that torques keep the base set's units */
+    int sample_count;      /* samples fitted */
+    double prior_strength; /* resolved (pseudo-samples) */
+    double weight_scale;   /* PAIRS: resolved scale of the fitted rows; else 0 */
+    int pair_count;        /* PAIRS: fitted rows (in component 0, after the base
+                              rows kept) */
     int component_count;
     sk_hand_potential_component *component; /* allocated */
 } sk_hand_potential;
@@ -526,42 +524,41 @@ typedef enum sk_hand_eval_model {
                                        around the built-in relaxed posture */
 } sk_hand_eval_model;
 
-
 typedef struct sk_hand_evaluation_desc {
-    int folds;              /* contiguous blocks of samples; 0 = 5; range [2, 1000]; with
-                               groups, at most this many folds of whole groups (groups
-                               dealt round-robin in order of appearance), 0 = one fold per
-                               group */
-    bool by_group;          /* hold out whole groups (samples->group) */
-    int pca_components;     /* k; 0 = 6; range [1, calibrated DOFs] (clamped) */
+    int folds;          /* contiguous blocks of samples; 0 = 5; range [2, 1000]; with
+                           groups, at most this many folds of whole groups (groups
+                           dealt round-robin in order of appearance), 0 = one fold per
+                           group */
+    bool by_group;      /* hold out whole groups (samples->group) */
+    int pca_components; /* k; 0 = 6; range [1, calibrated DOFs] (clamped) */
     sk_hand_eval_model model;
-    sk_hand_potential_desc potential;     /* CALIBRATED */
-    const sk_hand_constraints *fixed;     /* FIXED (NULL = springs only) */
-    const int (*pairs)[2];                /* PAIRS, LUT: at most 64 */
+    sk_hand_potential_desc potential; /* CALIBRATED */
+    const sk_hand_constraints *fixed; /* FIXED (NULL = springs only) */
+    const int (*pairs)[2];            /* PAIRS, LUT: at most 64 */
     int pair_count;
-    sk_hand_lut_desc lut;                 /* LUT */
-    sk_hand_weight_rule weight_rule;      /* PAIRS */
-    double weight_scale;                  /* PAIRS: 0 = 1; range (0, 1e6] */
-    const sk_hand_solver_desc *solver;    /* NULL = defaults */
+    sk_hand_lut_desc lut;              /* LUT */
+    sk_hand_weight_rule weight_rule;   /* PAIRS */
+    double weight_scale;               /* PAIRS: 0 = 1; range (0, 1e6] */
+    const sk_hand_solver_desc *solver; /* NULL = defaults */
     sk_progress progress;
 } sk_hand_evaluation_desc;
 
 typedef struct sk_hand_pin_result {
     sk_hand_pin_set pins;
-    int joint_count;                 /* unpinned calibrated DOFs */
+    int joint_count; /* unpinned calibrated DOFs */
     int joint[SK_HAND_DOF_COUNT];
     /* RMS errors in radians, per joint and over all joints and samples */
     double model[SK_HAND_DOF_COUNT], mean[SK_HAND_DOF_COUNT], linear[SK_HAND_DOF_COUNT],
         pca[SK_HAND_DOF_COUNT];
     double model_all, mean_all, linear_all, pca_all;
-    int solves, unconverged;         /* model solves and those that did not converge
-                                        (their result is kept: the last iterate) */
+    int solves, unconverged; /* model solves and those that did not converge
+                                (their result is kept: the last iterate) */
     double max_residual;
 } sk_hand_pin_result;
 
 typedef struct sk_hand_evaluation {
     int sample_count, fold_count, dof_count, pca_k;
-    double mean_components;          /* CALIBRATED: mean over the folds */
+    double mean_components; /* CALIBRATED: mean over the folds */
     int pin_set_count;
     sk_hand_pin_result result[SK_HAND_EVAL_MAX_PIN_SETS];
 } sk_hand_evaluation;
@@ -603,18 +600,19 @@ sk_result sk_hand_plot_evaluation(const sk_hand_evaluation *eval, const char *mo
  * person, trial, frame, then the 12 DOFs in degrees; comment lines (#) say how it was
  * made. Deterministic for a seed. */
 typedef struct sk_hand_synthetic_desc {
-    int people;            /* 0 = 6; range [1, 100] */
-    int trials;            /* trials per person and grasp type; 0 = 2; range [1, 100] */
-    int frames;            /* frames per trial; 0 = 50; range [5, 1000] */
-    double noise_deg;      /* glove noise per sample; 0 = 2; range [0, 20] (negative = 0) */
+    int people;       /* 0 = 6; range [1, 100] */
+    int trials;       /* trials per person and grasp type; 0 = 2; range [1, 100] */
+    int frames;       /* frames per trial; 0 = 50; range [5, 1000] */
+    double noise_deg; /* glove noise per sample; 0 = 2; range [0, 20] (negative = 0) */
     uint64_t seed;
 } sk_hand_synthetic_desc;
 
 /* The CSV text (NUL-terminated, free with free()). */
-sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char **text, size_t *length,
-                                       sk_error *err);
+sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char **text,
+                                       size_t *length, sk_error *err);
 /* The same written to a file (atomically). */
-sk_result sk_hand_synthetic_grasps_write(const sk_hand_synthetic_desc *desc, const char *path, sk_error *err);
+sk_result sk_hand_synthetic_grasps_write(const sk_hand_synthetic_desc *desc, const char *path,
+                                         sk_error *err);
 
 /* -------------------------------------------------------------- animation */
 typedef enum sk_hand_interp {
@@ -627,18 +625,18 @@ typedef enum sk_hand_interp {
 /* One key: partial inputs (pins and torques on some DOFs). */
 typedef struct sk_hand_key {
     bool has_pin[SK_HAND_DOF_COUNT];
-    double pin[SK_HAND_DOF_COUNT];      /* absolute, radians / mm */
+    double pin[SK_HAND_DOF_COUNT]; /* absolute, radians / mm */
     bool has_torque[SK_HAND_DOF_COUNT];
     double torque[SK_HAND_DOF_COUNT];
 } sk_hand_key;
 
 typedef struct sk_hand_animation {
-    char constraints[256];   /* "natural", "yasumuro-table-3.2" or a file path */
+    char constraints[256]; /* "natural", "yasumuro-table-3.2" or a file path */
     sk_hand_side side;
     double hand_length_mm, hand_breadth_mm; /* 0 = defaults */
     sk_hand_interp interp;
-    int steps;               /* frames from one key to the next; default 30 */
-    double fps;              /* default 30 */
+    int steps;  /* frames from one key to the next; default 30 */
+    double fps; /* default 30 */
     int key_count;
     sk_hand_key keys[SK_HAND_MAX_KEYS];
 } sk_hand_animation;
@@ -662,8 +660,8 @@ double sk_hand_interpolate(sk_hand_interp interp, double p0, double p1, double p
  * "Hand" with 6 channels (X/Y/Z position, then Zrotation Yrotation Xrotation), every
  * other joint 3 channels in the model's order Zrotation Yrotation Xrotation (degrees),
  * rotations relative to the rest pose. `dofs` holds frame_count x SK_HAND_DOF_COUNT. */
-sk_result sk_hand_bvh_write(const sk_hand_skeleton *skeleton, const double *dofs,
-                            int frame_count, double frame_time, const char *path, sk_error *err);
+sk_result sk_hand_bvh_write(const sk_hand_skeleton *skeleton, const double *dofs, int frame_count,
+                            double frame_time, const char *path, sk_error *err);
 sk_result sk_hand_bvh_write_stream(const sk_hand_skeleton *skeleton, const double *dofs,
                                    int frame_count, double frame_time, FILE *out);
 
@@ -689,8 +687,7 @@ sk_result sk_hand_angles_write_csv(const double *dofs, int frame_count, double f
 /* A pose as JSON: {"side": ..., "dofs_deg": {name: value...}, "points_mm": {...}}. */
 sk_result sk_hand_pose_write_json(const sk_hand_skeleton *skeleton,
                                   const double dofs[SK_HAND_DOF_COUNT],
-                                  const sk_hand_solve_info *info, const char *path,
-                                  sk_error *err);
+                                  const sk_hand_solve_info *info, const char *path, sk_error *err);
 
 /* ---------------------------------------------------------------- pictures */
 /* Stick figures of posed skeletons: bones as anti-aliased lines, joints as discs, one
@@ -722,19 +719,19 @@ typedef enum sk_hand_framing {
 } sk_hand_framing;
 
 typedef struct sk_hand_draw_desc {
-    int width, height;        /* whole picture in pixels; 0 = 400 per view x 480;
-                                 range 0 or 64..8192 */
-    int view_count;           /* side-by-side panels; 0 = 2; range 0..4 */
+    int width, height;                          /* whole picture in pixels; 0 = 400 per view x 480;
+                                                   range 0 or 64..8192 */
+    int view_count;                             /* side-by-side panels; 0 = 2; range 0..4 */
     sk_hand_view views[SK_HAND_DRAW_MAX_VIEWS]; /* DEFAULT entries: see sk_hand_view */
-    sk_hand_framing framing;  /* 0 = REACH */
-    int text_scale;           /* bitmap-font scale of titles and labels; 0 = 2 if the
-                                 picture is at least 400 pixels high, else 1; range 0..8 */
-    const char *caption;      /* NULL or "" = none; a line under the panels (e.g. the
-                                 driven DOFs and their values), wrapped onto two lines at
-                                 ", " when too wide, shrunk or cut if still too wide */
-    bool label_points;        /* write every joint's name beside it ("I.MCP", ...) */
-    bool hide_panel_titles;   /* false = each panel's view name above it */
-    bool hide_cues;           /* false = forearm end, direction arrows and scale bar */
+    sk_hand_framing framing;                    /* 0 = REACH */
+    int text_scale;         /* bitmap-font scale of titles and labels; 0 = 2 if the
+                               picture is at least 400 pixels high, else 1; range 0..8 */
+    const char *caption;    /* NULL or "" = none; a line under the panels (e.g. the
+                               driven DOFs and their values), wrapped onto two lines at
+                               ", " when too wide, shrunk or cut if still too wide */
+    bool label_points;      /* write every joint's name beside it ("I.MCP", ...) */
+    bool hide_panel_titles; /* false = each panel's view name above it */
+    bool hide_cues;         /* false = forearm end, direction arrows and scale bar */
 } sk_hand_draw_desc;
 
 /* Where a panel shows the world: a world point p lands at pixel
@@ -743,17 +740,17 @@ typedef struct sk_hand_draw_desc {
  * farther than the wrist fade toward the background (a depth cue). */
 typedef struct sk_hand_panel {
     sk_hand_view view;
-    int x0, y0, width, height;     /* the panel's rectangle in the picture */
-    sk_vec3d right, up, toward;    /* world unit vectors of screen right, screen up and
-                                      toward the viewer (right = up x toward) */
-    double origin_x, origin_y;     /* pixel position of the world origin */
+    int x0, y0, width, height;  /* the panel's rectangle in the picture */
+    sk_vec3d right, up, toward; /* world unit vectors of screen right, screen up and
+                                   toward the viewer (right = up x toward) */
+    double origin_x, origin_y;  /* pixel position of the world origin */
 } sk_hand_panel;
 
 typedef struct sk_hand_draw_layout {
     int width, height, text_scale;
     int view_count;
     sk_hand_panel panel[SK_HAND_DRAW_MAX_VIEWS];
-    double pixels_per_mm;          /* the same in every panel */
+    double pixels_per_mm; /* the same in every panel */
 } sk_hand_draw_layout;
 
 /* The desc with zero fields replaced by their defaults. */
@@ -798,12 +795,10 @@ sk_result sk_hand_plot_angles(const double *dofs, int frame_count, const int *do
 /* The DOFs of an animation worth plotting: the driven ones first (in DOF order), then the
  * others whose range over the frames is at least `min_range` (radians), largest range
  * first, at most `max_count` in all. Returns the count written to `out`. */
-int sk_hand_moving_dofs(const double *dofs, int frame_count,
-                        const bool driven[SK_HAND_DOF_COUNT], double min_range, int *out,
-                        int max_count);
+int sk_hand_moving_dofs(const double *dofs, int frame_count, const bool driven[SK_HAND_DOF_COUNT],
+                        double min_range, int *out, int max_count);
 /* DOFs that an animation drives: pinned, or given a non-zero torque, in some key. */
 void sk_hand_animation_driven(const sk_hand_animation *anim, bool driven[SK_HAND_DOF_COUNT]);
-
 
 /* ============================================================== hand surface */
 /* The skin surface of thesis 4.1 built from the skeleton (no scan ships with the
@@ -841,16 +836,16 @@ typedef struct sk_hand_flesh_pad {
 } sk_hand_flesh_pad;
 
 typedef struct sk_hand_flesh {
-    double reference_breadth_mm;       /* hand breadth of the sizes below (85) */
+    double reference_breadth_mm; /* hand breadth of the sizes below (85) */
     sk_hand_flesh_finger finger[SK_HAND_FINGER_COUNT];
-    double palm_palmar_shift_mm;       /* palm flesh centre palmar of the metacarpals */
+    double palm_palmar_shift_mm;                 /* palm flesh centre palmar of the metacarpals */
     double wrist_breadth_mm, wrist_thickness_mm; /* at the wrist crease */
-    double stump_length_mm;            /* forearm kept below the wrist */
+    double stump_length_mm;                      /* forearm kept below the wrist */
     sk_hand_flesh_pad thenar, hypothenar;
-    double web_reach;                  /* webs reach this fraction of the proximal phalanx */
+    double web_reach; /* webs reach this fraction of the proximal phalanx */
     double web_thickness_mm;
     double thumb_web_thickness_mm;
-    double nail_length, nail_breadth;  /* fractions of the distal segment / its breadth */
+    double nail_length, nail_breadth; /* fractions of the distal segment / its breadth */
     double nail_thickness_mm;
     double blend_joint_mm, blend_root_mm, blend_palm_mm; /* smooth-union radii */
 } sk_hand_flesh;
@@ -945,9 +940,9 @@ typedef struct sk_hand_defect {
     int vertex_count;           /* vertices of the moved links (the denominator) */
 } sk_hand_defect;
 /* Measures the defect of a pose against the relaxed mesh for the links of `finger`. */
-sk_result sk_hand_surface_defect(const sk_hand_surface *surface, const double dofs[SK_HAND_DOF_COUNT],
-                                 sk_hand_skinning method, sk_hand_finger finger,
-                                 sk_hand_defect *out, sk_error *err);
+sk_result sk_hand_surface_defect(const sk_hand_surface *surface,
+                                 const double dofs[SK_HAND_DOF_COUNT], sk_hand_skinning method,
+                                 sk_hand_finger finger, sk_hand_defect *out, sk_error *err);
 
 /* ------------------------------------------------------------- levels of detail */
 #define SK_HAND_LOD_COUNT 3
@@ -998,21 +993,21 @@ typedef struct sk_hand_gltf_desc {
     /* Levels of detail, finest first, all built on one skeleton (a surface and its
        sk_hand_surface_simplify results); each is a mesh node sharing the one skin. */
     const sk_hand_surface *const *lods;
-    int lod_count;                /* [1, 8] */
-    const double *dofs;           /* frame_count x SK_HAND_DOF_COUNT absolute DOF values */
-    int frame_count;              /* [1, 1000000]; more than 1 needs `animation` */
-    bool animation;               /* write the frames as an animation (the nodes then stand
-                                     in the bind pose); false: the nodes stand in the one
-                                     pose given */
-    double fps;                   /* key rate of the animation; 0 = 30; (0, 1000] */
-    sk_hand_weights weights;      /* 0 = smooth; NEAREST gives every vertex one joint (the
-                                     thesis's rigid links) */
-    const sk_image *albedo;       /* the atlas's albedo (sk_hand_texture_bake); NULL = a
-                                     plain skin colour and no UVs */
-    const sk_image *normal_map;   /* its normal map; NULL = none (needs albedo) */
+    int lod_count;              /* [1, 8] */
+    const double *dofs;         /* frame_count x SK_HAND_DOF_COUNT absolute DOF values */
+    int frame_count;            /* [1, 1000000]; more than 1 needs `animation` */
+    bool animation;             /* write the frames as an animation (the nodes then stand
+                                   in the bind pose); false: the nodes stand in the one
+                                   pose given */
+    double fps;                 /* key rate of the animation; 0 = 30; (0, 1000] */
+    sk_hand_weights weights;    /* 0 = smooth; NEAREST gives every vertex one joint (the
+                                   thesis's rigid links) */
+    const sk_image *albedo;     /* the atlas's albedo (sk_hand_texture_bake); NULL = a
+                                   plain skin colour and no UVs */
+    const sk_image *normal_map; /* its normal map; NULL = none (needs albedo) */
     sk_hand_gltf_material material;
-    double texture_weight;        /* w of the blend; 0 = 0.7 (the thesis's 0.3 : 0.7);
-                                     [0, 1] */
+    double texture_weight; /* w of the blend; 0 = 0.7 (the thesis's 0.3 : 0.7);
+                              [0, 1] */
 } sk_hand_gltf_desc;
 
 /* Adds the hand to a document (nodes, skin, meshes, material, animation). Errors name the
@@ -1026,7 +1021,8 @@ sk_result sk_hand_gltf_write(const sk_hand_gltf_desc *desc, const char *path, sk
  * the format sk_hand_pose_write_json writes (its other keys are accepted); DOFs not given
  * keep their relaxed values. Errors name the key path. */
 sk_result sk_hand_pose_parse(const char *text, size_t length, const char *source_name,
-                             const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT], sk_error *err);
+                             const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT],
+                             sk_error *err);
 sk_result sk_hand_pose_load_file(const char *path, const sk_hand_skeleton *skeleton,
                                  double dofs[SK_HAND_DOF_COUNT], sk_error *err);
 
@@ -1035,13 +1031,13 @@ sk_result sk_hand_pose_load_file(const char *path, const sk_hand_skeleton *skele
  * 13-16 ring; 17-20 little (base to tip). Joint centres of the skeleton, fingertips at
  * the ends of the distal links (where the surface's tips are). */
 #define SK_HAND_LANDMARK_COUNT 21
-const char *sk_hand_landmark_name(int landmark);   /* "wrist", "thumb_cmc", ..., NULL outside */
-int sk_hand_landmark_point(int landmark);          /* the skeleton point (sk_hand_point_name) */
+const char *sk_hand_landmark_name(int landmark); /* "wrist", "thumb_cmc", ..., NULL outside */
+int sk_hand_landmark_point(int landmark);        /* the skeleton point (sk_hand_point_name) */
 /* Per frame (frame_count x SK_HAND_DOF_COUNT dofs): CSV "frame,landmark,name,x_mm,y_mm,z_mm"
  * or JSON {"landmarks": [names], "frames": [[[x, y, z] x 21] per frame]}. */
-sk_result sk_hand_landmarks_write(const sk_hand_skeleton *skeleton, const double *dofs, int frame_count,
-                                  sk_hand_positions_format format, const char *path, sk_error *err);
-
+sk_result sk_hand_landmarks_write(const sk_hand_skeleton *skeleton, const double *dofs,
+                                  int frame_count, sk_hand_positions_format format,
+                                  const char *path, sk_error *err);
 
 /* ------------------------------------------------------------- appearance */
 /* The skin texture of the atlas (sk_hand_surface_export_mesh's UVs), for the thesis's
@@ -1058,12 +1054,12 @@ typedef struct sk_hand_texture_desc {
     int size;                   /* atlas width = height in pixels; 0 = 1024; [64, 8192] */
     const sk_image *back_photo; /* NULL = generated colour */
     const sk_image *palm_photo;
-    const sk_skin *back_skin;   /* NULL = no microrelief on the back */
-    const sk_skin *palm_skin;   /* NULL = none on the palm */
-    double relief_scale;        /* multiplies the microrelief's height; 0 = 1; [0, 100] */
-    double crease_depth_mm;     /* depth of the joint and palm creases; 0 = 0.25; [0, 5] */
-    double seam_width;          /* palm and back blend where |normal.z| < this; 0 = 0.3;
-                                   (0, 1] */
+    const sk_skin *back_skin; /* NULL = no microrelief on the back */
+    const sk_skin *palm_skin; /* NULL = none on the palm */
+    double relief_scale;      /* multiplies the microrelief's height; 0 = 1; [0, 100] */
+    double crease_depth_mm;   /* depth of the joint and palm creases; 0 = 0.25; [0, 5] */
+    double seam_width;        /* palm and back blend where |normal.z| < this; 0 = 0.3;
+                                 (0, 1] */
 } sk_hand_texture_desc;
 
 /* Bakes the albedo (RGB, linear) and the tangent-space normal map (RGB, components
@@ -1118,8 +1114,8 @@ typedef double (*sk_hand_sdf_fn)(void *user, sk_vec3d p, sk_vec3d *gradient);
  * refined onto the implicit surface, so the scans sample the smooth truth and not its
  * facets, and distances to the truth use it. Without it the mesh is the truth. */
 typedef struct sk_hand_scan_target_desc {
-    const sk_mesh *mesh;   /* required: triangles, hand frame, mm (copied) */
-    sk_hand_sdf_fn sdf;    /* NULL = the mesh is the true surface */
+    const sk_mesh *mesh; /* required: triangles, hand frame, mm (copied) */
+    sk_hand_sdf_fn sdf;  /* NULL = the mesh is the true surface */
     void *sdf_user;
 } sk_hand_scan_target_desc;
 
@@ -1128,28 +1124,29 @@ typedef struct sk_hand_scan_target sk_hand_scan_target;
 /* Builds the ray-casting structure (a bounding volume hierarchy of the triangles, built on
  * one thread: see docs/hand-scan.md for why not Embree). Errors: no triangles, a
  * non-finite vertex, more than 2^26 triangles. */
-sk_result sk_hand_scan_target_create(sk_hand_scan_target **out, const sk_hand_scan_target_desc *desc,
-                                     sk_error *err);
+sk_result sk_hand_scan_target_create(sk_hand_scan_target **out,
+                                     const sk_hand_scan_target_desc *desc, sk_error *err);
 void sk_hand_scan_target_destroy(sk_hand_scan_target *target);
 /* The hand surface as a scan target: its mesh, refined onto its implicit field. The
  * surface must outlive the target. */
-sk_result sk_hand_scan_target_from_surface(sk_hand_scan_target **out, const sk_hand_surface *surface,
-                                           sk_error *err);
+sk_result sk_hand_scan_target_from_surface(sk_hand_scan_target **out,
+                                           const sk_hand_surface *surface, sk_error *err);
 /* The plaster cast of 4.1.1: the hand surface meshed around the skeleton in the pose
  * `dofs` (a copy of the skeleton whose relaxed posture is that pose, written to
  * `cast_skeleton`: the pose the patches are fitted in and move from), and its scan
  * target. Free with sk_hand_scan_target_destroy, then sk_hand_surface_destroy. */
 sk_result sk_hand_scan_cast(const sk_hand_skeleton *skeleton, const double dofs[SK_HAND_DOF_COUNT],
-                            const sk_hand_surface_desc *surface_desc, sk_hand_skeleton *cast_skeleton,
-                            sk_hand_surface **surface, sk_hand_scan_target **target, sk_error *err);
+                            const sk_hand_surface_desc *surface_desc,
+                            sk_hand_skeleton *cast_skeleton, sk_hand_surface **surface,
+                            sk_hand_scan_target **target, sk_error *err);
 /* Distance (mm, >= 0) from p to the true surface: |sdf| refined by one Newton step along
  * the gradient when an implicit is given, else the distance to the nearest triangle. */
 double sk_hand_scan_target_distance(const sk_hand_scan_target *target, sk_vec3d p);
 /* First hit of the ray o + t d (d need not be unit; t in (t_min, t_max)) with the mesh:
  * returns false on a miss; the hit parameter and the unit geometric normal facing the
  * ray's origin. */
-bool sk_hand_scan_target_raycast(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d, double t_min,
-                                 double t_max, double *t, sk_vec3d *normal);
+bool sk_hand_scan_target_raycast(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d,
+                                 double t_min, double t_max, double *t, sk_vec3d *normal);
 
 /* --------------------------------------------------------------- markers */
 /* The 9 marker bumps on the cast, placed where both scans see them (4.1.1): spheres
@@ -1187,17 +1184,18 @@ typedef enum sk_hand_scan_side {
  * wider and its centre less certain), then quantised to depth_step_mm. The table (z = 0)
  * is scanned too, and removed later by a depth threshold. */
 typedef struct sk_hand_scanner_desc {
-    int lines;             /* scan lines (x = const); 0 = 512; range [8, 4096] */
-    int points;            /* points per line; 0 = 512; range [8, 4096] */
-    double size_x_mm;      /* along the lines' spacing; 0 = 250; range [10, 2000] */
-    double size_y_mm;      /* along a line; 0 = 200; range [10, 2000] */
-    double size_z_mm;      /* depth range; 0 = 200; range [10, 2000] */
-    double depth_step_mm;  /* depth quantisation; 0 = 0.2; range [1e-4, 10] */
-    double noise_mm;       /* depth noise sigma at normal view; 0 = 0.05; range [0, 10] */
-    bool no_noise;         /* true = no noise (noise_mm ignored) */
+    int lines;                /* scan lines (x = const); 0 = 512; range [8, 4096] */
+    int points;               /* points per line; 0 = 512; range [8, 4096] */
+    double size_x_mm;         /* along the lines' spacing; 0 = 250; range [10, 2000] */
+    double size_y_mm;         /* along a line; 0 = 200; range [10, 2000] */
+    double size_z_mm;         /* depth range; 0 = 200; range [10, 2000] */
+    double depth_step_mm;     /* depth quantisation; 0 = 0.2; range [1e-4, 10] */
+    double noise_mm;          /* depth noise sigma at normal view; 0 = 0.05; range [0, 10] */
+    bool no_noise;            /* true = no noise (noise_mm ignored) */
     double triangulation_deg; /* camera angle off the vertical; 0 = 30; range [1, 80] */
-    double grazing_deg;    /* steepest measurable incidence; 0 = 80; range [10, 89.9] */
-    double table_threshold_mm; /* samples at z below this are the table; 0 = 1.0; range [0.01, 100] */
+    double grazing_deg;       /* steepest measurable incidence; 0 = 80; range [10, 89.9] */
+    double
+        table_threshold_mm; /* samples at z below this are the table; 0 = 1.0; range [0.01, 100] */
 } sk_hand_scanner_desc;
 
 sk_hand_scanner_desc sk_hand_scanner_desc_resolved(const sk_hand_scanner_desc *desc);
@@ -1217,10 +1215,10 @@ typedef struct sk_hand_range_scan {
     sk_hand_scan_side side;
     int lines, points;
     double step_x_mm, step_y_mm, table_threshold_mm;
-    sk_hand_rigid placement;  /* hand frame -> this scanner's frame (where the cast lay) */
-    float *depth;             /* lines * points, [i * points + j]: measured z (mm), NAN if none */
-    float *true_depth;        /* the exact z of the surface the sample saw (before noise) */
-    uint8_t *kind;            /* sk_hand_sample_kind */
+    sk_hand_rigid placement; /* hand frame -> this scanner's frame (where the cast lay) */
+    float *depth;            /* lines * points, [i * points + j]: measured z (mm), NAN if none */
+    float *true_depth;       /* the exact z of the surface the sample saw (before noise) */
+    uint8_t *kind;           /* sk_hand_sample_kind */
     int marker_points[SK_HAND_MARKER_COUNT]; /* samples on each marker */
 } sk_hand_range_scan;
 
@@ -1228,14 +1226,15 @@ typedef struct sk_hand_range_scan {
  * and turned over about the scanner's x axis, then turned 3 deg about z, tilted 1.5 deg,
  * shifted (+6, -4) mm and resting on the table again: the displacement a real second scan
  * has, which registration must undo. Fails if the target does not fit the volume. */
-sk_result sk_hand_scan_placements(const sk_hand_scan_target *target, const sk_hand_scanner_desc *desc,
+sk_result sk_hand_scan_placements(const sk_hand_scan_target *target,
+                                  const sk_hand_scanner_desc *desc,
                                   sk_hand_rigid placement[SK_HAND_SCAN_SIDE_COUNT], sk_error *err);
 /* Scans the target (and the markers, may be NULL) lying at `placement`. `seed` keys the
  * noise (hash of seed, side, line, point). */
 sk_result sk_hand_scan_simulate(const sk_hand_scan_target *target, const sk_hand_markers *markers,
                                 sk_hand_scan_side side, const sk_hand_rigid *placement,
-                                const sk_hand_scanner_desc *desc, uint64_t seed, sk_hand_range_scan *out,
-                                sk_error *err);
+                                const sk_hand_scanner_desc *desc, uint64_t seed,
+                                sk_hand_range_scan *out, sk_error *err);
 void sk_hand_range_scan_free(sk_hand_range_scan *scan);
 /* Scanner-frame position of sample (i, j) at depth z. */
 sk_vec3d sk_hand_range_scan_point(const sk_hand_range_scan *scan, int i, int j, double z);
@@ -1245,20 +1244,20 @@ sk_vec3d sk_hand_range_scan_point(const sk_hand_range_scan *scan, int i, int j, 
  * the reflection guard) taking `from` onto `to`: minimises sum |R from_i + t - to_i|^2.
  * residual_mm (may be NULL) gets |R from_i + t - to_i| per point. Needs 3 or more points,
  * not all on one line. */
-sk_result sk_hand_register_rigid(const sk_vec3d *from, const sk_vec3d *to, int count, sk_hand_rigid *out,
-                                 double *residual_mm, sk_error *err);
+sk_result sk_hand_register_rigid(const sk_vec3d *from, const sk_vec3d *to, int count,
+                                 sk_hand_rigid *out, double *residual_mm, sk_error *err);
 
 /* Finds each marker in a scan: the samples near its nominal place (where the operator of
  * the thesis would click) are fitted by a sphere of the marker's radius (Gauss-Newton,
  * samples off the sphere by more than 0.3 mm dropped). Centres in the scanner frame; a
  * marker seen by fewer than 6 samples is an error naming it. */
 sk_result sk_hand_markers_locate(const sk_hand_range_scan *scan, const sk_hand_markers *markers,
-                                 sk_vec3d centre[SK_HAND_MARKER_COUNT], int used[SK_HAND_MARKER_COUNT],
-                                 sk_error *err);
+                                 sk_vec3d centre[SK_HAND_MARKER_COUNT],
+                                 int used[SK_HAND_MARKER_COUNT], sk_error *err);
 
 typedef struct sk_hand_registration {
-    sk_hand_rigid back_to_palm;          /* estimated: back scanner frame -> palm scanner frame */
-    sk_hand_rigid truth;                 /* the true one (identity rotation when unknown) */
+    sk_hand_rigid back_to_palm; /* estimated: back scanner frame -> palm scanner frame */
+    sk_hand_rigid truth;        /* the true one (identity rotation when unknown) */
     bool has_truth;
     sk_vec3d palm_centre[SK_HAND_MARKER_COUNT], back_centre[SK_HAND_MARKER_COUNT];
     int palm_used[SK_HAND_MARKER_COUNT], back_used[SK_HAND_MARKER_COUNT];
@@ -1289,8 +1288,8 @@ sk_result sk_hand_cloud_append_scan(sk_hand_cloud *cloud, const sk_hand_range_sc
  * each point: from an attribute "side" (0 palm, 1 back) if there is one, else from its
  * normal if there are normals (palm where it points palmar, along the carpus frame's Z),
  * else from which side of its nearest link's axis it lies on. */
-sk_result sk_hand_cloud_from_points(sk_hand_cloud *cloud, const sk_mesh *points, const sk_hand_frames *frames,
-                                    sk_error *err);
+sk_result sk_hand_cloud_from_points(sk_hand_cloud *cloud, const sk_mesh *points,
+                                    const sk_hand_frames *frames, sk_error *err);
 
 /* ---------------------------------------------------------- segmentation */
 /* The links as segments in the hand frame (4.1.2): each from its base joint to the next
@@ -1315,18 +1314,18 @@ typedef struct sk_hand_slices_desc {
 /* One projected point of a slice: its link and its polar coordinates in the slice plane
  * about the point where the link's axis crosses it (clamped to the segment's ends). */
 typedef struct sk_hand_slice_point {
-    uint32_t point;  /* index in the cloud */
+    uint32_t point; /* index in the cloud */
     int16_t link;
     uint8_t side;
-    float theta;     /* atan2(z - cz, x - cx), radians */
-    float r;         /* mm */
+    float theta; /* atan2(z - cz, x - cx), radians */
+    float r;     /* mm */
 } sk_hand_slice_point;
 
 typedef struct sk_hand_slices {
     int count;
-    double *y;                    /* plane positions (mm) */
-    size_t *first;                /* count + 1: points of slice s are [first[s], first[s+1]) */
-    sk_hand_slice_point *points;  /* grouped by slice, then by link, then by angle */
+    double *y;                   /* plane positions (mm) */
+    size_t *first;               /* count + 1: points of slice s are [first[s], first[s+1]) */
+    sk_hand_slice_point *points; /* grouped by slice, then by link, then by angle */
     sk_vec3d (*centre)[SK_HAND_LINK_COUNT]; /* per slice and link: the polar centre */
     double half_thickness_mm;
 } sk_hand_slices;
@@ -1354,9 +1353,9 @@ typedef struct sk_hand_resample_desc {
 } sk_hand_resample_desc;
 
 typedef struct sk_hand_resample_stats {
-    size_t rings, arcs;     /* resampled segments: closed rings, open arcs */
-    double fold_mean_deg;   /* angle between the two triangles of each quad (slice to slice):
-                               a quad twisted or wrinkled by the resampling folds */
+    size_t rings, arcs;   /* resampled segments: closed rings, open arcs */
+    double fold_mean_deg; /* angle between the two triangles of each quad (slice to slice):
+                             a quad twisted or wrinkled by the resampling folds */
     double fold_max_deg;
     double truth_mean_mm, truth_max_mm; /* vertices against the true surface (set by the
                                            pipeline when it knows the truth, else 0) */
@@ -1370,8 +1369,8 @@ typedef struct sk_hand_resample_stats {
  * 1-component attribute "link". Links are not joined to each other (as in the thesis).
  * `stats` may be NULL. */
 sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geometry *links,
-                           const sk_hand_resample_desc *desc, sk_mesh *out, sk_hand_resample_stats *stats,
-                           sk_error *err);
+                           const sk_hand_resample_desc *desc, sk_mesh *out,
+                           sk_hand_resample_stats *stats, sk_error *err);
 
 /* ------------------------------------------------------- Bezier patches */
 /* A bicubic Bezier patch, eq. (4.3): Q(u, v) = u^T G P G^T v with the corrected basis
@@ -1379,22 +1378,24 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
  * polynomials), u, v in [0, 1]; control point P_ij multiplies B_i(u) B_j(v). */
 typedef struct sk_hand_patch {
     sk_vec3d p[4][4];
-    int link;                 /* the link it belongs to and moves with */
+    int link; /* the link it belongs to and moves with */
     sk_hand_scan_side side;
-    int along, around;        /* its place in the link's layout (0-based) */
+    int along, around; /* its place in the link's layout (0-based) */
 } sk_hand_patch;
 
 /* Q(u, v) and its partial derivatives (du, dv may be NULL). */
-sk_vec3d sk_hand_patch_eval(const sk_hand_patch *patch, double u, double v, sk_vec3d *du, sk_vec3d *dv);
+sk_vec3d sk_hand_patch_eval(const sk_hand_patch *patch, double u, double v, sk_vec3d *du,
+                            sk_vec3d *dv);
 /* The four cubic Bernstein values at t (the row u^T G of eq. 4.3). */
 void sk_hand_bernstein3(double t, double out[4]);
 
 typedef struct sk_hand_patch_fit_desc {
-    int max_iterations;  /* parameter corrections; 0 = 30; range [1, 10000] */
-    double tolerance;    /* stop when no parameter moves more than this; 0 = 1e-3; range [1e-12, 0.1] */
+    int max_iterations; /* parameter corrections; 0 = 30; range [1, 10000] */
+    double
+        tolerance; /* stop when no parameter moves more than this; 0 = 1e-3; range [1e-12, 0.1] */
     double min_improvement; /* ... or when a correction lowers the RMS error by less than this
                                fraction; 0 = 1e-3; range [0, 0.5] (negative = never) */
-    bool no_correction;  /* true = the least-squares fit of the chord-length parameters only */
+    bool no_correction;     /* true = the least-squares fit of the chord-length parameters only */
 } sk_hand_patch_fit_desc;
 
 typedef struct sk_hand_patch_fit_info {
@@ -1426,9 +1427,9 @@ void sk_hand_chord_parameters(const sk_vec3d *row, size_t count, double *u);
  * (each a pair of triangles), and the distance of each point to its nearest facet (exact:
  * a quadtree of the facet grid, searched from the facets around the hint parameters u, v,
  * which may be NULL). splits 0 = 100; range [1, 1024]. */
-sk_result sk_hand_patch_facet_distances(const sk_hand_patch *patch, int splits, const sk_vec3d *points,
-                                        size_t count, const double *u_hint, const double *v_hint,
-                                        double *distance, sk_error *err);
+sk_result sk_hand_patch_facet_distances(const sk_hand_patch *patch, int splits,
+                                        const sk_vec3d *points, size_t count, const double *u_hint,
+                                        const double *v_hint, double *distance, sk_error *err);
 
 /* -------------------------------------------------------- patch layout */
 /* Regions of the palm side and of the back side, 48 each (4.1.4's hand-drawn layout
@@ -1450,16 +1451,16 @@ const sk_hand_layout_entry *sk_hand_patch_layout_table(void);
  * link. Points within 0.5 mm of a boundary between two regions belong to both. */
 typedef struct sk_hand_patch_data {
     size_t count;
-    uint32_t *point;   /* cloud indices */
-    double *u, *v;     /* initial, then corrected by the fit */
+    uint32_t *point; /* cloud indices */
+    double *u, *v;   /* initial, then corrected by the fit */
 } sk_hand_patch_data;
 
 typedef struct sk_hand_patch_set {
-    int count;                              /* SK_HAND_PATCH_COUNT */
+    int count; /* SK_HAND_PATCH_COUNT */
     sk_hand_patch patch[SK_HAND_PATCH_COUNT];
     sk_hand_patch_data data[SK_HAND_PATCH_COUNT];
     sk_hand_patch_fit_info fit[SK_HAND_PATCH_COUNT];
-    bool fitted[SK_HAND_PATCH_COUNT];       /* false: fewer than 16 points */
+    bool fitted[SK_HAND_PATCH_COUNT];         /* false: fewer than 16 points */
     double *error_scan[SK_HAND_PATCH_COUNT];  /* per point: distance to the nearest facet */
     double *error_truth[SK_HAND_PATCH_COUNT]; /* the same for the true surface points (NULL
                                                  without truth) */
@@ -1473,14 +1474,15 @@ sk_result sk_hand_patch_set_fit(sk_hand_patch_set *set, const sk_hand_cloud *clo
 /* Table 4.1's error of every point of every fitted patch: against its splits x splits
  * facets (0 = 100; range [1, 1024]), for the scan points and, when the cloud has them, for
  * the true surface points. */
-sk_result sk_hand_patch_set_measure(sk_hand_patch_set *set, const sk_hand_cloud *cloud, int splits, sk_error *err);
+sk_result sk_hand_patch_set_measure(sk_hand_patch_set *set, const sk_hand_cloud *cloud, int splits,
+                                    sk_error *err);
 void sk_hand_patch_set_free(sk_hand_patch_set *set);
 
 /* ------------------------------------------------------------- Table 4.1 */
 typedef struct sk_hand_fit_error {
     double mean_mm, max_mm;
-    size_t points;       /* (patch, point) pairs: a point shared by two patches counts twice */
-    int worst_patch;     /* index of the patch with the largest error, -1 if none */
+    size_t points;   /* (patch, point) pairs: a point shared by two patches counts twice */
+    int worst_patch; /* index of the patch with the largest error, -1 if none */
 } sk_hand_fit_error;
 
 typedef struct sk_hand_table41 {
@@ -1506,8 +1508,8 @@ void sk_hand_table41_compute(const sk_hand_patch_set *set, sk_hand_table41 *out)
  * links with weights (linear blend). */
 #define SK_HAND_PATCH_MAX_INFLUENCES 4
 typedef struct sk_hand_patch_weights {
-    int16_t link[SK_HAND_PATCH_MAX_INFLUENCES];   /* -1 = unused */
-    float weight[SK_HAND_PATCH_MAX_INFLUENCES];   /* sum to 1 */
+    int16_t link[SK_HAND_PATCH_MAX_INFLUENCES]; /* -1 = unused */
+    float weight[SK_HAND_PATCH_MAX_INFLUENCES]; /* sum to 1 */
 } sk_hand_patch_weights;
 
 /* Moves `count` patches from the frames they were fitted in (`rest`) to `pose`.
@@ -1519,19 +1521,20 @@ sk_result sk_hand_patches_pose(const sk_hand_patch *patches, int count, const sk
 /* Smooth weights of every control point (count * 16, in the order above): those of the
  * surface vertex nearest to the patch point the control point shapes most, Q(i/3, j/3).
  * The surface's bind pose must be the pose the patches were fitted in (sk_hand_scan_cast). */
-sk_result sk_hand_patch_weights_from_surface(const sk_hand_surface *surface, const sk_hand_patch *patches, int count,
+sk_result sk_hand_patch_weights_from_surface(const sk_hand_surface *surface,
+                                             const sk_hand_patch *patches, int count,
                                              sk_hand_patch_weights *out, sk_error *err);
 
 /* ---------------------------------------------------------------- pipeline */
 typedef struct sk_hand_scan_desc {
     sk_hand_scanner_desc scanner;
     sk_hand_slices_desc slices;
-    sk_hand_resample_desc resample;     /* its mode is ignored: both meshes are made */
+    sk_hand_resample_desc resample; /* its mode is ignored: both meshes are made */
     sk_hand_patch_fit_desc fit;
-    int facet_splits;                   /* Table 4.1's facet grid; 0 = 100; range [1, 1024] */
-    double marker_radius_mm;            /* 0 = 2.5, or 3 sample spacings if the scan is
-                                           coarser than 0.83 mm; range [0.5, 10] */
-    uint64_t seed;                      /* scanner noise */
+    int facet_splits;        /* Table 4.1's facet grid; 0 = 100; range [1, 1024] */
+    double marker_radius_mm; /* 0 = 2.5, or 3 sample spacings if the scan is
+                                coarser than 0.83 mm; range [0.5, 10] */
+    uint64_t seed;           /* scanner noise */
 } sk_hand_scan_desc;
 
 /* What the pipeline runs on: a surface to scan (the hand, or a user's mesh), or a user's
@@ -1540,8 +1543,8 @@ typedef struct sk_hand_scan_input {
     const sk_hand_scan_target *target; /* scan this; or NULL and give `cloud` */
     const sk_mesh *cloud;              /* points in the hand frame (used when target is NULL) */
     const sk_hand_skeleton *skeleton;
-    const double *dofs;                /* SK_HAND_DOF_COUNT absolute values: the pose of the
-                                          skeleton in the surface or cloud */
+    const double *dofs; /* SK_HAND_DOF_COUNT absolute values: the pose of the
+                           skeleton in the surface or cloud */
 } sk_hand_scan_input;
 
 /* The pose of the plaster cast: an open hand ("手を開いた姿勢の複製", 4.1.1): the fingers
@@ -1555,16 +1558,16 @@ typedef struct sk_hand_scan_timings {
 } sk_hand_scan_timings;
 
 typedef struct sk_hand_scan_result {
-    sk_hand_frames frames;            /* the skeleton placed in the data */
+    sk_hand_frames frames; /* the skeleton placed in the data */
     sk_hand_link_geometry links;
-    bool scanned;                     /* false when the input was a point cloud */
+    bool scanned; /* false when the input was a point cloud */
     sk_hand_markers markers;
     sk_hand_range_scan scan[SK_HAND_SCAN_SIDE_COUNT];
     sk_hand_registration registration;
     sk_hand_cloud cloud;
     sk_hand_slices slices;
-    sk_mesh polygons;                 /* resampled with neighbouring slices */
-    sk_mesh polygons_thesis;          /* resampled slice by slice (eqs. 4.1, 4.2 alone) */
+    sk_mesh polygons;        /* resampled with neighbouring slices */
+    sk_mesh polygons_thesis; /* resampled slice by slice (eqs. 4.1, 4.2 alone) */
     sk_hand_resample_stats polygons_stats, polygons_thesis_stats;
     sk_hand_patch_set *patches;
     sk_hand_table41 table;
@@ -1585,8 +1588,9 @@ double sk_hand_scan_memory(const sk_hand_scan_desc *desc);
 sk_result sk_hand_table41_write_json(const sk_hand_table41 *table, const char *path, sk_error *err);
 sk_result sk_hand_table41_write_text(const sk_hand_table41 *table, const char *path, sk_error *err);
 /* The registration: per-marker centres and residuals, the estimated and true transforms. */
-sk_result sk_hand_registration_write_json(const sk_hand_registration *reg, const sk_hand_markers *markers,
-                                          const char *path, sk_error *err);
+sk_result sk_hand_registration_write_json(const sk_hand_registration *reg,
+                                          const sk_hand_markers *markers, const char *path,
+                                          sk_error *err);
 /* The cloud as a binary PLY point cloud: x y z, a float "side" (0 palm, 1 back) and, when
  * the truth is known, the true surface point of each sample as "truth_0" .. "truth_2". */
 sk_result sk_hand_cloud_write_ply(const sk_hand_cloud *cloud, const char *path, sk_error *err);
@@ -1602,7 +1606,8 @@ sk_result sk_hand_patches_tessellate(const sk_hand_patch *patches, int count, in
 /* A range scan as the scanner's depth image: hill-shaded, nearer brighter, the table
  * removed (white), unmeasured samples (occluded or grazing) in red, markers circled. One
  * pixel per sample (lines across, points down), scaled by `scale` (0 = 1; range 1..8). */
-sk_result sk_hand_draw_range_scan(const sk_hand_range_scan *scan, int scale, sk_image *out, sk_error *err);
+sk_result sk_hand_draw_range_scan(const sk_hand_range_scan *scan, int scale, sk_image *out,
+                                  sk_error *err);
 
 /* The registered cloud from the back and from the thumb side: palm-scan points blue,
  * back-scan points orange, markers ringed with their residuals. */
@@ -1616,14 +1621,16 @@ sk_result sk_hand_draw_slices(const sk_hand_scan_result *result, sk_image *out, 
  * meaning dorsal); `color_attribute` (may be NULL): a per-vertex attribute whose integer
  * values pick the colours ("link": each link's finger colour; else one colour each, e.g.
  * "patch"). */
-sk_result sk_hand_draw_mesh_views(const sk_mesh *mesh, const char *title, const char *color_attribute,
-                                  const sk_hand_view *views, int view_count, sk_image *out, sk_error *err);
+sk_result sk_hand_draw_mesh_views(const sk_mesh *mesh, const char *title,
+                                  const char *color_attribute, const sk_hand_view *views,
+                                  int view_count, sk_image *out, sk_error *err);
 /* The fitted patches moved to a pose (4.1.5) and drawn from the thumb side and the back:
  * rigidly with their links (the thesis) and, if `weights` is given, with the smooth
  * weights, side by side. */
 sk_result sk_hand_draw_patches_posed(const sk_hand_patch_set *set, const sk_hand_frames *rest,
-                                     const sk_hand_frames *pose, const sk_hand_patch_weights *weights,
-                                     sk_image *out, sk_error *err);
+                                     const sk_hand_frames *pose,
+                                     const sk_hand_patch_weights *weights, sk_image *out,
+                                     sk_error *err);
 
 #ifdef __cplusplus
 }

@@ -63,14 +63,14 @@ typedef enum sk_png_encoding {
 } sk_png_encoding;
 
 typedef struct sk_png_write_desc {
-    int bit_depth;            /* 8 or 16; 0 = 8 */
-    sk_png_encoding encoding; /* 0 = sRGB */
+    int bit_depth;                     /* 8 or 16; 0 = 8 */
+    sk_png_encoding encoding;          /* 0 = sRGB */
     const sk_image_metadata *metadata; /* optional tEXt chunks */
-    int compression_level;    /* deflate level 1 (fastest) .. 9 (smallest) of libdeflate;
-                                 0 = 6 (within a few percent of libpng's size at zlib
-                                 level 6, about twice as fast). Level 1 is about twice
-                                 as fast again for files 5-40 % larger; 9 is many times
-                                 slower (docs/images.md). */
+    int compression_level;             /* deflate level 1 (fastest) .. 9 (smallest) of libdeflate;
+                                          0 = 6 (within a few percent of libpng's size at zlib
+                                          level 6, about twice as fast). Level 1 is about twice
+                                          as fast again for files 5-40 % larger; 9 is many times
+                                          slower (docs/images.md). */
 } sk_png_write_desc;
 
 /* Values are clamped to [0, 1] (NaN to 0) and rounded to the nearest code (sRGB codes by
@@ -81,8 +81,8 @@ typedef struct sk_png_write_desc {
  * must be PNG keywords (1-79 printable ASCII characters, no leading, trailing or double
  * spaces) and values UTF-8: ASCII values go into tEXt chunks, others into iTXt chunks.
  * Linear files carry no colour-space chunk (no sRGB, no gAMA). `desc` may be NULL. */
-sk_result sk_image_write_png(const sk_image *image, const char *path,
-                             const sk_png_write_desc *desc, sk_error *err);
+sk_result sk_image_write_png(const sk_image *image, const char *path, const sk_png_write_desc *desc,
+                             sk_error *err);
 /* The same bytes into memory (e.g. to embed in a glTF file): *out_data (free with free())
  * and *out_size, which are NULL and 0 on failure. */
 sk_result sk_image_write_png_memory(const sk_image *image, const sk_png_write_desc *desc,
@@ -141,10 +141,10 @@ typedef enum sk_exr_pixel_type {
 typedef enum sk_exr_compression {
     SK_EXR_COMPRESSION_DEFAULT = 0, /* = ZIP at level 1: see docs/images.md, "EXR compression" */
     SK_EXR_COMPRESSION_NONE,
-    SK_EXR_COMPRESSION_ZIP,   /* lossless deflate (libdeflate), 16 scanlines per block */
-    SK_EXR_COMPRESSION_PIZ,   /* lossless wavelet, good for noisy renders */
-    SK_EXR_COMPRESSION_RLE,   /* lossless run lengths (flat areas only) */
-    SK_EXR_COMPRESSION_ZIPS   /* lossless deflate, one scanline per block */
+    SK_EXR_COMPRESSION_ZIP, /* lossless deflate (libdeflate), 16 scanlines per block */
+    SK_EXR_COMPRESSION_PIZ, /* lossless wavelet, good for noisy renders */
+    SK_EXR_COMPRESSION_RLE, /* lossless run lengths (flat areas only) */
+    SK_EXR_COMPRESSION_ZIPS /* lossless deflate, one scanline per block */
 } sk_exr_compression;
 
 typedef struct sk_exr_write_desc {
@@ -168,8 +168,8 @@ typedef struct sk_exr_write_desc {
  * libdeflate) and written in order: the bytes do not depend on the thread count. Channel names
  * must be unique and 1-255 bytes; metadata keys must not be EXR's own attribute names
  * (channels, compression, dataWindow, ...). `desc` may be NULL. */
-sk_result sk_image_write_exr(const sk_image *image, const char *path,
-                             const sk_exr_write_desc *desc, sk_error *err);
+sk_result sk_image_write_exr(const sk_image *image, const char *path, const sk_exr_write_desc *desc,
+                             sk_error *err);
 
 /* Reads a scanline or tiled single-part EXR (half, float or uint channels). Channels are
  * ordered as the writer names them (Y/R,G,B/A); other names follow alphabetically, up to

@@ -17,10 +17,10 @@ extern "C" {
 /* A file being written. Every writer in shitsukan goes through this, so a failed or
  * interrupted run never leaves a truncated file under the final name. */
 typedef struct sk_atomic_file {
-    FILE *fp;          /* open for binary writing on the temporary file */
-    char *final_path;  /* owned copies: the file replaced (a link's target) ... */
-    char *temp_path;   /* ... and the temporary file, NULL when written in place */
-    int signal_slot;   /* private: 1 + the signal cleanup slot, 0 = none */
+    FILE *fp;         /* open for binary writing on the temporary file */
+    char *final_path; /* owned copies: the file replaced (a link's target) ... */
+    char *temp_path;  /* ... and the temporary file, NULL when written in place */
+    int signal_slot;  /* private: 1 + the signal cleanup slot, 0 = none */
 } sk_atomic_file;
 
 /* Creates "<dir>/.<name>.<random>.tmp" beside `path` (mode 0666 less the umask; the name

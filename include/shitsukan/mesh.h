@@ -52,8 +52,8 @@ sk_result sk_mesh_create(sk_mesh *mesh, size_t vertex_count, size_t triangle_cou
                          sk_error *err);
 /* Adds a zero-filled attribute (name 1-31 bytes, 1-4 components); fails if the name
  * exists (SK_ERROR_INVALID_ARGUMENT) or all slots are used (SK_ERROR_LIMIT). */
-sk_result sk_mesh_add_attribute(sk_mesh *mesh, const char *name, int components,
-                                float **out_data, sk_error *err);
+sk_result sk_mesh_add_attribute(sk_mesh *mesh, const char *name, int components, float **out_data,
+                                sk_error *err);
 /* NULL if absent. */
 const sk_mesh_attribute *sk_mesh_find_attribute(const sk_mesh *mesh, const char *name);
 void sk_mesh_free(sk_mesh *mesh);
@@ -75,10 +75,11 @@ typedef struct sk_mesh_read_desc {
     size_t max_bytes;
 } sk_mesh_read_desc;
 
-/* Reads OBJ: v (with optional r g b, sRGB-encoded in the file, decoded to linear), vt, vn, f with v, v/vt, v//vn, v/vt/vn and
- * negative (relative) indices; polygons are triangulated; o/g/s/usemtl/mtllib lines are
- * accepted and ignored; a file with only v lines is a point cloud. Malformed lines,
- * indices out of range and non-finite numbers fail with SK_ERROR_PARSE naming the line.
+/* Reads OBJ: v (with optional r g b, sRGB-encoded in the file, decoded to linear), vt, vn, f with
+ * v, v/vt, v//vn, v/vt/vn and negative (relative) indices; polygons are triangulated;
+ * o/g/s/usemtl/mtllib lines are accepted and ignored; a file with only v lines is a point cloud.
+ * Malformed lines, indices out of range and non-finite numbers fail with SK_ERROR_PARSE naming the
+ * line.
  *
  * Details: each distinct (v, vt, vn) triple used by a face becomes one vertex (numbered in
  * order of first use; v lines no face uses are dropped). An index refers to an element
@@ -122,9 +123,9 @@ typedef struct sk_obj_material {
 
 /* A run of triangles written as one OBJ object ("o name") with one material. */
 typedef struct sk_obj_group {
-    const char *name;         /* non-empty, no white space */
-    size_t triangle_count;    /* groups take the triangles in order and cover them all */
-    int material;             /* index into the desc's materials, or -1 for none */
+    const char *name;      /* non-empty, no white space */
+    size_t triangle_count; /* groups take the triangles in order and cover them all */
+    int material;          /* index into the desc's materials, or -1 for none */
 } sk_obj_group;
 
 typedef struct sk_obj_write_desc {
@@ -157,8 +158,8 @@ char *sk_obj_mtl_path(const char *obj_path);
  * name (mtllib), and texture_path is written as given (make it relative to the OBJ's
  * folder); material_name must have no white space. Both files are written atomically,
  * the MTL first. */
-sk_result sk_mesh_write_obj(const sk_mesh *mesh, const char *path,
-                            const sk_obj_write_desc *desc, sk_error *err);
+sk_result sk_mesh_write_obj(const sk_mesh *mesh, const char *path, const sk_obj_write_desc *desc,
+                            sk_error *err);
 /* Writes binary little-endian PLY with every array and attribute as float properties
  * (colours as sRGB-encoded uchar red/green/blue, so a linear 0.5 is code 188 and reads
  * back within half a code) and faces as "list uchar uint vertex_indices".

@@ -27,8 +27,8 @@ typedef struct sk_pc2_writer {
 } sk_pc2_writer;
 
 /* Opens `path` for `samples` samples of `points` points. */
-sk_result sk_pc2_open(sk_pc2_writer *w, const char *path, int points, float start_frame, float sample_rate,
-                      int samples, sk_error *err);
+sk_result sk_pc2_open(sk_pc2_writer *w, const char *path, int points, float start_frame,
+                      float sample_rate, int samples, sk_error *err);
 /* Appends one sample: 3 floats per point (finite). */
 sk_result sk_pc2_append(sk_pc2_writer *w, const float *xyz, sk_error *err);
 /* Commits the file; fails (leaving no file) unless every sample was written. */
@@ -47,7 +47,8 @@ typedef struct sk_pc2 {
  * cannot hold, a wrong signature or version, non-finite values or trailing bytes fail
  * with SK_ERROR_PARSE naming what is wrong. */
 sk_result sk_pc2_read(const char *path, size_t max_bytes, sk_pc2 *out, sk_error *err);
-sk_result sk_pc2_parse(const void *data, size_t size, const char *source_name, sk_pc2 *out, sk_error *err);
+sk_result sk_pc2_parse(const void *data, size_t size, const char *source_name, sk_pc2 *out,
+                       sk_error *err);
 void sk_pc2_free(sk_pc2 *pc2);
 
 #ifdef __cplusplus

@@ -35,8 +35,8 @@ typedef enum sk_field_type {
 struct sk_schema;
 
 typedef struct sk_schema_field {
-    const char *key;     /* JSON key; NULL for the single field of an array element that
-                            is itself a value (e.g. a point [x, z] in a list of points) */
+    const char *key; /* JSON key; NULL for the single field of an array element that
+                        is itself a value (e.g. a point [x, z] in a list of points) */
     sk_field_type type;
     size_t offset;       /* offsetof(desc, field) */
     double min, max;     /* accepted range of numbers (as written in JSON, before scale) */
@@ -69,8 +69,8 @@ typedef struct sk_preset sk_preset;
 /* Empty preset "{}". */
 sk_result sk_preset_create(sk_preset **out, sk_error *err);
 /* Parses JSON text; `source_name` (e.g. the file name) prefixes parse errors. */
-sk_result sk_preset_parse(sk_preset **out, const char *text, size_t length,
-                          const char *source_name, sk_error *err);
+sk_result sk_preset_parse(sk_preset **out, const char *text, size_t length, const char *source_name,
+                          sk_error *err);
 /* Reads and parses a file (at most 16 MiB). */
 sk_result sk_preset_load_file(sk_preset **out, const char *path, sk_error *err);
 void sk_preset_free(sk_preset *preset);

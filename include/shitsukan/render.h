@@ -83,22 +83,22 @@ typedef enum sk_render_uv_mode {
 } sk_render_uv_mode;
 
 typedef struct sk_render_object_desc {
-    char name[SK_RENDER_NAME_SIZE]; /* for messages; default "" */
-    sk_render_shape shape;          /* preset key "shape"; default "mesh" */
-    char file[SK_RENDER_PATH_SIZE]; /* mesh: OBJ or PLY file (relative to the scene file's
-                                       folder); meshes without normals are shaded flat,
-                                       meshes without UVs get u = v = 0 */
-    const sk_mesh *mesh;            /* C API only: the caller's mesh (used by shape "mesh"
-                                       when `file` is empty; copied at scene creation) */
-    float size[3];                  /* box: edge lengths; plane: size[0] along x, size[2]
-                                       along z; all 0 = (1, 1, 1) */
-    float radius;                   /* sphere, cylinder, capsule; 0 = 0.5 */
-    float height;                   /* cylinder, capsule: length of the straight part along
-                                       y; 0 = 1 */
-    int segments;                   /* tessellation around the y axis; 0 = 64; [3, 4096] */
-    int rings;                      /* tessellation from pole to pole (sphere, capsule caps);
-                                       0 = 32; [2, 4096] */
-    sk_render_uv_mode uv;           /* preset key "uv": "length" or "unit"; default length */
+    char name[SK_RENDER_NAME_SIZE];     /* for messages; default "" */
+    sk_render_shape shape;              /* preset key "shape"; default "mesh" */
+    char file[SK_RENDER_PATH_SIZE];     /* mesh: OBJ or PLY file (relative to the scene file's
+                                           folder); meshes without normals are shaded flat,
+                                           meshes without UVs get u = v = 0 */
+    const sk_mesh *mesh;                /* C API only: the caller's mesh (used by shape "mesh"
+                                           when `file` is empty; copied at scene creation) */
+    float size[3];                      /* box: edge lengths; plane: size[0] along x, size[2]
+                                           along z; all 0 = (1, 1, 1) */
+    float radius;                       /* sphere, cylinder, capsule; 0 = 0.5 */
+    float height;                       /* cylinder, capsule: length of the straight part along
+                                           y; 0 = 1 */
+    int segments;                       /* tessellation around the y axis; 0 = 64; [3, 4096] */
+    int rings;                          /* tessellation from pole to pole (sphere, capsule caps);
+                                           0 = 32; [2, 4096] */
+    sk_render_uv_mode uv;               /* preset key "uv": "length" or "unit"; default length */
     char material[SK_RENDER_NAME_SIZE]; /* name of a material; "" = a grey diffuse default */
     sk_render_transform transform;
 } sk_render_object_desc;
@@ -129,10 +129,10 @@ typedef struct sk_render_camera_desc {
 /* ------------------------------------------------------------------ lights */
 
 typedef enum sk_render_light_type {
-    SK_RENDER_LIGHT_DEFAULT = 0,         /* = DIRECTIONAL */
-    SK_RENDER_LIGHT_DIRECTIONAL = 0,     /* "directional": parallel light (sun) */
-    SK_RENDER_LIGHT_POINT,               /* "point" */
-    SK_RENDER_LIGHT_RECT,                /* "rect": one-sided rectangle, soft shadows */
+    SK_RENDER_LIGHT_DEFAULT = 0,     /* = DIRECTIONAL */
+    SK_RENDER_LIGHT_DIRECTIONAL = 0, /* "directional": parallel light (sun) */
+    SK_RENDER_LIGHT_POINT,           /* "point" */
+    SK_RENDER_LIGHT_RECT,            /* "rect": one-sided rectangle, soft shadows */
     SK_RENDER_LIGHT_COUNT
 } sk_render_light_type;
 
@@ -142,17 +142,17 @@ typedef enum sk_render_light_type {
  * (rect), d = distance from the light to the camera target. */
 typedef struct sk_render_light_desc {
     sk_render_light_type type; /* preset key "type" */
-    float color[3];     /* linear RGB tint multiplying `intensity`; all 0 = (1, 1, 1) */
-    float intensity;    /* E (W m^-2), I (W sr^-1) or Le (W sr^-1 m^-2) by type; see above */
-    float position[3];  /* point: the light; rect: the rectangle's centre */
-    float direction[3]; /* directional: the direction the light travels; all 0 = (0, -1, 0);
-                           rect: the direction it emits towards; all 0 = towards the camera
-                           target */
-    float size[2];      /* rect: width and height in scene units; all 0 = (1, 1) */
-    float up[3];        /* rect: the direction of its height edge (projected on its plane);
-                           all 0 = +y (or +z when it faces along y) */
-    int samples;        /* rect: shadow rays per camera sample; 0 = 1; [1, 256] */
-    bool no_shadows;    /* skip shadow rays; default false */
+    float color[3];            /* linear RGB tint multiplying `intensity`; all 0 = (1, 1, 1) */
+    float intensity;           /* E (W m^-2), I (W sr^-1) or Le (W sr^-1 m^-2) by type; see above */
+    float position[3];         /* point: the light; rect: the rectangle's centre */
+    float direction[3];        /* directional: the direction the light travels; all 0 = (0, -1, 0);
+                                  rect: the direction it emits towards; all 0 = towards the camera
+                                  target */
+    float size[2];             /* rect: width and height in scene units; all 0 = (1, 1) */
+    float up[3];               /* rect: the direction of its height edge (projected on its plane);
+                                  all 0 = +y (or +z when it faces along y) */
+    int samples;               /* rect: shadow rays per camera sample; 0 = 1; [1, 256] */
+    bool no_shadows;           /* skip shadow rays; default false */
 } sk_render_light_desc;
 
 /* Uniform environment radiance lights every point from the whole sphere. Without
@@ -189,29 +189,29 @@ typedef struct sk_render_preset_set {
 /* A shading point as a texture callback sees it. Vectors are unit length, in the scene
  * frame unless named `object_`. */
 typedef struct sk_render_surface {
-    sk_vec3f point;          /* scene position */
-    sk_vec3f object_point;   /* position in the object's frame: the object's translation and
-                                rotation undone, its scale kept (true scene lengths), so a
-                                solid texture moves with the object */
-    sk_vec3f normal;         /* interpolated normal, facing the viewer */
-    sk_vec3f object_normal;  /* the same in the object's frame */
-    sk_vec3f tangent;        /* along increasing u (orthogonal to `normal`) */
-    sk_vec3f bitangent;      /* along increasing v */
-    sk_vec2f uv;             /* the mesh's UV */
-    sk_vec2f st;             /* texture coordinates: uv * uv_scale + uv_offset */
-    sk_vec2f st_per_mm;      /* how fast s and t change per mm of surface along tangent and
-                                bitangent (converts st-space slopes to surface slopes) */
-    float footprint_mm;      /* width of one camera sample's footprint on the surface */
-    int object;              /* index of the object in the scene desc */
+    sk_vec3f point;         /* scene position */
+    sk_vec3f object_point;  /* position in the object's frame: the object's translation and
+                               rotation undone, its scale kept (true scene lengths), so a
+                               solid texture moves with the object */
+    sk_vec3f normal;        /* interpolated normal, facing the viewer */
+    sk_vec3f object_normal; /* the same in the object's frame */
+    sk_vec3f tangent;       /* along increasing u (orthogonal to `normal`) */
+    sk_vec3f bitangent;     /* along increasing v */
+    sk_vec2f uv;            /* the mesh's UV */
+    sk_vec2f st;            /* texture coordinates: uv * uv_scale + uv_offset */
+    sk_vec2f st_per_mm;     /* how fast s and t change per mm of surface along tangent and
+                               bitangent (converts st-space slopes to surface slopes) */
+    float footprint_mm;     /* width of one camera sample's footprint on the surface */
+    int object;             /* index of the object in the scene desc */
 } sk_render_surface;
 
 /* What a texture callback may change. On entry: the material's constant values. */
 typedef struct sk_render_texel {
-    sk_vec3f albedo;  /* linear diffuse reflectance in [0, 1] */
-    float specular;   /* ks in [0, 1] */
-    float shininess;  /* Blinn-Phong exponent */
-    sk_vec2f slope;   /* height gradient dh/ds, dh/dt with h in mm and (s, t) the texture
-                         coordinates (bump mapping); on entry 0 */
+    sk_vec3f albedo; /* linear diffuse reflectance in [0, 1] */
+    float specular;  /* ks in [0, 1] */
+    float shininess; /* Blinn-Phong exponent */
+    sk_vec2f slope;  /* height gradient dh/ds, dh/dt with h in mm and (s, t) the texture
+                        coordinates (bump mapping); on entry 0 */
 } sk_render_texel;
 
 /* A procedural texture: called at every shading point (from several threads at once; it
@@ -223,19 +223,19 @@ typedef void (*sk_render_texture_fn)(void *user, const sk_render_surface *surfac
 typedef struct sk_render_material_desc {
     char name[SK_RENDER_NAME_SIZE]; /* objects refer to it by this; must be unique */
     sk_render_material_type type;   /* preset key "type" */
-    float albedo[3];      /* linear diffuse reflectance; all 0 = (0.8, 0.8, 0.8); [0, 1] */
+    float albedo[3]; /* linear diffuse reflectance; all 0 = (0.8, 0.8, 0.8); [0, 1] */
     char albedo_texture[SK_RENDER_PATH_SIZE]; /* image (PNG decoded from sRGB, or EXR)
                                                  multiplying `albedo`, one repeat per unit
                                                  of st, bilinear; default none */
-    float specular;       /* ks: weight of the Blinn-Phong lobe (the diffuse part gets
-                             1 - ks); default 0; [0, 1] */
-    float shininess;      /* Blinn-Phong exponent n; 0 = 64; [1, 100000] */
+    float specular;  /* ks: weight of the Blinn-Phong lobe (the diffuse part gets
+                        1 - ks); default 0; [0, 1] */
+    float shininess; /* Blinn-Phong exponent n; 0 = 64; [1, 100000] */
     char normal_map[SK_RENDER_PATH_SIZE]; /* tangent-space normal map (PNG read linearly or
                                              EXR; x right = +u, y up = +v, OpenGL style) */
-    float bump_scale;     /* multiplies every height gradient (bump / skin / callback and
-                             the normal map's tilt); 0 = 1; [0, 100] */
-    float uv_scale[2];    /* st = uv * uv_scale + uv_offset; all 0 = (1, 1) */
-    float uv_offset[2];   /* default 0 */
+    float bump_scale;   /* multiplies every height gradient (bump / skin / callback and
+                           the normal map's tilt); 0 = 1; [0, 100] */
+    float uv_scale[2];  /* st = uv * uv_scale + uv_offset; all 0 = (1, 1) */
+    float uv_offset[2]; /* default 0 */
     /* The hand thesis (Yasumuro 2000, sec. 4.1.6, Fig. 4.15) renders skin as a blend of
        smooth shading of a white surface and the unlit texture, about 0.3 : 0.7. With
        texture_weight w > 0 the radiance is (1 - w) L(white albedo) + w albedo
@@ -250,7 +250,7 @@ typedef struct sk_render_material_desc {
                                               sk_render_scene_desc_bind */
     int skin_set_count;
     sk_render_preset_set skin_set[SK_RENDER_MAX_PRESET_SETS]; /* edits of skin_preset */
-    sk_skin_desc skin;    /* the skin (preset key "skin"; used as is from C) */
+    sk_skin_desc skin; /* the skin (preset key "skin"; used as is from C) */
     /* wood: sk_wood_eval at the point in the object's frame (in mm) gives the albedo (rings,
        fibre streaks, vessels) that replaces `albedo`, and sk_wood_shade the reflection: the
        figure sheen of eq. (4) (diffuse on the true normal, specular on the normal tilted by
@@ -260,7 +260,7 @@ typedef struct sk_render_material_desc {
                                               file relative to the scene */
     int wood_set_count;
     sk_render_preset_set wood_set[SK_RENDER_MAX_PRESET_SETS]; /* edits of wood_preset */
-    sk_wood_desc wood;    /* the wood (preset key "wood"; used as is from C) */
+    sk_wood_desc wood; /* the wood (preset key "wood"; used as is from C) */
     /* C API only: a procedural texture applied after the image textures. */
     sk_render_texture_fn texture;
     void *texture_user;
@@ -298,31 +298,31 @@ typedef struct sk_render_image_desc {
 /* From linear radiance to the PNG: radiance * 2^exposure -> tone curve -> sRGB transfer
  * curve (applied by the PNG writer) -> 8 bits. The EXR keeps the linear radiance. */
 typedef struct sk_render_film_desc {
-    float exposure;            /* stops; default 0; [-30, 30] */
+    float exposure;                 /* stops; default 0; [-30, 30] */
     sk_render_tonemap_mode tonemap; /* preset key "tonemap"; default clamp */
-    float white;               /* reinhard: exposed radiance that maps to white; 0 = no
-                                  white point (L / (1 + L)); [0, 1e6] */
-    bool opaque;               /* true: `background` fills the background with alpha 1;
-                                  default false: the background is transparent (alpha 0;
-                                  the EXR holds premultiplied RGBA) */
-    float background[3];       /* radiance behind the objects when opaque; default 0 */
+    float white;                    /* reinhard: exposed radiance that maps to white; 0 = no
+                                       white point (L / (1 + L)); [0, 1e6] */
+    bool opaque;                    /* true: `background` fills the background with alpha 1;
+                                       default false: the background is transparent (alpha 0;
+                                       the EXR holds premultiplied RGBA) */
+    float background[3];            /* radiance behind the objects when opaque; default 0 */
 } sk_render_film_desc;
 
 /* ------------------------------------------------------------------ scene */
 
 typedef struct sk_render_scene_desc {
-    uint64_t seed;  /* every random sample derives from hash(seed, pixel, sample, use);
-                       default 0 */
-    float unit_mm;  /* millimetres per scene unit; 0 = 1; [1e-6, 1e9] */
+    uint64_t seed; /* every random sample derives from hash(seed, pixel, sample, use);
+                      default 0 */
+    float unit_mm; /* millimetres per scene unit; 0 = 1; [1e-6, 1e9] */
     sk_render_image_desc image;
     sk_render_film_desc film;
     sk_render_camera_desc camera;
     sk_render_environment_desc environment;
     int material_count; /* default 0 */
     sk_render_material_desc materials[SK_RENDER_MAX_MATERIALS];
-    int object_count;   /* default 0 (an empty scene renders the background) */
+    int object_count; /* default 0 (an empty scene renders the background) */
     sk_render_object_desc objects[SK_RENDER_MAX_OBJECTS];
-    int light_count;    /* default 0 */
+    int light_count; /* default 0 */
     sk_render_light_desc lights[SK_RENDER_MAX_LIGHTS];
     /* C API only: the folder relative file names are resolved against; "" = the current
        folder. sk_render_scene_desc_load sets it to the scene file's folder. */
@@ -363,8 +363,7 @@ typedef struct sk_render_load_desc {
 sk_result sk_render_scene_desc_bind(const sk_preset *scene, const sk_render_load_desc *load,
                                     sk_render_scene_desc *desc, sk_error *err);
 /* Reads, binds and validates a scene file. */
-sk_result sk_render_scene_desc_load(const char *path, sk_render_scene_desc *desc,
-                                    sk_error *err);
+sk_result sk_render_scene_desc_load(const char *path, sk_render_scene_desc *desc, sk_error *err);
 
 /* ------------------------------------------------------------------ scene objects */
 
@@ -392,25 +391,25 @@ bool sk_render_scene_bounds(const sk_render_scene *scene, sk_vec3f *lo, sk_vec3f
 /* The first surface a ray hits (ray queries for tools and tests). */
 typedef struct sk_render_hit {
     bool hit;
-    float distance;       /* ray parameter t of the hit (direction need not be unit) */
-    sk_vec3f point;       /* scene position */
-    sk_vec3f normal;      /* interpolated unit normal, as the mesh winds (not flipped) */
+    float distance;            /* ray parameter t of the hit (direction need not be unit) */
+    sk_vec3f point;            /* scene position */
+    sk_vec3f normal;           /* interpolated unit normal, as the mesh winds (not flipped) */
     sk_vec3f geometric_normal; /* unit normal of the triangle's plane, as it winds */
-    sk_vec3f tangent;     /* unit, along increasing u */
+    sk_vec3f tangent;          /* unit, along increasing u */
     sk_vec2f uv;
-    int object;           /* index into the desc's objects */
-    uint32_t triangle;    /* triangle index in the object's mesh */
+    int object;        /* index into the desc's objects */
+    uint32_t triangle; /* triangle index in the object's mesh */
 } sk_render_hit;
 
-void sk_render_scene_intersect(const sk_render_scene *scene, sk_vec3f origin,
-                               sk_vec3f direction, float max_distance, sk_render_hit *hit);
+void sk_render_scene_intersect(const sk_render_scene *scene, sk_vec3f origin, sk_vec3f direction,
+                               float max_distance, sk_render_hit *hit);
 
 /* ------------------------------------------------------------------ rendering */
 
 typedef struct sk_render_stats {
-    double seconds;           /* wall time of the render */
+    double seconds; /* wall time of the render */
     long long camera_rays;
-    long long shadow_rays;    /* light and occlusion rays */
+    long long shadow_rays; /* light and occlusion rays */
     double camera_rays_per_second;
     /* with sk_render_options.timing: thread-seconds spent inside Embree (closest-hit and
        occlusion queries) and in everything else per sample (camera, materials, skin and
@@ -437,8 +436,8 @@ sk_result sk_render_tonemap(const sk_image *linear, const sk_render_film_desc *f
 
 /* Writes a rendered image by extension: ".exr" linear RGBA float (premultiplied), ".png"
  * tone-mapped 8-bit sRGB RGBA. `metadata` may be NULL. */
-sk_result sk_render_write(const sk_image *linear, const sk_render_film_desc *film,
-                          const char *path, const sk_image_metadata *metadata, sk_error *err);
+sk_result sk_render_write(const sk_image *linear, const sk_render_film_desc *film, const char *path,
+                          const sk_image_metadata *metadata, sk_error *err);
 
 /* ------------------------------------------------------------------ export */
 
@@ -486,7 +485,8 @@ sk_result sk_render_scene_export(const sk_render_scene *scene, const char *path,
                                  const sk_render_export_desc *desc, sk_error *err);
 /* The memory the export peaks at beyond the scene's (bytes): the meshes copied, and the
  * textures baked at texture_size (12 bytes a texel, 20 while the wood is baked). */
-double sk_render_scene_export_memory(const sk_render_scene *scene, const sk_render_export_desc *desc);
+double sk_render_scene_export_memory(const sk_render_scene *scene,
+                                     const sk_render_export_desc *desc);
 
 /* ------------------------------------------------------------------ primitives */
 

@@ -42,13 +42,13 @@ extern "C" {
 
 /* ================================================================ melody */
 
-#define SK_PIANO_KEY_FIRST 21  /* A0, the lowest key of an 88-key piano (MIDI number) */
-#define SK_PIANO_KEY_LAST 108  /* C8 */
+#define SK_PIANO_KEY_FIRST 21 /* A0, the lowest key of an 88-key piano (MIDI number) */
+#define SK_PIANO_KEY_LAST 108 /* C8 */
 #define SK_PIANO_KEY_COUNT 88
 #define SK_MELODY_MAX_NOTES 20000
 #define SK_MELODY_MAX_SECONDS 3600.0
 #define SK_MELODY_MAX_BYTES (16u << 20) /* files larger than this are refused */
-#define SK_FINGER_AUTO 0              /* a note's finger left to sk_melody_choose_fingers */
+#define SK_FINGER_AUTO 0                /* a note's finger left to sk_melody_choose_fingers */
 
 typedef struct sk_note {
     int key;           /* MIDI note number, SK_PIANO_KEY_FIRST..SK_PIANO_KEY_LAST (60 = C4) */
@@ -75,9 +75,10 @@ typedef struct sk_melody {
 /* The text format (docs/showcase.md): one note a line, "NOTE START DURATION [FINGER]
  * [VELOCITY]", NOTE a name (C4, F#3, Bb5; octave -1..9, C4 = 60) or a key number 21..108,
  * START and DURATION in seconds (or in beats after a "bpm N" line), FINGER 1..5 or "-"
- * (automatic); a '#' at the start of a field starts a comment (C#4 is a note). Strict: every error is one line naming the line of
- * the input, e.g. "twinkle.txt:7: duration \"0\" must be a number > 0". A key pressed
- * again while it still sounds is an error (a piano key cannot be struck twice at once). */
+ * (automatic); a '#' at the start of a field starts a comment (C#4 is a note). Strict: every error
+ * is one line naming the line of the input, e.g. "twinkle.txt:7: duration \"0\" must be a number >
+ * 0". A key pressed again while it still sounds is an error (a piano key cannot be struck twice at
+ * once). */
 sk_result sk_melody_parse_text(const char *text, size_t length, const char *source_name,
                                sk_melody *out, sk_error *err);
 /* Standard MIDI Files (format 0 or 1; any channel; tempo changes honoured). The chunk and
@@ -121,23 +122,23 @@ bool sk_note_is_black(int key);
  * black ones); a key turns about an axis across the keyboard `pivot_mm` behind its front,
  * so its front goes down by at most `dip_mm`. */
 typedef struct sk_piano_desc {
-    double white_pitch_mm;  /* white keys' centre spacing; 0 = 23.5 (an octave 164.5 mm);
-                               [15, 30] */
-    double dip_mm;          /* key dip at the front; 0 = 10; [2, 20] */
-    double pivot_mm;        /* from a key's front to its pivot; 0 = 250; [100, 600] */
-    double white_top_mm;    /* height of the white keys' tops at rest; 0 = 747; [0, 5000] */
-    double front_mm;        /* z of the keys' fronts; 0 = 275; [-5000, 5000] */
+    double white_pitch_mm; /* white keys' centre spacing; 0 = 23.5 (an octave 164.5 mm);
+                              [15, 30] */
+    double dip_mm;         /* key dip at the front; 0 = 10; [2, 20] */
+    double pivot_mm;       /* from a key's front to its pivot; 0 = 250; [100, 600] */
+    double white_top_mm;   /* height of the white keys' tops at rest; 0 = 747; [0, 5000] */
+    double front_mm;       /* z of the keys' fronts; 0 = 275; [-5000, 5000] */
 } sk_piano_desc;
 
 typedef struct sk_piano_key {
-    int key;                /* MIDI number */
+    int key; /* MIDI number */
     bool black;
-    double x_mm;            /* centre of the key's playing surface across the keyboard */
-    double width_mm;        /* of the playing surface (a white key's front part) */
-    double top_mm;          /* top at rest */
-    double front_mm, back_mm;   /* z of its front and of the back of its visible top */
-    double notch_front_mm;  /* white keys: where the front part ends (the black keys'
-                               fronts); black keys: = back_mm */
+    double x_mm;                   /* centre of the key's playing surface across the keyboard */
+    double width_mm;               /* of the playing surface (a white key's front part) */
+    double top_mm;                 /* top at rest */
+    double front_mm, back_mm;      /* z of its front and of the back of its visible top */
+    double notch_front_mm;         /* white keys: where the front part ends (the black keys'
+                                      fronts); black keys: = back_mm */
     double back_x0_mm, back_x1_mm; /* white keys: x range of the part between the black
                                       keys; black keys: their x range */
     double thickness_mm;
@@ -153,8 +154,9 @@ typedef struct sk_piano {
 sk_result sk_piano_init(sk_piano *piano, const sk_piano_desc *desc, sk_error *err);
 static inline const sk_piano_key *sk_piano_key_get(const sk_piano *piano, int key)
 {
-    return key < SK_PIANO_KEY_FIRST || key > SK_PIANO_KEY_LAST ? NULL
-                                                                : &piano->keys[key - SK_PIANO_KEY_FIRST];
+    return key < SK_PIANO_KEY_FIRST || key > SK_PIANO_KEY_LAST
+               ? NULL
+               : &piano->keys[key - SK_PIANO_KEY_FIRST];
 }
 /* Height of a key's top at scene depth z when the key is turned down by `angle`. */
 double sk_piano_key_top_at(const sk_piano *piano, const sk_piano_key *key, double angle, double z);
@@ -183,25 +185,25 @@ int sk_piano_key_objects(const sk_piano *piano, const sk_piano_key *key, double 
  * busy at once never take keys closer than two fingertips (a half step). Fingers given in
  * the input are kept. */
 typedef struct sk_fingering_desc {
-    double finger_x_mm[5];  /* fingertips across the keyboard in the hand's playing
-                               position, thumb first; all 0 = one white key apart
-                               (0, 23.5, 47, 70.5, 94) */
-    double reach_mm;        /* notes held together: the largest difference between their
-                               keys' spacing and their fingers' that the fingers' spread
-                               can make up; 0 = 30; [0, 200] */
-    double pitch_mm;        /* a white key's width for the costs; 0 = 23.5 */
-    double spacing_mm;      /* neighbouring fingers (index to little) busy at once need
-                               keys at least this far apart: two fingertips' breadth;
-                               0 = 17; [0, 50] */
+    double finger_x_mm[5];              /* fingertips across the keyboard in the hand's playing
+                                           position, thumb first; all 0 = one white key apart
+                                           (0, 23.5, 47, 70.5, 94) */
+    double reach_mm;                    /* notes held together: the largest difference between their
+                                           keys' spacing and their fingers' that the fingers' spread
+                                           can make up; 0 = 30; [0, 200] */
+    double pitch_mm;                    /* a white key's width for the costs; 0 = 23.5 */
+    double spacing_mm;                  /* neighbouring fingers (index to little) busy at once need
+                                           keys at least this far apart: two fingertips' breadth;
+                                           0 = 17; [0, 50] */
     double busy_before_s, busy_after_s; /* a finger is busy from this long before its
                                note to this long after (its approach and lift); 0 = 0.12,
                                0.14 */
-    double move_gap_s;      /* the least silence in which one finger moves to another key
-                               while the hand is busy; 0 = 0.05 */
-    bool apart[5][5];       /* pairs of fingers (thumb first) that cannot hold keys down
-                               together (a hand whose fingers reach different depths);
-                               all false = any pair can; the showcase fills it from its
-                               hand */
+    double move_gap_s; /* the least silence in which one finger moves to another key
+                          while the hand is busy; 0 = 0.05 */
+    bool apart[5][5];  /* pairs of fingers (thumb first) that cannot hold keys down
+                          together (a hand whose fingers reach different depths);
+                          all false = any pair can; the showcase fills it from its
+                          hand */
 } sk_fingering_desc;
 
 /* Chooses the automatic fingers of `melody` in place; keys are placed by `piano` (NULL =
@@ -217,12 +219,12 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
  * partial decaying in two stages (the prompt sound and the aftersound of coupled strings,
  * Weinreich 1977) until the damper ends it after the note's release. Deterministic. */
 typedef struct sk_synth_desc {
-    int sample_rate;        /* 0 = 44100; [8000, 192000] */
-    double gain;            /* level of a note of velocity 127; 0 = 0.25; (0, 1] */
-    double inharmonicity;   /* B at C4 (scaled by pitch); 0 = 0.0004; [0, 0.01] (negative = 0) */
-    double decay_s;         /* aftersound time constant at C4; 0 = 3; [0.1, 60] */
-    double release_s;       /* damper time constant; 0 = 0.1; [0.005, 5] */
-    double tail_s;          /* sound kept after the last note ends; 0 = 1; [0, 30] */
+    int sample_rate;      /* 0 = 44100; [8000, 192000] */
+    double gain;          /* level of a note of velocity 127; 0 = 0.25; (0, 1] */
+    double inharmonicity; /* B at C4 (scaled by pitch); 0 = 0.0004; [0, 0.01] (negative = 0) */
+    double decay_s;       /* aftersound time constant at C4; 0 = 3; [0.1, 60] */
+    double release_s;     /* damper time constant; 0 = 0.1; [0.005, 5] */
+    double tail_s;        /* sound kept after the last note ends; 0 = 1; [0, 30] */
 } sk_synth_desc;
 
 /* Number of samples a melody's sound takes (its end plus the tail). */
@@ -236,25 +238,25 @@ sk_result sk_synth_render(const sk_melody *melody, const sk_synth_desc *desc, fl
 
 /* How the hand plays (beyond the thesis's input, which is the press itself). */
 typedef struct sk_performance_desc {
-    double approach_s;      /* a finger starts down toward its key this long before the
-                               key reaches half its dip (= the note's start); 0 = 0.12;
-                               [0.02, 1] */
-    double descent_s;       /* key travel from top to bottom (and back); 0 = 0.04;
-                               [0.005, 0.2] */
-    double lift_s;          /* back up to the hover height after the key is up; 0 = 0.12;
-                               [0.02, 1] */
-    double hover_mm;        /* fingertips' height above the white keys in the playing
-                               posture; 0 = 6; [2, 40] */
-    double clearance_mm;    /* a finger that does not play stays at least this above any
-                               key (it is lifted if the coupling pulls it lower); 0 = 1;
-                               [0, 10] */
-    double press_pip_ratio; /* PIP torque per MCP torque of a press; 0 = 0.5 / 0.9 (the
-                               thesis's piano demo, presets/hand/piano-key.json); [0, 4] */
-    double travel_s;        /* how far in time the wrist looks to the notes before and
-                               after (Gaussian width of the blend of their positions);
-                               0 = 0.04; [0.01, 2] */
-    double strike_drop_mm;  /* the wrist gives way this much at a strike and recovers;
-                               0 = 1.5; [0, 10] (negative = none) */
+    double approach_s;       /* a finger starts down toward its key this long before the
+                                key reaches half its dip (= the note's start); 0 = 0.12;
+                                [0.02, 1] */
+    double descent_s;        /* key travel from top to bottom (and back); 0 = 0.04;
+                                [0.005, 0.2] */
+    double lift_s;           /* back up to the hover height after the key is up; 0 = 0.12;
+                                [0.02, 1] */
+    double hover_mm;         /* fingertips' height above the white keys in the playing
+                                posture; 0 = 6; [2, 40] */
+    double clearance_mm;     /* a finger that does not play stays at least this above any
+                                key (it is lifted if the coupling pulls it lower); 0 = 1;
+                                [0, 10] */
+    double press_pip_ratio;  /* PIP torque per MCP torque of a press; 0 = 0.5 / 0.9 (the
+                                thesis's piano demo, presets/hand/piano-key.json); [0, 4] */
+    double travel_s;         /* how far in time the wrist looks to the notes before and
+                                after (Gaussian width of the blend of their positions);
+                                0 = 0.04; [0.01, 2] */
+    double strike_drop_mm;   /* the wrist gives way this much at a strike and recovers;
+                                0 = 1.5; [0, 10] (negative = none) */
     double tip_radius_mm[5]; /* fingertip pads (spheres at the ends of the distal links);
                                all 0 = measured on the hand surface: the largest distance
                                of its flesh from the distal link's axis near the tip, so
@@ -284,25 +286,25 @@ typedef struct sk_showcase_desc {
                                                NULL = baked here from back_skin and palm_skin
                                                at texture_size. Referenced */
     const sk_image *skin_normal;
-    const sk_skin *back_skin, *palm_skin;   /* microrelief of the baked texture (the skin
-                                               module's back-of-hand and palm presets); NULL
-                                               = none */
-    int texture_size;                       /* 0 = 1024; [64, 8192] */
-    int hand_triangles;                     /* of a surface built here; 0 = 8000 (the
-                                               thesis's count); [500, 200000] */
+    const sk_skin *back_skin, *palm_skin;    /* microrelief of the baked texture (the skin
+                                                module's back-of-hand and palm presets); NULL
+                                                = none */
+    int texture_size;                        /* 0 = 1024; [64, 8192] */
+    int hand_triangles;                      /* of a surface built here; 0 = 8000 (the
+                                                thesis's count); [500, 200000] */
     const sk_tissue_character_desc *forearm; /* the forearm's tissue character (presets/
                                                showcase/forearm.json): its root joint is
                                                the elbow, its joint named "wrist" rides on
                                                the hand's wrist, its rest +Y is the back of
                                                the forearm; NULL = no forearm. Copied */
     sk_piano_desc piano;
-    sk_fingering_desc fingering;            /* finger_x_mm all 0 = measured on the hand's
-                                               playing posture */
+    sk_fingering_desc fingering; /* finger_x_mm all 0 = measured on the hand's
+                                    playing posture */
     sk_performance_desc performance;
     sk_synth_desc synth;
-    double fps;             /* 0 = 24; [1, 240] */
-    int width, height;      /* frames; 0 = 1280 x 720; [16, 8192] */
-    int samples;            /* camera samples per pixel; 0 = 16; [1, 1024] */
+    double fps;        /* 0 = 24; [1, 240] */
+    int width, height; /* frames; 0 = 1280 x 720; [16, 8192] */
+    int samples;       /* camera samples per pixel; 0 = 16; [1, 1024] */
 } sk_showcase_desc;
 
 typedef struct sk_showcase sk_showcase;
@@ -328,17 +330,17 @@ double sk_showcase_link_radius(const sk_showcase *showcase, int link);
  * frame can be computed by itself. */
 typedef struct sk_showcase_pose {
     double time_s;
-    double dofs[SK_HAND_DOF_COUNT];   /* absolute, hand coordinates (sk_hand_forward) */
-    sk_hand_frames frames;            /* posed, hand coordinates */
+    double dofs[SK_HAND_DOF_COUNT];       /* absolute, hand coordinates (sk_hand_forward) */
+    sk_hand_frames frames;                /* posed, hand coordinates */
     double key_angle[SK_PIANO_KEY_COUNT]; /* turn of each key (0 = up, piano->max_angle =
                                              fully down) */
     int key_finger[SK_PIANO_KEY_COUNT];   /* the finger pushing each key (1..5), 0 none */
-    int finger_note[5];               /* note index (into the melody) each finger plays
-                                         now, -1 none */
-    sk_vec3d tip_centre[5];           /* scene position of each fingertip pad's centre */
+    int finger_note[5];                   /* note index (into the melody) each finger plays
+                                             now, -1 none */
+    sk_vec3d tip_centre[5];               /* scene position of each fingertip pad's centre */
     double tip_radius[5];
-    int solves;                       /* posture solves the contact took */
-    double contact_error_mm;          /* largest miss of a pressing fingertip's target */
+    int solves;              /* posture solves the contact took */
+    double contact_error_mm; /* largest miss of a pressing fingertip's target */
 } sk_showcase_pose;
 
 sk_result sk_showcase_pose_at(sk_showcase *showcase, double time_s, sk_showcase_pose *out,
@@ -358,17 +360,17 @@ sk_result sk_showcase_forearm_at(sk_showcase *showcase, int frame, float *skin, 
 /* Where the time of the last frames went (seconds, summed over the frames). */
 typedef struct sk_showcase_stats {
     int frames;
-    double seconds_input;    /* melody -> finger intents and wrist travel */
-    double seconds_solve;    /* posture solves of the contact */
-    double seconds_skin;     /* hand mesh (skinning) and the forearm's normals */
-    double seconds_tissue;   /* forearm simulation */
-    double seconds_scene;    /* building the render scene */
-    double seconds_render;   /* ray tracing */
-    double seconds_write;    /* PNG files */
-    double seconds_audio;    /* synthesis and WAV */
-    double seconds_video;    /* ffmpeg */
+    double seconds_input;  /* melody -> finger intents and wrist travel */
+    double seconds_solve;  /* posture solves of the contact */
+    double seconds_skin;   /* hand mesh (skinning) and the forearm's normals */
+    double seconds_tissue; /* forearm simulation */
+    double seconds_scene;  /* building the render scene */
+    double seconds_render; /* ray tracing */
+    double seconds_write;  /* PNG files */
+    double seconds_audio;  /* synthesis and WAV */
+    double seconds_video;  /* ffmpeg */
     bool video_written;
-    char video_note[256];    /* why there is no MP4, if there is none */
+    char video_note[256]; /* why there is no MP4, if there is none */
 } sk_showcase_stats;
 
 /* Renders one frame (RGBA float, linear premultiplied, as sk_render_scene_render).
@@ -379,14 +381,14 @@ sk_result sk_showcase_render_frame(sk_showcase *showcase, int frame, sk_image *i
                                    sk_showcase_stats *stats, sk_error *err);
 
 typedef struct sk_showcase_run_desc {
-    const char *output_dir;  /* required; created. Writes frames/frame_NNNN.png,
-                                showcase.wav, fingering.txt and showcase.mp4 */
-    int first_frame;         /* default 0 */
-    int last_frame;          /* inclusive; -1 = the last frame */
-    bool join_only;          /* render nothing: make the MP4 from the frames in the folder */
-    bool no_video;           /* leave out the MP4 */
-    const char *ffmpeg;      /* the ffmpeg program; NULL = "ffmpeg" on the PATH */
-    sk_progress progress;    /* fraction of the frames done */
+    const char *output_dir; /* required; created. Writes frames/frame_NNNN.png,
+                               showcase.wav, fingering.txt and showcase.mp4 */
+    int first_frame;        /* default 0 */
+    int last_frame;         /* inclusive; -1 = the last frame */
+    bool join_only;         /* render nothing: make the MP4 from the frames in the folder */
+    bool no_video;          /* leave out the MP4 */
+    const char *ffmpeg;     /* the ffmpeg program; NULL = "ffmpeg" on the PATH */
+    sk_progress progress;   /* fraction of the frames done */
 } sk_showcase_run_desc;
 
 /* Checks a run's outputs before any work: the output folder, if it exists, is a folder,

@@ -26,8 +26,8 @@
 extern "C" {
 #endif
 
-#define SK_SKIN_MAX_LEVELS 6    /* hierarchy levels (the paper uses up to 3) */
-#define SK_SKIN_MAX_SEGMENTS 8  /* Bezier segments of one section profile */
+#define SK_SKIN_MAX_LEVELS 6      /* hierarchy levels (the paper uses up to 3) */
+#define SK_SKIN_MAX_SEGMENTS 8    /* Bezier segments of one section profile */
 #define SK_SKIN_MAX_CELLS 8000000 /* cells of all levels together */
 
 /* Paper parameter 1, base layout of the centre points. */
@@ -55,27 +55,27 @@ typedef struct sk_skin_segment {
 
 typedef struct sk_skin_level {
     /* Centre points (paper parameter 1). */
-    sk_skin_layout layout;   /* default triangular */
-    sk_skin_jitter jitter;   /* default uniform */
-    float jitter_rate;       /* maximum jitter / spacing, [0, 1]; default 0 (exact lattice) */
-    float spacing_mm;        /* lattice spacing before stretch, (0, 1000]; 0 = default: level 1
-                                0.5 mm, each deeper level 0.4 x the level above */
+    sk_skin_layout layout; /* default triangular */
+    sk_skin_jitter jitter; /* default uniform */
+    float jitter_rate;     /* maximum jitter / spacing, [0, 1]; default 0 (exact lattice) */
+    float spacing_mm;      /* lattice spacing before stretch, (0, 1000]; 0 = default: level 1
+                              0.5 mm, each deeper level 0.4 x the level above */
     /* Edge perturbation by midpoint displacement (parameter 2): at division depth n the
        midpoint moves by V = A 2^(-n h) Rnd L. */
-    float perturb_rate;      /* A, [0, 1]; default 0 (straight edges) */
-    float perturb_decay;     /* h, [0, 4]; default 0 (self-similar) */
-    int perturb_depth;       /* division depths, [1, 10]; 0 = default 4 (16 segments) */
+    float perturb_rate;  /* A, [0, 1]; default 0 (straight edges) */
+    float perturb_decay; /* h, [0, 4]; default 0 (self-similar) */
+    int perturb_depth;   /* division depths, [1, 10]; 0 = default 4 (16 segments) */
     /* Stretch (parameter 3): polygons scaled by Sx along the direction stretch_angle and
        Sy across it, after division and perturbation. */
-    float stretch[2];        /* Sx, Sy in (0, 100]; 0 = default 1 */
-    float stretch_angle;     /* radians, counter-clockwise from +x; default 0 */
+    float stretch[2];    /* Sx, Sy in (0, 100]; 0 = default 1 */
+    float stretch_angle; /* radians, counter-clockwise from +x; default 0 */
     /* Section profile (parameter 5) and roundness (parameter 6). */
-    int segment_count;       /* [1, SK_SKIN_MAX_SEGMENTS]; 0 = default one segment
-                                (0,3)(5,3)(8,2.5)(10,0) (Fig. 13c) */
+    int segment_count; /* [1, SK_SKIN_MAX_SEGMENTS]; 0 = default one segment
+                          (0,3)(5,3)(8,2.5)(10,0) (Fig. 13c) */
     sk_skin_segment segments[SK_SKIN_MAX_SEGMENTS]; /* chained: each starts where the
                                 previous ends; x non-decreasing from 0 to 10 */
-    float roundness;         /* [0, 1]: 0 contours similar to the polygon, 1 nearly
-                                circular; default 0 */
+    float roundness; /* [0, 1]: 0 contours similar to the polygon, 1 nearly
+                        circular; default 0 */
 } sk_skin_level;
 
 /* A kind of pore (not in the paper's figures; the paper describes them in sec. 3.1):
@@ -124,20 +124,20 @@ typedef enum sk_skin_normal_model {
 } sk_skin_normal_model;
 
 typedef struct sk_skin_desc {
-    uint64_t seed;          /* every random choice derives from it; default 0 */
-    float size_mm[2];       /* tile width and height in mm, (0, 1000]; 0 = default 10 */
-    bool aperiodic;         /* false (default): the tile wraps seamlessly (periodic
-                               Voronoi on a torus); true: no wrap inside the tile */
-    int level_count;        /* [1, SK_SKIN_MAX_LEVELS]; 0 = the default skin (3 levels,
-                               jittered and perturbed; levels[] is then ignored) */
+    uint64_t seed;    /* every random choice derives from it; default 0 */
+    float size_mm[2]; /* tile width and height in mm, (0, 1000]; 0 = default 10 */
+    bool aperiodic;   /* false (default): the tile wraps seamlessly (periodic
+                         Voronoi on a torus); true: no wrap inside the tile */
+    int level_count;  /* [1, SK_SKIN_MAX_LEVELS]; 0 = the default skin (3 levels,
+                         jittered and perturbed; levels[] is then ignored) */
     sk_skin_level levels[SK_SKIN_MAX_LEVELS];
     sk_skin_normal_model normal_model; /* default gradient */
     sk_skin_pores pores;
     sk_skin_shading shading;
-    sk_progress progress;   /* progress of sk_skin_create (not part of presets) */
-    double max_memory;      /* bytes the cells may take (estimated at SK_SKIN_BYTES_PER_CELL
-                               before building); 0 = no cap but SK_SKIN_MAX_CELLS (not part
-                               of presets) */
+    sk_progress progress; /* progress of sk_skin_create (not part of presets) */
+    double max_memory;    /* bytes the cells may take (estimated at SK_SKIN_BYTES_PER_CELL
+                             before building); 0 = no cap but SK_SKIN_MAX_CELLS (not part
+                             of presets) */
 } sk_skin_desc;
 
 /* Memory of one cell of any level, all its structures together (peak resident memory
@@ -174,12 +174,12 @@ sk_result sk_skin_reprofile(sk_skin *skin, const sk_skin_desc *desc, sk_error *e
 
 /* What sets two descs apart, as the maps see it (the flags of sk_skin_desc_changes). */
 typedef enum sk_skin_change {
-    SK_SKIN_CHANGE_CELLS = 1,   /* a key that places the cells: every map may change (and
-                                   sk_skin_reprofile refuses it) */
-    SK_SKIN_CHANGE_RELIEF = 2,  /* the profiles, roundness, normal model or pores: the
-                                   height, normal and shaded maps; the cell ids and furrow
-                                   distances stay the same bytes */
-    SK_SKIN_CHANGE_SHADING = 4  /* the shading: the shaded preview only (the normals stay) */
+    SK_SKIN_CHANGE_CELLS = 1,  /* a key that places the cells: every map may change (and
+                                  sk_skin_reprofile refuses it) */
+    SK_SKIN_CHANGE_RELIEF = 2, /* the profiles, roundness, normal model or pores: the
+                                  height, normal and shaded maps; the cell ids and furrow
+                                  distances stay the same bytes */
+    SK_SKIN_CHANGE_SHADING = 4 /* the shading: the shaded preview only (the normals stay) */
 } sk_skin_change;
 /* The changes (sk_skin_change flags; 0 for descs that give the same maps) between two
  * valid descs, compared as resolved. A map a change does not name renders the same
@@ -205,9 +205,9 @@ void sk_skin_eval(const sk_skin *skin, double x_mm, double y_mm, float *height_m
 typedef struct sk_skin_sample {
     float height_mm;
     sk_vec3f normal;
-    uint32_t cell[SK_SKIN_MAX_LEVELS];    /* cell id of each level (level k at [k-1]) */
-    float furrow_mm[SK_SKIN_MAX_LEVELS];  /* distance to the boundary of that cell (only
-                                             with SK_SKIN_QUERY_FURROW, else 0) */
+    uint32_t cell[SK_SKIN_MAX_LEVELS];   /* cell id of each level (level k at [k-1]) */
+    float furrow_mm[SK_SKIN_MAX_LEVELS]; /* distance to the boundary of that cell (only
+                                            with SK_SKIN_QUERY_FURROW, else 0) */
 } sk_skin_sample;
 
 enum { SK_SKIN_QUERY_FURROW = 1 };
@@ -229,12 +229,12 @@ void sk_skin_height_range(const sk_skin *skin, float *min_mm, float *max_mm);
 uint32_t sk_skin_cell_count(const sk_skin *skin, int level);
 
 typedef struct sk_skin_cell_info {
-    uint32_t parent;        /* cell of level - 1 (UINT32_MAX at level 1) */
-    uint32_t first_child;   /* children are first_child .. first_child + child_count - 1 */
-    uint32_t child_count;   /* at level + 1 (0 at the last level) */
-    sk_vec2d centre;        /* where the section profile has its first control point */
-    sk_vec2d site;          /* the centre point the Voronoi division started from */
-    uint32_t edge_count;    /* polygon edges (before perturbation) */
+    uint32_t parent;      /* cell of level - 1 (UINT32_MAX at level 1) */
+    uint32_t first_child; /* children are first_child .. first_child + child_count - 1 */
+    uint32_t child_count; /* at level + 1 (0 at the last level) */
+    sk_vec2d centre;      /* where the section profile has its first control point */
+    sk_vec2d site;        /* the centre point the Voronoi division started from */
+    uint32_t edge_count;  /* polygon edges (before perturbation) */
 } sk_skin_cell_info;
 
 sk_result sk_skin_cell_info_get(const sk_skin *skin, int level, uint32_t cell,
@@ -253,25 +253,24 @@ size_t sk_skin_cell_outline(const sk_skin *skin, int level, uint32_t cell, int s
  * its start up to, not including, the next edge's start; `neighbour` receives the cell of
  * the same level across it (UINT32_MAX on a parent's boundary). Same count rules. */
 size_t sk_skin_cell_edge(const sk_skin *skin, int level, uint32_t cell, uint32_t edge,
-                         int subdivide, uint32_t *neighbour, sk_vec2d *points,
-                         size_t max_points);
+                         int subdivide, uint32_t *neighbour, sk_vec2d *points, size_t max_points);
 
 /* ----------------------------------------------------------------- rendering */
 typedef struct sk_skin_render_desc {
-    int width, height;   /* pixels of the whole map (covering the tile), [1, 65536] */
-    int region[4];       /* x, y, w, h in pixels (y from the top row); w = h = 0 (default):
-                            the whole map. Pixels are identical to the whole map's. */
+    int width, height; /* pixels of the whole map (covering the tile), [1, 65536] */
+    int region[4];     /* x, y, w, h in pixels (y from the top row); w = h = 0 (default):
+                          the whole map. Pixels are identical to the whole map's. */
     /* Outputs, each NULL or w * h elements (rows top first, row stride w): */
-    float *height_mm;    /* mm */
-    float *normal;       /* 3 floats: unit tangent-space normal (x right, y up, z out) */
-    float *furrow;       /* mm to the nearest furrow of furrow_level */
-    uint32_t *cell_id;   /* cell of id_level */
-    float *preview;      /* 3 floats: shaded linear RGB in [0, 1] */
-    float *edges;        /* 3 floats: the preview with every level's furrows drawn in
-                            (level 1 red, 2 green, 3 blue, deeper yellow) */
-    int furrow_level;    /* 1..level_count; 0 = default 1 */
-    int id_level;        /* 1..level_count; 0 = default 1 */
-    int samples;         /* preview and edges: samples per pixel side, [1, 8]; 0 = 1 */
+    float *height_mm;  /* mm */
+    float *normal;     /* 3 floats: unit tangent-space normal (x right, y up, z out) */
+    float *furrow;     /* mm to the nearest furrow of furrow_level */
+    uint32_t *cell_id; /* cell of id_level */
+    float *preview;    /* 3 floats: shaded linear RGB in [0, 1] */
+    float *edges;      /* 3 floats: the preview with every level's furrows drawn in
+                          (level 1 red, 2 green, 3 blue, deeper yellow) */
+    int furrow_level;  /* 1..level_count; 0 = default 1 */
+    int id_level;      /* 1..level_count; 0 = default 1 */
+    int samples;       /* preview and edges: samples per pixel side, [1, 8]; 0 = 1 */
     sk_progress progress;
 } sk_skin_render_desc;
 

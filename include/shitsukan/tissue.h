@@ -78,25 +78,25 @@ typedef struct sk_tissue_joint_desc {
  * end_length) and the shaft between them (semi-axes radius * shaft_ratio, the same times
  * depth_ratio, half the length). */
 typedef struct sk_tissue_bone_desc {
-    char name[SK_TISSUE_NAME_SIZE];   /* unique; muscles and fat regions refer to it */
-    char joint[SK_TISSUE_NAME_SIZE];  /* the joint whose frame carries the bone */
-    char end[SK_TISSUE_NAME_SIZE];    /* the joint where it ends; "" = joint + to_mm */
-    float from_mm[3];                 /* start, offset from the joint at rest; default 0 */
-    float to_mm[3];                   /* end, offset from the joint, when `end` is "" */
-    float radius_mm;                  /* of the rounded ends; (0, 1000] */
-    float shaft_ratio;                /* shaft radius / radius; 0 = 0.6; (0, 1] */
-    float depth_ratio;                /* Y / X semi-axis of every ellipsoid; 0 = 1; (0, 4] */
-    float end_length_mm;              /* ends' semi-axis along the bone; 0 = radius */
-    float x_axis[3];                  /* rest direction of the ellipsoids' X axis (projected
-                                         across the bone); all 0 = the world axis most
-                                         across the bone (X, then Y, then Z) */
+    char name[SK_TISSUE_NAME_SIZE];  /* unique; muscles and fat regions refer to it */
+    char joint[SK_TISSUE_NAME_SIZE]; /* the joint whose frame carries the bone */
+    char end[SK_TISSUE_NAME_SIZE];   /* the joint where it ends; "" = joint + to_mm */
+    float from_mm[3];                /* start, offset from the joint at rest; default 0 */
+    float to_mm[3];                  /* end, offset from the joint, when `end` is "" */
+    float radius_mm;                 /* of the rounded ends; (0, 1000] */
+    float shaft_ratio;               /* shaft radius / radius; 0 = 0.6; (0, 1] */
+    float depth_ratio;               /* Y / X semi-axis of every ellipsoid; 0 = 1; (0, 4] */
+    float end_length_mm;             /* ends' semi-axis along the bone; 0 = radius */
+    float x_axis[3];                 /* rest direction of the ellipsoids' X axis (projected
+                                        across the bone); all 0 = the world axis most
+                                        across the bone (X, then Y, then Z) */
 } sk_tissue_bone_desc;
 
 /* A point fixed on a bone: `at` along the bone (0 its start, 1 its end) plus an offset
  * in the rest (world) axes. */
 typedef struct sk_tissue_attachment_desc {
     char bone[SK_TISSUE_NAME_SIZE];
-    float at;                         /* [-1, 2] */
+    float at; /* [-1, 2] */
     float offset_mm[3];
 } sk_tissue_attachment_desc;
 
@@ -108,11 +108,11 @@ typedef struct sk_tissue_muscle_desc {
     char name[SK_TISSUE_NAME_SIZE];
     sk_tissue_attachment_desc origin;
     sk_tissue_attachment_desc insertion;
-    float thickness_mm;               /* rest thickness 2 a0 along X; (0, 1000] */
-    float width_ratio;                /* b0 / a0 (Y across); 0 = 1; (0, 8] */
-    float belly_fraction;             /* 2 c0 / L0 (the rest is tendon); 0 = 0.8; (0, 1.5] */
-    float x_axis[3];                  /* rest direction of X (the thickness), across Z;
-                                         all 0 = away from the origin bone's axis */
+    float thickness_mm;   /* rest thickness 2 a0 along X; (0, 1000] */
+    float width_ratio;    /* b0 / a0 (Y across); 0 = 1; (0, 8] */
+    float belly_fraction; /* 2 c0 / L0 (the rest is tendon); 0 = 0.8; (0, 1.5] */
+    float x_axis[3];      /* rest direction of X (the thickness), across Z;
+                             all 0 = away from the origin bone's axis */
 } sk_tissue_muscle_desc;
 
 /* Where fat lies (per region): grid points within `thickness_mm` of the tissue, beside
@@ -139,61 +139,61 @@ typedef struct sk_tissue_joint_map_desc {
 typedef struct sk_tissue_tracked_desc {
     char name[SK_TISSUE_NAME_SIZE];
     char bone[SK_TISSUE_NAME_SIZE];
-    float at;                         /* [-1, 2] */
-    float direction[3];               /* rest direction; must not be zero */
+    float at;           /* [-1, 2] */
+    float direction[3]; /* rest direction; must not be zero */
 } sk_tissue_tracked_desc;
 
 /* Skin generation (sec. 4). */
 typedef struct sk_tissue_skin_desc {
-    float spacing_mm;                 /* grid spacing; 0 = 4; [0.5, 50] */
-    int dilations;                    /* the paper's dilation passes; 0 = 3; [1, 32] */
-    float dilation_radius_mm;         /* reach of one pass; 0 = 1.5 spacings; [spacing, 10 spacings] */
-    float threshold;                  /* isosurface level; 0 = 0.3; (0, 1) */
-    int smooth_iterations;            /* optional smoothing of the rest skin (the paper's
-                                         future work), kept outside the tissue; 0 = none:
-                                         every vertex on a grid point; [0, 200] */
-    int neighbourhood;                /* springs between grid neighbours: 18 (faces and
-                                         face diagonals) or 26 (and body diagonals); 0 = 18 */
+    float spacing_mm;         /* grid spacing; 0 = 4; [0.5, 50] */
+    int dilations;            /* the paper's dilation passes; 0 = 3; [1, 32] */
+    float dilation_radius_mm; /* reach of one pass; 0 = 1.5 spacings; [spacing, 10 spacings] */
+    float threshold;          /* isosurface level; 0 = 0.3; (0, 1) */
+    int smooth_iterations;    /* optional smoothing of the rest skin (the paper's
+                                 future work), kept outside the tissue; 0 = none:
+                                 every vertex on a grid point; [0, 200] */
+    int neighbourhood;        /* springs between grid neighbours: 18 (faces and
+                                 face diagonals) or 26 (and body diagonals); 0 = 18 */
 } sk_tissue_skin_desc;
 
 /* Material of the springs and points (the paper leaves them open). */
 typedef struct sk_tissue_material_desc {
-    float fat_stiffness;              /* N/m, fat-fat and fat-skin springs; 0 = 5 (fat's
-                                         Young's modulus of about 1 kPa times a 4 mm
-                                         spacing); [1e-3, 1e6] */
-    float anchor_stiffness;           /* N/m, fat to muscle and bone points; 0 = fat */
-    float skin_stiffness;             /* N/m, along skin triangle edges; 0 = 5 x fat */
-    float tether_stiffness;           /* N/m, a zero-length spring from every fat and skin
-                                         point to where the tissue alone carries it (beyond
-                                         the paper: the flesh cannot stay tangled, and it
-                                         returns exactly to rest); 0 = 0.4 x fat; [1e-4, 1e6] */
-    float fat_density;                /* kg/m^3; 0 = 900; [100, 20000] */
-    float skin_density;               /* kg/m^3; 0 = 1100; [100, 20000] */
-    float skin_thickness_mm;          /* mass of the skin sheet; 0 = 1.5; [0, 20] */
-    float damping_ratio;              /* of every spring, c = 2 zeta sqrt(k m); 0 = 0.1;
-                                         (0, 4] */
+    float fat_stiffness;     /* N/m, fat-fat and fat-skin springs; 0 = 5 (fat's
+                                Young's modulus of about 1 kPa times a 4 mm
+                                spacing); [1e-3, 1e6] */
+    float anchor_stiffness;  /* N/m, fat to muscle and bone points; 0 = fat */
+    float skin_stiffness;    /* N/m, along skin triangle edges; 0 = 5 x fat */
+    float tether_stiffness;  /* N/m, a zero-length spring from every fat and skin
+                                point to where the tissue alone carries it (beyond
+                                the paper: the flesh cannot stay tangled, and it
+                                returns exactly to rest); 0 = 0.4 x fat; [1e-4, 1e6] */
+    float fat_density;       /* kg/m^3; 0 = 900; [100, 20000] */
+    float skin_density;      /* kg/m^3; 0 = 1100; [100, 20000] */
+    float skin_thickness_mm; /* mass of the skin sheet; 0 = 1.5; [0, 20] */
+    float damping_ratio;     /* of every spring, c = 2 zeta sqrt(k m); 0 = 0.1;
+                                (0, 4] */
 } sk_tissue_material_desc;
 
 /* The simulation's clock and its guards. */
 typedef struct sk_tissue_simulation_desc {
-    int step_hz;                      /* fixed internal steps per second; 0 = 240;
-                                         [60, 20000]; a multiple of 120 makes 24, 30 and
-                                         60 fps frames fall on steps exactly; 480 brings
-                                         the jiggle's period closer to the converged one
-                                         (docs/tissue.md) at twice the cost */
-    int iterations;                   /* solver sweeps per step (XPBD converges to implicit
-                                         Euler as they grow); 0 = 1; [1, 64] */
-    float teleport_speed_m_s;         /* a bone end moving faster than this in one step
-                                         carries its flesh along instead of stretching
-                                         it; 0 = 50; [0.1, 1e6] */
-    bool no_fat;                      /* skin follows the bones rigidly (no fat layer), for
-                                         comparison; default false */
+    int step_hz;              /* fixed internal steps per second; 0 = 240;
+                                 [60, 20000]; a multiple of 120 makes 24, 30 and
+                                 60 fps frames fall on steps exactly; 480 brings
+                                 the jiggle's period closer to the converged one
+                                 (docs/tissue.md) at twice the cost */
+    int iterations;           /* solver sweeps per step (XPBD converges to implicit
+                                 Euler as they grow); 0 = 1; [1, 64] */
+    float teleport_speed_m_s; /* a bone end moving faster than this in one step
+                                 carries its flesh along instead of stretching
+                                 it; 0 = 50; [0.1, 1e6] */
+    bool no_fat;              /* skin follows the bones rigidly (no fat layer), for
+                                 comparison; default false */
 } sk_tissue_simulation_desc;
 
 typedef struct sk_tissue_character_desc {
     char name[SK_TISSUE_NAME_SIZE];
-    float motion_unit_mm;             /* millimetres per length unit of motion files
-                                         (root translation); 0 = 10 (cm); [1e-3, 1e4] */
+    float motion_unit_mm; /* millimetres per length unit of motion files
+                             (root translation); 0 = 10 (cm); [1e-3, 1e4] */
     int joint_count;
     sk_tissue_joint_desc joints[SK_TISSUE_MAX_JOINTS];
     int bone_count;
@@ -222,7 +222,8 @@ void sk_tissue_character_desc_resolve(sk_tissue_character_desc *desc);
 sk_result sk_tissue_character_desc_validate(const sk_tissue_character_desc *desc, sk_error *err);
 /* Binds a parsed JSON tree (after --set edits), resolves and validates. `desc` is large
  * (allocate it on the heap). */
-sk_result sk_tissue_character_bind(const sk_preset *preset, sk_tissue_character_desc *desc, sk_error *err);
+sk_result sk_tissue_character_bind(const sk_preset *preset, sk_tissue_character_desc *desc,
+                                   sk_error *err);
 /* Reads, binds, resolves and validates a character file. */
 sk_result sk_tissue_character_load(const char *path, sk_tissue_character_desc *desc, sk_error *err);
 
@@ -238,32 +239,34 @@ void sk_tissue_muscle_axes(double a0, double b0, double c0, double rest_length, 
 typedef struct sk_tissue_model sk_tissue_model;
 
 typedef struct sk_tissue_build_options {
-    sk_progress progress;             /* fraction of the skin generation done */
+    sk_progress progress; /* fraction of the skin generation done */
 } sk_tissue_build_options;
 
 /* Where the time of a build went (seconds) and what it made. */
 typedef struct sk_tissue_model_stats {
-    int grid[3];                      /* grid points along x, y, z */
+    int grid[3]; /* grid points along x, y, z */
     double spacing_mm;
-    size_t tissue_voxels;             /* grid points inside bones or muscles */
-    size_t points;                    /* grid points above the threshold inside the skin */
+    size_t tissue_voxels; /* grid points inside bones or muscles */
+    size_t points;        /* grid points above the threshold inside the skin */
     size_t fat_points, skin_points, muscle_points, bone_points;
     size_t springs, skin_springs, skin_fat_springs, fat_springs, anchor_springs;
     size_t skin_triangles;
-    size_t removed_cells;             /* cells removed to keep the skin manifold */
-    double free_mass_kg;              /* fat and skin points */
-    double seconds_voxelise, seconds_fat, seconds_dilate, seconds_extract,
-        seconds_classify, seconds_springs, seconds_total;
+    size_t removed_cells; /* cells removed to keep the skin manifold */
+    double free_mass_kg;  /* fat and skin points */
+    double seconds_voxelise, seconds_fat, seconds_dilate, seconds_extract, seconds_classify,
+        seconds_springs, seconds_total;
 } sk_tissue_model_stats;
 
-sk_result sk_tissue_model_build(const sk_tissue_character_desc *desc, const sk_tissue_build_options *options,
-                                sk_tissue_model **out, sk_error *err);
+sk_result sk_tissue_model_build(const sk_tissue_character_desc *desc,
+                                const sk_tissue_build_options *options, sk_tissue_model **out,
+                                sk_error *err);
 void sk_tissue_model_destroy(sk_tissue_model *model);
 /* The memory sk_tissue_model_build peaks at for `desc` (bytes), from its grid (grid[3]
  * points along x, y, z; may be NULL) at SK_TISSUE_BYTES_PER_GRID_POINT, for callers that
  * cap their memory: places the bones and muscles and sizes the grid only. Errors as the
  * build's (a desc out of range, a grid beyond 2^28 points). */
-sk_result sk_tissue_model_memory(const sk_tissue_character_desc *desc, double *bytes, int grid[3], sk_error *err);
+sk_result sk_tissue_model_memory(const sk_tissue_character_desc *desc, double *bytes, int grid[3],
+                                 sk_error *err);
 /* Peak resident memory of a build over its grid points, rounded up: measured 55, 50 and
  * 45 bytes for the arm at skin.spacing_mm 4, 2 and 1.5 mm and 19 for the body at 3 mm
  * (the springs of the points inside the skin dominate; a character that fills its box
@@ -287,12 +290,12 @@ typedef enum sk_tissue_point_class {
 
 /* The rest positions of one class of points as a point cloud (positions only), with an
  * attribute "owner" (bone or muscle index for bone and muscle points, else -1). */
-sk_result sk_tissue_model_points(const sk_tissue_model *model, sk_tissue_point_class cls, sk_mesh *out,
-                                 sk_error *err);
+sk_result sk_tissue_model_points(const sk_tissue_model *model, sk_tissue_point_class cls,
+                                 sk_mesh *out, sk_error *err);
 /* The rest ellipsoids of the bones (cls BONE) or muscles (cls MUSCLE) as one triangle
  * mesh, `segments` around each (8..256). */
-sk_result sk_tissue_model_ellipsoids(const sk_tissue_model *model, sk_tissue_point_class cls, int segments,
-                                     sk_mesh *out, sk_error *err);
+sk_result sk_tissue_model_ellipsoids(const sk_tissue_model *model, sk_tissue_point_class cls,
+                                     int segments, sk_mesh *out, sk_error *err);
 
 /* ============================================================ motion */
 /* The skeleton's pose at a time: world rotation and position of every character joint. */
@@ -309,7 +312,7 @@ typedef struct sk_tissue_motion {
        position. Unset joints keep identity and the rest position. */
     void (*sample)(void *user, double seconds, sk_quatd *local, sk_vec3d *root_mm);
     void *user;
-    double duration;                  /* seconds (for the default frame range) */
+    double duration; /* seconds (for the default frame range) */
 } sk_tissue_motion;
 
 /* A BVH bound to a model's skeleton: each character joint takes the rotation of the
@@ -319,8 +322,8 @@ typedef struct sk_tissue_motion {
  * (quaternion slerp, linear position); before the first frame and after the last the end
  * frames hold. Fails with SK_ERROR_NOT_FOUND if no joint binds. */
 typedef struct sk_tissue_bvh_motion sk_tissue_bvh_motion;
-sk_result sk_tissue_bvh_motion_create(const sk_tissue_model *model, const sk_bvh *bvh, double unit_mm,
-                                      sk_tissue_bvh_motion **out, sk_error *err);
+sk_result sk_tissue_bvh_motion_create(const sk_tissue_model *model, const sk_bvh *bvh,
+                                      double unit_mm, sk_tissue_bvh_motion **out, sk_error *err);
 void sk_tissue_bvh_motion_destroy(sk_tissue_bvh_motion *motion);
 sk_tissue_motion sk_tissue_bvh_motion_get(const sk_tissue_bvh_motion *motion);
 /* How many character joints the motion drives; names of those it does not. */
@@ -347,8 +350,8 @@ typedef struct sk_tissue_sim sk_tissue_sim;
 
 /* Starts at time 0 with every point at rest and the bones at the motion's pose at 0 (the
  * flesh carried there rigidly). */
-sk_result sk_tissue_sim_create(const sk_tissue_model *model, const sk_tissue_motion *motion, sk_tissue_sim **out,
-                               sk_error *err);
+sk_result sk_tissue_sim_create(const sk_tissue_model *model, const sk_tissue_motion *motion,
+                               sk_tissue_sim **out, sk_error *err);
 void sk_tissue_sim_destroy(sk_tissue_sim *sim);
 
 /* Advances by whole internal steps until the simulated time reaches `seconds` (no-op if
@@ -374,8 +377,10 @@ void sk_tissue_sim_energy(const sk_tissue_sim *sim, double *potential_j, double 
 /* The state (step count, positions and velocities of the fat and skin points, the
  * previous step) as bytes, so a run can be resumed bit for bit. */
 size_t sk_tissue_sim_state_size(const sk_tissue_sim *sim);
-sk_result sk_tissue_sim_save_state(const sk_tissue_sim *sim, void *buffer, size_t size, sk_error *err);
-sk_result sk_tissue_sim_load_state(sk_tissue_sim *sim, const void *buffer, size_t size, sk_error *err);
+sk_result sk_tissue_sim_save_state(const sk_tissue_sim *sim, void *buffer, size_t size,
+                                   sk_error *err);
+sk_result sk_tissue_sim_load_state(sk_tissue_sim *sim, const void *buffer, size_t size,
+                                   sk_error *err);
 sk_result sk_tissue_sim_save_state_file(const sk_tissue_sim *sim, const char *path, sk_error *err);
 sk_result sk_tissue_sim_load_state_file(sk_tissue_sim *sim, const char *path, sk_error *err);
 
@@ -390,40 +395,41 @@ sk_result sk_tissue_sim_load_state_file(sk_tissue_sim *sim, const char *path, sk
  * motion's start; the simulation always runs from time 0 (or a resumed state), whatever
  * frames are written. */
 typedef struct sk_tissue_run_desc {
-    const char *output_dir;           /* required; created */
-    int fps;                          /* output frames per second; 0 = 30; [1, 1000] */
-    int first_frame;                  /* first frame written; default 0 */
-    int last_frame;                   /* last frame written; 0 = the motion's end */
-    bool obj_frames;                  /* frames/NNNN.obj */
-    bool render;                      /* render/NNNN.png */
-    int render_width;                 /* pixels; 0 = 480; [64, 4096] */
-    bool no_pc2, no_glb;              /* leave those out */
-    const char *plot;                 /* PNG of the tracked points' displacement, or NULL */
-    const char *save_state;           /* the state after the last frame, or NULL */
-    const char *resume_state;         /* start from this state (at or before first_frame) */
-    sk_progress progress;             /* fraction of the frames done */
+    const char *output_dir;   /* required; created */
+    int fps;                  /* output frames per second; 0 = 30; [1, 1000] */
+    int first_frame;          /* first frame written; default 0 */
+    int last_frame;           /* last frame written; 0 = the motion's end */
+    bool obj_frames;          /* frames/NNNN.obj */
+    bool render;              /* render/NNNN.png */
+    int render_width;         /* pixels; 0 = 480; [64, 4096] */
+    bool no_pc2, no_glb;      /* leave those out */
+    const char *plot;         /* PNG of the tracked points' displacement, or NULL */
+    const char *save_state;   /* the state after the last frame, or NULL */
+    const char *resume_state; /* start from this state (at or before first_frame) */
+    sk_progress progress;     /* fraction of the frames done */
 } sk_tissue_run_desc;
 
 typedef struct sk_tissue_run_stats {
     int frames, first_frame, fps;
-    int64_t steps;                    /* internal steps taken */
-    double simulated_seconds;         /* motion time covered */
+    int64_t steps;                                          /* internal steps taken */
+    double simulated_seconds;                               /* motion time covered */
     double seconds_simulate, seconds_write, seconds_render; /* wall time */
-    double frames_per_second;         /* output frames simulated per wall second */
-    double max_displacement_mm;       /* largest distance of a skin point from where the
-                                         bones carry its rest position */
+    double frames_per_second;   /* output frames simulated per wall second */
+    double max_displacement_mm; /* largest distance of a skin point from where the
+                                   bones carry its rest position */
     double tracked_max_mm[SK_TISSUE_MAX_TRACKED];
-    bool glb;                         /* skin.glb written (not asked for, or too large:
-                                         more than 4096 frames or 400 MB of frames) */
+    bool glb; /* skin.glb written (not asked for, or too large:
+                 more than 4096 frames or 400 MB of frames) */
 } sk_tissue_run_stats;
 
 /* Runs the motion on the model and writes the folder (see above). `stats` may be NULL. */
-sk_result sk_tissue_run(const sk_tissue_model *model, const sk_tissue_motion *motion, const sk_tissue_run_desc *desc,
-                        sk_tissue_run_stats *stats, sk_error *err);
+sk_result sk_tissue_run(const sk_tissue_model *model, const sk_tissue_motion *motion,
+                        const sk_tissue_run_desc *desc, sk_tissue_run_stats *stats, sk_error *err);
 
 /* ============================================================ outputs */
 /* The model's counts and build timings as JSON. */
-sk_result sk_tissue_write_model_stats(const sk_tissue_model *model, const char *path, sk_error *err);
+sk_result sk_tissue_write_model_stats(const sk_tissue_model *model, const char *path,
+                                      sk_error *err);
 /* The layers into a folder (created): skin.ply, fat.ply, muscle.ply, bone.ply (rest point
  * clouds with an "owner" attribute), bones.obj and muscles.obj (the rest ellipsoids),
  * rest.obj, and layers.png: the layers cut open, rendered. */

@@ -18,21 +18,49 @@ extern "C" {
 #define SK_DEG_TO_RAD (SK_PI / 180.0)
 #define SK_RAD_TO_DEG (180.0 / SK_PI)
 
-typedef struct sk_vec2f { float x, y; } sk_vec2f;
-typedef struct sk_vec3f { float x, y, z; } sk_vec3f;
-typedef struct sk_vec4f { float x, y, z, w; } sk_vec4f;
-typedef struct sk_vec2d { double x, y; } sk_vec2d;
-typedef struct sk_vec3d { double x, y, z; } sk_vec3d;
-typedef struct sk_mat3f { float m[3][3]; } sk_mat3f;
-typedef struct sk_mat4f { float m[4][4]; } sk_mat4f;
-typedef struct sk_mat3d { double m[3][3]; } sk_mat3d;
-typedef struct sk_mat4d { double m[4][4]; } sk_mat4d;
-typedef struct sk_quatf { float w, x, y, z; } sk_quatf;
-typedef struct sk_quatd { double w, x, y, z; } sk_quatd;
+typedef struct sk_vec2f {
+    float x, y;
+} sk_vec2f;
+typedef struct sk_vec3f {
+    float x, y, z;
+} sk_vec3f;
+typedef struct sk_vec4f {
+    float x, y, z, w;
+} sk_vec4f;
+typedef struct sk_vec2d {
+    double x, y;
+} sk_vec2d;
+typedef struct sk_vec3d {
+    double x, y, z;
+} sk_vec3d;
+typedef struct sk_mat3f {
+    float m[3][3];
+} sk_mat3f;
+typedef struct sk_mat4f {
+    float m[4][4];
+} sk_mat4f;
+typedef struct sk_mat3d {
+    double m[3][3];
+} sk_mat3d;
+typedef struct sk_mat4d {
+    double m[4][4];
+} sk_mat4d;
+typedef struct sk_quatf {
+    float w, x, y, z;
+} sk_quatf;
+typedef struct sk_quatd {
+    double w, x, y, z;
+} sk_quatd;
 
 /* ------------------------------------------------------------ scalar helpers */
-static inline float sk_clampf(float v, float lo, float hi) { return v < lo ? lo : (v > hi ? hi : v); }
-static inline double sk_clampd(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
+static inline float sk_clampf(float v, float lo, float hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+static inline double sk_clampd(double v, double lo, double hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
 static inline float sk_lerpf(float a, float b, float t) { return a + (b - a) * t; }
 static inline double sk_lerpd(double a, double b, double t) { return a + (b - a) * t; }
 static inline float sk_smoothstepf(float e0, float e1, float x)
@@ -53,7 +81,11 @@ static inline int sk_imodpos(int a, int m)
 }
 
 /* ------------------------------------------------------------------ vec2f */
-static inline sk_vec2f sk_v2f(float x, float y) { sk_vec2f v = {x, y}; return v; }
+static inline sk_vec2f sk_v2f(float x, float y)
+{
+    sk_vec2f v = {x, y};
+    return v;
+}
 static inline sk_vec2f sk_v2f_add(sk_vec2f a, sk_vec2f b) { return sk_v2f(a.x + b.x, a.y + b.y); }
 static inline sk_vec2f sk_v2f_sub(sk_vec2f a, sk_vec2f b) { return sk_v2f(a.x - b.x, a.y - b.y); }
 static inline sk_vec2f sk_v2f_scale(sk_vec2f a, float s) { return sk_v2f(a.x * s, a.y * s); }
@@ -62,7 +94,11 @@ static inline float sk_v2f_cross(sk_vec2f a, sk_vec2f b) { return a.x * b.y - a.
 static inline float sk_v2f_length(sk_vec2f a) { return sqrtf(a.x * a.x + a.y * a.y); }
 
 /* ------------------------------------------------------------------ vec2d */
-static inline sk_vec2d sk_v2d(double x, double y) { sk_vec2d v = {x, y}; return v; }
+static inline sk_vec2d sk_v2d(double x, double y)
+{
+    sk_vec2d v = {x, y};
+    return v;
+}
 static inline sk_vec2d sk_v2d_add(sk_vec2d a, sk_vec2d b) { return sk_v2d(a.x + b.x, a.y + b.y); }
 static inline sk_vec2d sk_v2d_sub(sk_vec2d a, sk_vec2d b) { return sk_v2d(a.x - b.x, a.y - b.y); }
 static inline sk_vec2d sk_v2d_scale(sk_vec2d a, double s) { return sk_v2d(a.x * s, a.y * s); }
@@ -72,11 +108,27 @@ static inline double sk_v2d_length(sk_vec2d a) { return sqrt(a.x * a.x + a.y * a
 static inline sk_vec2d sk_v2d_perp(sk_vec2d a) { return sk_v2d(-a.y, a.x); }
 
 /* ------------------------------------------------------------------ vec3f */
-static inline sk_vec3f sk_v3f(float x, float y, float z) { sk_vec3f v = {x, y, z}; return v; }
-static inline sk_vec3f sk_v3f_add(sk_vec3f a, sk_vec3f b) { return sk_v3f(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline sk_vec3f sk_v3f_sub(sk_vec3f a, sk_vec3f b) { return sk_v3f(a.x - b.x, a.y - b.y, a.z - b.z); }
-static inline sk_vec3f sk_v3f_mul(sk_vec3f a, sk_vec3f b) { return sk_v3f(a.x * b.x, a.y * b.y, a.z * b.z); }
-static inline sk_vec3f sk_v3f_scale(sk_vec3f a, float s) { return sk_v3f(a.x * s, a.y * s, a.z * s); }
+static inline sk_vec3f sk_v3f(float x, float y, float z)
+{
+    sk_vec3f v = {x, y, z};
+    return v;
+}
+static inline sk_vec3f sk_v3f_add(sk_vec3f a, sk_vec3f b)
+{
+    return sk_v3f(a.x + b.x, a.y + b.y, a.z + b.z);
+}
+static inline sk_vec3f sk_v3f_sub(sk_vec3f a, sk_vec3f b)
+{
+    return sk_v3f(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+static inline sk_vec3f sk_v3f_mul(sk_vec3f a, sk_vec3f b)
+{
+    return sk_v3f(a.x * b.x, a.y * b.y, a.z * b.z);
+}
+static inline sk_vec3f sk_v3f_scale(sk_vec3f a, float s)
+{
+    return sk_v3f(a.x * s, a.y * s, a.z * s);
+}
 static inline sk_vec3f sk_v3f_neg(sk_vec3f a) { return sk_v3f(-a.x, -a.y, -a.z); }
 static inline float sk_v3f_dot(sk_vec3f a, sk_vec3f b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static inline sk_vec3f sk_v3f_cross(sk_vec3f a, sk_vec3f b)
@@ -101,11 +153,27 @@ static inline sk_vec3f sk_v3f_reflect(sk_vec3f d, sk_vec3f n)
 }
 
 /* ------------------------------------------------------------------ vec3d */
-static inline sk_vec3d sk_v3d(double x, double y, double z) { sk_vec3d v = {x, y, z}; return v; }
-static inline sk_vec3d sk_v3d_add(sk_vec3d a, sk_vec3d b) { return sk_v3d(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline sk_vec3d sk_v3d_sub(sk_vec3d a, sk_vec3d b) { return sk_v3d(a.x - b.x, a.y - b.y, a.z - b.z); }
-static inline sk_vec3d sk_v3d_scale(sk_vec3d a, double s) { return sk_v3d(a.x * s, a.y * s, a.z * s); }
-static inline double sk_v3d_dot(sk_vec3d a, sk_vec3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline sk_vec3d sk_v3d(double x, double y, double z)
+{
+    sk_vec3d v = {x, y, z};
+    return v;
+}
+static inline sk_vec3d sk_v3d_add(sk_vec3d a, sk_vec3d b)
+{
+    return sk_v3d(a.x + b.x, a.y + b.y, a.z + b.z);
+}
+static inline sk_vec3d sk_v3d_sub(sk_vec3d a, sk_vec3d b)
+{
+    return sk_v3d(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+static inline sk_vec3d sk_v3d_scale(sk_vec3d a, double s)
+{
+    return sk_v3d(a.x * s, a.y * s, a.z * s);
+}
+static inline double sk_v3d_dot(sk_vec3d a, sk_vec3d b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 static inline sk_vec3d sk_v3d_cross(sk_vec3d a, sk_vec3d b)
 {
     return sk_v3d(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
@@ -116,7 +184,10 @@ static inline sk_vec3d sk_v3d_normalize(sk_vec3d a)
     double l = sk_v3d_length(a);
     return l > 0.0 ? sk_v3d_scale(a, 1.0 / l) : a;
 }
-static inline sk_vec3f sk_v3d_to_f(sk_vec3d a) { return sk_v3f((float)a.x, (float)a.y, (float)a.z); }
+static inline sk_vec3f sk_v3d_to_f(sk_vec3d a)
+{
+    return sk_v3f((float)a.x, (float)a.y, (float)a.z);
+}
 static inline sk_vec3d sk_v3f_to_d(sk_vec3f a) { return sk_v3d(a.x, a.y, a.z); }
 
 /* ----------------------------------------------------------------- mat3f */
@@ -310,7 +381,10 @@ static inline sk_quatd sk_qd_mul(sk_quatd a, sk_quatd b)
                  a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
 }
 static inline sk_quatd sk_qd_conj(sk_quatd q) { return sk_qd(q.w, -q.x, -q.y, -q.z); }
-static inline double sk_qd_dot(sk_quatd a, sk_quatd b) { return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline double sk_qd_dot(sk_quatd a, sk_quatd b)
+{
+    return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
+}
 static inline sk_quatd sk_qd_normalize(sk_quatd q)
 {
     double l = sqrt(sk_qd_dot(q, q));
@@ -375,7 +449,8 @@ static inline sk_quatd sk_qd_slerp(sk_quatd a, sk_quatd b, double t)
     }
     double th = acos(d), s = sin(th);
     double wa = sin((1.0 - t) * th) / s, wb = sin(t * th) / s;
-    return sk_qd(wa * a.w + wb * b.w, wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z);
+    return sk_qd(wa * a.w + wb * b.w, wa * a.x + wb * b.x, wa * a.y + wb * b.y,
+                 wa * a.z + wb * b.z);
 }
 static inline sk_quatf sk_qd_to_f(sk_quatd q)
 {

@@ -76,9 +76,9 @@ typedef struct sk_wood_grain_desc {
     float interlocked_period_years; /* P; must be > 0 when interlocked_slope != 0; [0, 1000] */
     int table_count;                /* number of points in `table`; default 0 (no table) */
     sk_wood_grain_point table[SK_WOOD_MAX_GRAIN_POINTS]; /* user g(y), y ascending */
-    float fluctuation;              /* bound on |dg|, fractal in (t, y); default 0; [0, 1] */
-    float fluctuation_scale_mm;     /* correlation length of dg along y; 0 = 50; [1, 10000] */
-    float fluctuation_years;        /* correlation of dg across growth years; 0 = 5; [0.25, 1000] */
+    float fluctuation;          /* bound on |dg|, fractal in (t, y); default 0; [0, 1] */
+    float fluctuation_scale_mm; /* correlation length of dg along y; 0 = 50; [1, 10000] */
+    float fluctuation_years;    /* correlation of dg across growth years; 0 = 5; [0.25, 1000] */
 } sk_wood_grain_desc;
 
 /* Diffuse-porous vessels (sec. 5.3): n = rho x area centres uniform over the end grain,
@@ -115,11 +115,11 @@ typedef struct sk_wood_vessels_desc {
  * ray's own plane) shows them as broad shiny flecks (the silver figure of oak) and a
  * flat-sawn face as short lines. */
 typedef struct sk_wood_rays_desc {
-    float spacing_mm;   /* distance between rays round a ring; default 0 = none; [0.2, 100] */
-    float width_mm;     /* width round the tree at a ray's middle; 0 = 0.4; [0.01, 5] */
-    float height_mm;    /* height along the fibre; 0 = 20; [0.1, 1000] */
-    float length_mm;    /* length out from the pith; 0 = 50; [1, 5000] */
-    float jitter;       /* randomness of places and sizes; default 0; [0, 1] */
+    float spacing_mm;    /* distance between rays round a ring; default 0 = none; [0.2, 100] */
+    float width_mm;      /* width round the tree at a ray's middle; 0 = 0.4; [0.01, 5] */
+    float height_mm;     /* height along the fibre; 0 = 20; [0.1, 1000] */
+    float length_mm;     /* length out from the pith; 0 = 50; [1, 5000] */
+    float jitter;        /* randomness of places and sizes; default 0; [0, 1] */
     float color_srgb[3]; /* colour of the ray tissue; all 0 = (0.86, 0.76, 0.60) */
 } sk_wood_rays_desc;
 
@@ -139,14 +139,14 @@ typedef enum sk_wood_shift_mode {
  * streaks. Cells follow the rings: rows of cell_mm in t (at the mean ring width), each row
  * cut into cells of about cell_mm around the tree, like the radial files of wood cells. */
 typedef struct sk_wood_fibre_desc {
-    float brightness_shift; /* the spread of the cells' shifts: added, at most this much
-                               brighter or darker from cell to cell (Fig. 7: 0.4 = 40 %);
-                               default 0; [0, 1] */
+    float brightness_shift;        /* the spread of the cells' shifts: added, at most this much
+                                      brighter or darker from cell to cell (Fig. 7: 0.4 = 40 %);
+                                      default 0; [0, 1] */
     sk_wood_shift_mode shift_mode; /* preset key "shift_mode": "add" or "multiply" */
-    float cell_mm;          /* cell size of the end-grain array; 0 = 0.08; [0.005, 10] */
-    float length_mm;        /* length of a fibre: along the fibre the cell's shift is drawn
-                               anew every length_mm (ends staggered); default 0 = endless,
-                               the paper's projection; [0, 10000] */
+    float cell_mm;                 /* cell size of the end-grain array; 0 = 0.08; [0.005, 10] */
+    float length_mm;               /* length of a fibre: along the fibre the cell's shift is drawn
+                                      anew every length_mm (ends staggered); default 0 = endless,
+                                      the paper's projection; [0, 10000] */
 } sk_wood_fibre_desc;
 
 /* Knots (beyond Kawai 2000, as Larsson et al. 2022 model them): branches in whorls along
@@ -197,11 +197,11 @@ typedef struct sk_wood_shading_desc {
     float diffuse;  /* kd; 0 = 1 - specular; [0, 1] */
     float exponent; /* n; 0 = 64; [1, 100000] */
     /* 3D fibre highlight */
-    float fibre_strength; /* k_f, scale of the fibre lobe; 0 = 0.5; [0, 100] */
-    float fibre_width;    /* beta, width of the Gaussian lobe in radians (key
-                             "fibre_width_deg"); 0 = 8 degrees; [0.5, 60] degrees */
-    float fibre_srgb[3];  /* colour of the fibre highlight; all 0 = (0.95, 0.80, 0.60) */
-    float finish_ior;     /* refractive index of the clear finish; 0 = 1.5; [1, 3] */
+    float fibre_strength;  /* k_f, scale of the fibre lobe; 0 = 0.5; [0, 100] */
+    float fibre_width;     /* beta, width of the Gaussian lobe in radians (key
+                              "fibre_width_deg"); 0 = 8 degrees; [0.5, 60] degrees */
+    float fibre_srgb[3];   /* colour of the fibre highlight; all 0 = (0.95, 0.80, 0.60) */
+    float finish_ior;      /* refractive index of the clear finish; 0 = 1.5; [1, 3] */
     float finish_exponent; /* Blinn-Phong exponent of the finish's own highlight; 0 = 400;
                               [1, 100000] */
 } sk_wood_shading_desc;
@@ -278,9 +278,9 @@ void sk_wood_destroy(sk_wood *wood);
 const sk_wood_desc *sk_wood_get_desc(const sk_wood *wood);
 
 typedef struct sk_wood_stats {
-    size_t memory_bytes;   /* everything the tree holds */
-    double setup_seconds;  /* wall time of sk_wood_create */
-    int ring_count;        /* rings covered by the tables */
+    size_t memory_bytes;     /* everything the tree holds */
+    double setup_seconds;    /* wall time of sk_wood_create */
+    int ring_count;          /* rings covered by the tables */
     int ring_table_size[2];  /* R(t, theta): t samples x theta samples */
     int phase_table_size[2]; /* Phi(t, y): t samples x y samples (0 x 0 without dg) */
 } sk_wood_stats;
@@ -289,16 +289,16 @@ void sk_wood_get_stats(const sk_wood *wood, sk_wood_stats *stats);
 /* ------------------------------------------------------------------ evaluation */
 
 typedef struct sk_wood_sample {
-    sk_vec3f albedo;   /* linear RGB: ring profile, brightness shift, vessels */
-    float vessel;      /* vessel (pore) coverage in [0, 1] */
-    sk_vec3f fibre;    /* unit fibre direction in the scene frame, oriented up the tree */
-    float dive;        /* alpha: dive angle of the fibre under the surface, radians,
-                          positive when the fibre goes into the wood towards the tree top */
-    sk_vec3f up;       /* unit direction on the surface towards the tree top (delta > 0
-                          side of eq. 4); any tangent if the surface is end grain */
-    float t;           /* formation time T(r, theta) in years (ring index = floor) */
-    float latewood;    /* latewood weight of the ring profile in [0, 1] */
-    float phase;       /* phi of eq. (3), radians */
+    sk_vec3f albedo; /* linear RGB: ring profile, brightness shift, vessels */
+    float vessel;    /* vessel (pore) coverage in [0, 1] */
+    sk_vec3f fibre;  /* unit fibre direction in the scene frame, oriented up the tree */
+    float dive;      /* alpha: dive angle of the fibre under the surface, radians,
+                        positive when the fibre goes into the wood towards the tree top */
+    sk_vec3f up;     /* unit direction on the surface towards the tree top (delta > 0
+                        side of eq. 4); any tangent if the surface is end grain */
+    float t;         /* formation time T(r, theta) in years (ring index = floor) */
+    float latewood;  /* latewood weight of the ring profile in [0, 1] */
+    float phase;     /* phi of eq. (3), radians */
 } sk_wood_sample;
 
 /* Evaluates the solid texture at a scene point with the surface's unit normal there
@@ -307,8 +307,8 @@ void sk_wood_eval(const sk_wood *wood, sk_vec3f point, sk_vec3f normal, sk_wood_
 
 /* As sk_wood_eval, with a filter footprint (the pixel's size on the surface, mm) that
  * softens ring edges and vessel outlines over that width (0 = point sampling). */
-void sk_wood_eval_filtered(const sk_wood *wood, sk_vec3f point, sk_vec3f normal,
-                           float footprint_mm, sk_wood_sample *sample);
+void sk_wood_eval_filtered(const sk_wood *wood, sk_vec3f point, sk_vec3f normal, float footprint_mm,
+                           sk_wood_sample *sample);
 
 /* Light reflected towards `view` for unit incident light from `light` (unit vectors from
  * the surface point; `normal` the unit surface normal), linear RGB, by the desc's shading
@@ -334,13 +334,13 @@ sk_vec3f sk_wood_shade(const sk_wood *wood, const sk_wood_sample *sample, sk_vec
  * with up = normal x axis and height_mm = width_mm height / width, so any region holds
  * exactly the full image's pixels. */
 typedef struct sk_wood_cut_desc {
-    sk_vec3f point;  /* centre of the image on the plane, scene frame, mm */
-    sk_vec3f normal; /* plane normal, towards the viewer (need not be unit) */
-    sk_vec3f axis;   /* image x direction (projected onto the plane and normalised) */
-    float width_mm;  /* physical width of the full image */
-    int width, height;    /* full image size in pixels [1, 65536] */
-    int region[4];        /* x, y, w, h of the part to render; all 0 = the full image */
-    int samples;          /* samples per pixel along each axis (stratified grid); 0 = 1; [1, 8] */
+    sk_vec3f point;        /* centre of the image on the plane, scene frame, mm */
+    sk_vec3f normal;       /* plane normal, towards the viewer (need not be unit) */
+    sk_vec3f axis;         /* image x direction (projected onto the plane and normalised) */
+    float width_mm;        /* physical width of the full image */
+    int width, height;     /* full image size in pixels [1, 65536] */
+    int region[4];         /* x, y, w, h of the part to render; all 0 = the full image */
+    int samples;           /* samples per pixel along each axis (stratified grid); 0 = 1; [1, 8] */
     float light_incidence; /* light turned from the normal towards the image top (radians) */
     float light_azimuth;   /* the light's plane turned about the normal (radians) */
     float view_incidence;  /* viewer turned from the normal towards the image top (radians) */

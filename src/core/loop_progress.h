@@ -17,7 +17,8 @@ typedef struct sk__loop_progress {
     atomic_flag busy;
 } sk__loop_progress;
 
-static inline void sk__loop_progress_init(sk__loop_progress *lp, const sk_progress *sink, long total)
+static inline void sk__loop_progress_init(sk__loop_progress *lp, const sk_progress *sink,
+                                          long total)
 {
     lp->sink = (sink && sink->fn) ? sink : NULL;
     lp->total = total > 0 ? total : 1;

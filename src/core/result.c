@@ -10,16 +10,26 @@
 const char *sk_result_string(sk_result result)
 {
     switch (result) {
-    case SK_OK: return "ok";
-    case SK_ERROR_INVALID_ARGUMENT: return "invalid argument";
-    case SK_ERROR_OUT_OF_MEMORY: return "out of memory";
-    case SK_ERROR_LIMIT: return "limit exceeded";
-    case SK_ERROR_IO: return "input/output error";
-    case SK_ERROR_PARSE: return "malformed input";
-    case SK_ERROR_UNSUPPORTED: return "unsupported";
-    case SK_ERROR_NOT_FOUND: return "not found";
-    case SK_ERROR_NUMERIC: return "numeric failure";
-    case SK_RESULT_COUNT: break;
+    case SK_OK:
+        return "ok";
+    case SK_ERROR_INVALID_ARGUMENT:
+        return "invalid argument";
+    case SK_ERROR_OUT_OF_MEMORY:
+        return "out of memory";
+    case SK_ERROR_LIMIT:
+        return "limit exceeded";
+    case SK_ERROR_IO:
+        return "input/output error";
+    case SK_ERROR_PARSE:
+        return "malformed input";
+    case SK_ERROR_UNSUPPORTED:
+        return "unsupported";
+    case SK_ERROR_NOT_FOUND:
+        return "not found";
+    case SK_ERROR_NUMERIC:
+        return "numeric failure";
+    case SK_RESULT_COUNT:
+        break;
     }
     return "unknown result";
 }
@@ -94,8 +104,9 @@ bool sk_in_range_f(double value, double lo, double hi)
 sk_result sk_check_range_f(sk_error *err, const char *name, double value, double lo, double hi)
 {
     if (!isfinite(value))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s is not a finite number (got %g; accepted: [%g, %g])",
-                       name, value, lo, hi);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "%s is not a finite number (got %g; accepted: [%g, %g])", name, value, lo,
+                       hi);
     if (!sk_in_range_f(value, lo, hi))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %g is out of range [%g, %g]", name,
                        value, lo, hi);

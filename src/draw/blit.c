@@ -8,10 +8,26 @@
 static inline void to_rgba(const float *px, int channels, float rgba[4])
 {
     switch (channels) {
-    case 1: rgba[0] = rgba[1] = rgba[2] = px[0]; rgba[3] = 1.0f; break;
-    case 2: rgba[0] = rgba[1] = rgba[2] = px[0]; rgba[3] = px[1]; break;
-    case 3: rgba[0] = px[0]; rgba[1] = px[1]; rgba[2] = px[2]; rgba[3] = 1.0f; break;
-    default: rgba[0] = px[0]; rgba[1] = px[1]; rgba[2] = px[2]; rgba[3] = px[3]; break;
+    case 1:
+        rgba[0] = rgba[1] = rgba[2] = px[0];
+        rgba[3] = 1.0f;
+        break;
+    case 2:
+        rgba[0] = rgba[1] = rgba[2] = px[0];
+        rgba[3] = px[1];
+        break;
+    case 3:
+        rgba[0] = px[0];
+        rgba[1] = px[1];
+        rgba[2] = px[2];
+        rgba[3] = 1.0f;
+        break;
+    default:
+        rgba[0] = px[0];
+        rgba[1] = px[1];
+        rgba[2] = px[2];
+        rgba[3] = px[3];
+        break;
     }
 }
 

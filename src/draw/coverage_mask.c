@@ -61,7 +61,8 @@ void sk__mask_paint(const sk__mask *mask, const sk__paint *paint)
 {
     for (int ty = 0; ty < mask->tiles_y; ty++) {
         for (int tx = 0; tx < mask->tiles_x; tx++) {
-            const sk__mask_tile *tile = &mask->tiles[(size_t)ty * (size_t)mask->tiles_x + (size_t)tx];
+            const sk__mask_tile *tile =
+                &mask->tiles[(size_t)ty * (size_t)mask->tiles_x + (size_t)tx];
             if (!tile->coverage) continue;
             int x0 = mask->bounds.x0 + tx * SK__MASK_TILE + tile->x0;
             int y0 = mask->bounds.y0 + ty * SK__MASK_TILE;

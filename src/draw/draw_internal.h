@@ -127,20 +127,19 @@ bool sk__path_stroke_segment(sk__path *path, double x0, double y0, double x1, do
 void sk__raster_fill(const sk__path *path, sk_fill_rule rule, sk__clip clip, sk__span_fn emit,
                      void *user);
 /* Fills the path with the paint, clipped to clip. */
-void sk__fill_path(const sk__paint *paint, const sk__path *path, sk_fill_rule rule,
-                   sk__clip clip);
+void sk__fill_path(const sk__paint *paint, const sk__path *path, sk_fill_rule rule, sk__clip clip);
 
 /* sk_draw_polyline restricted to a clip rectangle (the plot area, for example). */
-void sk__draw_polyline_clip(sk_image *img, sk__clip clip, const sk_vec2f *pts, int n,
-                            bool closed, float width, sk_color c);
+void sk__draw_polyline_clip(sk_image *img, sk__clip clip, const sk_vec2f *pts, int n, bool closed,
+                            float width, sk_color c);
 
 /* ---------------------------------------------------------- coverage mask */
 /* A sparse coverage mask over a clip rectangle, stored in lazily allocated 32 x 32
  * tiles that remember the part of them written to. Shapes rasterized into it combine by
  * max, so overlapping pieces of one stroke are composited once. */
 typedef struct sk__mask_tile {
-    float *coverage;            /* NULL until written */
-    short x0, y0, x1, y1;       /* written part, half-open, tile-local */
+    float *coverage;      /* NULL until written */
+    short x0, y0, x1, y1; /* written part, half-open, tile-local */
 } sk__mask_tile;
 
 typedef struct sk__mask {

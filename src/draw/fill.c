@@ -50,8 +50,16 @@ void sk_draw_rect(sk_image *img, float x, float y, float w, float h, sk_color c)
     if (!isfinite(x) || !isfinite(y) || !isfinite(w) || !isfinite(h)) return;
     if (!sk__paint_init(&paint, img, c)) return;
     double x0 = x, x1 = (double)x + (double)w, y0 = y, y1 = (double)y + (double)h;
-    if (x1 < x0) { double t = x0; x0 = x1; x1 = t; }
-    if (y1 < y0) { double t = y0; y0 = y1; y1 = t; }
+    if (x1 < x0) {
+        double t = x0;
+        x0 = x1;
+        x1 = t;
+    }
+    if (y1 < y0) {
+        double t = y0;
+        y0 = y1;
+        y1 = t;
+    }
     if (!(x1 > x0) || !(y1 > y0)) return;
     sk__clip box = sk__clip_bounds(sk__clip_image(img), x0, y0, x1, y1);
     if (sk__clip_empty(box)) return;

@@ -15,13 +15,15 @@ static sk_result check_size(int width, int height, int channels, const char *wha
                        "%s size %d x %d is invalid (width and height must be at least 1)", what,
                        width, height);
     if (width > SK_IMAGE_MAX_DIMENSION || height > SK_IMAGE_MAX_DIMENSION)
-        return sk_fail(err, SK_ERROR_LIMIT, "%s size %d x %d exceeds the limit of %d pixels per side",
-                       what, width, height, SK_IMAGE_MAX_DIMENSION);
+        return sk_fail(err, SK_ERROR_LIMIT,
+                       "%s size %d x %d exceeds the limit of %d pixels per side", what, width,
+                       height, SK_IMAGE_MAX_DIMENSION);
     size_t n;
     if (!sk_size_mul((size_t)width, (size_t)height, &n) || !sk_size_mul(n, (size_t)channels, &n) ||
         !sk_size_mul(n, sizeof(float), &n) || n > SK_IMAGE_MAX_BYTES)
-        return sk_fail(err, SK_ERROR_LIMIT, "%s of %d x %d x %d floats exceeds the limit of %llu bytes",
-                       what, width, height, channels, (unsigned long long)SK_IMAGE_MAX_BYTES);
+        return sk_fail(err, SK_ERROR_LIMIT,
+                       "%s of %d x %d x %d floats exceeds the limit of %llu bytes", what, width,
+                       height, channels, (unsigned long long)SK_IMAGE_MAX_BYTES);
     *bytes = n;
     return SK_OK;
 }

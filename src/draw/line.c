@@ -19,8 +19,7 @@ void sk_draw_line_capped(sk_image *img, float x0, float y0, float x1, float y1, 
     sk__path_free(&path);
 }
 
-void sk_draw_line(sk_image *img, float x0, float y0, float x1, float y1, float width,
-                  sk_color c)
+void sk_draw_line(sk_image *img, float x0, float y0, float x1, float y1, float width, sk_color c)
 {
     sk_draw_line_capped(img, x0, y0, x1, y1, width, SK_CAP_ROUND, c);
 }
@@ -54,12 +53,13 @@ static void stroke_all(const sk_vec2f *pts, int n, bool closed, double width, sk
         if (!point_finite(pts[i])) continue;
         bool prev = (i > 0 || closed) && n > 1 && point_finite(pts[(i + n - 1) % n]);
         bool next = (i + 1 < n || closed) && n > 1 && point_finite(pts[(i + 1) % n]);
-        if (!prev && !next) stroke_into(pts[i].x, pts[i].y, pts[i].x, pts[i].y, width, bounds, emit, user);
+        if (!prev && !next)
+            stroke_into(pts[i].x, pts[i].y, pts[i].x, pts[i].y, width, bounds, emit, user);
     }
 }
 
-void sk__draw_polyline_clip(sk_image *img, sk__clip clip, const sk_vec2f *pts, int n,
-                            bool closed, float width, sk_color c)
+void sk__draw_polyline_clip(sk_image *img, sk__clip clip, const sk_vec2f *pts, int n, bool closed,
+                            float width, sk_color c)
 {
     sk__paint paint;
     if (!pts || n <= 0 || !isfinite(width) || !(width > 0.0f)) return;

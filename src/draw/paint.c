@@ -60,10 +60,10 @@ bool sk__paint_init(sk__paint *paint, sk_image *img, sk_color c)
 }
 
 /* The span loop for a fixed channel count, so the compiler unrolls the channels. */
-#define SK__PAINT_SPAN_LOOP(CH)                                                              \
-    for (int i = 0; i < n; i++, px += (CH)) {                                              \
-        float w = coverage[i];                                                             \
-        if (w > 0.0f) sk__composite_over(px, (CH), paint->value, alpha * (w < 1.0f ? w : 1.0f)); \
+#define SK__PAINT_SPAN_LOOP(CH)                                                                    \
+    for (int i = 0; i < n; i++, px += (CH)) {                                                      \
+        float w = coverage[i];                                                                     \
+        if (w > 0.0f) sk__composite_over(px, (CH), paint->value, alpha *(w < 1.0f ? w : 1.0f));    \
     }
 
 void sk__paint_span(const sk__paint *paint, int x, int y, int n, const float *coverage)
@@ -71,10 +71,14 @@ void sk__paint_span(const sk__paint *paint, int x, int y, int n, const float *co
     float *px = sk_image_pixel(paint->img, x, y);
     float alpha = paint->alpha;
     switch (paint->channels) {
-    case 1: SK__PAINT_SPAN_LOOP(1) break;
-    case 2: SK__PAINT_SPAN_LOOP(2) break;
-    case 3: SK__PAINT_SPAN_LOOP(3) break;
-    default: SK__PAINT_SPAN_LOOP(4) break;
+    case 1:
+        SK__PAINT_SPAN_LOOP(1) break;
+    case 2:
+        SK__PAINT_SPAN_LOOP(2) break;
+    case 3:
+        SK__PAINT_SPAN_LOOP(3) break;
+    default:
+        SK__PAINT_SPAN_LOOP(4) break;
     }
 }
 

@@ -91,7 +91,8 @@ static void draw_series(sk_image *img, sk__clip clip, const sk_plot_layout *l,
         }
         if (!have_prev) {
             run_flush(&run, img, clip, width, c);
-            if (px >= ex0 && px <= ex1 && py >= ey0 && py <= ey1) run.pts[run.n++] = sk_v2f((float)px, (float)py);
+            if (px >= ex0 && px <= ex1 && py >= ey0 && py <= ey1)
+                run.pts[run.n++] = sk_v2f((float)px, (float)py);
         } else {
             double t0, t1;
             if (!clip_segment(qx, qy, px, py, ex0, ey0, ex1, ey1, &t0, &t1)) {
@@ -99,9 +100,11 @@ static void draw_series(sk_image *img, sk__clip clip, const sk_plot_layout *l,
             } else {
                 if (run.n == 0 || t0 > 0.0) {
                     run_flush(&run, img, clip, width, c);
-                    run.pts[run.n++] = sk_v2f((float)(qx + t0 * (px - qx)), (float)(qy + t0 * (py - qy)));
+                    run.pts[run.n++] =
+                        sk_v2f((float)(qx + t0 * (px - qx)), (float)(qy + t0 * (py - qy)));
                 }
-                run.pts[run.n++] = sk_v2f((float)(qx + t1 * (px - qx)), (float)(qy + t1 * (py - qy)));
+                run.pts[run.n++] =
+                    sk_v2f((float)(qx + t1 * (px - qx)), (float)(qy + t1 * (py - qy)));
                 if (t1 < 1.0) run_flush(&run, img, clip, width, c);
             }
         }
@@ -117,12 +120,14 @@ static float snap(double v) { return (float)(floor(v) + 0.5); }
 
 static void hline(sk_image *img, double x0, double x1, double y, sk_color c)
 {
-    sk_draw_rect(img, (float)floor(x0), (float)(floor(y)), (float)(floor(x1) - floor(x0) + 1.0), 1.0f, c);
+    sk_draw_rect(img, (float)floor(x0), (float)(floor(y)), (float)(floor(x1) - floor(x0) + 1.0),
+                 1.0f, c);
 }
 
 static void vline(sk_image *img, double x, double y0, double y1, sk_color c)
 {
-    sk_draw_rect(img, (float)floor(x), (float)floor(y0), 1.0f, (float)(floor(y1) - floor(y0) + 1.0), c);
+    sk_draw_rect(img, (float)floor(x), (float)floor(y0), 1.0f, (float)(floor(y1) - floor(y0) + 1.0),
+                 c);
 }
 
 static void draw_axes(sk_image *img, const sk__plot_frame *f)
@@ -135,19 +140,21 @@ static void draw_axes(sk_image *img, const sk__plot_frame *f)
         map_point(l, v, l->y_min, &px, &py);
         px = snap(px);
         bool at_frame = fabs(px - l->frame_x0) < 0.5 || fabs(px - l->frame_x1) < 0.5;
-        if (!f->desc.hide_grid && !at_frame) vline(img, px, l->frame_y0 + 1.0, l->frame_y1 - 1.0, plot_grid);
+        if (!f->desc.hide_grid && !at_frame)
+            vline(img, px, l->frame_y0 + 1.0, l->frame_y1 - 1.0, plot_grid);
         vline(img, px, l->frame_y1 + 1.0, l->frame_y1 + f->tick_len, plot_frame);
         sk_ticks_format(&l->x_ticks, i, buf, sizeof buf);
         int w = sk_draw_text_width(buf, s);
-        sk_draw_text(img, (float)floor(px - w / 2.0 + 0.5), (float)floor(l->frame_y1 + 0.5) + f->tick_len + f->gap, buf, s,
-                     plot_text);
+        sk_draw_text(img, (float)floor(px - w / 2.0 + 0.5),
+                     (float)floor(l->frame_y1 + 0.5) + f->tick_len + f->gap, buf, s, plot_text);
     }
     for (int i = 0; i < l->y_ticks.count; i++) {
         double v = sk_ticks_value(&l->y_ticks, i), px, py;
         map_point(l, l->x_min, v, &px, &py);
         py = snap(py);
         bool at_frame = fabs(py - l->frame_y0) < 0.5 || fabs(py - l->frame_y1) < 0.5;
-        if (!f->desc.hide_grid && !at_frame) hline(img, l->frame_x0 + 1.0, l->frame_x1 - 1.0, py, plot_grid);
+        if (!f->desc.hide_grid && !at_frame)
+            hline(img, l->frame_x0 + 1.0, l->frame_x1 - 1.0, py, plot_grid);
         hline(img, l->frame_x0 - f->tick_len, l->frame_x0 - 1.0, py, plot_frame);
         sk_ticks_format(&l->y_ticks, i, buf, sizeof buf);
         int w = sk_draw_text_width(buf, s);
@@ -181,14 +188,14 @@ static void draw_labels(sk_image *img, const sk__plot_frame *f)
     if (d->x_label && d->x_label[0]) {
         sk__text_fit(d->x_label, s, (int)(l->frame_x1 - l->frame_x0), buf, sizeof buf);
         int w = sk_draw_text_width(buf, s);
-        sk_draw_text(img, (float)floor(mid_x - w / 2.0 + 0.5), (float)(l->height - f->pad - f->text_h), buf,
-                     s, plot_text);
+        sk_draw_text(img, (float)floor(mid_x - w / 2.0 + 0.5),
+                     (float)(l->height - f->pad - f->text_h), buf, s, plot_text);
     }
     if (d->y_label && d->y_label[0]) {
         sk__text_fit(d->y_label, s, (int)(l->frame_y1 - l->frame_y0), buf, sizeof buf);
         int w = sk_draw_text_width(buf, s);
-        sk__draw_text_dir(img, sk__clip_image(img), (float)f->pad, (float)floor(mid_y - w / 2.0 + 0.5), buf,
-                          s, SK__TEXT_UP, plot_text);
+        sk__draw_text_dir(img, sk__clip_image(img), (float)f->pad,
+                          (float)floor(mid_y - w / 2.0 + 0.5), buf, s, SK__TEXT_UP, plot_text);
     }
 }
 
@@ -249,14 +256,23 @@ static void draw_legend(sk_image *img, const sk__plot_frame *f, const sk_plot_se
     double cy[4] = {fy0, fy0, fy1 - box_h, fy1 - box_h};
     int corner = 0;
     switch (d->legend) {
-    case SK_LEGEND_TOP_LEFT: corner = 1; break;
-    case SK_LEGEND_BOTTOM_RIGHT: corner = 2; break;
-    case SK_LEGEND_BOTTOM_LEFT: corner = 3; break;
-    case SK_LEGEND_TOP_RIGHT: corner = 0; break;
+    case SK_LEGEND_TOP_LEFT:
+        corner = 1;
+        break;
+    case SK_LEGEND_BOTTOM_RIGHT:
+        corner = 2;
+        break;
+    case SK_LEGEND_BOTTOM_LEFT:
+        corner = 3;
+        break;
+    case SK_LEGEND_TOP_RIGHT:
+        corner = 0;
+        break;
     default: {
         long long best = -1;
         for (int k = 0; k < 4; k++) {
-            long long hits = legend_overlap(series, count, l, cx[k], cy[k], cx[k] + box_w, cy[k] + box_h);
+            long long hits =
+                legend_overlap(series, count, l, cx[k], cy[k], cx[k] + box_w, cy[k] + box_h);
             if (best < 0 || hits < best) {
                 best = hits;
                 corner = k;
@@ -274,8 +290,9 @@ static void draw_legend(sk_image *img, const sk__plot_frame *f, const sk_plot_se
     for (int i = 0; i < count; i++) {
         if (!series[i].label || !series[i].label[0]) continue;
         double mid = row_y + 3.5 * s; /* the middle of a capital */
-        sk_draw_line_capped(img, (float)(x + inner), (float)mid, (float)(x + inner + sample), (float)mid,
-                            series_width(&series[i]), SK_CAP_BUTT, series_color(&series[i], i));
+        sk_draw_line_capped(img, (float)(x + inner), (float)mid, (float)(x + inner + sample),
+                            (float)mid, series_width(&series[i]), SK_CAP_BUTT,
+                            series_color(&series[i], i));
         sk_draw_text(img, (float)(x + inner + sample + f->char_w), (float)row_y,
                      sk__text_fit(series[i].label, s, max_label, buf, sizeof buf), s, plot_text);
         row_y += pitch;
@@ -309,8 +326,8 @@ sk_result sk_plot_lines(const sk_plot_series *series, int series_count, const sk
     sk__clip area = {(int)floor(l->frame_x0), (int)floor(l->frame_y0), (int)floor(l->frame_x1) + 1,
                      (int)floor(l->frame_y1) + 1};
     for (int i = 0; i < series_count; i++)
-        draw_series(&img, area, l, &series[i], series_color(&series[i], i), series_width(&series[i]),
-                    buf);
+        draw_series(&img, area, l, &series[i], series_color(&series[i], i),
+                    series_width(&series[i]), buf);
     draw_frame(&img, l);
     draw_labels(&img, &f);
     draw_legend(&img, &f, series, series_count);

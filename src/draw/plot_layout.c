@@ -58,7 +58,8 @@ static sk_result validate(const sk_plot_series *series, int count, const sk_plot
     sk_result r;
     if ((r = check_size(err, "width", d->width, 800)) != SK_OK) return r;
     if ((r = check_size(err, "height", d->height, 500)) != SK_OK) return r;
-    if ((r = sk_check_range_i(err, "text_scale", d->text_scale, 0, SK__PLOT_MAX_TEXT_SCALE)) != SK_OK)
+    if ((r = sk_check_range_i(err, "text_scale", d->text_scale, 0, SK__PLOT_MAX_TEXT_SCALE)) !=
+        SK_OK)
         return r;
     if ((r = sk_check_range_i(err, "channels", d->channels, 0, 4)) != SK_OK) return r;
     if ((r = sk_check_range_i(err, "legend", (int)d->legend, 0, SK_LEGEND_BOTTOM_LEFT)) != SK_OK)
@@ -85,8 +86,7 @@ static sk_result validate(const sk_plot_series *series, int count, const sk_plot
 }
 
 /* Range of the finite data along one axis; false if there is none. */
-static bool data_range(const sk_plot_series *series, int count, bool want_x, double *lo,
-                       double *hi)
+static bool data_range(const sk_plot_series *series, int count, bool want_x, double *lo, double *hi)
 {
     *lo = INFINITY;
     *hi = -INFINITY;
@@ -263,7 +263,8 @@ sk_result sk__plot_frame_compute(const sk_plot_series *series, int series_count,
         return sk_fail(err, SK_ERROR_LIMIT,
                        "the plot area would be %d x %d pixels (at least %d x %d needed): increase "
                        "width (%d) or height (%d), or reduce text_scale (%d)",
-                       frame_w, frame_h, SK__PLOT_MIN_AREA, SK__PLOT_MIN_AREA, d.width, d.height, s);
+                       frame_w, frame_h, SK__PLOT_MIN_AREA, SK__PLOT_MIN_AREA, d.width, d.height,
+                       s);
     /* The frame lines run along pixel centres; data bounds map onto them. */
     l->frame_x0 = (float)left + 0.5f;
     l->frame_x1 = (float)(d.width - right) - 0.5f;

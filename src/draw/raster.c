@@ -73,8 +73,7 @@ static inline double clampd(double v, double lo, double hi)
 }
 
 /* A piece with ya < yb inside [0, h] and x inside [0, w], split into pixel rows. */
-static void accumulate_piece(raster_tile *t, double ya, double xa, double yb, double xb,
-                             double dir)
+static void accumulate_piece(raster_tile *t, double ya, double xa, double yb, double xb, double dir)
 {
     int w = t->w, h = t->h;
     double slope = (xb - xa) / (yb - ya);
@@ -257,8 +256,7 @@ void sk__raster_fill(const sk__path *path, sk_fill_rule rule, sk__clip clip, sk_
     }
 }
 
-void sk__fill_path(const sk__paint *paint, const sk__path *path, sk_fill_rule rule,
-                   sk__clip clip)
+void sk__fill_path(const sk__paint *paint, const sk__path *path, sk_fill_rule rule, sk__clip clip)
 {
     sk__raster_fill(path, rule, clip, sk__paint_span_fn, (void *)paint);
 }

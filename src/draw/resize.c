@@ -134,7 +134,8 @@ sk_result sk_image_resize_filter(const sk_image *src, int width, int height,
             const float *s = row + (size_t)tx.first[i] * (size_t)ch;
             for (int k = 0; k < ch; k++) {
                 float sum = 0.0f;
-                for (int t = 0; t < tx.count[i]; t++) sum += w[t] * s[(size_t)t * (size_t)ch + (size_t)k];
+                for (int t = 0; t < tx.count[i]; t++)
+                    sum += w[t] * s[(size_t)t * (size_t)ch + (size_t)k];
                 o[k] = sum;
             }
         }
@@ -160,8 +161,7 @@ sk_result sk_image_resize_filter(const sk_image *src, int width, int height,
     return SK_OK;
 }
 
-sk_result sk_image_resize(const sk_image *src, int width, int height, sk_image *out,
-                          sk_error *err)
+sk_result sk_image_resize(const sk_image *src, int width, int height, sk_image *out, sk_error *err)
 {
     return sk_image_resize_filter(src, width, height, SK_RESIZE_DEFAULT, out, err);
 }

@@ -64,8 +64,9 @@ static inline int glyph_bit(const unsigned char rows[SK__GLYPH_HEIGHT], int row,
 }
 
 /* Draws one glyph whose screen box is [gx0, gx0 + extent) x [gy0, ...), rotated or not. */
-static void draw_glyph(const sk__paint *paint, sk__clip clip, const unsigned char rows[SK__GLYPH_HEIGHT],
-                       double gx0, double gy0, double gx1, double gy1, int scale, sk__text_dir dir)
+static void draw_glyph(const sk__paint *paint, sk__clip clip,
+                       const unsigned char rows[SK__GLYPH_HEIGHT], double gx0, double gy0,
+                       double gx1, double gy1, int scale, sk__text_dir dir)
 {
     sk__clip box = sk__clip_bounds(clip, gx0, gy0, gx1, gy1);
     int nx = box.x1 - box.x0, ny = box.y1 - box.y0;
@@ -100,7 +101,8 @@ static void draw_glyph(const sk__paint *paint, sk__clip clip, const unsigned cha
         }
         if (!any) continue;
         for (int i = 0; i < nx; i++)
-            coverage[i] = tx[i].weight[0] * profile[tx[i].cell[0]] + tx[i].weight[1] * profile[tx[i].cell[1]];
+            coverage[i] =
+                tx[i].weight[0] * profile[tx[i].cell[0]] + tx[i].weight[1] * profile[tx[i].cell[1]];
         sk__paint_span(paint, box.x0, box.y0 + j, nx, coverage);
     }
 }

@@ -64,5 +64,6 @@ void sk_ticks_format(const sk_ticks *t, int i, char *buf, size_t size)
         snprintf(buf, size, "%.*f", t->decimals, v);
     }
     /* No "-0" (or "-0.00"): a negative sign only on nonzero values. */
-    if (buf[0] == '-' && strspn(buf + 1, "0.") == strlen(buf + 1)) memmove(buf, buf + 1, strlen(buf));
+    if (buf[0] == '-' && strspn(buf + 1, "0.") == strlen(buf + 1))
+        memmove(buf, buf + 1, strlen(buf));
 }

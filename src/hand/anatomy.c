@@ -16,24 +16,52 @@ typedef struct dof_row {
 
 static const dof_row default_dofs[SK_HAND_DOF_COUNT] = {
     /* wrist: places the hand in the scene (the forearm is not modelled) */
-    {-1000, 1000, 0, 1}, {-1000, 1000, 0, 1}, {-1000, 1000, 0, 1},
-    {-180, 180, 0, 1}, {-180, 180, 0, 1}, {-180, 180, 0, 1},
+    {-1000, 1000, 0, 1},
+    {-1000, 1000, 0, 1},
+    {-1000, 1000, 0, 1},
+    {-180, 180, 0, 1},
+    {-180, 180, 0, 1},
+    {-180, 180, 0, 1},
     /* thumb: AAOS active ranges (CMC extension 20 / flexion 15, abduction 70; MCP 0-50;
        IP -20..80); relaxed so that the thumb rests slightly flexed and palmar-abducted
        beside the index finger, its pad radial and palmar of the index's proximal
        phalanx (the resting pattern of Taylor & Schwarz 1955) */
-    {-20, 15, 10, 1}, {0, 70, 25, 2}, {0, 50, 10, 1}, {-5, 5, 0, 4}, {-20, 80, 10, 1},
+    {-20, 15, 10, 1},
+    {0, 70, 25, 2},
+    {0, 50, 10, 1},
+    {-5, 5, 0, 4},
+    {-20, 80, 10, 1},
     /* index: CMC nearly rigid; MCP -45..90, abduction +-20 (AAOS); PIP 0-100, DIP 0-90
        (AAOS); relaxed at the lower bounds of Bain et al. 2015's functional ranges (19,
        23, 10), each finger toward the little one 5, 5 and 3 degrees more flexed: the
        flexion cascade of the resting hand (Taylor & Schwarz 1955) */
-    {-2, 2, 0, 50}, {-2, 2, 0, 50}, {-45, 90, 19, 1}, {-20, 20, 0, 2}, {0, 100, 23, 1}, {0, 90, 10, 1},
+    {-2, 2, 0, 50},
+    {-2, 2, 0, 50},
+    {-45, 90, 19, 1},
+    {-20, 20, 0, 2},
+    {0, 100, 23, 1},
+    {0, 90, 10, 1},
     /* middle */
-    {-2, 2, 0, 50}, {-2, 2, 0, 50}, {-45, 90, 24, 1}, {-20, 20, 0, 2}, {0, 100, 28, 1}, {0, 90, 13, 1},
+    {-2, 2, 0, 50},
+    {-2, 2, 0, 50},
+    {-45, 90, 24, 1},
+    {-20, 20, 0, 2},
+    {0, 100, 28, 1},
+    {0, 90, 13, 1},
     /* ring: CMC flexion about 10 degrees (Batmanabane & Malathi 1985) */
-    {0, 10, 0, 5}, {-5, 5, 0, 10}, {-45, 90, 29, 1}, {-20, 20, 0, 2}, {0, 100, 33, 1}, {0, 90, 16, 1},
+    {0, 10, 0, 5},
+    {-5, 5, 0, 10},
+    {-45, 90, 29, 1},
+    {-20, 20, 0, 2},
+    {0, 100, 33, 1},
+    {0, 90, 16, 1},
     /* little: CMC flexion about 20 degrees (same source) */
-    {0, 20, 0, 3}, {-5, 5, 0, 10}, {-45, 90, 34, 1}, {-20, 20, 0, 2}, {0, 100, 38, 1}, {0, 90, 19, 1},
+    {0, 20, 0, 3},
+    {-5, 5, 0, 10},
+    {-45, 90, 34, 1},
+    {-20, 20, 0, 2},
+    {0, 100, 38, 1},
+    {0, 90, 19, 1},
 };
 
 /* Buchholz et al. 1992: CMC centres 0.073 HL distal of the wrist centre, lateral offsets
@@ -76,15 +104,20 @@ void sk_hand_anatomy_default(sk_hand_anatomy *out)
 static sk_result parse_finger(const cJSON *obj, const char *path, int f, sk_hand_finger_data *fd,
                               sk_error *err)
 {
-    static const char *const keys[] = {"cmc_x_hb", "cmc_y_hl", "cmc_z_hb", "mc_dx_hb", "mc_dy_hl",
-                                       "phalanx_hl", "mount_deg", NULL};
+    static const char *const keys[] = {"cmc_x_hb", "cmc_y_hl",   "cmc_z_hb",  "mc_dx_hb",
+                                       "mc_dy_hl", "phalanx_hl", "mount_deg", NULL};
     sk_result r = sk_hand__json_expect_object(obj, path, err);
     if (r == SK_OK) r = sk_hand__json_check_keys(obj, path, keys, err);
-    if (r == SK_OK) r = sk_hand__json_number(obj, path, "cmc_x_hb", -1, 1, false, &fd->cmc_x_hb, err);
-    if (r == SK_OK) r = sk_hand__json_number(obj, path, "cmc_y_hl", -1, 1, false, &fd->cmc_y_hl, err);
-    if (r == SK_OK) r = sk_hand__json_number(obj, path, "cmc_z_hb", -1, 1, false, &fd->cmc_z_hb, err);
-    if (r == SK_OK) r = sk_hand__json_number(obj, path, "mc_dx_hb", -1, 1, false, &fd->mc_dx_hb, err);
-    if (r == SK_OK) r = sk_hand__json_number(obj, path, "mc_dy_hl", 0.01, 1, false, &fd->mc_dy_hl, err);
+    if (r == SK_OK)
+        r = sk_hand__json_number(obj, path, "cmc_x_hb", -1, 1, false, &fd->cmc_x_hb, err);
+    if (r == SK_OK)
+        r = sk_hand__json_number(obj, path, "cmc_y_hl", -1, 1, false, &fd->cmc_y_hl, err);
+    if (r == SK_OK)
+        r = sk_hand__json_number(obj, path, "cmc_z_hb", -1, 1, false, &fd->cmc_z_hb, err);
+    if (r == SK_OK)
+        r = sk_hand__json_number(obj, path, "mc_dx_hb", -1, 1, false, &fd->mc_dx_hb, err);
+    if (r == SK_OK)
+        r = sk_hand__json_number(obj, path, "mc_dy_hl", 0.01, 1, false, &fd->mc_dy_hl, err);
     if (r != SK_OK) return r;
     const cJSON *ph = cJSON_GetObjectItemCaseSensitive(obj, "phalanx_hl");
     if (ph) {
@@ -108,12 +141,16 @@ static sk_result parse_finger(const cJSON *obj, const char *path, int f, sk_hand
         static const char *const mkeys_finger[] = {"tilt", "roll", NULL};
         r = sk_hand__json_expect_object(mount, mpath, err);
         if (r == SK_OK)
-            r = sk_hand__json_check_keys(mount, mpath, f == SK_HAND_THUMB ? mkeys : mkeys_finger, err);
+            r = sk_hand__json_check_keys(mount, mpath, f == SK_HAND_THUMB ? mkeys : mkeys_finger,
+                                         err);
         double splay = fd->thumb_splay * SK_RAD_TO_DEG, tilt = fd->mount_tilt * SK_RAD_TO_DEG,
                roll = fd->mount_roll * SK_RAD_TO_DEG;
-        if (r == SK_OK) r = sk_hand__json_number(mount, mpath, "splay", -180, 180, false, &splay, err);
-        if (r == SK_OK) r = sk_hand__json_number(mount, mpath, "tilt", -180, 180, false, &tilt, err);
-        if (r == SK_OK) r = sk_hand__json_number(mount, mpath, "roll", -180, 180, false, &roll, err);
+        if (r == SK_OK)
+            r = sk_hand__json_number(mount, mpath, "splay", -180, 180, false, &splay, err);
+        if (r == SK_OK)
+            r = sk_hand__json_number(mount, mpath, "tilt", -180, 180, false, &tilt, err);
+        if (r == SK_OK)
+            r = sk_hand__json_number(mount, mpath, "roll", -180, 180, false, &roll, err);
         if (r != SK_OK) return r;
         fd->thumb_splay = splay * SK_DEG_TO_RAD;
         fd->mount_tilt = tilt * SK_DEG_TO_RAD;
@@ -140,8 +177,8 @@ static sk_result parse_dof(const cJSON *obj, const char *path, int d, sk_hand_do
     if (r == SK_OK) r = sk_hand__json_number(obj, path, "stiffness", 1e-9, 1e9, false, &k, err);
     if (r != SK_OK) return r;
     if (mn > mx)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: %s = %g is above %s = %g", path, keys[0],
-                       mn, keys[1], mx);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: %s = %g is above %s = %g", path,
+                       keys[0], mn, keys[1], mx);
     if (rel < mn || rel > mx)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s.%s = %g is out of range [%g, %g]", path,
                        keys[2], rel, mn, mx);
@@ -168,9 +205,11 @@ sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *sou
         r = sk_hand__json_expect_object(hand, "hand", err);
         if (r == SK_OK) r = sk_hand__json_check_keys(hand, "hand", hkeys, err);
         if (r == SK_OK)
-            r = sk_hand__json_number(hand, "hand", "length_mm", 60, 400, false, &out->hand_length_mm, err);
+            r = sk_hand__json_number(hand, "hand", "length_mm", 60, 400, false,
+                                     &out->hand_length_mm, err);
         if (r == SK_OK)
-            r = sk_hand__json_number(hand, "hand", "breadth_mm", 30, 200, false, &out->hand_breadth_mm, err);
+            r = sk_hand__json_number(hand, "hand", "breadth_mm", 30, 200, false,
+                                     &out->hand_breadth_mm, err);
     }
     const cJSON *fingers = cJSON_GetObjectItemCaseSensitive(root, "fingers");
     if (r == SK_OK && fingers) {
@@ -204,7 +243,8 @@ sk_result sk_hand_anatomy_parse(const char *text, size_t length, const char *sou
     return r;
 }
 
-static sk_result parse_into(const char *text, size_t length, const char *source, void *out, sk_error *err)
+static sk_result parse_into(const char *text, size_t length, const char *source, void *out,
+                            sk_error *err)
 {
     return sk_hand_anatomy_parse(text, length, source, out, err);
 }

@@ -23,7 +23,8 @@ static void bernstein3_derivative(double t, double out[4])
     out[3] = 3.0 * t * t;
 }
 
-sk_vec3d sk_hand_patch_eval(const sk_hand_patch *patch, double u, double v, sk_vec3d *du, sk_vec3d *dv)
+sk_vec3d sk_hand_patch_eval(const sk_hand_patch *patch, double u, double v, sk_vec3d *du,
+                            sk_vec3d *dv)
 {
     double bu[4], bv[4], du_[4], dv_[4];
     sk_hand_bernstein3(u, bu);

@@ -11,20 +11,23 @@
 
 /* Adds the chain from `link` to the finger's tip under BVH joint `parent`; bvh_joint[l]
  * receives the BVH index of each link. */
-static sk_result add_chain(sk_bvh *b, const sk_hand_skeleton *s, const sk_hand_frames *ref, int link,
-                           int parent, int *bvh_joint)
+static sk_result add_chain(sk_bvh *b, const sk_hand_skeleton *s, const sk_hand_frames *ref,
+                           int link, int parent, int *bvh_joint)
 {
     int prev = s->parent[link];
-    sk_vec3d offset = sk_v3d_sub(ref->point[sk_hand_link_point(link)], ref->point[sk_hand_link_point(prev)]);
-    sk_result r = sk_bvh_add_joint(b, sk_hand_link_name(link), parent, offset, "ZYX", false, &bvh_joint[link], NULL);
+    sk_vec3d offset =
+        sk_v3d_sub(ref->point[sk_hand_link_point(link)], ref->point[sk_hand_link_point(prev)]);
+    sk_result r = sk_bvh_add_joint(b, sk_hand_link_name(link), parent, offset, "ZYX", false,
+                                   &bvh_joint[link], NULL);
     if (r != SK_OK) return r;
     bool last = link == SK_HAND_LINK_COUNT - 1 || s->parent[link + 1] != link;
     if (!last) return add_chain(b, s, ref, link + 1, bvh_joint[link], bvh_joint);
     char name[SK_BVH_NAME_SIZE];
     snprintf(name, sizeof name, "%s_end", sk_hand_link_name(link));
     int tip = sk_hand_link_end_point(link);
-    return sk_bvh_add_joint(b, name, bvh_joint[link], sk_v3d_sub(ref->point[tip], ref->point[sk_hand_link_point(link)]),
-                            NULL, true, NULL, NULL);
+    return sk_bvh_add_joint(b, name, bvh_joint[link],
+                            sk_v3d_sub(ref->point[tip], ref->point[sk_hand_link_point(link)]), NULL,
+                            true, NULL, NULL);
 }
 
 static void put_angles(double *m, sk_mat3d local)
@@ -37,15 +40,16 @@ static void put_angles(double *m, sk_mat3d local)
 }
 
 /* The hand's motion as a BVH skeleton and motion (b initialised here). */
-static sk_result build(const sk_hand_skeleton *s, const double *dofs, int frame_count, double frame_time,
-                       sk_bvh *b, sk_error *err)
+static sk_result build(const sk_hand_skeleton *s, const double *dofs, int frame_count,
+                       double frame_time, sk_bvh *b, sk_error *err)
 {
     double zero[SK_HAND_DOF_COUNT] = {0};
     sk_hand_frames ref, cur;
     sk_hand_forward(s, zero, &ref);
     sk_bvh_init(b);
     int bvh_joint[SK_HAND_LINK_COUNT];
-    sk_result r = sk_bvh_add_joint(b, "Hand", -1, sk_v3d(0, 0, 0), "xyzZYX", false, &bvh_joint[0], err);
+    sk_result r =
+        sk_bvh_add_joint(b, "Hand", -1, sk_v3d(0, 0, 0), "xyzZYX", false, &bvh_joint[0], err);
     for (int f = 0; r == SK_OK && f < SK_HAND_FINGER_COUNT; f++)
         r = add_chain(b, s, &ref, sk_hand__first_link(f), bvh_joint[0], bvh_joint);
     if (r == SK_OK) r = sk_bvh_alloc_motion(b, frame_count, frame_time, err);
@@ -63,7 +67,8 @@ static sk_result build(const sk_hand_skeleton *s, const double *dofs, int frame_
         m[2] = cur.point[0].z;
         put_angles(m + 3, g[0]);
         for (int l = 1; l < SK_HAND_LINK_COUNT; l++)
-            put_angles(m + b->channel_first[bvh_joint[l]], sk_m3d_mul(sk_m3d_transpose(g[s->parent[l]]), g[l]));
+            put_angles(m + b->channel_first[bvh_joint[l]],
+                       sk_m3d_mul(sk_m3d_transpose(g[s->parent[l]]), g[l]));
     }
     return SK_OK;
 }
@@ -84,7 +89,9 @@ sk_result sk_hand_bvh_write(const sk_hand_skeleton *s, const double *dofs, int f
                             double frame_time, const char *path, sk_error *err)
 {
     if (frame_count < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no frames to write");
-    if (!(frame_time > 0.0)) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame time %g must be positive", frame_time);
+    if (!(frame_time > 0.0))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame time %g must be positive",
+                       frame_time);
     sk_bvh *b = malloc(sizeof *b);
     if (!b) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     sk_result r = build(s, dofs, frame_count, frame_time, b, err);

@@ -15,7 +15,8 @@ sk_result sk_hand_calibrate(const double *const columns[SK_HAND_DOF_COUNT], int 
     if (rule == SK_HAND_WEIGHT_DEFAULT) rule = SK_HAND_WEIGHT_THESIS;
     if (rule != SK_HAND_WEIGHT_THESIS && rule != SK_HAND_WEIGHT_INVERSE_VARIANCE)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "weight rule %d is unknown", (int)rule);
-    if (n < 3) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d samples: a fit needs at least 3", n);
+    if (n < 3)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d samples: a fit needs at least 3", n);
     if (pair_count < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no pairs to fit");
     for (int k = 0; k < pair_count; k++) {
         int dx = pairs[k][0], dy = pairs[k][1];
@@ -84,16 +85,18 @@ sk_result sk_hand_fits_write_json(const sk_hand_fit *fits, int count, sk_hand_we
     cJSON *root = cJSON_CreateObject();
     if (!root) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     bool thesis = rule != SK_HAND_WEIGHT_INVERSE_VARIANCE;
-    cJSON_AddStringToObject(root, "description",
-                            "Constraint rows fitted to measured joint-angle samples (thesis 3.2.2)");
+    cJSON_AddStringToObject(
+        root, "description",
+        "Constraint rows fitted to measured joint-angle samples (thesis 3.2.2)");
     if (source_note) cJSON_AddStringToObject(root, "source", source_note);
-    cJSON_AddStringToObject(root, "reading",
-                            thesis ? "pair \"X:Y\" reads Y = A X + b, least squares on absolute angles "
-                                     "in degrees; W = mean squared distance from the line divided by "
-                                     "the largest over the pairs (eq. 3.18)"
-                                   : "pair \"X:Y\" reads Y = A X + b, least squares on absolute angles "
-                                     "in degrees; W = smallest mean squared distance over the pairs "
-                                     "divided by this pair's (inverse variance)");
+    cJSON_AddStringToObject(
+        root, "reading",
+        thesis ? "pair \"X:Y\" reads Y = A X + b, least squares on absolute angles "
+                 "in degrees; W = mean squared distance from the line divided by "
+                 "the largest over the pairs (eq. 3.18)"
+               : "pair \"X:Y\" reads Y = A X + b, least squares on absolute angles "
+                 "in degrees; W = smallest mean squared distance over the pairs "
+                 "divided by this pair's (inverse variance)");
     cJSON_AddStringToObject(root, "angles", "absolute");
     cJSON_AddStringToObject(root, "b_unit", "deg");
     cJSON *rows = cJSON_AddArrayToObject(root, "rows");
@@ -102,7 +105,8 @@ sk_result sk_hand_fits_write_json(const sk_hand_fit *fits, int count, sk_hand_we
         cJSON *row = cJSON_CreateObject();
         if (!row) break;
         char pair[96], notes[128];
-        snprintf(pair, sizeof pair, "%s:%s", sk_hand_dof(f->dof_x)->name, sk_hand_dof(f->dof_y)->name);
+        snprintf(pair, sizeof pair, "%s:%s", sk_hand_dof(f->dof_x)->name,
+                 sk_hand_dof(f->dof_y)->name);
         snprintf(notes, sizeof notes, "%d samples, rms distance from the line %.4g deg", f->count,
                  sqrt(f->mean_sq_distance) * SK_RAD_TO_DEG);
         cJSON_AddStringToObject(row, "pair", pair);

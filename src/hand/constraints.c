@@ -48,9 +48,9 @@ static sk_result add_row(sk_hand_constraints *c, const sk_hand_skeleton *s, cons
     return SK_OK;
 }
 
-sk_result sk_hand_constraints_add_pair(sk_hand_constraints *c, const sk_hand_skeleton *s,
-                                       int dof_x, int dof_y, double slope, double intercept,
-                                       double weight, bool absolute, sk_error *err)
+sk_result sk_hand_constraints_add_pair(sk_hand_constraints *c, const sk_hand_skeleton *s, int dof_x,
+                                       int dof_y, double slope, double intercept, double weight,
+                                       bool absolute, sk_error *err)
 {
     if (!sk_hand_dof(dof_x) || !sk_hand_dof(dof_y) || dof_x == dof_y)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair needs two different DOFs");
@@ -99,7 +99,8 @@ static sk_result parse_row(const cJSON *item, const char *path, const sk_hand_sk
     if (w == 0.0)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s.W = 0: a weight must be non-zero", path);
     if ((pair != NULL) == (terms != NULL))
-        return sk_fail(err, SK_ERROR_PARSE, "%s: give either \"pair\" (with \"A\") or \"terms\"", path);
+        return sk_fail(err, SK_ERROR_PARSE, "%s: give either \"pair\" (with \"A\") or \"terms\"",
+                       path);
     int dof[SK_HAND_ROW_MAX_TERMS];
     double coeff[SK_HAND_ROW_MAX_TERMS];
     int n = 0;
@@ -135,14 +136,18 @@ static sk_result parse_row(const cJSON *item, const char *path, const sk_hand_sk
         if (n == 0) return sk_fail(err, SK_ERROR_PARSE, "%s: no terms", ppath);
     }
     char rowlabel[64];
-    if (label) snprintf(rowlabel, sizeof rowlabel, "%s", label);
-    else if (pair) snprintf(rowlabel, sizeof rowlabel, "%s", pair);
-    else snprintf(rowlabel, sizeof rowlabel, "%s", path);
+    if (label)
+        snprintf(rowlabel, sizeof rowlabel, "%s", label);
+    else if (pair)
+        snprintf(rowlabel, sizeof rowlabel, "%s", pair);
+    else
+        snprintf(rowlabel, sizeof rowlabel, "%s", path);
     return add_row(c, s, dof, coeff, n, b * b_scale, w, absolute, rowlabel, wpath, err);
 }
 
-sk_result sk_hand__constraints_from_json(const cJSON *root, const char *at, const sk_hand_skeleton *s,
-                                         const char *const *extra, sk_hand_constraints *out, sk_error *err)
+sk_result sk_hand__constraints_from_json(const cJSON *root, const char *at,
+                                         const sk_hand_skeleton *s, const char *const *extra,
+                                         sk_hand_constraints *out, sk_error *err)
 {
     const char *keys[24] = {"reading", "angles", "b_unit", "stiffness", "rows"};
     for (int i = 0, n = 5; extra && extra[i] && n < 23; i++) keys[n++] = extra[i];
@@ -154,12 +159,14 @@ sk_result sk_hand__constraints_from_json(const cJSON *root, const char *at, cons
     if (r == SK_OK) r = sk_hand__json_string(root, "", "reading", &reading, err);
     if (r != SK_OK) return r;
     bool absolute = false;
-    if (angles && strcmp(angles, "absolute") == 0) absolute = true;
+    if (angles && strcmp(angles, "absolute") == 0)
+        absolute = true;
     else if (angles && strcmp(angles, "displacement") != 0)
-        return sk_fail(err, SK_ERROR_PARSE, "angles = \"%s\": expected \"displacement\" or \"absolute\"",
-                       angles);
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "angles = \"%s\": expected \"displacement\" or \"absolute\"", angles);
     double b_scale = SK_DEG_TO_RAD;
-    if (b_unit && strcmp(b_unit, "rad") == 0) b_scale = 1.0;
+    if (b_unit && strcmp(b_unit, "rad") == 0)
+        b_scale = 1.0;
     else if (b_unit && strcmp(b_unit, "deg") != 0)
         return sk_fail(err, SK_ERROR_PARSE, "b_unit = \"%s\": expected \"deg\" or \"rad\"", b_unit);
 

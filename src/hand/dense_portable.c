@@ -122,7 +122,8 @@ bool sk_hand__portable_sym_eigen(double *a, int n, double *values, bool vectors)
     for (int i = 0; i < n; i++) {
         int best = i;
         for (int k = i + 1; k < n; k++)
-            if (m[(size_t)order[k] * n + order[k]] < m[(size_t)order[best] * n + order[best]]) best = k;
+            if (m[(size_t)order[k] * n + order[k]] < m[(size_t)order[best] * n + order[best]])
+                best = k;
         int tmp = order[i];
         order[i] = order[best];
         order[best] = tmp;

@@ -47,21 +47,16 @@ static const sk_hand_dof_info dof_table[SK_HAND_DOF_COUNT] = {
 };
 
 static const char *const point_names[SK_HAND_POINT_COUNT] = {
-    "wrist",
-    "T.CMC", "T.MCP", "T.IP", "T.tip",
-    "I.CMC", "I.MCP", "I.PIP", "I.DIP", "I.tip",
-    "M.CMC", "M.MCP", "M.PIP", "M.DIP", "M.tip",
-    "R.CMC", "R.MCP", "R.PIP", "R.DIP", "R.tip",
-    "L.CMC", "L.MCP", "L.PIP", "L.DIP", "L.tip",
+    "wrist", "T.CMC", "T.MCP", "T.IP",  "T.tip", "I.CMC", "I.MCP", "I.PIP", "I.DIP",
+    "I.tip", "M.CMC", "M.MCP", "M.PIP", "M.DIP", "M.tip", "R.CMC", "R.MCP", "R.PIP",
+    "R.DIP", "R.tip", "L.CMC", "L.MCP", "L.PIP", "L.DIP", "L.tip",
 };
 
 static const char *const point_bvh_names[SK_HAND_POINT_COUNT] = {
-    "Hand",
-    "T_CMC", "T_MCP", "T_IP", "T_IP_end",
-    "I_CMC", "I_MCP", "I_PIP", "I_DIP", "I_DIP_end",
-    "M_CMC", "M_MCP", "M_PIP", "M_DIP", "M_DIP_end",
-    "R_CMC", "R_MCP", "R_PIP", "R_DIP", "R_DIP_end",
-    "L_CMC", "L_MCP", "L_PIP", "L_DIP", "L_DIP_end",
+    "Hand",      "T_CMC", "T_MCP",     "T_IP",      "T_IP_end", "I_CMC",     "I_MCP",
+    "I_PIP",     "I_DIP", "I_DIP_end", "M_CMC",     "M_MCP",    "M_PIP",     "M_DIP",
+    "M_DIP_end", "R_CMC", "R_MCP",     "R_PIP",     "R_DIP",    "R_DIP_end", "L_CMC",
+    "L_MCP",     "L_PIP", "L_DIP",     "L_DIP_end",
 };
 
 /* Base point of each link; the carpus starts at the wrist. */
@@ -123,10 +118,7 @@ int sk_hand__finger_of_link(int link)
     return 1 + (link - 4) / 4;
 }
 
-int sk_hand__first_link(int finger)
-{
-    return finger == SK_HAND_THUMB ? 1 : 4 + 4 * (finger - 1);
-}
+int sk_hand__first_link(int finger) { return finger == SK_HAND_THUMB ? 1 : 4 + 4 * (finger - 1); }
 
 int sk_hand__link_count_of_finger(int finger) { return finger == SK_HAND_THUMB ? 3 : 4; }
 

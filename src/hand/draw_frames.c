@@ -17,13 +17,14 @@ sk_result sk_hand_frames_write_png(const sk_hand_skeleton *skeleton, const doubl
 {
     if (!dir || !dir[0]) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no folder for the frames");
     if (frame_count < 1 || frame_count > 10000000)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame_count = %d is out of range [1, 10000000]",
-                       frame_count);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "frame_count = %d is out of range [1, 10000000]", frame_count);
     sk_hand_draw_desc d = sk_hand_draw_desc_resolved(desc);
     /* the caption band is sized for the longest caption */
     sk_hand_draw_desc fit = d;
     for (int f = 0; captions && f < frame_count; f++)
-        if (captions[f] && (!fit.caption || strlen(captions[f]) > strlen(fit.caption))) fit.caption = captions[f];
+        if (captions[f] && (!fit.caption || strlen(captions[f]) > strlen(fit.caption)))
+            fit.caption = captions[f];
     sk_hand_draw_layout layout;
     sk_result r = sk_hand_draw_layout_fit(skeleton, dofs, frame_count, &fit, &layout, err);
     if (r == SK_OK) r = sk_make_dirs(dir, err);
@@ -51,7 +52,9 @@ sk_result sk_hand_frames_write_png(const sk_hand_skeleton *skeleton, const doubl
         sk_result fr = SK_OK;
         if (snprintf(path, sizeof path, "%s/frame_%0*d.png", dir, digits, f) >= (int)sizeof path)
             fr = sk_fail(&e, SK_ERROR_INVALID_ARGUMENT, "folder name too long: %s", dir);
-        if (fr == SK_OK) fr = sk_hand_draw(skeleton, dofs + (size_t)f * SK_HAND_DOF_COUNT, &fd, &layout, &img, &e);
+        if (fr == SK_OK)
+            fr = sk_hand_draw(skeleton, dofs + (size_t)f * SK_HAND_DOF_COUNT, &fd, &layout, &img,
+                              &e);
         if (fr == SK_OK) fr = sk_image_write_png(&img, path, NULL, &e);
         sk_image_free(&img);
         if (fr != SK_OK) {

@@ -26,8 +26,10 @@ static float clipped_length(sk_vec2f p, sk_vec2f q, rect r)
             continue;
         }
         float t = qk[k] / pk[k];
-        if (pk[k] < 0.0f) t0 = fmaxf(t0, t);
-        else t1 = fminf(t1, t);
+        if (pk[k] < 0.0f)
+            t0 = fmaxf(t0, t);
+        else
+            t1 = fminf(t1, t);
         if (t0 > t1) return 0.0f;
     }
     return (t1 - t0) * sqrtf(dx * dx + dy * dy);
@@ -41,13 +43,15 @@ static float rect_cost(rect r, const sk_hand__label_scene *s, const rect *placed
     for (int i = 0; i < placed_count; i++) cost += 20.0f * overlap_area(r, placed[i]);
     for (int i = 0; i < s->point_count; i++) {
         float rad = s->radius[i] + 1.0f;
-        rect disc = {s->points[i].x - rad, s->points[i].y - rad, s->points[i].x + rad, s->points[i].y + rad};
+        rect disc = {s->points[i].x - rad, s->points[i].y - rad, s->points[i].x + rad,
+                     s->points[i].y + rad};
         cost += (i == self ? 20.0f : 8.0f) * overlap_area(r, disc);
     }
     float hw = 0.5f * s->bone_width + 1.0f;
     rect grown = {r.x0 - hw, r.y0 - hw, r.x1 + hw, r.y1 + hw};
     for (int b = 0; b < s->bone_count; b++)
-        cost += 4.0f * s->bone_width * clipped_length(s->points[s->bones[b][0]], s->points[s->bones[b][1]], grown);
+        cost += 4.0f * s->bone_width *
+                clipped_length(s->points[s->bones[b][0]], s->points[s->bones[b][1]], grown);
     return cost;
 }
 
@@ -57,7 +61,9 @@ static void draw_haloed(sk_image *img, float x, float y, const char *text, int s
     sk_color white = sk_rgb(1, 1, 1);
     for (int dy = -1; dy <= 1; dy++)
         for (int dx = -1; dx <= 1; dx++)
-            if (dx || dy) sk_draw_text(img, x + (float)(dx * scale), y + (float)(dy * scale), text, scale, white);
+            if (dx || dy)
+                sk_draw_text(img, x + (float)(dx * scale), y + (float)(dy * scale), text, scale,
+                             white);
     sk_draw_text(img, x, y, text, scale, c);
 }
 
@@ -87,7 +93,8 @@ void sk_hand__draw_labels(sk_image *img, const sk_hand__label_scene *s, const ch
                 float mx = p.x + cx * t, my = p.y + cy * t;
                 rect r = {mx - 0.5f * w, my - 0.5f * h, mx + 0.5f * w, my + 0.5f * h};
                 /* nearer and more preferred places win ties */
-                float cost = rect_cost(r, s, placed, count, i) + 0.5f * (float)k + 6.0f * (float)ring;
+                float cost =
+                    rect_cost(r, s, placed, count, i) + 0.5f * (float)k + 6.0f * (float)ring;
                 if (cost < best_cost) {
                     best_cost = cost;
                     best = r;
@@ -103,7 +110,8 @@ void sk_hand__draw_labels(sk_image *img, const sk_hand__label_scene *s, const ch
             float dx = qx - p.x, dy = qy - p.y, len = sqrtf(dx * dx + dy * dy);
             if (len > s->radius[i] + 2.0f) {
                 float sx = p.x + dx / len * s->radius[i], sy = p.y + dy / len * s->radius[i];
-                sk_draw_line(img, sx, sy, qx, qy, fmaxf(1.0f, 0.5f * scale), sk_rgba(0.35f, 0.35f, 0.35f, 0.8f));
+                sk_draw_line(img, sx, sy, qx, qy, fmaxf(1.0f, 0.5f * scale),
+                             sk_rgba(0.35f, 0.35f, 0.35f, 0.8f));
             }
         }
         draw_haloed(img, best.x0 + pad, best.y0 + pad, names[i], scale, colors[i]);

@@ -47,10 +47,14 @@ static sk_result check_desc(const sk_hand_draw_desc *d, sk_error *err)
 const char *sk_hand__view_title(sk_hand_view view)
 {
     switch (view) {
-    case SK_HAND_VIEW_PALMAR: return "palmar (palm)";
-    case SK_HAND_VIEW_RADIAL: return "radial (thumb side)";
-    case SK_HAND_VIEW_ULNAR: return "ulnar (little-finger side)";
-    default: return "dorsal (back of the hand)";
+    case SK_HAND_VIEW_PALMAR:
+        return "palmar (palm)";
+    case SK_HAND_VIEW_RADIAL:
+        return "radial (thumb side)";
+    case SK_HAND_VIEW_ULNAR:
+        return "ulnar (little-finger side)";
+    default:
+        return "dorsal (back of the hand)";
     }
 }
 
@@ -62,10 +66,18 @@ static void view_axes(sk_hand_view view, sk_hand_side side, sk_hand_panel *p)
     double radial = side == SK_HAND_SIDE_LEFT ? -1.0 : 1.0;
     sk_vec3d toward;
     switch (view) {
-    case SK_HAND_VIEW_PALMAR: toward = sk_v3d(0, 0, 1); break;
-    case SK_HAND_VIEW_RADIAL: toward = sk_v3d(radial, 0, 0); break;
-    case SK_HAND_VIEW_ULNAR: toward = sk_v3d(-radial, 0, 0); break;
-    default: toward = sk_v3d(0, 0, -1); break;
+    case SK_HAND_VIEW_PALMAR:
+        toward = sk_v3d(0, 0, 1);
+        break;
+    case SK_HAND_VIEW_RADIAL:
+        toward = sk_v3d(radial, 0, 0);
+        break;
+    case SK_HAND_VIEW_ULNAR:
+        toward = sk_v3d(-radial, 0, 0);
+        break;
+    default:
+        toward = sk_v3d(0, 0, -1);
+        break;
     }
     p->view = view;
     p->toward = toward;
@@ -84,7 +96,8 @@ void sk_hand__bands(const sk_hand_draw_desc *d, sk_hand__band_sizes *b)
     /* a caption too wide for one line gets two */
     int lines = 0;
     if (d->caption && d->caption[0])
-        lines = sk_draw_text_width(d->caption, d->text_scale) > d->width - 4 * d->text_scale ? 2 : 1;
+        lines =
+            sk_draw_text_width(d->caption, d->text_scale) > d->width - 4 * d->text_scale ? 2 : 1;
     b->caption = lines ? lines * th + (lines - 1) * 3 * d->text_scale + 2 * b->margin : 0;
 }
 
@@ -96,12 +109,18 @@ static void reach_pose(const sk_hand_skeleton *s, const double *pose, int which,
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
         const sk_hand_dof_data *dd = &s->dof[i];
         bool flex = sk_hand_dof(i)->axis == 'X';
-        if (i < SK_HAND_WRIST_DOF_COUNT) q[i] = pose[i];
-        else if (which == 0) q[i] = sk_clampd(0.0, dd->min, dd->max);
-        else if (which == 1) q[i] = dd->relaxed;
-        else if (which == 2) q[i] = flex ? dd->max : dd->relaxed;
-        else if (which == 3) q[i] = flex ? dd->min : dd->relaxed;
-        else q[i] = flex ? sk_clampd(0.0, dd->min, dd->max) : dd->max;
+        if (i < SK_HAND_WRIST_DOF_COUNT)
+            q[i] = pose[i];
+        else if (which == 0)
+            q[i] = sk_clampd(0.0, dd->min, dd->max);
+        else if (which == 1)
+            q[i] = dd->relaxed;
+        else if (which == 2)
+            q[i] = flex ? dd->max : dd->relaxed;
+        else if (which == 3)
+            q[i] = flex ? dd->min : dd->relaxed;
+        else
+            q[i] = flex ? sk_clampd(0.0, dd->min, dd->max) : dd->max;
     }
 }
 #define REACH_POSE_COUNT 5
@@ -129,7 +148,9 @@ static void box_add_pose(box2 *b, const sk_hand_draw_layout *l, const sk_hand_sk
     sk_hand_forward(s, q, &f);
     for (int i = 0; i < SK_HAND_POINT_COUNT; i++) box_add(b, l, f.point[i]);
     /* the visible part of the forearm below the wrist */
-    if (cues) box_add(b, l, sk_v3d_add(f.point[0], sk_v3d(0, -SK_HAND__FOREARM_SHOWN * s->hand_length_mm, 0)));
+    if (cues)
+        box_add(b, l,
+                sk_v3d_add(f.point[0], sk_v3d(0, -SK_HAND__FOREARM_SHOWN * s->hand_length_mm, 0)));
 }
 
 sk_result sk_hand_draw_layout_fit(const sk_hand_skeleton *skeleton, const double *poses,
@@ -182,13 +203,15 @@ sk_result sk_hand_draw_layout_fit(const sk_hand_skeleton *skeleton, const double
         p->height = d.height - bands.caption;
         int area_w = p->width - 2 * bands.margin;
         /* a minimum extent keeps a degenerate box (all points in a line) finite */
-        double w = fmax(box.hi[v][0] - box.lo[v][0], 1.0), h = fmax(box.hi[v][1] - box.lo[v][1], 1.0);
+        double w = fmax(box.hi[v][0] - box.lo[v][0], 1.0),
+               h = fmax(box.hi[v][1] - box.lo[v][1], 1.0);
         scale = fmin(scale, fmin(area_w / w, area_h / h));
     }
     if (!(scale > 0.0) || area_h < 16)
         return sk_fail(err, SK_ERROR_LIMIT,
                        "a %d x %d picture leaves no room for the skeleton below its text "
-                       "(text_scale = %d)", d.width, d.height, d.text_scale);
+                       "(text_scale = %d)",
+                       d.width, d.height, d.text_scale);
     layout->pixels_per_mm = scale;
     for (int v = 0; v < d.view_count; v++) {
         sk_hand_panel *p = &layout->panel[v];

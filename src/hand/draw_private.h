@@ -20,8 +20,8 @@ typedef struct sk_hand__band_sizes {
  * leader line when it had to move away from its point. `bones` holds bone_count pairs of
  * point indices; labels stay inside [x0, x1) x [y0, y1). */
 typedef struct sk_hand__label_scene {
-    const sk_vec2f *points;  /* point_count positions */
-    const float *radius;     /* disc radius of each point */
+    const sk_vec2f *points; /* point_count positions */
+    const float *radius;    /* disc radius of each point */
     int point_count;
     const int (*bones)[2];
     int bone_count;

@@ -14,13 +14,15 @@ static const sk_color k_ink = {0.08f, 0.08f, 0.08f, 1};
 
 /* ------------------------------------------------------------ range scan */
 
-sk_result sk_hand_draw_range_scan(const sk_hand_range_scan *scan, int scale, sk_image *out, sk_error *err)
+sk_result sk_hand_draw_range_scan(const sk_hand_range_scan *scan, int scale, sk_image *out,
+                                  sk_error *err)
 {
     memset(out, 0, sizeof *out);
     if (scale == 0) scale = 1;
     sk_result r = sk_check_range_i(err, "scale", scale, 1, 8);
     if (r != SK_OK) return r;
-    if (!scan || !scan->depth) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no range scan to draw");
+    if (!scan || !scan->depth)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no range scan to draw");
     int L = scan->lines, P = scan->points;
     sk_image img;
     r = sk_image_create(&img, P * scale, L * scale, 3, err);
@@ -44,7 +46,8 @@ sk_result sk_hand_draw_range_scan(const sk_hand_range_scan *scan, int scale, sk_
                 float zr = j + 1 < P && isfinite(scan->depth[k + 1]) ? scan->depth[k + 1] : z;
                 float zd = i > 0 && isfinite(scan->depth[k - P]) ? scan->depth[k - P] : z;
                 float zu = i + 1 < L && isfinite(scan->depth[k + P]) ? scan->depth[k + P] : z;
-                double gy = (zr - zl) / (2.0 * scan->step_y_mm), gx = (zu - zd) / (2.0 * scan->step_x_mm);
+                double gy = (zr - zl) / (2.0 * scan->step_y_mm),
+                       gx = (zu - zd) / (2.0 * scan->step_x_mm);
                 sk_vec3d n = sk_v3d_normalize(sk_v3d(-gx, -gy, 1.0));
                 /* the picture's x is the line's y, its up is the scanner's x */
                 sk_vec3d nl = {n.y, n.x, n.z};
@@ -68,7 +71,8 @@ sk_result sk_hand_draw_range_scan(const sk_hand_range_scan *scan, int scale, sk_
     snprintf(title, sizeof title, "%s scan, %d x %d: %zu on the cast, %zu unseen (red)",
              scan->side == SK_HAND_SCAN_BACK ? "back" : "palm", L, P, measured, unmeasured);
     const sk_image *tiles[1] = {&img};
-    sk_contact_sheet_desc d = {.columns = 1, .padding = 6, .text_scale = 1, .title_scale = 2, .title = title};
+    sk_contact_sheet_desc d = {
+        .columns = 1, .padding = 6, .text_scale = 1, .title_scale = 2, .title = title};
     r = sk_contact_sheet(tiles, NULL, 1, &d, out, err);
     sk_image_free(&img);
     return r;
@@ -103,7 +107,8 @@ static void label(sk_image *img, const char *text, float x, float y, int scale)
     sk_draw_text(img, x, y, text, scale, k_ink);
 }
 
-static sk_result cloud_panel(const sk_hand_scan_result *res, view_dir vd, int w, int h, sk_image *out, sk_error *err)
+static sk_result cloud_panel(const sk_hand_scan_result *res, view_dir vd, int w, int h,
+                             sk_image *out, sk_error *err)
 {
     sk_vec3d lo, hi;
     cloud_bounds(&res->cloud, &lo, &hi);
@@ -114,12 +119,14 @@ static sk_result cloud_panel(const sk_hand_scan_result *res, view_dir vd, int w,
     /* nearer points brighter: a depth cue for points without normals */
     double n0 = INFINITY, n1 = -INFINITY;
     for (int c = 0; c < 8; c++) {
-        double z = sk_v3d_dot(sk_v3d(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z), v.toward);
+        double z = sk_v3d_dot(sk_v3d(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z),
+                              v.toward);
         n0 = fmin(n0, z), n1 = fmax(n1, z);
     }
     for (size_t i = 0; i < res->cloud.count; i++) {
         sk_color c = res->cloud.side[i] == SK_HAND_SCAN_BACK ? back : palm;
-        float k = (float)(0.45 + 0.55 * (sk_v3d_dot(res->cloud.position[i], v.toward) - n0) / fmax(n1 - n0, 1e-9));
+        float k = (float)(0.45 + 0.55 * (sk_v3d_dot(res->cloud.position[i], v.toward) - n0) /
+                                     fmax(n1 - n0, 1e-9));
         sk_hand__view_point(&v, res->cloud.position[i], 0.55f, sk_rgb(c.r * k, c.g * k, c.b * k));
     }
     r = sk_hand__view_finish(&v, out, err);
@@ -129,7 +136,8 @@ static sk_result cloud_panel(const sk_hand_scan_result *res, view_dir vd, int w,
         for (int k = 0; k < res->markers.count; k++) {
             sk_vec3d c = sk_hand_rigid_apply(&to_hand, res->registration.palm_centre[k]);
             sk_vec2f p = sk_hand__view_project(&v, c);
-            float rad = (float)(res->markers.radius_mm * v.scale / SK_HAND__VIEW_SUPERSAMPLE) + 3.0f;
+            float rad =
+                (float)(res->markers.radius_mm * v.scale / SK_HAND__VIEW_SUPERSAMPLE) + 3.0f;
             sk_draw_circle(out, p.x, p.y, rad, 2.0f, k_ink);
             char text[32];
             snprintf(text, sizeof text, "%.3f", res->registration.residual_mm[k]);
@@ -144,16 +152,20 @@ static sk_result cloud_panel(const sk_hand_scan_result *res, view_dir vd, int w,
 sk_result sk_hand_draw_registered(const sk_hand_scan_result *res, sk_image *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
-    if (!res || res->cloud.count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no point cloud to draw");
+    if (!res || res->cloud.count == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no point cloud to draw");
     sk_image panels[2] = {{0}};
     sk_result r = cloud_panel(res, k_dorsal, 520, 640, &panels[0], err);
     if (r == SK_OK) r = cloud_panel(res, k_radial, 360, 640, &panels[1], err);
     char title[200];
     if (res->scanned)
-        snprintf(title, sizeof title, "palm scan (blue) + back scan (orange), marker residuals mm (rms %.3f)",
+        snprintf(title, sizeof title,
+                 "palm scan (blue) + back scan (orange), marker residuals mm (rms %.3f)",
                  res->registration.rms_mm);
     else
-        snprintf(title, sizeof title, "input point cloud: palm side (blue), back side (orange), %zu points", res->cloud.count);
+        snprintf(title, sizeof title,
+                 "input point cloud: palm side (blue), back side (orange), %zu points",
+                 res->cloud.count);
     const sk_image *tiles[2] = {&panels[0], &panels[1]};
     if (r == SK_OK) r = sk_hand__panels(tiles, 2, title, out, err);
     sk_image_free(&panels[0]);
@@ -174,7 +186,8 @@ static int slice_near(const sk_hand_slices *s, double y)
 
 /* One slice drawn flat: its points by link, the link centres, the resampled vertices of
  * both meshes (thesis: red; with neighbouring slices: black rings). */
-static sk_result cross_section(const sk_hand_scan_result *res, int s, int w, int h, sk_image *out, sk_error *err)
+static sk_result cross_section(const sk_hand_scan_result *res, int s, int w, int h, sk_image *out,
+                               sk_error *err)
 {
     const sk_hand_slices *sl = &res->slices;
     sk_result r = sk_image_create(out, w, h, 3, err);
@@ -191,8 +204,8 @@ static sk_result cross_section(const sk_hand_scan_result *res, int s, int w, int
     double cx = 0.5 * (x0 + x1), cz = 0.5 * (z0 + z1);
     /* seen from the wrist side looking distally, palm up: x to the right would mirror the
        dorsal view; keep the dorsal view's left-right (thumb of a right hand on the left) */
-#define PX(x) ((float)(0.5 * w - scale * ((x) - cx)))
-#define PY(z) ((float)(top + 0.5 * (h - top) - scale * ((z) - cz)))
+#define PX(x) ((float)(0.5 * w - scale * ((x)-cx)))
+#define PY(z) ((float)(top + 0.5 * (h - top) - scale * ((z)-cz)))
     for (size_t k = sl->first[s]; k < sl->first[s + 1]; k++) {
         sk_vec3d p = res->cloud.position[sl->points[k].point];
         sk_draw_disc(out, PX(p.x), PY(p.z), 1.3f, sk_hand__link_color(sl->points[k].link));
@@ -202,13 +215,16 @@ static sk_result cross_section(const sk_hand_scan_result *res, int s, int w, int
         for (size_t v = 0; v < m->vertex_count; v++) {
             if (fabs(m->positions[3 * v + 1] - sl->y[s]) > 1e-3) continue;
             float x = PX(m->positions[3 * v]), y = PY(m->positions[3 * v + 2]);
-            if (pass) sk_draw_circle(out, x, y, 3.0f, 1.2f, k_ink);
-            else sk_draw_rect(out, x - 1.8f, y - 1.8f, 3.6f, 3.6f, sk_rgb(0.85f, 0.15f, 0.1f));
+            if (pass)
+                sk_draw_circle(out, x, y, 3.0f, 1.2f, k_ink);
+            else
+                sk_draw_rect(out, x - 1.8f, y - 1.8f, 3.6f, 3.6f, sk_rgb(0.85f, 0.15f, 0.1f));
         }
     }
     for (int l = 0; l < SK_HAND_LINK_COUNT; l++) {
         bool used = false;
-        for (size_t k = sl->first[s]; k < sl->first[s + 1] && !used; k++) used = sl->points[k].link == l;
+        for (size_t k = sl->first[s]; k < sl->first[s + 1] && !used; k++)
+            used = sl->points[k].link == l;
         if (!used) continue;
         sk_vec3d c = sl->centre[s][l];
         float x = PX(c.x), y = PY(c.z);
@@ -226,18 +242,22 @@ static sk_result cross_section(const sk_hand_scan_result *res, int s, int w, int
 sk_result sk_hand_draw_slices(const sk_hand_scan_result *res, sk_image *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
-    if (!res || res->slices.count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no slices to draw");
+    if (!res || res->slices.count == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no slices to draw");
     const sk_hand_slices *sl = &res->slices;
     sk_vec3d lo, hi;
     cloud_bounds(&res->cloud, &lo, &hi);
     sk_hand__view v;
-    sk_result r = sk_hand__view_create(&v, 520, 640, k_dorsal.right, k_dorsal.up, lo, hi, 24, k_white, err);
+    sk_result r =
+        sk_hand__view_create(&v, 520, 640, k_dorsal.right, k_dorsal.up, lo, hi, 24, k_white, err);
     if (r != SK_OK) return r;
     sk_color grey = sk_rgb(0.82f, 0.82f, 0.82f);
-    for (size_t i = 0; i < res->cloud.count; i++) sk_hand__view_point(&v, res->cloud.position[i], 0.5f, grey);
+    for (size_t i = 0; i < res->cloud.count; i++)
+        sk_hand__view_point(&v, res->cloud.position[i], 0.5f, grey);
     /* the slices' points on top (pushed toward the viewer) */
     for (size_t k = 0; k < sl->first[sl->count]; k++) {
-        sk_vec3d p = sk_v3d_add(res->cloud.position[sl->points[k].point], sk_v3d_scale(v.toward, 200.0));
+        sk_vec3d p =
+            sk_v3d_add(res->cloud.position[sl->points[k].point], sk_v3d_scale(v.toward, 200.0));
         sk_hand__view_point(&v, p, 0.9f, sk_hand__link_color(sl->points[k].link));
     }
     sk_image panels[4] = {{0}};
@@ -248,7 +268,8 @@ sk_result sk_hand_draw_slices(const sk_hand_scan_result *res, sk_image *out, sk_
     double ys[3] = {0.5 * (f->point[sk_hand_link_point(9)].y + f->point[sk_hand_link_point(10)].y),
                     f->point[sk_hand_link_point(9)].y - 4.0,
                     0.5 * (f->point[sk_hand_link_point(8)].y + f->point[sk_hand_link_point(9)].y)};
-    for (int k = 0; k < 3 && r == SK_OK; k++) r = cross_section(res, slice_near(sl, ys[k]), 420, 206, &panels[1 + k], err);
+    for (int k = 0; k < 3 && r == SK_OK; k++)
+        r = cross_section(res, slice_near(sl, ys[k]), 420, 206, &panels[1 + k], err);
     sk_image column = {0}, *col = &column;
     if (r == SK_OK) {
         const sk_image *tiles[3] = {&panels[1], &panels[2], &panels[3]};
@@ -256,8 +277,10 @@ sk_result sk_hand_draw_slices(const sk_hand_scan_result *res, sk_image *out, sk_
         r = sk_contact_sheet(tiles, NULL, 3, &d, col, err);
     }
     char title[200];
-    snprintf(title, sizeof title, "%d slices, points by nearest link; resampled: red slice alone, black with "
-                                  "neighbours", sl->count);
+    snprintf(title, sizeof title,
+             "%d slices, points by nearest link; resampled: red slice alone, black with "
+             "neighbours",
+             sl->count);
     if (r == SK_OK) {
         const sk_image *tiles[2] = {&panels[0], col};
         r = sk_hand__panels(tiles, 2, title, out, err);
@@ -273,25 +296,32 @@ static view_dir view_of(sk_hand_view v)
 {
     static const view_dir ulnar = {{0, 0, 1}, {0, 1, 0}, "from the little-finger side"};
     switch (v) {
-    case SK_HAND_VIEW_PALMAR: return k_palmar;
-    case SK_HAND_VIEW_RADIAL: return k_radial;
-    case SK_HAND_VIEW_ULNAR: return ulnar;
-    default: return k_dorsal;
+    case SK_HAND_VIEW_PALMAR:
+        return k_palmar;
+    case SK_HAND_VIEW_RADIAL:
+        return k_radial;
+    case SK_HAND_VIEW_ULNAR:
+        return ulnar;
+    default:
+        return k_dorsal;
     }
 }
 
-static sk_result mesh_panel(const sk_mesh *m, const sk_mesh_attribute *attr, bool link_colors, view_dir vd, int w,
-                            int h, sk_image *out, sk_error *err)
+static sk_result mesh_panel(const sk_mesh *m, const sk_mesh_attribute *attr, bool link_colors,
+                            view_dir vd, int w, int h, sk_image *out, sk_error *err)
 {
     sk_vec3d lo, hi;
-    if (!sk_hand__mesh_bounds(m, &lo, &hi)) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "empty mesh");
+    if (!sk_hand__mesh_bounds(m, &lo, &hi))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "empty mesh");
     sk_hand__view v;
     sk_result r = sk_hand__view_create(&v, w, h, vd.right, vd.up, lo, hi, 24, k_white, err);
     if (r != SK_OK) return r;
     for (size_t t = 0; t < m->triangle_count; t++) {
         const uint32_t *ix = m->indices + 3 * t;
         sk_vec3d p[3];
-        for (int c = 0; c < 3; c++) p[c] = sk_v3d(m->positions[3 * ix[c]], m->positions[3 * ix[c] + 1], m->positions[3 * ix[c] + 2]);
+        for (int c = 0; c < 3; c++)
+            p[c] = sk_v3d(m->positions[3 * ix[c]], m->positions[3 * ix[c] + 1],
+                          m->positions[3 * ix[c] + 2]);
         sk_color col = sk_rgb(0.8f, 0.78f, 0.74f);
         if (attr) {
             int k = (int)attr->data[(size_t)ix[0] * (size_t)attr->components];
@@ -305,16 +335,19 @@ static sk_result mesh_panel(const sk_mesh *m, const sk_mesh_attribute *attr, boo
     return r;
 }
 
-sk_result sk_hand_draw_mesh_views(const sk_mesh *mesh, const char *title, const char *color_attribute,
-                                  const sk_hand_view *views, int view_count, sk_image *out, sk_error *err)
+sk_result sk_hand_draw_mesh_views(const sk_mesh *mesh, const char *title,
+                                  const char *color_attribute, const sk_hand_view *views,
+                                  int view_count, sk_image *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
-    if (!mesh || mesh->triangle_count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no triangles to draw");
+    if (!mesh || mesh->triangle_count == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no triangles to draw");
     sk_result r = sk_check_range_i(err, "view_count", view_count, 0, 4);
     if (r != SK_OK) return r;
     static const sk_hand_view pair[2] = {SK_HAND_VIEW_DORSAL, SK_HAND_VIEW_PALMAR};
     if (view_count == 0) views = pair, view_count = 2;
-    const sk_mesh_attribute *attr = color_attribute ? sk_mesh_find_attribute(mesh, color_attribute) : NULL;
+    const sk_mesh_attribute *attr =
+        color_attribute ? sk_mesh_find_attribute(mesh, color_attribute) : NULL;
     bool link_colors = color_attribute && strcmp(color_attribute, "link") == 0;
     sk_image panels[4] = {{0}};
     const sk_image *tiles[4];
@@ -330,8 +363,9 @@ sk_result sk_hand_draw_mesh_views(const sk_mesh *mesh, const char *title, const 
 }
 
 /* The fitted patches moved to `pose` and tessellated. */
-static sk_result posed_mesh(const sk_hand_patch_set *set, const sk_hand_frames *rest, const sk_hand_frames *pose,
-                            const sk_hand_patch_weights *weights, sk_mesh *out, sk_error *err)
+static sk_result posed_mesh(const sk_hand_patch_set *set, const sk_hand_frames *rest,
+                            const sk_hand_frames *pose, const sk_hand_patch_weights *weights,
+                            sk_mesh *out, sk_error *err)
 {
     sk_hand_patch moved[SK_HAND_PATCH_COUNT];
     sk_hand_patch_weights w[16 * SK_HAND_PATCH_COUNT];
@@ -349,8 +383,9 @@ static sk_result posed_mesh(const sk_hand_patch_set *set, const sk_hand_frames *
 }
 
 sk_result sk_hand_draw_patches_posed(const sk_hand_patch_set *set, const sk_hand_frames *rest,
-                                     const sk_hand_frames *pose, const sk_hand_patch_weights *weights,
-                                     sk_image *out, sk_error *err)
+                                     const sk_hand_frames *pose,
+                                     const sk_hand_patch_weights *weights, sk_image *out,
+                                     sk_error *err)
 {
     memset(out, 0, sizeof *out);
     static const sk_hand_view views[2] = {SK_HAND_VIEW_RADIAL, SK_HAND_VIEW_DORSAL};
@@ -361,7 +396,9 @@ sk_result sk_hand_draw_patches_posed(const sk_hand_patch_set *set, const sk_hand
         sk_mesh m = {0};
         r = posed_mesh(set, rest, pose, k ? weights : NULL, &m, err);
         if (r == SK_OK)
-            r = sk_hand_draw_mesh_views(&m, k ? "control points with smooth weights" : "control points rigid with their links (thesis)",
+            r = sk_hand_draw_mesh_views(&m,
+                                        k ? "control points with smooth weights"
+                                          : "control points rigid with their links (thesis)",
                                         "patch", views, 2, &sheets[k], err);
         sk_mesh_free(&m);
     }

@@ -10,10 +10,10 @@
 #define SK_HAND__VIEW_SUPERSAMPLE 2
 
 typedef struct sk_hand__view {
-    sk_image image;           /* RGB, supersampled */
-    float *depth;             /* nearness (dot with `toward`); -inf = empty */
+    sk_image image; /* RGB, supersampled */
+    float *depth;   /* nearness (dot with `toward`); -inf = empty */
     sk_vec3d right, up, toward;
-    double scale, ox, oy;     /* pixel = (ox + scale * p.right, oy - scale * p.up) */
+    double scale, ox, oy; /* pixel = (ox + scale * p.right, oy - scale * p.up) */
 } sk_hand__view;
 
 /* A view of width x height final pixels framing the box [lo, hi] (world) seen along
@@ -37,6 +37,7 @@ sk_color sk_hand__index_color(int k);
 /* The colour of a link: its finger's colour, lighter toward the tip. */
 sk_color sk_hand__link_color(int link);
 /* Stacks images side by side on a white ground with a title line above. */
-sk_result sk_hand__panels(const sk_image *const *panels, int count, const char *title, sk_image *out, sk_error *err);
+sk_result sk_hand__panels(const sk_image *const *panels, int count, const char *title,
+                          sk_image *out, sk_error *err);
 
 #endif /* SK_HAND_DRAW_SCAN_PRIVATE_H */

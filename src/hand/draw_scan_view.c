@@ -75,8 +75,9 @@ void sk_hand__view_triangle(sk_hand__view *v, sk_vec3d a, sk_vec3d b, sk_vec3d c
     sk_vec3d n = sk_v3d_normalize(sk_v3d_cross(sk_v3d_sub(b, a), sk_v3d_sub(c, a)));
     if (sk_v3d_dot(n, v->toward) < 0) n = sk_v3d_scale(n, -1.0);
     /* light from the viewer's upper left, a little ambient */
-    sk_vec3d light = sk_v3d_normalize(sk_v3d_add(sk_v3d_add(sk_v3d_scale(v->toward, 1.0), sk_v3d_scale(v->up, 0.6)),
-                                                 sk_v3d_scale(v->right, -0.4)));
+    sk_vec3d light = sk_v3d_normalize(
+        sk_v3d_add(sk_v3d_add(sk_v3d_scale(v->toward, 1.0), sk_v3d_scale(v->up, 0.6)),
+                   sk_v3d_scale(v->right, -0.4)));
     float k = (float)(0.28 + 0.72 * fmax(0.0, sk_v3d_dot(n, light)));
     sk_color shaded = sk_rgb(color.r * k, color.g * k, color.b * k);
     double x[3], y[3], z[3];
@@ -106,15 +107,18 @@ void sk_hand__view_point(sk_hand__view *v, sk_vec3d p, float radius, sk_color co
     double x, y, z;
     to_pixel(v, p, &x, &y, &z);
     double r = radius * SK_HAND__VIEW_SUPERSAMPLE;
-    int x0 = (int)floor(x - r), x1 = (int)floor(x + r), y0 = (int)floor(y - r), y1 = (int)floor(y + r);
+    int x0 = (int)floor(x - r), x1 = (int)floor(x + r), y0 = (int)floor(y - r),
+        y1 = (int)floor(y + r);
     for (int py = y0 < 0 ? 0 : y0; py <= y1 && py < v->image.height; py++)
-        for (int px = x0 < 0 ? 0 : x0; px <= x1 && px < v->image.width; px++) plot(v, px, py, (float)z, color);
+        for (int px = x0 < 0 ? 0 : x0; px <= x1 && px < v->image.width; px++)
+            plot(v, px, py, (float)z, color);
 }
 
 sk_result sk_hand__view_finish(sk_hand__view *v, sk_image *out, sk_error *err)
 {
     int S = SK_HAND__VIEW_SUPERSAMPLE;
-    return sk_image_resize_filter(&v->image, v->image.width / S, v->image.height / S, SK_RESIZE_BOX, out, err);
+    return sk_image_resize_filter(&v->image, v->image.width / S, v->image.height / S, SK_RESIZE_BOX,
+                                  out, err);
 }
 
 bool sk_hand__mesh_bounds(const sk_mesh *m, sk_vec3d *lo, sk_vec3d *hi)
@@ -147,9 +151,14 @@ sk_color sk_hand__link_color(int link)
     return sk_rgb(c.r + (1 - c.r) * t, c.g + (1 - c.g) * t, c.b + (1 - c.b) * t);
 }
 
-sk_result sk_hand__panels(const sk_image *const *panels, int count, const char *title, sk_image *out, sk_error *err)
+sk_result sk_hand__panels(const sk_image *const *panels, int count, const char *title,
+                          sk_image *out, sk_error *err)
 {
-    sk_contact_sheet_desc d = {.columns = count, .padding = 6, .text_scale = 1, .title_scale = 2, .title = title,
+    sk_contact_sheet_desc d = {.columns = count,
+                               .padding = 6,
+                               .text_scale = 1,
+                               .title_scale = 2,
+                               .title = title,
                                .tile_border = 1};
     return sk_contact_sheet(panels, NULL, count, &d, out, err);
 }

@@ -35,8 +35,8 @@ typedef enum item_kind { ITEM_CARPAL, ITEM_BONE, ITEM_JOINT, ITEM_TIP } item_kin
 typedef struct draw_item {
     double depth; /* nearness to the viewer: larger is drawn later */
     item_kind kind;
-    int a, b;     /* points: a bone from a to b; a joint at a */
-    int order;    /* stable tie-break */
+    int a, b;  /* points: a bone from a to b; a joint at a */
+    int order; /* stable tie-break */
 } draw_item;
 
 static int compare_items(const void *pa, const void *pb)
@@ -78,9 +78,9 @@ typedef struct panel_ctx {
     int view_index;
     const sk_hand_skeleton *skeleton;
     const sk_hand_frames *frames;
-    sk_image *img;       /* the panel's own image */
+    sk_image *img; /* the panel's own image */
     sk_hand__band_sizes bands;
-    int area_bottom;     /* y of the drawing area's lower edge (panel coordinates) */
+    int area_bottom; /* y of the drawing area's lower edge (panel coordinates) */
     sizes size;
 } panel_ctx;
 
@@ -107,7 +107,8 @@ static void draw_forearm(const panel_ctx *c)
 {
     const sk_hand_panel *pn = c->panel;
     double hb = c->skeleton->hand_breadth_mm;
-    double half = hypot(0.30 * hb * pn->right.x, 0.20 * hb * pn->right.z) * c->layout->pixels_per_mm;
+    double half =
+        hypot(0.30 * hb * pn->right.x, 0.20 * hb * pn->right.z) * c->layout->pixels_per_mm;
     sk_vec2f w = to_panel(c, c->frames->point[0]);
     float top = w.y, bottom = (float)c->area_bottom;
     if (!(bottom > top)) return;
@@ -180,9 +181,12 @@ static void draw_item_one(const panel_ctx *c, const draw_item *it)
     sk_vec2f a = to_panel(c, f->point[it->a]), b = to_panel(c, f->point[it->b]);
     switch (it->kind) {
     case ITEM_CARPAL:
-        sk_draw_line(c->img, a.x, a.y, b.x, b.y, 0.45f * c->size.bone * shrink, mix(k_carpus, k_background, 0.55f * far));
+        sk_draw_line(c->img, a.x, a.y, b.x, b.y, 0.45f * c->size.bone * shrink,
+                     mix(k_carpus, k_background, 0.55f * far));
         break;
-    case ITEM_BONE: sk_draw_line(c->img, a.x, a.y, b.x, b.y, c->size.bone * shrink, col); break;
+    case ITEM_BONE:
+        sk_draw_line(c->img, a.x, a.y, b.x, b.y, c->size.bone * shrink, col);
+        break;
     case ITEM_JOINT: {
         float r = c->size.joint * shrink;
         if (it->a == 0) r *= 1.15f;
@@ -190,7 +194,10 @@ static void draw_item_one(const panel_ctx *c, const draw_item *it)
         sk_draw_disc(c->img, a.x, a.y, 0.45f * r, mix(sk_rgb(1, 1, 1), k_background, far));
         break;
     }
-    case ITEM_TIP: sk_draw_disc(c->img, a.x, a.y, c->size.tip * shrink, mix(scaled(base, 0.55f), k_background, 0.55f * far)); break;
+    case ITEM_TIP:
+        sk_draw_disc(c->img, a.x, a.y, c->size.tip * shrink,
+                     mix(scaled(base, 0.55f), k_background, 0.55f * far));
+        break;
     }
 }
 
@@ -210,7 +217,8 @@ static void draw_point_labels(const panel_ctx *c)
         pts[p] = to_panel(c, c->frames->point[p]);
         radius[p] = p == 0 ? 1.15f * c->size.joint : point_is_tip(p) ? c->size.tip : c->size.joint;
         names[p] = sk_hand_point_name(p);
-        double dir = finger == SK_HAND_THUMB || finger == SK_HAND_INDEX ? radial_screen : -radial_screen;
+        double dir =
+            finger == SK_HAND_THUMB || finger == SK_HAND_INDEX ? radial_screen : -radial_screen;
         prefer[p] = fabs(dir) < 0.5 ? 1.0f : (float)dir;
         colors[p] = finger < 0 ? k_ink : scaled(sk_hand_finger_color((sk_hand_finger)finger), 0.7f);
         if (p > 0) {
@@ -218,22 +226,23 @@ static void draw_point_labels(const panel_ctx *c)
             bones[bone_count++][1] = p;
         }
     }
-    sk_hand__label_scene scene = {pts, radius, SK_HAND_POINT_COUNT, (const int(*)[2])bones, bone_count,
-                                  c->size.bone, 0.0f, (float)c->bands.title, (float)c->panel->width,
-                                  (float)c->area_bottom};
+    sk_hand__label_scene scene = {
+        pts,          radius, SK_HAND_POINT_COUNT,   (const int(*)[2])bones, bone_count,
+        c->size.bone, 0.0f,   (float)c->bands.title, (float)c->panel->width, (float)c->area_bottom};
     sk_hand__draw_labels(c->img, &scene, names, colors, prefer, c->layout->text_scale);
 }
 
 /* An arrow from (x0, y0) of length len in direction (dx, dy) (unit), with a head. */
-static void draw_arrow(sk_image *img, float x0, float y0, float dx, float dy, float len, float width,
-                       sk_color col)
+static void draw_arrow(sk_image *img, float x0, float y0, float dx, float dy, float len,
+                       float width, sk_color col)
 {
     float x1 = x0 + dx * len, y1 = y0 + dy * len;
     float head = 3.0f * width + 2.0f;
     sk_draw_line(img, x0, y0, x1 - dx * head * 0.6f, y1 - dy * head * 0.6f, width, col);
-    sk_vec2f tri[3] = {sk_v2f(x1, y1),
-                       sk_v2f(x1 - dx * head - dy * head * 0.5f, y1 - dy * head + dx * head * 0.5f),
-                       sk_v2f(x1 - dx * head + dy * head * 0.5f, y1 - dy * head - dx * head * 0.5f)};
+    sk_vec2f tri[3] = {
+        sk_v2f(x1, y1),
+        sk_v2f(x1 - dx * head - dy * head * 0.5f, y1 - dy * head + dx * head * 0.5f),
+        sk_v2f(x1 - dx * head + dy * head * 0.5f, y1 - dy * head - dx * head * 0.5f)};
     sk_draw_polygon(img, tri, 3, col);
 }
 
@@ -294,8 +303,8 @@ static void draw_cues(const panel_ctx *c)
 
 /* A line of text centred in [x0, x0 + width): at `scale`, or smaller, or cut with "..."
  * to fit. */
-static void draw_centred_line(sk_image *img, int x0, int width, float y, const char *text, int scale,
-                              sk_color col)
+static void draw_centred_line(sk_image *img, int x0, int width, float y, const char *text,
+                              int scale, sk_color col)
 {
     char buf[512];
     snprintf(buf, sizeof buf, "%s", text);
@@ -318,7 +327,8 @@ static void draw_caption(sk_image *out, const sk_hand_draw_layout *layout, const
     for (int scale = layout->text_scale; scale >= 1; scale--) {
         int th = sk_draw_text_height(scale), room = width - 4 * scale;
         if (sk_draw_text_width(text, scale) <= room && th <= band) {
-            draw_centred_line(out, 0, width, (float)y0 + 0.5f * (float)(band - th), text, scale, k_ink);
+            draw_centred_line(out, 0, width, (float)y0 + 0.5f * (float)(band - th), text, scale,
+                              k_ink);
             return;
         }
         int two = 2 * th + 3 * scale;
@@ -329,13 +339,15 @@ static void draw_caption(sk_image *out, const sk_hand_draw_layout *layout, const
         if (!split) continue;
         char first[512];
         snprintf(first, sizeof first, "%.*s,", (int)(split - text), text);
-        if (sk_draw_text_width(first, scale) > room || sk_draw_text_width(split + 2, scale) > room) continue;
+        if (sk_draw_text_width(first, scale) > room || sk_draw_text_width(split + 2, scale) > room)
+            continue;
         float y = (float)y0 + 0.5f * (float)(band - two);
         draw_centred_line(out, 0, width, y, first, scale, k_ink);
         draw_centred_line(out, 0, width, y + (float)(th + 3 * scale), split + 2, scale, k_ink);
         return;
     }
-    draw_centred_line(out, 0, width, (float)y0 + 0.5f * (float)(band - sk_draw_text_height(1)), text, 1, k_ink);
+    draw_centred_line(out, 0, width, (float)y0 + 0.5f * (float)(band - sk_draw_text_height(1)),
+                      text, 1, k_ink);
 }
 
 static sk_result draw_panel(const sk_hand_draw_layout *layout, int v, const sk_hand_draw_desc *d,
@@ -347,7 +359,8 @@ static sk_result draw_panel(const sk_hand_draw_layout *layout, int v, const sk_h
     sk_result r = sk_image_create(&img, pn->width, pn->height, 3, err);
     if (r != SK_OK) return r;
     sk_draw_clear(&img, k_background);
-    panel_ctx c = {layout, pn, v, skeleton, frames, &img, {0}, 0, stroke_sizes(layout->pixels_per_mm)};
+    panel_ctx c = {
+        layout, pn, v, skeleton, frames, &img, {0}, 0, stroke_sizes(layout->pixels_per_mm)};
     sk_hand_draw_desc dd = *d;
     dd.text_scale = layout->text_scale;
     dd.caption = NULL; /* the caption band lies outside the panels */
@@ -365,7 +378,8 @@ static sk_result draw_panel(const sk_hand_draw_layout *layout, int v, const sk_h
                           layout->text_scale, k_ink);
     /* both are RGB: the panel's rows go in as they are (cheaper than a converting blit) */
     for (int y = 0; y < pn->height; y++)
-        memcpy(sk_image_pixel(out, pn->x0, pn->y0 + y), sk_image_pixel(&img, 0, y), sizeof(float) * 3 * (size_t)pn->width);
+        memcpy(sk_image_pixel(out, pn->x0, pn->y0 + y), sk_image_pixel(&img, 0, y),
+               sizeof(float) * 3 * (size_t)pn->width);
     sk_image_free(&img);
     return SK_OK;
 }
@@ -384,14 +398,16 @@ sk_result sk_hand_draw(const sk_hand_skeleton *skeleton, const double dofs[SK_HA
     }
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
         if (!isfinite(dofs[i]))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s is not finite", sk_hand_dof(i)->name);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s is not finite",
+                           sk_hand_dof(i)->name);
     sk_hand_frames frames;
     sk_hand_forward(skeleton, dofs, &frames);
     sk_result r = sk_image_create(out, layout->width, layout->height, 3, err);
     if (r != SK_OK) return r;
     /* the panels cover the rest (drawn apart, so that nothing crosses into a neighbour) */
     int caption_top = layout->panel[0].height;
-    sk_draw_rect(out, 0.0f, (float)caption_top, (float)out->width, (float)(out->height - caption_top), k_background);
+    sk_draw_rect(out, 0.0f, (float)caption_top, (float)out->width,
+                 (float)(out->height - caption_top), k_background);
     for (int v = 0; v < layout->view_count && r == SK_OK; v++)
         r = draw_panel(layout, v, &d, skeleton, &frames, out, err);
     for (int v = 1; v < layout->view_count && r == SK_OK; v++) {

@@ -21,23 +21,29 @@ sk_result sk_hand_parse_pin_set(const char *text, sk_hand_pin_set *out, sk_error
         size_t n = strcspn(p, ",");
         char name[64];
         if (n == 0 || n >= sizeof name)
-            return sk_fail(err, SK_ERROR_PARSE, "pins \"%.80s\": expected DOF names separated by commas", text);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "pins \"%.80s\": expected DOF names separated by commas", text);
         memcpy(name, p, n);
         name[n] = '\0';
         int d = sk_hand_dof_find(name);
-        if (d < 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pins \"%.80s\": unknown DOF \"%s\"", text, name);
+        if (d < 0)
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pins \"%.80s\": unknown DOF \"%s\"",
+                           text, name);
         for (int i = 0; i < out->count; i++)
             if (out->dof[i] == d)
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pins \"%.80s\": %s appears twice", text, name);
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pins \"%.80s\": %s appears twice",
+                               text, name);
         if (out->count >= SK_HAND_EVAL_MAX_PINS)
-            return sk_fail(err, SK_ERROR_LIMIT, "pins \"%.80s\": more than %d DOFs", text, SK_HAND_EVAL_MAX_PINS);
+            return sk_fail(err, SK_ERROR_LIMIT, "pins \"%.80s\": more than %d DOFs", text,
+                           SK_HAND_EVAL_MAX_PINS);
         out->dof[out->count++] = d;
         p += n;
         if (*p == ',') p++;
         if (*p == '\0' && p[-1] == ',')
             return sk_fail(err, SK_ERROR_PARSE, "pins \"%.80s\": a trailing comma", text);
     }
-    if (out->count == 0) return sk_fail(err, SK_ERROR_PARSE, "pins: empty (expected e.g. I.MCP.flex,I.PIP.flex)");
+    if (out->count == 0)
+        return sk_fail(err, SK_ERROR_PARSE, "pins: empty (expected e.g. I.MCP.flex,I.PIP.flex)");
     return SK_OK;
 }
 
@@ -48,7 +54,8 @@ typedef struct predictor {
     bool ok;
 } predictor;
 
-static void predictor_from_cov(predictor *pr, const double *mu, const double *cov, int d, const bool *pinned)
+static void predictor_from_cov(predictor *pr, const double *mu, const double *cov, int d,
+                               const bool *pinned)
 {
     double prec[D_MAX * D_MAX];
     memcpy(prec, cov, sizeof(double) * (size_t)d * d);
@@ -56,7 +63,8 @@ static void predictor_from_cov(predictor *pr, const double *mu, const double *co
     pr->ok = sk_hand__spd_inverse(prec, d) && sk_hand__conditional(prec, d, pinned, pr->b);
 }
 
-static void predictor_apply(const predictor *pr, int d, const bool *pinned, const double *x, double *out)
+static void predictor_apply(const predictor *pr, int d, const bool *pinned, const double *x,
+                            double *out)
 {
     int np = 0, q[D_MAX];
     for (int a = 0; a < d; a++)
@@ -97,9 +105,9 @@ static bool ppca_cov(const double *cov, int d, int k, double *out)
 
 /* The model of a fold as a potential: calibrated on the training samples, or a fixed or
  * refitted set as a one-component potential around the built-in relaxed posture. */
-static sk_result fold_model(const sk_hand_skeleton *skel, const sk_hand_samples *s, const int *dof, int d,
-                            const int *train, int nt, const sk_hand_evaluation_desc *desc, sk_hand_potential *pot,
-                            sk_error *err)
+static sk_result fold_model(const sk_hand_skeleton *skel, const sk_hand_samples *s, const int *dof,
+                            int d, const int *train, int nt, const sk_hand_evaluation_desc *desc,
+                            sk_hand_potential *pot, sk_error *err)
 {
     if (desc->model == SK_HAND_EVAL_MODEL_CALIBRATED)
         return sk_hand_potential_fit(pot, skel, s, train, nt, &desc->potential, err);
@@ -133,11 +141,13 @@ static sk_result fold_model(const sk_hand_skeleton *skel, const sk_hand_samples 
             cols[dof[a]] = buf + (size_t)a * nt;
         }
         if (r == SK_OK)
-            r = sk_hand_calibrate(cols, nt, desc->pairs, desc->pair_count, desc->weight_rule, fits, err);
+            r = sk_hand_calibrate(cols, nt, desc->pairs, desc->pair_count, desc->weight_rule, fits,
+                                  err);
         double scale = desc->weight_scale > 0 ? desc->weight_scale : 1.0;
         for (int k = 0; k < desc->pair_count && r == SK_OK; k++)
-            r = sk_hand_constraints_add_pair(&c->constraints, skel, fits[k].dof_x, fits[k].dof_y, fits[k].slope,
-                                             fits[k].intercept, fits[k].weight * scale, true, err);
+            r = sk_hand_constraints_add_pair(&c->constraints, skel, fits[k].dof_x, fits[k].dof_y,
+                                             fits[k].slope, fits[k].intercept,
+                                             fits[k].weight * scale, true, err);
         free(buf);
         free(fits);
     }
@@ -152,8 +162,9 @@ static sk_result fold_model(const sk_hand_skeleton *skel, const sk_hand_samples 
 }
 
 /* The lookup tables of a fold (3.2.3): one per pair, from the training samples. */
-static sk_result fold_luts(const sk_hand_samples *s, const int *train, int nt, const sk_hand_evaluation_desc *desc,
-                           sk_hand_lut *luts, int *count, sk_error *err)
+static sk_result fold_luts(const sk_hand_samples *s, const int *train, int nt,
+                           const sk_hand_evaluation_desc *desc, sk_hand_lut *luts, int *count,
+                           sk_error *err)
 {
     *count = 0;
     double *xs = malloc(sizeof(double) * (size_t)nt * 2);
@@ -182,8 +193,9 @@ typedef struct sums {
 
 static double rms(double sum, long long n) { return n > 0 ? sqrt(sum / (double)n) : 0.0; }
 
-sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *s, const sk_hand_pin_set *pin_sets,
-                           int pin_set_count, const sk_hand_evaluation_desc *desc_in, sk_hand_evaluation *out,
+sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *s,
+                           const sk_hand_pin_set *pin_sets, int pin_set_count,
+                           const sk_hand_evaluation_desc *desc_in, sk_hand_evaluation *out,
                            sk_error *err)
 {
     memset(out, 0, sizeof *out);
@@ -192,49 +204,60 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
     if (desc.model == SK_HAND_EVAL_MODEL_DEFAULT) desc.model = SK_HAND_EVAL_MODEL_CALIBRATED;
     if (desc.model != SK_HAND_EVAL_MODEL_CALIBRATED && desc.model != SK_HAND_EVAL_MODEL_FIXED &&
         desc.model != SK_HAND_EVAL_MODEL_PAIRS && desc.model != SK_HAND_EVAL_MODEL_LUT)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "model = %d is not a model", (int)desc.model);
-    bool with_pairs = desc.model == SK_HAND_EVAL_MODEL_PAIRS || desc.model == SK_HAND_EVAL_MODEL_LUT;
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "model = %d is not a model",
+                       (int)desc.model);
+    bool with_pairs =
+        desc.model == SK_HAND_EVAL_MODEL_PAIRS || desc.model == SK_HAND_EVAL_MODEL_LUT;
     if (with_pairs && (desc.pair_count < 1 || !desc.pairs))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the %s model needs pairs",
                        desc.model == SK_HAND_EVAL_MODEL_LUT ? "lookup-table" : "pair");
     if (with_pairs && desc.pair_count > SK_HAND_EVAL_MAX_LUTS)
-        return sk_fail(err, SK_ERROR_LIMIT, "%d pairs; at most %d", desc.pair_count, SK_HAND_EVAL_MAX_LUTS);
+        return sk_fail(err, SK_ERROR_LIMIT, "%d pairs; at most %d", desc.pair_count,
+                       SK_HAND_EVAL_MAX_LUTS);
     if (desc.folds == 0 && !desc.by_group) desc.folds = 5;
     if (desc.pca_components == 0) desc.pca_components = 6;
     sk_result r = sk_check_range_i(err, "folds", desc.folds, desc.by_group ? 0 : 2, 1000);
     if (r == SK_OK) r = sk_check_range_i(err, "pin sets", pin_set_count, 1, NP_MAX);
-    if (r == SK_OK) r = sk_check_range_i(err, "pca_components", desc.pca_components, 1, SK_HAND_DOF_COUNT);
+    if (r == SK_OK)
+        r = sk_check_range_i(err, "pca_components", desc.pca_components, 1, SK_HAND_DOF_COUNT);
     if (r == SK_OK && desc.model == SK_HAND_EVAL_MODEL_PAIRS && desc.weight_scale != 0.0)
         r = sk_check_range_f(err, "weight_scale", desc.weight_scale, 1e-9, 1e6);
     if (r != SK_OK) return r;
     if (desc.by_group && (!s->group || s->group_count < 2))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "holding out by group needs a group column with at least 2 groups");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "holding out by group needs a group column with at least 2 groups");
     int dof[D_MAX], at[SK_HAND_DOF_COUNT];
     int d = sk_hand__calibrated_dofs(s->present, dof);
-    if (d < 2) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the samples have %d joint-angle columns; need 2 or more", d);
+    if (d < 2)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "the samples have %d joint-angle columns; need 2 or more", d);
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) at[i] = -1;
     for (int a = 0; a < d; a++) at[dof[a]] = a;
     bool pinned[NP_MAX][D_MAX];
     memset(pinned, 0, sizeof pinned);
     for (int p = 0; p < pin_set_count; p++) {
         if (pin_sets[p].count < 1 || pin_sets[p].count > SK_HAND_EVAL_MAX_PINS)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pin set %d has %d DOFs", p + 1, pin_sets[p].count);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pin set %d has %d DOFs", p + 1,
+                           pin_sets[p].count);
         for (int k = 0; k < pin_sets[p].count; k++) {
             int dd = pin_sets[p].dof[k];
             if (!sk_hand_dof(dd) || at[dd] < 0)
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pin %s is not a joint-angle column of the samples",
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                               "pin %s is not a joint-angle column of the samples",
                                sk_hand_dof(dd) ? sk_hand_dof(dd)->name : "?");
             pinned[p][at[dd]] = true;
         }
         if (pin_sets[p].count >= d)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pin set %d pins every calibrated DOF", p + 1);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pin set %d pins every calibrated DOF",
+                           p + 1);
     }
     for (int k = 0; with_pairs && k < desc.pair_count; k++)
         for (int e = 0; e < 2; e++) {
             int dd = desc.pairs[k][e];
             if (!sk_hand_dof(dd) || at[dd] < 0)
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair %d: %s is not a joint-angle column of the samples",
-                               k + 1, sk_hand_dof(dd) ? sk_hand_dof(dd)->name : "?");
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                               "pair %d: %s is not a joint-angle column of the samples", k + 1,
+                               sk_hand_dof(dd) ? sk_hand_dof(dd)->name : "?");
         }
     /* folds */
     int n = s->count;
@@ -248,7 +271,8 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
         k_folds = desc.folds;
         if (n < 2 * k_folds) {
             free(fold);
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d samples are too few for %d folds", n, k_folds);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d samples are too few for %d folds", n,
+                           k_folds);
         }
         for (int i = 0; i < n; i++) fold[i] = (int)((long long)i * k_folds / n);
     }
@@ -262,18 +286,22 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
     int *train = malloc(sizeof(int) * (size_t)n), *test = malloc(sizeof(int) * (size_t)n);
     double *pred = malloc(sizeof(double) * (size_t)n * pin_set_count * SK_HAND_DOF_COUNT);
     sk_hand_solve_info *infos = malloc(sizeof *infos * (size_t)n * pin_set_count);
-    if (!acc || !train || !test || !pred || !infos) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+    if (!acc || !train || !test || !pred || !infos)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     double components = 0.0;
     int folds_done = 0;
     for (int f = 0; f < k_folds && r == SK_OK; f++) {
         int nt = 0, ne = 0;
         for (int i = 0; i < n; i++) {
-            if (fold[i] == f) test[ne++] = i;
-            else train[nt++] = i;
+            if (fold[i] == f)
+                test[ne++] = i;
+            else
+                train[nt++] = i;
         }
         if (ne == 0) continue;
         if (nt < 2) {
-            r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "fold %d leaves %d training samples", f + 1, nt);
+            r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "fold %d leaves %d training samples", f + 1,
+                        nt);
             break;
         }
         sk_hand_potential pot;
@@ -296,9 +324,10 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
             sk_hand_potential_solver *ps = NULL;
             sk_hand_solver *ls = NULL;
             sk_error e = {0};
-            bool ok = lut_count > 0
-                          ? sk_hand_solver_create(&ls, skel, desc.potential.base, luts, lut_count, desc.solver, &e) == SK_OK
-                          : sk_hand_potential_solver_create(&ps, skel, &pot, desc.solver, &e) == SK_OK;
+            bool ok = lut_count > 0 ? sk_hand_solver_create(&ls, skel, desc.potential.base, luts,
+                                                            lut_count, desc.solver, &e) == SK_OK
+                                    : sk_hand_potential_solver_create(&ps, skel, &pot, desc.solver,
+                                                                      &e) == SK_OK;
 #pragma omp for schedule(dynamic, 64)
             for (int k = 0; k < ne; k++) {
                 if (!ok) continue;
@@ -311,8 +340,8 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
                     }
                     double *q = pred + ((size_t)k * pin_set_count + p) * SK_HAND_DOF_COUNT;
                     sk_hand_solve_info *info = &infos[(size_t)k * pin_set_count + p];
-                    if ((ls ? sk_hand_solve(ls, &in, q, info, &e) : sk_hand_potential_solve(ps, &in, q, info, NULL, &e)) !=
-                        SK_OK)
+                    if ((ls ? sk_hand_solve(ls, &in, q, info, &e)
+                            : sk_hand_potential_solve(ps, &in, q, info, NULL, &e)) != SK_OK)
                         ok = false;
                 }
             }
@@ -355,7 +384,8 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
                 const double *q = pred + ((size_t)k * pin_set_count + p) * SK_HAND_DOF_COUNT;
                 for (int a = 0; a < d; a++) {
                     if (pinned[p][a]) continue;
-                    double em = q[dof[a]] - x[a], e0 = mu[a] - x[a], el = yl[a] - x[a], ep = yp[a] - x[a];
+                    double em = q[dof[a]] - x[a], e0 = mu[a] - x[a], el = yl[a] - x[a],
+                           ep = yp[a] - x[a];
                     sp->model[a] += em * em;
                     sp->mean[a] += e0 * e0;
                     sp->linear[a] += el * el;
@@ -371,7 +401,8 @@ sk_result sk_hand_evaluate(const sk_hand_skeleton *skel, const sk_hand_samples *
         sk_progress_report(&desc.progress, (f + 1.0) / k_folds);
     }
     if (r == SK_OK && folds_done < 2)
-        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d non-empty folds; need at least 2", folds_done);
+        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d non-empty folds; need at least 2",
+                    folds_done);
     if (r == SK_OK) {
         out->sample_count = n;
         out->fold_count = folds_done;

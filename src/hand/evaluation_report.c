@@ -10,7 +10,8 @@
 /* Degrees rounded to 1e-6 (the JSON stays readable; far below any measurement). */
 static double deg(double rad) { return round(rad * SK_RAD_TO_DEG * 1e6) / 1e6; }
 
-sk_result sk_hand_evaluation_write_json(const sk_hand_evaluation *eval, const char *path, sk_error *err)
+sk_result sk_hand_evaluation_write_json(const sk_hand_evaluation *eval, const char *path,
+                                        sk_error *err)
 {
     cJSON *root = cJSON_CreateArray();
     if (!root) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
@@ -64,16 +65,22 @@ void sk_hand_evaluation_print(const sk_hand_evaluation *eval, const char *model_
     for (int p = 0; p < eval->pin_set_count; p++) {
         const sk_hand_pin_result *res = &eval->result[p];
         fprintf(out, "%spins ", p ? "\n" : "");
-        for (int k = 0; k < res->pins.count; k++) fprintf(out, "%s%s", k ? "," : "", sk_hand_dof(res->pins.dof[k])->name);
-        fprintf(out, ": held-out RMS error in degrees (%d samples, %d folds)\n", eval->sample_count, eval->fold_count);
-        fprintf(out, "%-12s %10s %8s %8s %8s\n", "joint", model_name ? model_name : "model", "mean", "linear", pca);
+        for (int k = 0; k < res->pins.count; k++)
+            fprintf(out, "%s%s", k ? "," : "", sk_hand_dof(res->pins.dof[k])->name);
+        fprintf(out, ": held-out RMS error in degrees (%d samples, %d folds)\n", eval->sample_count,
+                eval->fold_count);
+        fprintf(out, "%-12s %10s %8s %8s %8s\n", "joint", model_name ? model_name : "model", "mean",
+                "linear", pca);
         for (int j = 0; j < res->joint_count; j++)
-            fprintf(out, "%-12s %10.2f %8.2f %8.2f %8.2f\n", sk_hand_dof(res->joint[j])->name, res->model[j] * SK_RAD_TO_DEG,
-                    res->mean[j] * SK_RAD_TO_DEG, res->linear[j] * SK_RAD_TO_DEG, res->pca[j] * SK_RAD_TO_DEG);
+            fprintf(out, "%-12s %10.2f %8.2f %8.2f %8.2f\n", sk_hand_dof(res->joint[j])->name,
+                    res->model[j] * SK_RAD_TO_DEG, res->mean[j] * SK_RAD_TO_DEG,
+                    res->linear[j] * SK_RAD_TO_DEG, res->pca[j] * SK_RAD_TO_DEG);
         fprintf(out, "%-12s %10.2f %8.2f %8.2f %8.2f\n", "all", res->model_all * SK_RAD_TO_DEG,
-                res->mean_all * SK_RAD_TO_DEG, res->linear_all * SK_RAD_TO_DEG, res->pca_all * SK_RAD_TO_DEG);
+                res->mean_all * SK_RAD_TO_DEG, res->linear_all * SK_RAD_TO_DEG,
+                res->pca_all * SK_RAD_TO_DEG);
         double vs = res->pca_all > 0 ? 100.0 * (res->model_all / res->pca_all - 1.0) : 0.0;
-        fprintf(out, "model vs PCA %d: %+.1f %%; solves: %d, %d not converged (largest residual %.2g)\n", eval->pca_k, vs,
-                res->solves, res->unconverged, res->max_residual);
+        fprintf(out,
+                "model vs PCA %d: %+.1f %%; solves: %d, %d not converged (largest residual %.2g)\n",
+                eval->pca_k, vs, res->solves, res->unconverged, res->max_residual);
     }
 }

@@ -41,8 +41,10 @@ bool sk_hand__conditional(const double *p, int d, const bool *pinned, double *b)
 {
     int u[SK_HAND_DOF_COUNT], q[SK_HAND_DOF_COUNT], nu = 0, np = 0;
     for (int i = 0; i < d; i++) {
-        if (pinned[i]) q[np++] = i;
-        else u[nu++] = i;
+        if (pinned[i])
+            q[np++] = i;
+        else
+            u[nu++] = i;
     }
     double puu[SK_HAND_DOF_COUNT * SK_HAND_DOF_COUNT];
     for (int j = 0; j < nu; j++)

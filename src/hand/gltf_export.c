@@ -20,7 +20,8 @@ static const float plain_skin[3] = {0.62f, 0.385f, 0.30f};
 
 /* The joint node of a link: its frame in its parent link's frame (the root: in the world),
  * translation in metres, rotation as a unit quaternion (x, y, z, w). */
-static void local_transform(const sk_hand_skeleton *s, const sk_hand_frames *fr, int link, double t[3], double q[4])
+static void local_transform(const sk_hand_skeleton *s, const sk_hand_frames *fr, int link,
+                            double t[3], double q[4])
 {
     int parent = s->parent[link];
     sk_vec3d p = fr->point[sk_hand_link_point(link)];
@@ -44,24 +45,32 @@ static sk_result check_desc(const sk_hand_gltf_desc *d, sk_error *err)
     for (int l = 0; l < d->lod_count; l++) {
         if (!d->lods[l]) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "lods[%d] is NULL", l);
         if (memcmp(&d->lods[l]->skeleton, &d->lods[0]->skeleton, sizeof(sk_hand_skeleton)) != 0)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "lods[%d] is built on another skeleton than lods[0]: "
-                                                          "the levels share one skin", l);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "lods[%d] is built on another skeleton than lods[0]: "
+                           "the levels share one skin",
+                           l);
     }
     if (!d->dofs) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "dofs is NULL");
     if (!d->animation && d->frame_count != 1)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame_count = %d without animation: a posed hand has 1 frame",
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "frame_count = %d without animation: a posed hand has 1 frame",
                        d->frame_count);
     for (size_t i = 0; i < (size_t)d->frame_count * SK_HAND_DOF_COUNT; i++)
         if (!isfinite(d->dofs[i]))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "dofs[%zu] (frame %zu, %s) is not a finite number", i,
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "dofs[%zu] (frame %zu, %s) is not a finite number", i,
                            i / SK_HAND_DOF_COUNT, sk_hand_dof((int)(i % SK_HAND_DOF_COUNT))->name);
     if (d->fps != 0.0) r = sk_check_range_f(err, "fps", d->fps, 1e-3, 1000.0);
-    if (r == SK_OK) r = sk_check_range_i(err, "weights", (int)d->weights, SK_HAND_WEIGHTS_DEFAULT, SK_HAND_WEIGHTS_SMOOTH);
     if (r == SK_OK)
-        r = sk_check_range_i(err, "material", (int)d->material, SK_HAND_GLTF_MATERIAL_DEFAULT, SK_HAND_GLTF_MATERIAL_PBR);
+        r = sk_check_range_i(err, "weights", (int)d->weights, SK_HAND_WEIGHTS_DEFAULT,
+                             SK_HAND_WEIGHTS_SMOOTH);
+    if (r == SK_OK)
+        r = sk_check_range_i(err, "material", (int)d->material, SK_HAND_GLTF_MATERIAL_DEFAULT,
+                             SK_HAND_GLTF_MATERIAL_PBR);
     if (r == SK_OK) r = sk_check_range_f(err, "texture_weight", d->texture_weight, 0.0, 1.0);
     if (r == SK_OK && d->normal_map && !d->albedo)
-        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "normal_map without albedo: give both maps of the atlas");
+        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                    "normal_map without albedo: give both maps of the atlas");
     return r;
 }
 
@@ -83,16 +92,18 @@ static sk_result add_material(sk_gltf *g, const sk_hand_gltf_desc *d, int *out, 
         float lit = fmaxf(1.0f - w, 1e-6f);
         m.base_color[0] = m.base_color[1] = m.base_color[2] = lit, m.base_color[3] = 1.0f;
         for (int c = 0; c < 3; c++) m.emissive[c] = d->albedo ? w : w * plain_skin[c];
-        if (w == 0.0f) memset(m.emissive, 0, sizeof m.emissive);
-        else m.emissive_texture = d->albedo;
+        if (w == 0.0f)
+            memset(m.emissive, 0, sizeof m.emissive);
+        else
+            m.emissive_texture = d->albedo;
     }
     return sk_gltf_add_material(g, &m, out, err);
 }
 
 /* One level of detail as a skinned glTF mesh: the rest mesh in metres with the atlas UVs,
  * the chosen weights per export vertex, tangents for the normal map. */
-static sk_result add_lod(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_hand_surface *s, int level, int material,
-                         int skin, sk_error *err)
+static sk_result add_lod(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_hand_surface *s,
+                         int level, int material, int skin, sk_error *err)
 {
     sk_mesh m;
     sk_result r = sk_hand_surface_export_mesh(s, NULL, NULL, false, &m, err);
@@ -100,11 +111,15 @@ static sk_result add_lod(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_hand_s
     size_t n = m.vertex_count;
     uint16_t *joints = malloc(4 * n * sizeof *joints);
     float *weights = malloc(4 * n * sizeof *weights);
-    if (!joints || !weights) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the skin weights of lods[%d]", level);
+    if (!joints || !weights)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the skin weights of lods[%d]",
+                    level);
     if (r == SK_OK) {
         const uint16_t *links;
         const float *lw;
-        sk_hand_surface_weights(s, d->weights == SK_HAND_WEIGHTS_NEAREST ? SK_HAND_WEIGHTS_NEAREST : SK_HAND_WEIGHTS_SMOOTH,
+        sk_hand_surface_weights(s,
+                                d->weights == SK_HAND_WEIGHTS_NEAREST ? SK_HAND_WEIGHTS_NEAREST
+                                                                      : SK_HAND_WEIGHTS_SMOOTH,
                                 &links, &lw);
         for (size_t e = 0; e < n; e++) {
             size_t v = s->export_map[e];
@@ -122,8 +137,12 @@ static sk_result add_lod(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_hand_s
     snprintf(name, sizeof name, "hand_LOD%d", level);
     int mesh = SK_GLTF_NONE, node;
     if (r == SK_OK) {
-        sk_gltf_mesh_desc md = {.name = name, .mesh = &m, .uv_origin_bottom_left = true, .material = material,
-                                .joints = joints, .weights = weights};
+        sk_gltf_mesh_desc md = {.name = name,
+                                .mesh = &m,
+                                .uv_origin_bottom_left = true,
+                                .material = material,
+                                .joints = joints,
+                                .weights = weights};
         r = sk_gltf_add_mesh(g, &md, &mesh, err);
     }
     m.uvs = uvs;
@@ -143,8 +162,8 @@ static sk_result add_lod(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_hand_s
 /* Every joint's rotation and the root's translation, one key per frame. Consecutive
  * quaternions are kept in one hemisphere so that interpolating between keys takes the
  * short way. */
-static sk_result add_animation(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_hand_skeleton *s, const int *nodes,
-                               sk_error *err)
+static sk_result add_animation(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_hand_skeleton *s,
+                               const int *nodes, sk_error *err)
 {
     int F = d->frame_count;
     double fps = d->fps != 0.0 ? d->fps : 30.0;
@@ -152,7 +171,8 @@ static sk_result add_animation(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_
     float *rot = malloc((size_t)F * SK_HAND_LINK_COUNT * 4 * sizeof *rot);
     float *root = malloc((size_t)F * 3 * sizeof *root);
     sk_result r = SK_OK;
-    if (!times || !rot || !root) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d frames", F);
+    if (!times || !rot || !root)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d frames", F);
     for (int f = 0; f < F && r == SK_OK; f++) {
         times[f] = (float)(f / fps);
         sk_hand_frames fr;
@@ -162,7 +182,10 @@ static sk_result add_animation(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_
             local_transform(s, &fr, j, t, q);
             float *out = rot + ((size_t)j * F + f) * 4;
             const float *prev = f > 0 ? out - 4 : NULL;
-            double sign = prev && prev[0] * q[0] + prev[1] * q[1] + prev[2] * q[2] + prev[3] * q[3] < 0.0 ? -1.0 : 1.0;
+            double sign =
+                prev && prev[0] * q[0] + prev[1] * q[1] + prev[2] * q[2] + prev[3] * q[3] < 0.0
+                    ? -1.0
+                    : 1.0;
             for (int k = 0; k < 4; k++) out[k] = (float)(sign * q[k]);
             if (j == 0)
                 for (int k = 0; k < 3; k++) root[3 * f + k] = (float)t[k];
@@ -171,11 +194,12 @@ static sk_result add_animation(sk_gltf *g, const sk_hand_gltf_desc *d, const sk_
     int anim = SK_GLTF_NONE;
     if (r == SK_OK) r = sk_gltf_add_animation(g, "hand", &anim, err);
     for (int j = 0; j < SK_HAND_LINK_COUNT && r == SK_OK; j++)
-        r = sk_gltf_add_channel(g, anim, nodes[j], SK_GLTF_PATH_ROTATION, SK_GLTF_INTERPOLATION_LINEAR, times, F,
-                                rot + (size_t)j * F * 4, err);
+        r = sk_gltf_add_channel(g, anim, nodes[j], SK_GLTF_PATH_ROTATION,
+                                SK_GLTF_INTERPOLATION_LINEAR, times, F, rot + (size_t)j * F * 4,
+                                err);
     if (r == SK_OK)
-        r = sk_gltf_add_channel(g, anim, nodes[0], SK_GLTF_PATH_TRANSLATION, SK_GLTF_INTERPOLATION_LINEAR, times, F,
-                                root, err);
+        r = sk_gltf_add_channel(g, anim, nodes[0], SK_GLTF_PATH_TRANSLATION,
+                                SK_GLTF_INTERPOLATION_LINEAR, times, F, root, err);
     free(times);
     free(rot);
     free(root);
@@ -191,8 +215,10 @@ sk_result sk_hand_gltf_add(sk_gltf *g, const sk_hand_gltf_desc *desc, sk_error *
     const sk_hand_skeleton *s = &base->skeleton;
     /* the joints stand in the bind pose under an animation, else in the pose */
     sk_hand_frames pose;
-    if (desc->animation) pose = base->bind;
-    else sk_hand_forward(s, desc->dofs, &pose);
+    if (desc->animation)
+        pose = base->bind;
+    else
+        sk_hand_forward(s, desc->dofs, &pose);
     int nodes[SK_HAND_LINK_COUNT];
     float inverse_bind[SK_HAND_LINK_COUNT][16];
     for (int j = 0; j < SK_HAND_LINK_COUNT && r == SK_OK; j++) {
@@ -203,7 +229,8 @@ sk_result sk_hand_gltf_add(sk_gltf *g, const sk_hand_gltf_desc *desc, sk_error *
         r = sk_gltf_add_node(g, &nd, &nodes[j], err);
         /* the inverse of the bind-pose world transform [R | p]: [R^T | -R^T p], column-major */
         sk_mat3d rt = sk_m3d_transpose(base->bind.rotation[j]);
-        sk_vec3d t = sk_v3d_scale(sk_m3d_apply(rt, base->bind.point[sk_hand_link_point(j)]), -MM_TO_M);
+        sk_vec3d t =
+            sk_v3d_scale(sk_m3d_apply(rt, base->bind.point[sk_hand_link_point(j)]), -MM_TO_M);
         float *m = inverse_bind[j];
         for (int c = 0; c < 3; c++)
             for (int row = 0; row < 3; row++) m[4 * c + row] = (float)rt.m[row][c];
@@ -211,9 +238,11 @@ sk_result sk_hand_gltf_add(sk_gltf *g, const sk_hand_gltf_desc *desc, sk_error *
         m[12] = (float)t.x, m[13] = (float)t.y, m[14] = (float)t.z, m[15] = 1.0f;
     }
     int skin = SK_GLTF_NONE, material = SK_GLTF_NONE;
-    if (r == SK_OK) r = sk_gltf_add_skin(g, "hand", nodes, SK_HAND_LINK_COUNT, &inverse_bind[0][0], &skin, err);
+    if (r == SK_OK)
+        r = sk_gltf_add_skin(g, "hand", nodes, SK_HAND_LINK_COUNT, &inverse_bind[0][0], &skin, err);
     if (r == SK_OK) r = add_material(g, desc, &material, err);
-    for (int l = 0; l < desc->lod_count && r == SK_OK; l++) r = add_lod(g, desc, desc->lods[l], l, material, skin, err);
+    for (int l = 0; l < desc->lod_count && r == SK_OK; l++)
+        r = add_lod(g, desc, desc->lods[l], l, material, skin, err);
     if (r == SK_OK && desc->animation) r = add_animation(g, desc, s, nodes, err);
     return r;
 }

@@ -20,16 +20,16 @@ int sk_hand__first_dof_of_link(int link, int *count);
 
 /* ----- strict JSON reading (cJSON): every error names the key path ----- */
 /* Parses text; on failure names the line of the error (callers prefix the source). */
-sk_result sk_hand__json_parse(const char *text, size_t length, const char *source_name,
-                              cJSON **out, sk_error *err);
+sk_result sk_hand__json_parse(const char *text, size_t length, const char *source_name, cJSON **out,
+                              sk_error *err);
 /* Fails if `object` has a key that is neither in `allowed` (NULL-terminated) nor a
  * documentation key. */
 sk_result sk_hand__json_check_keys(const cJSON *object, const char *path,
                                    const char *const *allowed, sk_error *err);
 /* Reads a finite number in [lo, hi] at object[key] into *out (absent: leaves *out,
  * returns SK_OK unless `required`). */
-sk_result sk_hand__json_number(const cJSON *object, const char *path, const char *key,
-                               double lo, double hi, bool required, double *out, sk_error *err);
+sk_result sk_hand__json_number(const cJSON *object, const char *path, const char *key, double lo,
+                               double hi, bool required, double *out, sk_error *err);
 /* Reads a string at object[key] (absent: *out = NULL). */
 sk_result sk_hand__json_string(const cJSON *object, const char *path, const char *key,
                                const char **out, sk_error *err);
@@ -43,8 +43,8 @@ sk_result sk_hand__dof_by_name(const char *name, const char *path, int *dof, sk_
 
 /* Reads a whole data file (at most SK_HAND_MAX_FILE_BYTES) and hands it to a parser
  * `parse(text, length, path, ctx, err)`. */
-typedef sk_result (*sk_hand__parse_fn)(const char *text, size_t length, const char *source_name, void *ctx,
-                                       sk_error *err);
+typedef sk_result (*sk_hand__parse_fn)(const char *text, size_t length, const char *source_name,
+                                       void *ctx, sk_error *err);
 sk_result sk_hand__parse_file(const char *path, sk_hand__parse_fn parse, void *ctx, sk_error *err);
 
 /* Writes text through an atomic file (temp + rename). */

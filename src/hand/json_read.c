@@ -10,8 +10,8 @@
 #include "io/json_strict.h"
 #include "shitsukan/io.h"
 
-sk_result sk_hand__json_parse(const char *text, size_t length, const char *source_name,
-                              cJSON **out, sk_error *err)
+sk_result sk_hand__json_parse(const char *text, size_t length, const char *source_name, cJSON **out,
+                              sk_error *err)
 {
     /* the callers prefix errors with the source name */
     (void)source_name;
@@ -33,8 +33,8 @@ sk_result sk_hand__json_check_keys(const cJSON *object, const char *path,
     return SK_OK;
 }
 
-sk_result sk_hand__json_number(const cJSON *object, const char *path, const char *key,
-                               double lo, double hi, bool required, double *out, sk_error *err)
+sk_result sk_hand__json_number(const cJSON *object, const char *path, const char *key, double lo,
+                               double hi, bool required, double *out, sk_error *err)
 {
     const cJSON *item = cJSON_GetObjectItemCaseSensitive(object, key);
     const char *dot = path[0] ? "." : "";
@@ -71,7 +71,8 @@ sk_result sk_hand__json_string(const cJSON *object, const char *path, const char
 sk_result sk_hand__json_expect_object(const cJSON *item, const char *path, sk_error *err)
 {
     if (!cJSON_IsObject(item))
-        return sk_fail(err, SK_ERROR_PARSE, "%s: expected an object", path[0] ? path : "(top level)");
+        return sk_fail(err, SK_ERROR_PARSE, "%s: expected an object",
+                       path[0] ? path : "(top level)");
     return SK_OK;
 }
 

@@ -13,8 +13,8 @@ static sk_result check_tree(const cJSON *item, int depth, sk_error *err)
 {
     if (depth > 64) return sk_fail(err, SK_ERROR_PARSE, "JSON nested deeper than 64 levels");
     if (cJSON_IsNumber(item) && !isfinite(item->valuedouble))
-        return sk_fail(err, SK_ERROR_PARSE, "%s%sa number is too large", item->string ? item->string : "",
-                       item->string ? ": " : "");
+        return sk_fail(err, SK_ERROR_PARSE, "%s%sa number is too large",
+                       item->string ? item->string : "", item->string ? ": " : "");
     int members = 0;
     for (const cJSON *c = item->child; c; c = c->next) {
         if (cJSON_IsObject(item) && ++members > 1024)

@@ -34,7 +34,7 @@ static double channel_value(const sk_hand_animation *a, const bool *has, const d
     int idx[SK_HAND_MAX_KEYS], n = 0;
     for (int k = 0; k < a->key_count; k++)
         if (*(const bool *)((const char *)has + k * stride)) idx[n++] = k;
-#define VAL(k) (*(const double *)((const char *)val + (size_t)(k) * stride))
+#define VAL(k) (*(const double *)((const char *)val + (size_t)(k)*stride))
     if (u <= idx[0]) return VAL(idx[0]);
     if (u >= idx[n - 1]) return VAL(idx[n - 1]);
     int s = 0;
@@ -61,10 +61,12 @@ void sk_hand_animation_input(const sk_hand_animation *a, int frame, sk_hand_inpu
         }
         if (any_pin) {
             out->pinned[d] = true;
-            out->pin_value[d] = channel_value(a, &a->keys[0].has_pin[d], &a->keys[0].pin[d], stride, u);
+            out->pin_value[d] =
+                channel_value(a, &a->keys[0].has_pin[d], &a->keys[0].pin[d], stride, u);
         }
         if (any_torque)
-            out->torque[d] = channel_value(a, &a->keys[0].has_torque[d], &a->keys[0].torque[d], stride, u);
+            out->torque[d] =
+                channel_value(a, &a->keys[0].has_torque[d], &a->keys[0].torque[d], stride, u);
     }
 }
 
@@ -73,7 +75,8 @@ void sk_hand_animation_driven(const sk_hand_animation *a, bool driven[SK_HAND_DO
     for (int d = 0; d < SK_HAND_DOF_COUNT; d++) {
         driven[d] = false;
         for (int k = 0; k < a->key_count; k++)
-            driven[d] |= a->keys[k].has_pin[d] || (a->keys[k].has_torque[d] && a->keys[k].torque[d] != 0.0);
+            driven[d] |=
+                a->keys[k].has_pin[d] || (a->keys[k].has_torque[d] && a->keys[k].torque[d] != 0.0);
     }
 }
 
@@ -97,8 +100,9 @@ static sk_result parse_values(const cJSON *obj, const char *path, bool file_unit
 
 static sk_result parse_animation(const cJSON *root, sk_hand_animation *a, sk_error *err)
 {
-    static const char *const keys[] = {"constraints", "side", "hand_length_mm", "hand_breadth_mm",
-                                       "interpolation", "steps", "fps", "keys", NULL};
+    static const char *const keys[] = {
+        "constraints", "side", "hand_length_mm", "hand_breadth_mm", "interpolation", "steps", "fps",
+        "keys",        NULL};
     sk_result r = sk_hand__json_expect_object(root, "", err);
     if (r == SK_OK) r = sk_hand__json_check_keys(root, "", keys, err);
     const char *constraints = NULL, *side = NULL, *interp = NULL;
@@ -109,32 +113,40 @@ static sk_result parse_animation(const cJSON *root, sk_hand_animation *a, sk_err
     if (r == SK_OK) r = sk_hand__json_number(root, "", "steps", 1, 10000, false, &steps, err);
     if (r == SK_OK) r = sk_hand__json_number(root, "", "fps", 1, 1000, false, &fps, err);
     if (r == SK_OK)
-        r = sk_hand__json_number(root, "", "hand_length_mm", 60, 400, false, &a->hand_length_mm, err);
+        r = sk_hand__json_number(root, "", "hand_length_mm", 60, 400, false, &a->hand_length_mm,
+                                 err);
     if (r == SK_OK)
-        r = sk_hand__json_number(root, "", "hand_breadth_mm", 30, 200, false, &a->hand_breadth_mm, err);
+        r = sk_hand__json_number(root, "", "hand_breadth_mm", 30, 200, false, &a->hand_breadth_mm,
+                                 err);
     if (r != SK_OK) return r;
-    if (steps != floor(steps)) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "steps = %g is not an integer", steps);
+    if (steps != floor(steps))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "steps = %g is not an integer", steps);
     a->steps = (int)steps;
     a->fps = fps;
     snprintf(a->constraints, sizeof a->constraints, "%s", constraints ? constraints : "natural");
     if (constraints && strlen(constraints) >= sizeof a->constraints)
-        return sk_fail(err, SK_ERROR_LIMIT, "constraints: longer than %zu characters", sizeof a->constraints - 1);
+        return sk_fail(err, SK_ERROR_LIMIT, "constraints: longer than %zu characters",
+                       sizeof a->constraints - 1);
     a->side = SK_HAND_SIDE_RIGHT;
-    if (side && strcmp(side, "left") == 0) a->side = SK_HAND_SIDE_LEFT;
+    if (side && strcmp(side, "left") == 0)
+        a->side = SK_HAND_SIDE_LEFT;
     else if (side && strcmp(side, "right") != 0)
         return sk_fail(err, SK_ERROR_PARSE, "side = \"%s\": expected \"right\" or \"left\"", side);
     a->interp = SK_HAND_INTERP_BEZIER;
-    if (interp && strcmp(interp, "catmull-rom") == 0) a->interp = SK_HAND_INTERP_CATMULL_ROM;
+    if (interp && strcmp(interp, "catmull-rom") == 0)
+        a->interp = SK_HAND_INTERP_CATMULL_ROM;
     else if (interp && strcmp(interp, "bezier") != 0)
-        return sk_fail(err, SK_ERROR_PARSE, "interpolation = \"%s\": expected \"bezier\" or \"catmull-rom\"",
-                       interp);
+        return sk_fail(err, SK_ERROR_PARSE,
+                       "interpolation = \"%s\": expected \"bezier\" or \"catmull-rom\"", interp);
     const cJSON *list = cJSON_GetObjectItemCaseSensitive(root, "keys");
-    if (!list || !cJSON_IsArray(list)) return sk_fail(err, SK_ERROR_PARSE, "keys: expected an array of keys");
+    if (!list || !cJSON_IsArray(list))
+        return sk_fail(err, SK_ERROR_PARSE, "keys: expected an array of keys");
     int k = 0;
     for (const cJSON *item = list->child; item; item = item->next, k++) {
         char path[64];
         snprintf(path, sizeof path, "keys[%d]", k);
-        if (k >= SK_HAND_MAX_KEYS) return sk_fail(err, SK_ERROR_LIMIT, "%s: more than %d keys", path, SK_HAND_MAX_KEYS);
+        if (k >= SK_HAND_MAX_KEYS)
+            return sk_fail(err, SK_ERROR_LIMIT, "%s: more than %d keys", path, SK_HAND_MAX_KEYS);
         static const char *const kkeys[] = {"pin", "torque", NULL};
         r = sk_hand__json_expect_object(item, path, err);
         if (r == SK_OK) r = sk_hand__json_check_keys(item, path, kkeys, err);

@@ -81,8 +81,8 @@ void sk_hand_forward(const sk_hand_skeleton *s, const double dofs[SK_HAND_DOF_CO
     for (int link = 1; link < SK_HAND_LINK_COUNT; link++) {
         int parent = s->parent[link];
         const sk_mat3d *rp = &out->rotation[parent];
-        sk_vec3d base = sk_v3d_add(out->point[sk_hand_link_point(parent)],
-                                   sk_m3d_apply(*rp, s->offset[link]));
+        sk_vec3d base =
+            sk_v3d_add(out->point[sk_hand_link_point(parent)], sk_m3d_apply(*rp, s->offset[link]));
         out->point[sk_hand_link_point(link)] = base;
         link_angles(link, dofs, a);
         out->rotation[link] =
@@ -96,6 +96,7 @@ void sk_hand_forward(const sk_hand_skeleton *s, const double dofs[SK_HAND_DOF_CO
     }
     if (s->side == SK_HAND_SIDE_LEFT) {
         for (int i = 0; i < SK_HAND_POINT_COUNT; i++) out->point[i].x = -out->point[i].x;
-        for (int i = 0; i < SK_HAND_LINK_COUNT; i++) out->rotation[i] = mirror_rotation(out->rotation[i]);
+        for (int i = 0; i < SK_HAND_LINK_COUNT; i++)
+            out->rotation[i] = mirror_rotation(out->rotation[i]);
     }
 }

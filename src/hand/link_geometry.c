@@ -48,8 +48,8 @@ int sk_hand_nearest_link(const sk_hand_link_geometry *links, sk_vec3d p, double 
     return best;
 }
 
-void sk_hand__link_coordinates(const sk_hand_link_geometry *links, int link, sk_vec3d p, double *along,
-                               double *angle)
+void sk_hand__link_coordinates(const sk_hand_link_geometry *links, int link, sk_vec3d p,
+                               double *along, double *angle)
 {
     sk_vec3d axis = sk_v3d_normalize(sk_v3d_sub(links->b[link], links->a[link]));
     sk_vec3d q = sk_v3d_sub(p, links->a[link]);
@@ -58,7 +58,8 @@ void sk_hand__link_coordinates(const sk_hand_link_geometry *links, int link, sk_
     if (angle) {
         /* the frame's X and Z made perpendicular to the segment (a metacarpal's segment
            need not run exactly along its frame's Y) */
-        sk_vec3d x = {links->frame[link].m[0][0], links->frame[link].m[1][0], links->frame[link].m[2][0]};
+        sk_vec3d x = {links->frame[link].m[0][0], links->frame[link].m[1][0],
+                      links->frame[link].m[2][0]};
         x = sk_v3d_normalize(sk_v3d_sub(x, sk_v3d_scale(axis, sk_v3d_dot(x, axis))));
         sk_vec3d z = sk_v3d_cross(x, axis);
         sk_vec3d r = sk_v3d_sub(q, sk_v3d_scale(axis, s));

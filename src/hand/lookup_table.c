@@ -29,7 +29,8 @@ sk_result sk_hand_lut_build(sk_hand_lut *lut, int dof_x, int dof_y, const double
     if (d.weight == 0.0) d.weight = 1.0;
     if (d.interp == SK_HAND_LUT_INTERP_DEFAULT) d.interp = SK_HAND_LUT_INTERP_HERMITE;
     if (d.interp != SK_HAND_LUT_INTERP_HERMITE && d.interp != SK_HAND_LUT_INTERP_BILINEAR)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "interp = %d is not a lookup interpolation", (int)d.interp);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "interp = %d is not a lookup interpolation",
+                       (int)d.interp);
     sk_result r = sk_check_range_i(err, "resolution", d.resolution, 8, 1024);
     if (r == SK_OK) r = sk_check_range_f(err, "margin", d.margin, 0.0, 4.0);
     if (r == SK_OK) r = sk_check_range_f(err, "weight", d.weight, 1e-12, 1e6);
@@ -118,14 +119,16 @@ static void hermite_dd(double s, double ddh[4])
 
 /* Value, gradient and cross derivative at a point inside the grid (u, v in nodes); with
  * `second` also the second derivatives f_xx, f_yy (bilinear: 0). */
-static void eval_inside2(const sk_hand_lut *lut, double u, double v, double out[4], double second[2]);
+static void eval_inside2(const sk_hand_lut *lut, double u, double v, double out[4],
+                         double second[2]);
 
 static void eval_inside(const sk_hand_lut *lut, double u, double v, double out[4])
 {
     eval_inside2(lut, u, v, out, NULL);
 }
 
-static void eval_inside2(const sk_hand_lut *lut, double u, double v, double out[4], double second[2])
+static void eval_inside2(const sk_hand_lut *lut, double u, double v, double out[4],
+                         double second[2])
 {
     int n = lut->n;
     int i = (int)u, j = (int)v;
@@ -182,7 +185,8 @@ static void eval_inside2(const sk_hand_lut *lut, double u, double v, double out[
     second[1] = ftt / (hy * hy);
 }
 
-double sk_hand__lut_eval_hessian(const sk_hand_lut *lut, double x, double y, double g[2], double h[3])
+double sk_hand__lut_eval_hessian(const sk_hand_lut *lut, double x, double y, double g[2],
+                                 double h[3])
 {
     int n = lut->n;
     double u = (x - lut->x0) / lut->h_x, v = (y - lut->y0) / lut->h_y;

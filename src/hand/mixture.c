@@ -26,7 +26,8 @@ static double mixture_logpdf(const sk_hand__mixture *g, const double *x, double 
 {
     double l[SK_HAND_POTENTIAL_MAX_COMPONENTS], top = -INFINITY;
     for (int c = 0; c < g->m; c++) {
-        l[c] = log(g->weight[c]) + sk_hand__gauss_logpdf(x, g->mean[c], g->chol[c], g->logdet[c], g->d);
+        l[c] = log(g->weight[c]) +
+               sk_hand__gauss_logpdf(x, g->mean[c], g->chol[c], g->logdet[c], g->d);
         top = fmax(top, l[c]);
     }
     double sum = 0.0;
@@ -38,8 +39,8 @@ static double mixture_logpdf(const sk_hand__mixture *g, const double *x, double 
 
 /* M-step: weights, means and covariances from responsibilities, each covariance shrunk
  * toward `pooled` by `nu` pseudo-samples (components of few samples stay sane). */
-static void mixture_m_step(sk_hand__mixture *g, const double *x, int n, const double *resp, const double *pooled,
-                           double nu)
+static void mixture_m_step(sk_hand__mixture *g, const double *x, int n, const double *resp,
+                           const double *pooled, double nu)
 {
     int d = g->d, m = g->m;
 #pragma omp parallel for schedule(static) if (n * m > 20000)
@@ -80,7 +81,8 @@ static double mixture_e_step(const sk_hand__mixture *g, const double *x, int n, 
 {
     double total = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : total) if (n * g->m > 20000)
-    for (int i = 0; i < n; i++) total += mixture_logpdf(g, x + (size_t)i * g->d, resp + (size_t)i * g->m);
+    for (int i = 0; i < n; i++)
+        total += mixture_logpdf(g, x + (size_t)i * g->d, resp + (size_t)i * g->m);
     return total;
 }
 
@@ -94,8 +96,8 @@ static double sq_distance(const double *a, const double *b, int d)
 /* k-means++ seeding (deterministic from the seed), a few Lloyd steps, then EM. The
  * log-likelihood sum above is a reduction whose order depends on the threads, so the
  * stopping test uses a relative tolerance far above rounding. */
-bool sk_hand__mixture_fit(sk_hand__mixture *g, const double *x, int n, int d, int m, const double *pooled, double nu,
-                        uint64_t seed, double *resp)
+bool sk_hand__mixture_fit(sk_hand__mixture *g, const double *x, int n, int d, int m,
+                          const double *pooled, double nu, uint64_t seed, double *resp)
 {
     memset(g, 0, sizeof *g);
     g->m = m;
@@ -114,7 +116,8 @@ bool sk_hand__mixture_fit(sk_hand__mixture *g, const double *x, int n, int d, in
         double total = 0.0;
         for (int i = 0; i < n; i++) {
             double best = INFINITY;
-            for (int k = 0; k < c; k++) best = fmin(best, sq_distance(x + (size_t)i * d, g->mean[k], d));
+            for (int k = 0; k < c; k++)
+                best = fmin(best, sq_distance(x + (size_t)i * d, g->mean[k], d));
             dist[i] = best;
             total += best;
         }
@@ -162,21 +165,24 @@ bool sk_hand__mixture_fit(sk_hand__mixture *g, const double *x, int n, int d, in
  * the probability of the pinned values under each), summed over the pin patterns
  * (`masks`, one bool per calibrated DOF each) and the validation samples. Limits are left
  * out here (a closed form). */
-double sk_hand__mixture_validation_error(const sk_hand__mixture *g, const double *x, int n, bool (*masks)[D_MAX],
-                               int mask_count)
+double sk_hand__mixture_validation_error(const sk_hand__mixture *g, const double *x, int n,
+                                         bool (*masks)[D_MAX], int mask_count)
 {
     int d = g->d, m = g->m;
     double total = 0.0;
     for (int p = 0; p < mask_count; p++) {
         int q[D_MAX], u[D_MAX], np = 0, nu = 0;
         for (int a = 0; a < d; a++) {
-            if (masks[p][a]) q[np++] = a;
-            else u[nu++] = a;
+            if (masks[p][a])
+                q[np++] = a;
+            else
+                u[nu++] = a;
         }
         if (np == 0 || nu == 0) continue;
         /* per component: Cholesky of Sigma_pp and B = Sigma_up Sigma_pp^-1 (nu x np) */
         static const int M = SK_HAND_POTENTIAL_MAX_COMPONENTS;
-        double chol[SK_HAND_POTENTIAL_MAX_COMPONENTS][SK_HAND_EVAL_MAX_PINS * SK_HAND_EVAL_MAX_PINS];
+        double chol[SK_HAND_POTENTIAL_MAX_COMPONENTS]
+                   [SK_HAND_EVAL_MAX_PINS * SK_HAND_EVAL_MAX_PINS];
         double logdet[SK_HAND_POTENTIAL_MAX_COMPONENTS];
         double b[SK_HAND_POTENTIAL_MAX_COMPONENTS][D_MAX * SK_HAND_EVAL_MAX_PINS];
         (void)M;
@@ -230,4 +236,3 @@ void sk_hand__mixture_single(sk_hand__mixture *g, int d, const double *mu, const
     memcpy(g->mean[0], mu, sizeof(double) * d);
     memcpy(g->cov[0], sigma, sizeof(double) * (size_t)d * d);
 }
-

@@ -24,8 +24,8 @@ typedef struct sk_hand__mixture {
 /* EM for m components on the rows x[0..n) (n x d, row-major), each covariance shrunk
  * toward `pooled` by `nu` pseudo-samples; `resp` has room for n x m. False if a
  * covariance is not positive definite or memory runs out. */
-bool sk_hand__mixture_fit(sk_hand__mixture *g, const double *x, int n, int d, int m, const double *pooled,
-                          double nu, uint64_t seed, double *resp);
+bool sk_hand__mixture_fit(sk_hand__mixture *g, const double *x, int n, int d, int m,
+                          const double *pooled, double nu, uint64_t seed, double *resp);
 /* One component: mean mu, covariance sigma. */
 void sk_hand__mixture_single(sk_hand__mixture *g, int d, const double *mu, const double *sigma);
 /* Sum of squared errors of the prediction of the unpinned coordinates from the pinned

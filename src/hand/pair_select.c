@@ -32,7 +32,8 @@ static void fit_line(const double *sigma, int d, line *l)
 {
     double sxx = sigma[l->x * d + l->x], sxy = sigma[l->x * d + l->y], syy = sigma[l->y * d + l->y];
     l->a = sxy / sxx;
-    l->ms = fmax((syy - 2.0 * l->a * sxy + l->a * l->a * sxx) / (1.0 + l->a * l->a), SK_HAND__VARIANCE_FLOOR);
+    l->ms = fmax((syy - 2.0 * l->a * sxy + l->a * l->a * sxx) / (1.0 + l->a * l->a),
+                 SK_HAND__VARIANCE_FLOOR);
 }
 
 /* The pair model being chosen. */
@@ -51,7 +52,7 @@ typedef struct chooser {
     bool optional[SK_HAND_MAX_ROWS]; /* base rows that touch a calibrated DOF */
     line *cand;
     int cand_count;
-    sk_hand__mixture *g;             /* scratch */
+    sk_hand__mixture *g; /* scratch */
 } chooser;
 
 static double row_weight(const chooser *ch, const model *m, int k)
@@ -68,7 +69,8 @@ static double row_weight(const chooser *ch, const model *m, int k)
 /* The model read as a Gaussian over the calibrated DOFs: K + A'WA its precision (over all
  * DOFs, the others marginalised), the minimum of the energy its mean. False if K + A'WA
  * is not positive definite. */
-static bool model_gaussian(const chooser *ch, const model *m, const double *relaxed, double *mean, double *cov)
+static bool model_gaussian(const chooser *ch, const model *m, const double *relaxed, double *mean,
+                           double *cov)
 {
     const sk_hand__fit_data *fd = ch->fd;
     int d = fd->d;
@@ -180,17 +182,20 @@ static void choose(chooser *ch, model *m, bool choose_scale, int max_pairs)
     }
 }
 
-sk_result sk_hand__pairs_fit(sk_hand_potential *out, const sk_hand_skeleton *skel, const sk_hand__fit_data *fd,
-                             const sk_hand_potential_desc *desc, sk_error *err)
+sk_result sk_hand__pairs_fit(sk_hand_potential *out, const sk_hand_skeleton *skel,
+                             const sk_hand__fit_data *fd, const sk_hand_potential_desc *desc,
+                             sk_error *err)
 {
     int d = fd->d;
-    sk_hand_weight_rule rule = desc->weight_rule ? desc->weight_rule : SK_HAND_WEIGHT_INVERSE_VARIANCE;
+    sk_hand_weight_rule rule =
+        desc->weight_rule ? desc->weight_rule : SK_HAND_WEIGHT_INVERSE_VARIANCE;
     if (rule != SK_HAND_WEIGHT_THESIS && rule != SK_HAND_WEIGHT_INVERSE_VARIANCE)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "weight rule %d is unknown", (int)rule);
     int max_pairs = desc->max_pairs ? desc->max_pairs : 16;
     sk_result r = sk_check_range_i(err, "max_pairs", max_pairs, 1, 64);
     if (r == SK_OK) r = sk_check_range_i(err, "pair_count", desc->pair_count, 0, 256);
-    if (r == SK_OK && desc->weight_scale != 0.0) r = sk_check_range_f(err, "weight_scale", desc->weight_scale, 1e-9, 1e6);
+    if (r == SK_OK && desc->weight_scale != 0.0)
+        r = sk_check_range_f(err, "weight_scale", desc->weight_scale, 1e-9, 1e6);
     if (r != SK_OK) return r;
     int at[SK_HAND_DOF_COUNT];
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) at[i] = -1;
@@ -213,12 +218,15 @@ sk_result sk_hand__pairs_fit(sk_hand_potential *out, const sk_hand_skeleton *ske
         for (int k = 0; k < desc->pair_count; k++) {
             int x = desc->pairs[k][0], y = desc->pairs[k][1];
             if (!sk_hand_dof(x) || !sk_hand_dof(y) || x == y) {
-                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair %d: not two different DOFs", k + 1);
+                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair %d: not two different DOFs",
+                            k + 1);
                 goto done;
             }
             if (at[x] < 0 || at[y] < 0) {
-                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair %s:%s: %s is not a joint-angle column of the samples",
-                            sk_hand_dof(x)->name, sk_hand_dof(y)->name, sk_hand_dof(at[x] < 0 ? x : y)->name);
+                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                            "pair %s:%s: %s is not a joint-angle column of the samples",
+                            sk_hand_dof(x)->name, sk_hand_dof(y)->name,
+                            sk_hand_dof(at[x] < 0 ? x : y)->name);
                 goto done;
             }
             ch->cand[ch->cand_count++] = (line){at[x], at[y], 0.0, 0.0};
@@ -232,7 +240,8 @@ sk_result sk_hand__pairs_fit(sk_hand_potential *out, const sk_hand_skeleton *ske
     memset(fixed, 0, sizeof *fixed);
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
         fixed->has_stiffness[i] = true;
-        fixed->stiffness[i] = desc->base && desc->base->has_stiffness[i] ? desc->base->stiffness[i] : skel->dof[i].stiffness;
+        fixed->stiffness[i] = desc->base && desc->base->has_stiffness[i] ? desc->base->stiffness[i]
+                                                                         : skel->dof[i].stiffness;
     }
     for (int k = 0; desc->base && k < desc->base->row_count; k++) {
         const sk_hand_row *row = &desc->base->rows[k];
@@ -266,10 +275,13 @@ sk_result sk_hand__pairs_fit(sk_hand_potential *out, const sk_hand_skeleton *ske
     for (int k = 0; desc->base && k < desc->base->row_count; k++)
         if (ch->optional[k] && m->keep[k]) c->rows[c->row_count++] = desc->base->rows[k];
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) comp->relaxed[i] = skel->dof[i].relaxed;
-    for (int a = 0; a < d; a++) comp->relaxed[fd->dof[a]] = sk_clampd(fd->mu[a], skel->dof[fd->dof[a]].min, skel->dof[fd->dof[a]].max);
+    for (int a = 0; a < d; a++)
+        comp->relaxed[fd->dof[a]] =
+            sk_clampd(fd->mu[a], skel->dof[fd->dof[a]].min, skel->dof[fd->dof[a]].max);
     for (int k = 0; k < m->nsel && r == SK_OK; k++) {
         const line *l = &ch->cand[m->sel[k]];
-        r = sk_hand_constraints_add_pair(c, skel, fd->dof[l->x], fd->dof[l->y], l->a, 0.0, row_weight(ch, m, k), false, err);
+        r = sk_hand_constraints_add_pair(c, skel, fd->dof[l->x], fd->dof[l->y], l->a, 0.0,
+                                         row_weight(ch, m, k), false, err);
     }
     if (r == SK_OK) r = sk_hand__check_positive_definite(skel, c, err);
 done:

@@ -51,8 +51,10 @@ static int build(facet_grid *g, int a0, int a1, int b0, int b1)
         int child = build(g, ranges[c][0], ranges[c][1], ranges[c][2], ranges[c][3]);
         g->nodes[id].child[k++] = child;
         for (int e = 0; e < 3; e++) {
-            if (g->nodes[child].lo[e] < g->nodes[id].lo[e]) g->nodes[id].lo[e] = g->nodes[child].lo[e];
-            if (g->nodes[child].hi[e] > g->nodes[id].hi[e]) g->nodes[id].hi[e] = g->nodes[child].hi[e];
+            if (g->nodes[child].lo[e] < g->nodes[id].lo[e])
+                g->nodes[id].lo[e] = g->nodes[child].lo[e];
+            if (g->nodes[child].hi[e] > g->nodes[id].hi[e])
+                g->nodes[id].hi[e] = g->nodes[child].hi[e];
         }
     }
     return id;
@@ -110,9 +112,9 @@ static double nearest(const facet_grid *g, sk_vec3d p, double best)
     return best;
 }
 
-sk_result sk_hand_patch_facet_distances(const sk_hand_patch *patch, int splits, const sk_vec3d *points,
-                                        size_t count, const double *u_hint, const double *v_hint,
-                                        double *distance, sk_error *err)
+sk_result sk_hand_patch_facet_distances(const sk_hand_patch *patch, int splits,
+                                        const sk_vec3d *points, size_t count, const double *u_hint,
+                                        const double *v_hint, double *distance, sk_error *err)
 {
     if (splits == 0) splits = 100;
     sk_result r = sk_check_range_i(err, "facet_splits", splits, 1, 1024);
@@ -130,7 +132,8 @@ sk_result sk_hand_patch_facet_distances(const sk_hand_patch *patch, int splits, 
     }
     for (int a = 0; a < w; a++)
         for (int b = 0; b < w; b++)
-            v[a * w + b] = sk_hand_patch_eval(patch, (double)a / splits, (double)b / splits, NULL, NULL);
+            v[a * w + b] =
+                sk_hand_patch_eval(patch, (double)a / splits, (double)b / splits, NULL, NULL);
     facet_grid g = {splits, v, nodes, 0};
     build(&g, 0, splits, 0, splits);
     for (size_t k = 0; k < count; k++) {

@@ -37,8 +37,9 @@ void sk_hand_chord_parameters(const sk_vec3d *row, size_t count, double *u)
 
 /* Eq. (4.5) on points relative to their centroid (a ridge, if one is needed, then pulls
  * undetermined control points to the centroid rather than to the origin). */
-static sk_result least_squares(const sk_vec3d *pts, size_t n, const double *u, const double *v, sk_vec3d centroid,
-                               sk_hand_patch *out, bool *regularised, sk_error *err)
+static sk_result least_squares(const sk_vec3d *pts, size_t n, const double *u, const double *v,
+                               sk_vec3d centroid, sk_hand_patch *out, bool *regularised,
+                               sk_error *err)
 {
     double m[16 * 16] = {0}, rhs[16 * 3] = {0};
     for (size_t k = 0; k < n; k++) {
@@ -72,7 +73,9 @@ static sk_result least_squares(const sk_vec3d *pts, size_t n, const double *u, c
         info = LAPACKE_dposv(LAPACK_ROW_MAJOR, 'U', 16, 3, mm, 16, rr, 3);
         if (regularised) *regularised = true;
     }
-    if (info != 0) return sk_fail(err, SK_ERROR_NUMERIC, "patch fit: the normal equations could not be solved (%d)", (int)info);
+    if (info != 0)
+        return sk_fail(err, SK_ERROR_NUMERIC,
+                       "patch fit: the normal equations could not be solved (%d)", (int)info);
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
             const double *c = rr + 3 * (4 * i + j);
@@ -81,10 +84,12 @@ static sk_result least_squares(const sk_vec3d *pts, size_t n, const double *u, c
     return SK_OK;
 }
 
-static double rms(const sk_hand_patch *patch, const sk_vec3d *pts, size_t n, const double *u, const double *v)
+static double rms(const sk_hand_patch *patch, const sk_vec3d *pts, size_t n, const double *u,
+                  const double *v)
 {
     double sum = 0.0;
-    for (size_t k = 0; k < n; k++) sum += sk_hand__dist2(pts[k], sk_hand_patch_eval(patch, u[k], v[k], NULL, NULL));
+    for (size_t k = 0; k < n; k++)
+        sum += sk_hand__dist2(pts[k], sk_hand_patch_eval(patch, u[k], v[k], NULL, NULL));
     return sqrt(sum / (double)n);
 }
 
@@ -93,7 +98,8 @@ static inline double clamp01(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 :
 /* One step of eqs. (4.6, 4.7) moving (u, v) of a point toward its foot on the patch,
  * halved until it brings the foot no farther. Returns the squared distance before the
  * step (the point's residual for the patch as it is) and the parameter change. */
-static double correct_point(const sk_hand_patch *patch, sk_vec3d p, double *u, double *v, double *change)
+static double correct_point(const sk_hand_patch *patch, sk_vec3d p, double *u, double *v,
+                            double *change)
 {
     sk_vec3d su, sv;
     sk_vec3d s = sk_hand_patch_eval(patch, *u, *v, &su, &sv);
@@ -132,14 +138,17 @@ sk_result sk_hand_patch_fit(const sk_vec3d *points, size_t count, double *u, dou
     if (r == SK_OK) r = sk_check_range_f(err, "fit.tolerance", d.tolerance, 1e-12, 0.1);
     if (r == SK_OK) r = sk_check_range_f(err, "fit.min_improvement", d.min_improvement, 0, 0.5);
     if (r != SK_OK) return r;
-    if (count < 16) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch fit: %zu points (16 or more needed)", count);
+    if (count < 16)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch fit: %zu points (16 or more needed)",
+                       count);
     sk_vec3d centroid = {0, 0, 0};
     for (size_t k = 0; k < count; k++) {
         if (!isfinite(points[k].x + points[k].y + points[k].z))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch fit: point %zu is not finite", k);
         if (!(u[k] >= 0.0 && u[k] <= 1.0 && v[k] >= 0.0 && v[k] <= 1.0))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch fit: parameters (%g, %g) of point %zu are not in [0, 1]",
-                           u[k], v[k], k);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "patch fit: parameters (%g, %g) of point %zu are not in [0, 1]", u[k],
+                           v[k], k);
         centroid = sk_v3d_add(centroid, points[k]);
     }
     centroid = sk_v3d_scale(centroid, 1.0 / (double)count);

@@ -12,10 +12,10 @@
 
 /* Per side: 48 regions (the thesis's count), more where the hand is larger or curvier. */
 static const sk_hand_layout_entry layout[SK_HAND_LINK_COUNT] = {
-    {0, 2, 2},                                    /* carpus: the heel of the hand, the wrist */
-    {1, 2, 2}, {2, 2, 1}, {3, 2, 1},              /* thumb: metacarpal (thenar), phalanges */
-    {4, 3, 1}, {5, 2, 1}, {6, 2, 1}, {7, 2, 1},   /* index: metacarpal, proximal, middle, distal */
-    {8, 3, 1}, {9, 2, 1}, {10, 2, 1}, {11, 2, 1}, /* middle */
+    {0, 2, 2},                                     /* carpus: the heel of the hand, the wrist */
+    {1, 2, 2},  {2, 2, 1},  {3, 2, 1},             /* thumb: metacarpal (thenar), phalanges */
+    {4, 3, 1},  {5, 2, 1},  {6, 2, 1},  {7, 2, 1}, /* index: metacarpal, proximal, middle, distal */
+    {8, 3, 1},  {9, 2, 1},  {10, 2, 1}, {11, 2, 1}, /* middle */
     {12, 3, 1}, {13, 2, 1}, {14, 2, 1}, {15, 2, 1}, /* ring */
     {16, 3, 1}, {17, 2, 1}, {18, 2, 1}, {19, 2, 1}, /* little */
 };
@@ -63,8 +63,8 @@ static int compare_prow(const void *a, const void *b)
     return x->index < y->index ? -1 : (x->index > y->index);
 }
 
-static void fill_member(const sk_hand_link_geometry *links, const sk_hand_cloud *cloud, uint32_t i, int l,
-                        bool primary, member *m)
+static void fill_member(const sk_hand_link_geometry *links, const sk_hand_cloud *cloud, uint32_t i,
+                        int l, bool primary, member *m)
 {
     m->point = i;
     m->link = (int16_t)l;
@@ -77,9 +77,10 @@ static void fill_member(const sk_hand_link_geometry *links, const sk_hand_cloud 
 }
 
 /* The initial parameters of one patch's points (members[idx[k]] for k < n). */
-static void initial_parameters(const sk_hand_cloud *cloud, const member *members, const uint32_t *idx, size_t n,
-                               double s_lo, double s_hi, double phi_lo, double phi_hi, prow *scratch,
-                               sk_vec3d *row_pts, double *row_u, double *u, double *v)
+static void initial_parameters(const sk_hand_cloud *cloud, const member *members,
+                               const uint32_t *idx, size_t n, double s_lo, double s_hi,
+                               double phi_lo, double phi_hi, prow *scratch, sk_vec3d *row_pts,
+                               double *row_u, double *u, double *v)
 {
     for (size_t k = 0; k < n; k++) {
         const member *m = &members[idx[k]];
@@ -94,11 +95,13 @@ static void initial_parameters(const sk_hand_cloud *cloud, const member *members
         size_t b = a;
         while (b < n && scratch[b].key == scratch[a].key) b++;
         size_t len = b - a;
-        for (size_t k = 0; k < len; k++) row_pts[k] = cloud->position[members[idx[scratch[a + k].index]].point];
+        for (size_t k = 0; k < len; k++)
+            row_pts[k] = cloud->position[members[idx[scratch[a + k].index]].point];
         sk_hand_chord_parameters(row_pts, len, row_u);
         /* chord length along the row, 0 to 1 across it (4.4); a lone point sits where it is */
         double f0 = (phi_hi + scratch[a].phi) / span;
-        for (size_t k = 0; k < len; k++) u[scratch[a + k].index] = len == 1 ? sk_clampd(f0, 0.0, 1.0) : row_u[k];
+        for (size_t k = 0; k < len; k++)
+            u[scratch[a + k].index] = len == 1 ? sk_clampd(f0, 0.0, 1.0) : row_u[k];
         a = b;
     }
 }
@@ -110,9 +113,9 @@ static int compare_double(const void *a, const void *b)
 }
 
 /* The regions of one link on one side: g[0..count) are its members (primary and shared). */
-static sk_result layout_group(const sk_hand_cloud *cloud, member *g, size_t count, double *phis, uint32_t *idx,
-                              prow *scratch, sk_vec3d *row_pts, double *row_u, sk_hand_patch_set *out,
-                              sk_error *err)
+static sk_result layout_group(const sk_hand_cloud *cloud, member *g, size_t count, double *phis,
+                              uint32_t *idx, prow *scratch, sk_vec3d *row_pts, double *row_u,
+                              sk_hand_patch_set *out, sk_error *err)
 {
     int side = g[0].side, link = g[0].link;
     const sk_hand_layout_entry *e = &layout[link];
@@ -142,13 +145,15 @@ static sk_result layout_group(const sk_hand_cloud *cloud, member *g, size_t coun
     int base = side * SK_HAND_PATCHES_PER_SIDE + first_patch_of_link(link);
     for (int a = 0; a < e->along; a++)
         for (int b = 0; b < e->around; b++) {
-            double s0 = s_lo + (s_hi - s_lo) * a / e->along, s1 = s_lo + (s_hi - s_lo) * (a + 1) / e->along;
+            double s0 = s_lo + (s_hi - s_lo) * a / e->along,
+                   s1 = s_lo + (s_hi - s_lo) * (a + 1) / e->along;
             double f0 = phi_lo + span * b / e->around, f1 = phi_lo + span * (b + 1) / e->around;
             size_t n = 0;
             double ps_lo = INFINITY, ps_hi = -INFINITY, pf_lo = INFINITY, pf_hi = -INFINITY;
             for (size_t k = 0; k < count; k++) {
                 double mf = MARGIN_MM / (g[k].radius > 1.0 ? g[k].radius : 1.0);
-                if (g[k].s < s0 - MARGIN_MM || g[k].s > s1 + MARGIN_MM || g[k].phi < f0 - mf || g[k].phi > f1 + mf)
+                if (g[k].s < s0 - MARGIN_MM || g[k].s > s1 + MARGIN_MM || g[k].phi < f0 - mf ||
+                    g[k].phi > f1 + mf)
                     continue;
                 idx[n++] = (uint32_t)k;
                 ps_lo = fmin(ps_lo, g[k].s), ps_hi = fmax(ps_hi, g[k].s);
@@ -160,9 +165,11 @@ static sk_result layout_group(const sk_hand_cloud *cloud, member *g, size_t coun
             d->point = malloc(sizeof *d->point * n);
             d->u = malloc(sizeof *d->u * n);
             d->v = malloc(sizeof *d->v * n);
-            if (!d->point || !d->u || !d->v) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "patch layout");
+            if (!d->point || !d->u || !d->v)
+                return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "patch layout");
             d->count = n;
-            initial_parameters(cloud, g, idx, n, ps_lo, ps_hi, pf_lo, pf_hi, scratch, row_pts, row_u, d->u, d->v);
+            initial_parameters(cloud, g, idx, n, ps_lo, ps_hi, pf_lo, pf_hi, scratch, row_pts,
+                               row_u, d->u, d->v);
             for (size_t k = 0; k < n; k++) d->point[k] = g[idx[k]].point;
         }
     return SK_OK;
@@ -172,16 +179,19 @@ sk_result sk_hand_patch_layout_build(const sk_hand_cloud *cloud, const sk_hand_l
                                      sk_hand_patch_set *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
-    if (cloud->count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch layout: the point cloud is empty");
+    if (cloud->count == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch layout: the point cloud is empty");
     if (cloud->count > (1u << 26))
-        return sk_fail(err, SK_ERROR_LIMIT, "patch layout: %zu points (at most 2^26)", cloud->count);
+        return sk_fail(err, SK_ERROR_LIMIT, "patch layout: %zu points (at most 2^26)",
+                       cloud->count);
     out->count = SK_HAND_PATCH_COUNT;
     for (int side = 0; side < SK_HAND_SCAN_SIDE_COUNT; side++)
         for (int l = 0; l < SK_HAND_LINK_COUNT; l++)
             for (int a = 0; a < layout[l].along; a++)
                 for (int b = 0; b < layout[l].around; b++) {
-                    sk_hand_patch *p = &out->patch[side * SK_HAND_PATCHES_PER_SIDE + first_patch_of_link(l) +
-                                                   a * layout[l].around + b];
+                    sk_hand_patch *p =
+                        &out->patch[side * SK_HAND_PATCHES_PER_SIDE + first_patch_of_link(l) +
+                                    a * layout[l].around + b];
                     p->link = l;
                     p->side = (sk_hand_scan_side)side;
                     p->along = a;
@@ -201,16 +211,22 @@ sk_result sk_hand_patch_layout_build(const sk_hand_cloud *cloud, const sk_hand_l
         for (int l = 0; l < SK_HAND_LINK_COUNT; l++) {
             sk_vec3d ab = sk_v3d_sub(links->b[l], links->a[l]);
             double len2 = sk_v3d_dot(ab, ab);
-            double t = len2 > 0 ? sk_clampd(sk_v3d_dot(sk_v3d_sub(p, links->a[l]), ab) / len2, 0.0, 1.0) : 0.0;
+            double t = len2 > 0
+                           ? sk_clampd(sk_v3d_dot(sk_v3d_sub(p, links->a[l]), ab) / len2, 0.0, 1.0)
+                           : 0.0;
             double d = sqrt(sk_hand__dist2(p, sk_v3d_add(links->a[l], sk_v3d_scale(ab, t))));
-            if (d < d1) d2 = d1, l2 = l1, d1 = d, l1 = l;
-            else if (d < d2) d2 = d, l2 = l;
+            if (d < d1)
+                d2 = d1, l2 = l1, d1 = d, l1 = l;
+            else if (d < d2)
+                d2 = d, l2 = l;
         }
         fill_member(links, cloud, (uint32_t)i, l1, true, &members[2 * i]);
         /* the bisector of two segments is where d1 = d2: within MARGIN_MM of it, d2 - d1 is
            below about twice the margin */
-        if (l2 >= 0 && d2 - d1 < 2.0 * MARGIN_MM) fill_member(links, cloud, (uint32_t)i, l2, false, &members[2 * i + 1]);
-        else members[2 * i + 1].link = -1;
+        if (l2 >= 0 && d2 - d1 < 2.0 * MARGIN_MM)
+            fill_member(links, cloud, (uint32_t)i, l2, false, &members[2 * i + 1]);
+        else
+            members[2 * i + 1].link = -1;
     }
     size_t m = 0;
     for (size_t i = 0; i < 2 * n; i++)
@@ -222,11 +238,15 @@ sk_result sk_hand_patch_layout_build(const sk_hand_cloud *cloud, const sk_hand_l
     prow *scratch = malloc(sizeof *scratch * (m ? m : 1));
     sk_vec3d *row_pts = malloc(sizeof *row_pts * (m ? m : 1));
     double *row_u = malloc(sizeof *row_u * (m ? m : 1));
-    if (!phis || !idx || !scratch || !row_pts || !row_u) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "patch layout");
+    if (!phis || !idx || !scratch || !row_pts || !row_u)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "patch layout");
     for (size_t g0 = 0; g0 < m && r == SK_OK;) {
         size_t g1 = g0;
-        while (g1 < m && members[g1].side == members[g0].side && members[g1].link == members[g0].link) g1++;
-        r = layout_group(cloud, members + g0, g1 - g0, phis, idx, scratch, row_pts, row_u, out, err);
+        while (g1 < m && members[g1].side == members[g0].side &&
+               members[g1].link == members[g0].link)
+            g1++;
+        r = layout_group(cloud, members + g0, g1 - g0, phis, idx, scratch, row_pts, row_u, out,
+                         err);
         g0 = g1;
     }
     free(phis), free(idx), free(scratch), free(row_pts), free(row_u);

@@ -20,7 +20,8 @@ sk_result sk_hand_patches_pose(const sk_hand_patch *patches, int count, const sk
                                const sk_hand_frames *pose, const sk_hand_patch_weights *weights,
                                sk_hand_patch *out, sk_error *err)
 {
-    if (count < 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch count %d is negative", count);
+    if (count < 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch count %d is negative", count);
     link_motion motion[SK_HAND_LINK_COUNT];
     for (int l = 0; l < SK_HAND_LINK_COUNT; l++) {
         motion[l].rotation = sk_m3d_mul(pose->rotation[l], sk_m3d_transpose(rest->rotation[l]));
@@ -30,22 +31,23 @@ sk_result sk_hand_patches_pose(const sk_hand_patch *patches, int count, const sk
     /* check everything first: `out` may be `patches` */
     for (int k = 0; k < count; k++) {
         if (patches[k].link < 0 || patches[k].link >= SK_HAND_LINK_COUNT)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch %d: link %d is not in [0, %d)", k, patches[k].link,
-                           SK_HAND_LINK_COUNT);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch %d: link %d is not in [0, %d)", k,
+                           patches[k].link, SK_HAND_LINK_COUNT);
         for (int c = 0; weights && c < 16; c++) {
             const sk_hand_patch_weights *w = &weights[16 * k + c];
             double sum = 0.0;
             for (int i = 0; i < SK_HAND_PATCH_MAX_INFLUENCES; i++) {
                 if (w->link[i] < 0) continue;
                 if (w->link[i] >= SK_HAND_LINK_COUNT || !(w->weight[i] >= 0.0f))
-                    return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                                   "weights[%d]: influence %d has link %d (range [0, %d)) or weight %g (>= 0)",
-                                   16 * k + c, i, w->link[i], SK_HAND_LINK_COUNT, (double)w->weight[i]);
+                    return sk_fail(
+                        err, SK_ERROR_INVALID_ARGUMENT,
+                        "weights[%d]: influence %d has link %d (range [0, %d)) or weight %g (>= 0)",
+                        16 * k + c, i, w->link[i], SK_HAND_LINK_COUNT, (double)w->weight[i]);
                 sum += w->weight[i];
             }
             if (!(sum > 1e-6))
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "weights[%d]: the weights sum to %g (must be > 0)",
-                               16 * k + c, sum);
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                               "weights[%d]: the weights sum to %g (must be > 0)", 16 * k + c, sum);
         }
     }
     for (int k = 0; k < count; k++) {
@@ -63,7 +65,8 @@ sk_result sk_hand_patches_pose(const sk_hand_patch *patches, int count, const sk
                     if (w->link[c] >= 0) wsum += w->weight[c];
                 for (int c = 0; c < SK_HAND_PATCH_MAX_INFLUENCES; c++) {
                     if (w->link[c] < 0) continue;
-                    sum = sk_v3d_add(sum, sk_v3d_scale(move(&motion[w->link[c]], p.p[i][j]), w->weight[c] / wsum));
+                    sum = sk_v3d_add(sum, sk_v3d_scale(move(&motion[w->link[c]], p.p[i][j]),
+                                                       w->weight[c] / wsum));
                 }
                 p.p[i][j] = sum;
             }
@@ -72,15 +75,18 @@ sk_result sk_hand_patches_pose(const sk_hand_patch *patches, int count, const sk
     return SK_OK;
 }
 
-sk_result sk_hand_patch_weights_from_surface(const sk_hand_surface *surface, const sk_hand_patch *patches, int count,
+sk_result sk_hand_patch_weights_from_surface(const sk_hand_surface *surface,
+                                             const sk_hand_patch *patches, int count,
                                              sk_hand_patch_weights *out, sk_error *err)
 {
-    if (count < 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch count %d is negative", count);
+    if (count < 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch count %d is negative", count);
     const sk_mesh *m = sk_hand_surface_mesh(surface);
     const uint16_t *links;
     const float *weights;
     sk_hand_surface_weights(surface, SK_HAND_WEIGHTS_SMOOTH, &links, &weights);
-    if (m->vertex_count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the surface has no vertices");
+    if (m->vertex_count == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the surface has no vertices");
 #pragma omp parallel for schedule(static)
     for (int c = 0; c < 16 * count; c++) {
         int k = c / 16, i = (c % 16) / 4, j = c % 4;

@@ -8,11 +8,11 @@
 #include "hand/scan_private.h"
 
 /* Runs `work` on every patch with data, in parallel; the first failure wins. */
-typedef sk_result (*patch_work)(sk_hand_patch_set *set, int k, const sk_hand_cloud *cloud, const void *arg,
-                                sk_error *err);
+typedef sk_result (*patch_work)(sk_hand_patch_set *set, int k, const sk_hand_cloud *cloud,
+                                const void *arg, sk_error *err);
 
-static sk_result for_each_patch(sk_hand_patch_set *set, const sk_hand_cloud *cloud, patch_work work, const void *arg,
-                                sk_error *err)
+static sk_result for_each_patch(sk_hand_patch_set *set, const sk_hand_cloud *cloud, patch_work work,
+                                const void *arg, sk_error *err)
 {
     sk_result first_error = SK_OK;
     sk_error first_err = {0};
@@ -41,12 +41,14 @@ static sk_vec3d *gather(const sk_hand_patch_data *d, const sk_vec3d *from)
     return p;
 }
 
-static sk_result fit_one(sk_hand_patch_set *set, int k, const sk_hand_cloud *cloud, const void *arg, sk_error *err)
+static sk_result fit_one(sk_hand_patch_set *set, int k, const sk_hand_cloud *cloud, const void *arg,
+                         sk_error *err)
 {
     const sk_hand_patch_data *d = &set->data[k];
     sk_vec3d *pts = gather(d, cloud->position);
     if (!pts) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "fitting patch %d", k);
-    sk_result r = sk_hand_patch_fit(pts, d->count, d->u, d->v, arg, &set->patch[k], &set->fit[k], NULL, err);
+    sk_result r =
+        sk_hand_patch_fit(pts, d->count, d->u, d->v, arg, &set->patch[k], &set->fit[k], NULL, err);
     free(pts);
     set->fitted[k] = r == SK_OK;
     return r;
@@ -58,8 +60,8 @@ sk_result sk_hand_patch_set_fit(sk_hand_patch_set *set, const sk_hand_cloud *clo
     return for_each_patch(set, cloud, fit_one, desc, err);
 }
 
-static sk_result measure_one(sk_hand_patch_set *set, int k, const sk_hand_cloud *cloud, const void *arg,
-                             sk_error *err)
+static sk_result measure_one(sk_hand_patch_set *set, int k, const sk_hand_cloud *cloud,
+                             const void *arg, sk_error *err)
 {
     if (!set->fitted[k]) return SK_OK;
     const sk_hand_patch_data *d = &set->data[k];
@@ -72,7 +74,8 @@ static sk_result measure_one(sk_hand_patch_set *set, int k, const sk_hand_cloud 
         if (!from) continue;
         sk_vec3d *pts = gather(d, from);
         double *e = malloc(sizeof *e * d->count);
-        sk_result r = pts && e ? sk_hand_patch_facet_distances(&set->patch[k], splits, pts, d->count, d->u, d->v, e, err)
+        sk_result r = pts && e ? sk_hand_patch_facet_distances(&set->patch[k], splits, pts,
+                                                               d->count, d->u, d->v, e, err)
                                : sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "measuring patch %d", k);
         free(pts);
         if (r != SK_OK) {
@@ -84,7 +87,8 @@ static sk_result measure_one(sk_hand_patch_set *set, int k, const sk_hand_cloud 
     return SK_OK;
 }
 
-sk_result sk_hand_patch_set_measure(sk_hand_patch_set *set, const sk_hand_cloud *cloud, int splits, sk_error *err)
+sk_result sk_hand_patch_set_measure(sk_hand_patch_set *set, const sk_hand_cloud *cloud, int splits,
+                                    sk_error *err)
 {
     if (splits == 0) splits = 100;
     sk_result r = sk_check_range_i(err, "facet_splits", splits, 1, 1024);
@@ -102,7 +106,8 @@ static void accumulate(const sk_hand_patch_set *set, bool truth, int side, sk_ha
         if (!e) continue;
         for (size_t i = 0; i < set->data[k].count; i++) {
             sum += e[i];
-            if (e[i] > out->max_mm || out->worst_patch < 0) out->max_mm = e[i], out->worst_patch = k;
+            if (e[i] > out->max_mm || out->worst_patch < 0)
+                out->max_mm = e[i], out->worst_patch = k;
         }
         out->points += set->data[k].count;
     }
@@ -115,7 +120,8 @@ void sk_hand_table41_compute(const sk_hand_patch_set *set, sk_hand_table41 *out)
     for (int side = 0; side < SK_HAND_SCAN_SIDE_COUNT; side++) {
         accumulate(set, false, side, &out->scan[side]);
         accumulate(set, true, side, &out->truth[side]);
-        for (int k = 0; k < set->count; k++) out->patches_fitted[side] += set->fitted[k] && (int)set->patch[k].side == side;
+        for (int k = 0; k < set->count; k++)
+            out->patches_fitted[side] += set->fitted[k] && (int)set->patch[k].side == side;
     }
     accumulate(set, false, -1, &out->scan_all);
     accumulate(set, true, -1, &out->truth_all);

@@ -49,8 +49,8 @@ static void legend_size(const sk_plot_series *series, int count, int s, double *
 }
 
 /* Whether some data point (or segment midpoint) falls in the pixel box. */
-static bool box_hits_data(const sk_plot_series *series, int count, const sk_plot_layout *l, double x0,
-                          double y0, double x1, double y1)
+static bool box_hits_data(const sk_plot_series *series, int count, const sk_plot_layout *l,
+                          double x0, double y0, double x1, double y1)
 {
     for (int i = 0; i < count; i++)
         for (int k = 0; k < series[i].count; k++) {
@@ -108,8 +108,8 @@ sk_result sk_hand_plot_angles(const double *dofs, int frame_count, const int *do
     if (r == SK_OK) r = sk_check_range_i(err, "dof_count", dof_count, 0, SK_HAND_DOF_COUNT);
     for (int i = 0; r == SK_OK && i < dof_count; i++)
         if (dof_list[i] < 0 || dof_list[i] >= SK_HAND_DOF_COUNT)
-            r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "dof_list[%d] = %d is out of range [0, %d]", i,
-                        dof_list[i], SK_HAND_DOF_COUNT - 1);
+            r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "dof_list[%d] = %d is out of range [0, %d]",
+                        i, dof_list[i], SK_HAND_DOF_COUNT - 1);
     if (r != SK_OK) return r;
     float *y = malloc(sizeof *y * (size_t)frame_count * (size_t)(dof_count > 0 ? dof_count : 1));
     if (!y) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d frames", frame_count);
@@ -126,14 +126,16 @@ sk_result sk_hand_plot_angles(const double *dofs, int frame_count, const int *do
         snprintf(labels[i], sizeof labels[i], "%s%s", info->name, is_driven ? " (driven)" : "");
         any_translation |= info->translation;
         any_rotation |= !info->translation;
-        series[i] = (sk_plot_series){.label = labels[i], .y = col, .count = frame_count,
-                                     .width = is_driven ? 4.0f : 2.0f};
+        series[i] = (sk_plot_series){
+            .label = labels[i], .y = col, .count = frame_count, .width = is_driven ? 4.0f : 2.0f};
     }
     sk_plot_desc pd = {0};
     if (plot) pd = *plot;
     if (!pd.x_label) pd.x_label = "frame";
-    if (!pd.y_label) pd.y_label = any_translation ? (any_rotation ? "angle (deg), translation (mm)" : "translation (mm)")
-                                                  : "angle (deg)";
+    if (!pd.y_label)
+        pd.y_label = any_translation
+                         ? (any_rotation ? "angle (deg), translation (mm)" : "translation (mm)")
+                         : "angle (deg)";
     if (!pd.fixed_y && (pd.legend == SK_LEGEND_DEFAULT || pd.legend == SK_LEGEND_AUTO))
         make_legend_room(series, dof_count, &pd);
     r = sk_plot_lines(series, dof_count, &pd, out, err);

@@ -25,7 +25,8 @@ static void draw_panel(sk_image *img, int x0, int y0, int w, int h, const sk_han
     char title[256];
     int used = snprintf(title, sizeof title, "pins ");
     for (int k = 0; k < res->pins.count && used < (int)sizeof title; k++)
-        used += snprintf(title + used, sizeof title - (size_t)used, "%s%s", k ? " + " : "", sk_hand_dof(res->pins.dof[k])->name);
+        used += snprintf(title + used, sizeof title - (size_t)used, "%s%s", k ? " + " : "",
+                         sk_hand_dof(res->pins.dof[k])->name);
     snprintf(title + used, sizeof title - (size_t)used, ": held-out RMS error (deg)");
     sk_draw_text(img, (float)(x0 + 10 * ts), (float)(y0 + 4 * ts), title, ts, ink);
     /* plot area */
@@ -41,8 +42,10 @@ static void draw_panel(sk_image *img, int x0, int y0, int w, int h, const sk_han
         int lw = sk_draw_text_width(label, ts);
         sk_draw_text(img, (float)(left - lw - 4 * ts), y - 4.5f * ts, label, ts, ink);
     }
-    sk_draw_line_capped(img, (float)left, (float)bottom, (float)right, (float)bottom, 1.0f, SK_CAP_BUTT, ink);
-    sk_draw_line_capped(img, (float)left, (float)top, (float)left, (float)bottom, 1.0f, SK_CAP_BUTT, ink);
+    sk_draw_line_capped(img, (float)left, (float)bottom, (float)right, (float)bottom, 1.0f,
+                        SK_CAP_BUTT, ink);
+    sk_draw_line_capped(img, (float)left, (float)top, (float)left, (float)bottom, 1.0f, SK_CAP_BUTT,
+                        ink);
     /* groups: each joint, then all */
     int groups = res->joint_count + 1;
     double gw = (double)(right - left) / groups;
@@ -67,11 +70,12 @@ static void draw_panel(sk_image *img, int x0, int y0, int w, int h, const sk_han
         double gx = left + g * gw + gw * 0.1;
         for (int m = 0; m < METHODS; m++) {
             double hv = v[m] * SK_RAD_TO_DEG / y_top * (bottom - top);
-            sk_draw_rect(img, (float)(gx + m * bw), (float)(bottom - hv), (float)(bw * 0.9), (float)hv, sk_palette(m));
+            sk_draw_rect(img, (float)(gx + m * bw), (float)(bottom - hv), (float)(bw * 0.9),
+                         (float)hv, sk_palette(m));
         }
         int lw = sk_draw_text_width(label, label_scale);
-        sk_draw_text(img, (float)(left + g * gw + gw / 2 - lw / 2.0), (float)(bottom + 5 * ts), label, label_scale,
-                     g < res->joint_count ? ink : sk_rgb(0, 0, 0));
+        sk_draw_text(img, (float)(left + g * gw + gw / 2 - lw / 2.0), (float)(bottom + 5 * ts),
+                     label, label_scale, g < res->joint_count ? ink : sk_rgb(0, 0, 0));
     }
     /* legend along the top right */
     float lx = (float)right;
@@ -83,11 +87,12 @@ static void draw_panel(sk_image *img, int x0, int y0, int w, int h, const sk_han
     }
 }
 
-sk_result sk_hand_plot_evaluation(const sk_hand_evaluation *eval, const char *model_name, const sk_plot_desc *plot,
-                                  sk_image *out, sk_error *err)
+sk_result sk_hand_plot_evaluation(const sk_hand_evaluation *eval, const char *model_name,
+                                  const sk_plot_desc *plot, sk_image *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
-    if (eval->pin_set_count < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the evaluation has no pin sets");
+    if (eval->pin_set_count < 1)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the evaluation has no pin sets");
     int w = plot && plot->width ? plot->width : 900, ph = plot && plot->height ? plot->height : 300;
     sk_result r = sk_check_range_i(err, "width", w, 320, 8192);
     if (r == SK_OK) r = sk_check_range_i(err, "height", ph, 160, 4096);
@@ -107,7 +112,8 @@ sk_result sk_hand_plot_evaluation(const sk_hand_evaluation *eval, const char *mo
     for (int p = 0; p < eval->pin_set_count; p++) {
         const sk_hand_pin_result *res = &eval->result[p];
         for (int j = 0; j < res->joint_count; j++)
-            y_max = fmax(y_max, fmax(fmax(res->model[j], res->mean[j]), fmax(res->linear[j], res->pca[j])));
+            y_max = fmax(
+                y_max, fmax(fmax(res->model[j], res->mean[j]), fmax(res->linear[j], res->pca[j])));
     }
     y_max = fmax(y_max * SK_RAD_TO_DEG * 1.05, 1.0);
     for (int p = 0; p < eval->pin_set_count; p++)

@@ -10,7 +10,8 @@
 #include "shitsukan/io.h"
 
 sk_result sk_hand_pose_parse(const char *text, size_t length, const char *source_name,
-                             const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT], sk_error *err)
+                             const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT],
+                             sk_error *err)
 {
     sk_hand_relaxed(skeleton, dofs);
     cJSON *root = NULL;
@@ -19,7 +20,8 @@ sk_result sk_hand_pose_parse(const char *text, size_t length, const char *source
     if (r == SK_OK) r = sk_hand__json_expect_object(root, "", err);
     if (r == SK_OK) r = sk_hand__json_check_keys(root, "", keys, err);
     const cJSON *d = r == SK_OK ? cJSON_GetObjectItemCaseSensitive(root, "dofs") : NULL;
-    if (r == SK_OK && !d) r = sk_fail(err, SK_ERROR_PARSE, "dofs: missing (an object of DOF names and values)");
+    if (r == SK_OK && !d)
+        r = sk_fail(err, SK_ERROR_PARSE, "dofs: missing (an object of DOF names and values)");
     if (r == SK_OK) r = sk_hand__json_expect_object(d, "dofs", err);
     for (const cJSON *it = d && r == SK_OK ? d->child : NULL; it && r == SK_OK; it = it->next) {
         if (sk_preset_is_doc_key(it->string)) continue;
@@ -30,7 +32,8 @@ sk_result sk_hand_pose_parse(const char *text, size_t length, const char *source
         if (r != SK_OK) break;
         if (!cJSON_IsNumber(it) || !isfinite(it->valuedouble) || fabs(it->valuedouble) > 1e6)
             r = sk_fail(err, SK_ERROR_PARSE, "%s: expected a finite number", path);
-        else dofs[dof] = sk_hand__from_file_units(dof, it->valuedouble);
+        else
+            dofs[dof] = sk_hand__from_file_units(dof, it->valuedouble);
     }
     cJSON_Delete(root);
     if (r != SK_OK) sk_error_prefix(err, r, "%s", source_name ? source_name : "pose");
@@ -42,14 +45,15 @@ typedef struct pose_target {
     double *dofs;
 } pose_target;
 
-static sk_result parse_into(const char *text, size_t length, const char *source, void *ctx, sk_error *err)
+static sk_result parse_into(const char *text, size_t length, const char *source, void *ctx,
+                            sk_error *err)
 {
     pose_target *t = ctx;
     return sk_hand_pose_parse(text, length, source, t->skeleton, t->dofs, err);
 }
 
-sk_result sk_hand_pose_load_file(const char *path, const sk_hand_skeleton *skeleton, double dofs[SK_HAND_DOF_COUNT],
-                                 sk_error *err)
+sk_result sk_hand_pose_load_file(const char *path, const sk_hand_skeleton *skeleton,
+                                 double dofs[SK_HAND_DOF_COUNT], sk_error *err)
 {
     pose_target t = {skeleton, dofs};
     return sk_hand__parse_file(path, parse_into, &t, err);

@@ -32,7 +32,8 @@ static sk_result write_json(FILE *out, const sk_hand_skeleton *s, const double *
         sk_hand_forward(s, dofs + (size_t)fr * SK_HAND_DOF_COUNT, &f);
         fputs("    [", out);
         for (int p = 0; p < SK_HAND_POINT_COUNT; p++)
-            fprintf(out, "%s[%.6f, %.6f, %.6f]", p ? ", " : "", f.point[p].x, f.point[p].y, f.point[p].z);
+            fprintf(out, "%s[%.6f, %.6f, %.6f]", p ? ", " : "", f.point[p].x, f.point[p].y,
+                    f.point[p].z);
         fprintf(out, "]%s\n", fr + 1 < frames ? "," : "");
     }
     fputs("  ]\n}\n", out);
@@ -67,7 +68,8 @@ sk_result sk_hand_angles_write_csv(const double *dofs, int frames, double frame_
     for (int f = 0; f < frames; f++) {
         fprintf(file.fp, "%d,%.6f", f, f * frame_time);
         for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
-            fprintf(file.fp, ",%.6f", sk_hand__to_file_units(i, dofs[(size_t)f * SK_HAND_DOF_COUNT + i]));
+            fprintf(file.fp, ",%.6f",
+                    sk_hand__to_file_units(i, dofs[(size_t)f * SK_HAND_DOF_COUNT + i]));
         fputc('\n', file.fp);
     }
     if (ferror(file.fp)) {

@@ -48,11 +48,11 @@ static bool base_gaussian(const sk_hand_skeleton *skel, const sk_hand_constraint
     for (int b = 0; b < d; b++) {
         mu0[b] = skel->dof[dof[b]].relaxed;
         for (int a = 0; a < d; a++)
-            sigma0[b * d + a] = PRIOR_SPREAD * PRIOR_SPREAD * h[(size_t)dof[b] * SK_HAND_DOF_COUNT + dof[a]];
+            sigma0[b * d + a] =
+                PRIOR_SPREAD * PRIOR_SPREAD * h[(size_t)dof[b] * SK_HAND_DOF_COUNT + dof[a]];
     }
     return true;
 }
-
 
 /* Posterior mean and covariance of a normal-inverse-Wishart prior of strength nu
  * (pseudo-samples) around (mu0, sigma0) given n samples with mean xbar and scatter s. */
@@ -64,7 +64,8 @@ static void shrink(int d, int n, const double *xbar, const double *s, double nu,
     double c = t > 0 ? n * nu / t : 0.0;
     for (int b = 0; b < d; b++)
         for (int a = 0; a < d; a++) {
-            double v = s[b * d + a] + nu * sigma0[b * d + a] + c * (xbar[a] - mu0[a]) * (xbar[b] - mu0[b]);
+            double v =
+                s[b * d + a] + nu * sigma0[b * d + a] + c * (xbar[a] - mu0[a]) * (xbar[b] - mu0[b]);
             sigma[b * d + a] = v / (t > 0 ? t : 1.0);
         }
     for (int a = 0; a < d; a++) sigma[a * d + a] += SK_HAND__VARIANCE_FLOOR;
@@ -79,7 +80,8 @@ static void shrink(int d, int n, const double *xbar, const double *s, double nu,
  * grasp), and every fifth block of an ordered file would always hold the same grasps. */
 static bool is_validation(const sk_hand_samples *s, int k, int i, int n)
 {
-    if (s->group && s->group_count >= 10) return sk_hash(0x76616c, (uint64_t)s->group[i], 1, 0) % 5 == 0;
+    if (s->group && s->group_count >= 10)
+        return sk_hash(0x76616c, (uint64_t)s->group[i], 1, 0) % 5 == 0;
     long long block = (long long)k * 100 / n;
     return sk_hash(0x76616c, (uint64_t)block, 0, 0) % 5 == 0;
 }
@@ -92,9 +94,9 @@ static bool is_validation(const sk_hand_samples *s, int k, int i, int n)
  * diagonal), and rows from the Cholesky factor of H - K = L L': row j relates DOF j to
  * the DOFs after it, theta_j + sum_k (L_kj / L_jj) theta_k = 0 with weight L_jj^2, so
  * K + A'WA = H exactly and b = 0. */
-static sk_result to_thesis_form(const sk_hand_skeleton *skel, const sk_hand_constraints *base, const int *dof,
-                                int d, const double *mean, const double *cov, double scale,
-                                sk_hand_potential_component *out, sk_error *err)
+static sk_result to_thesis_form(const sk_hand_skeleton *skel, const sk_hand_constraints *base,
+                                const int *dof, int d, const double *mean, const double *cov,
+                                double scale, sk_hand_potential_component *out, sk_error *err)
 {
     double h[D_MAX * D_MAX], r[D_MAX * D_MAX], ev[D_MAX];
     memcpy(h, cov, sizeof(double) * (size_t)d * d);
@@ -104,7 +106,8 @@ static sk_result to_thesis_form(const sk_hand_skeleton *skel, const sk_hand_cons
     for (int b = 0; b < d; b++)
         for (int a = 0; a < d; a++) r[b * d + a] = h[b * d + a] / sqrt(h[a * d + a] * h[b * d + b]);
     if (!sk_hand__sym_eigen(r, d, ev, false) || !(ev[0] > 0))
-        return sk_fail(err, SK_ERROR_NUMERIC, "the samples' precision matrix is not positive definite");
+        return sk_fail(err, SK_ERROR_NUMERIC,
+                       "the samples' precision matrix is not positive definite");
     bool calibrated[SK_HAND_DOF_COUNT] = {false};
     for (int a = 0; a < d; a++) calibrated[dof[a]] = true;
     sk_hand_constraints *c = &out->constraints;
@@ -112,7 +115,8 @@ static sk_result to_thesis_form(const sk_hand_skeleton *skel, const sk_hand_cons
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
         out->relaxed[i] = skel->dof[i].relaxed;
         c->has_stiffness[i] = true;
-        c->stiffness[i] = base && base->has_stiffness[i] ? base->stiffness[i] : skel->dof[i].stiffness;
+        c->stiffness[i] =
+            base && base->has_stiffness[i] ? base->stiffness[i] : skel->dof[i].stiffness;
     }
     /* the base rows that stay: those among DOFs outside the samples */
     for (int k = 0; base && k < base->row_count; k++) {
@@ -129,7 +133,8 @@ static sk_result to_thesis_form(const sk_hand_skeleton *skel, const sk_hand_cons
         for (int b = 0; b < d; b++) l[b * d + a] = h[b * d + a] - (a == b ? k : 0.0);
     }
     if (!sk_hand__cholesky(l, d))
-        return sk_fail(err, SK_ERROR_NUMERIC, "the coupling part of the precision is not positive definite");
+        return sk_fail(err, SK_ERROR_NUMERIC,
+                       "the coupling part of the precision is not positive definite");
     for (int j = 0; j < d; j++) {
         if (c->row_count >= SK_HAND_MAX_ROWS)
             return sk_fail(err, SK_ERROR_LIMIT, "more than %d rows", SK_HAND_MAX_ROWS);
@@ -144,8 +149,10 @@ static sk_result to_thesis_form(const sk_hand_skeleton *skel, const sk_hand_cons
         }
         row->b = 0.0;
         row->weight = ljj * ljj;
-        snprintf(row->label, sizeof row->label, "%s on the joints after it", sk_hand_dof(dof[j])->name);
-        if (row->term_count == 1) snprintf(row->label, sizeof row->label, "%s alone", sk_hand_dof(dof[j])->name);
+        snprintf(row->label, sizeof row->label, "%s on the joints after it",
+                 sk_hand_dof(dof[j])->name);
+        if (row->term_count == 1)
+            snprintf(row->label, sizeof row->label, "%s alone", sk_hand_dof(dof[j])->name);
         c->row_count++;
     }
     return SK_OK;
@@ -161,8 +168,9 @@ void sk_hand__fit_data_free(sk_hand__fit_data *fd)
     fd->x = NULL;
 }
 
-sk_result sk_hand__fit_prepare(sk_hand__fit_data *fd, const sk_hand_skeleton *skel, const sk_hand_samples *s,
-                               const int *idx, int n, const sk_hand_potential_desc *desc, sk_error *err)
+sk_result sk_hand__fit_prepare(sk_hand__fit_data *fd, const sk_hand_skeleton *skel,
+                               const sk_hand_samples *s, const int *idx, int n,
+                               const sk_hand_potential_desc *desc, sk_error *err)
 {
     memset(fd, 0, sizeof *fd);
     const sk_hand_potential_desc dd = *desc;
@@ -171,16 +179,21 @@ sk_result sk_hand__fit_prepare(sk_hand__fit_data *fd, const sk_hand_skeleton *sk
         r = sk_check_range_f(err, "prior_strength", dd.prior_strength, -INFINITY, 1e7);
     if (r == SK_OK && isnan(dd.prior_strength))
         r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "prior_strength is not a number");
-    if (r == SK_OK) r = sk_check_range_i(err, "pin_set_count", dd.pin_set_count, 0, SK_HAND_EVAL_MAX_PIN_SETS);
+    if (r == SK_OK)
+        r = sk_check_range_i(err, "pin_set_count", dd.pin_set_count, 0, SK_HAND_EVAL_MAX_PIN_SETS);
     if (r != SK_OK) return r;
     if (!idx) n = s->count;
-    if (n < 1 || n > s->count) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d samples to fit (need 1 to %d)", n, s->count);
+    if (n < 1 || n > s->count)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%d samples to fit (need 1 to %d)", n,
+                       s->count);
     int d = fd->d = sk_hand__calibrated_dofs(s->present, fd->dof);
     const int *dof = fd->dof;
-    if (d == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the samples have no joint-angle column");
+    if (d == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the samples have no joint-angle column");
     for (int k = 0; k < n; k++)
         if (idx && (idx[k] < 0 || idx[k] >= s->count))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "sample index %d is out of range", idx[k]);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "sample index %d is out of range",
+                           idx[k]);
 
     /* the pin patterns of the held-out choices: the given ones, or each DOF alone */
     if (dd.pin_set_count > 0) {
@@ -226,11 +239,11 @@ sk_result sk_hand__fit_prepare(sk_hand__fit_data *fd, const sk_hand_skeleton *sk
         if (fd->can_validate) {
             double best = INFINITY;
             for (size_t k = 0; k < sizeof PRIOR_GRID / sizeof PRIOR_GRID[0]; k++) {
-                shrink(d, fd->n_train, xbar, scatter, PRIOR_GRID[k], fd->mu0, fd->sigma0, fd->mu_train,
-                       fd->sigma_train);
+                shrink(d, fd->n_train, xbar, scatter, PRIOR_GRID[k], fd->mu0, fd->sigma0,
+                       fd->mu_train, fd->sigma_train);
                 sk_hand__mixture_single(g, d, fd->mu_train, fd->sigma_train);
-                double e = sk_hand__mixture_validation_error(g, fd->x + (size_t)fd->n_train * d, fd->n_val, fd->masks,
-                                                             fd->mask_count);
+                double e = sk_hand__mixture_validation_error(g, fd->x + (size_t)fd->n_train * d,
+                                                             fd->n_val, fd->masks, fd->mask_count);
                 if (e < best) {
                     best = e;
                     fd->nu = PRIOR_GRID[k];
@@ -238,7 +251,8 @@ sk_result sk_hand__fit_prepare(sk_hand__fit_data *fd, const sk_hand_skeleton *sk
             }
         }
     }
-    shrink(d, fd->n_train, xbar, scatter, fd->nu, fd->mu0, fd->sigma0, fd->mu_train, fd->sigma_train);
+    shrink(d, fd->n_train, xbar, scatter, fd->nu, fd->mu0, fd->sigma0, fd->mu_train,
+           fd->sigma_train);
     sk_hand__moments(s, dof, d, order, n, xbar, scatter);
     shrink(d, n, xbar, scatter, fd->nu, fd->mu0, fd->sigma0, fd->mu, fd->sigma);
     free(order);
@@ -247,8 +261,8 @@ sk_result sk_hand__fit_prepare(sk_hand__fit_data *fd, const sk_hand_skeleton *sk
 }
 
 /* The mixture (one Gaussian or more) on prepared samples. */
-static sk_result mixture_fit(sk_hand_potential *out, const sk_hand_skeleton *skel, sk_hand__fit_data *fd,
-                             const sk_hand_potential_desc *dd, sk_error *err)
+static sk_result mixture_fit(sk_hand_potential *out, const sk_hand_skeleton *skel,
+                             sk_hand__fit_data *fd, const sk_hand_potential_desc *dd, sk_error *err)
 {
     int d = fd->d, n = fd->n;
     const double *x = fd->x;
@@ -256,7 +270,8 @@ static sk_result mixture_fit(sk_hand_potential *out, const sk_hand_skeleton *ske
        base set's on these DOFs */
     double prec[D_MAX * D_MAX];
     memcpy(prec, fd->sigma, sizeof prec);
-    if (!sk_hand__spd_inverse(prec, d)) return sk_fail(err, SK_ERROR_NUMERIC, "the samples' covariance is not positive definite");
+    if (!sk_hand__spd_inverse(prec, d))
+        return sk_fail(err, SK_ERROR_NUMERIC, "the samples' covariance is not positive definite");
     double tr_base = 0.0, tr_prec = 0.0;
     for (int a = 0; a < d; a++) {
         tr_base += fd->base_diag[a];
@@ -279,15 +294,18 @@ static sk_result mixture_fit(sk_hand_potential *out, const sk_hand_skeleton *ske
         if (fd->can_validate && dd->max_components > 1) {
             sk_hand__mixture_single(g, d, fd->mu_train, fd->sigma_train);
             const double *xv = x + (size_t)fd->n_train * d;
-            double best = sk_hand__mixture_validation_error(g, xv, fd->n_val, fd->masks, fd->mask_count);
+            double best =
+                sk_hand__mixture_validation_error(g, xv, fd->n_val, fd->masks, fd->mask_count);
             /* counts on a coarse grid: each EM fit costs about its count */
             static const int COUNTS[] = {2, 3, 4, 6, 8, 12, 16};
             for (size_t ci = 0; ci < sizeof COUNTS / sizeof COUNTS[0]; ci++) {
                 int c = COUNTS[ci];
                 if (c > dd->max_components || c > fd->n_train / (2 * d + 2)) break;
-                if (!sk_hand__mixture_fit(g, x, fd->n_train, d, c, fd->sigma_train, nu_component, dd->seed, resp))
+                if (!sk_hand__mixture_fit(g, x, fd->n_train, d, c, fd->sigma_train, nu_component,
+                                          dd->seed, resp))
                     continue;
-                double e = sk_hand__mixture_validation_error(g, xv, fd->n_val, fd->masks, fd->mask_count);
+                double e =
+                    sk_hand__mixture_validation_error(g, xv, fd->n_val, fd->masks, fd->mask_count);
                 if (e < best) {
                     best = e;
                     m = c;
@@ -295,7 +313,8 @@ static sk_result mixture_fit(sk_hand_potential *out, const sk_hand_skeleton *ske
             }
         }
     }
-    if (m > 1 && (n < m * (d + 1) || !sk_hand__mixture_fit(g, x, n, d, m, fd->sigma, nu_component, dd->seed, resp)))
+    if (m > 1 && (n < m * (d + 1) ||
+                  !sk_hand__mixture_fit(g, x, n, d, m, fd->sigma, nu_component, dd->seed, resp)))
         m = 1;
     if (m < 1 || m > SK_HAND_POTENTIAL_MAX_COMPONENTS) m = 1;
     if (m == 1) sk_hand__mixture_single(g, d, fd->mu, fd->sigma);
@@ -311,7 +330,8 @@ static sk_result mixture_fit(sk_hand_potential *out, const sk_hand_skeleton *ske
     sk_result r = SK_OK;
     for (int c = 0; c < m && r == SK_OK; c++) {
         out->component[c].weight = g->weight[c];
-        r = to_thesis_form(skel, dd->base, fd->dof, d, g->mean[c], g->cov[c], scale, &out->component[c], err);
+        r = to_thesis_form(skel, dd->base, fd->dof, d, g->mean[c], g->cov[c], scale,
+                           &out->component[c], err);
     }
     free(g);
     return r;
@@ -327,18 +347,23 @@ sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *
     if (dd.method == SK_HAND_POTENTIAL_DEFAULT) dd.method = SK_HAND_POTENTIAL_MIXTURE;
     if (dd.method != SK_HAND_POTENTIAL_GAUSSIAN && dd.method != SK_HAND_POTENTIAL_MIXTURE &&
         dd.method != SK_HAND_POTENTIAL_PAIRS)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "method = %d is not gaussian, mixture or pairs", (int)dd.method);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "method = %d is not gaussian, mixture or pairs", (int)dd.method);
     if (dd.max_components == 0) dd.max_components = 12;
-    sk_result r = sk_check_range_i(err, "max_components", dd.max_components, 1, SK_HAND_POTENTIAL_MAX_COMPONENTS);
-    if (r == SK_OK) r = sk_check_range_i(err, "components", dd.components, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS);
+    sk_result r = sk_check_range_i(err, "max_components", dd.max_components, 1,
+                                   SK_HAND_POTENTIAL_MAX_COMPONENTS);
+    if (r == SK_OK)
+        r = sk_check_range_i(err, "components", dd.components, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS);
     if (r != SK_OK) return r;
     if (dd.method != SK_HAND_POTENTIAL_MIXTURE) dd.components = 1;
     sk_hand__fit_data *fd = malloc(sizeof *fd);
     if (!fd) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     r = sk_hand__fit_prepare(fd, skel, s, idx, n, &dd, err);
     if (r == SK_OK) {
-        if (dd.method == SK_HAND_POTENTIAL_PAIRS) r = sk_hand__pairs_fit(out, skel, fd, &dd, err);
-        else r = mixture_fit(out, skel, fd, &dd, err);
+        if (dd.method == SK_HAND_POTENTIAL_PAIRS)
+            r = sk_hand__pairs_fit(out, skel, fd, &dd, err);
+        else
+            r = mixture_fit(out, skel, fd, &dd, err);
         out->dof_count = fd->d;
         memcpy(out->dof, fd->dof, sizeof(int) * (size_t)fd->d);
         out->sample_count = fd->n;

@@ -34,16 +34,20 @@ sk_result sk_hand_potential_write_json(const sk_hand_potential *p, const char *s
     if (r != SK_OK) return r;
     cJSON *root = cJSON_CreateObject();
     if (!root) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
-    cJSON_AddStringToObject(root, "description",
-                            "Calibrated potential of natural posture: eq. 3.17 fitted to joint-angle samples "
-                            "(thesis 3.2.2); the energy of each component is the samples' Gaussian");
-    if (source_note) cJSON_AddStringToObject(root, "source", source_note);
     cJSON_AddStringToObject(
-        root, "reading",
-        "Each component is a constraint set on displacements from its relaxed posture (degrees): springs "
-        "K ('stiffness') and rows A theta + b = 0 with weights W; on the calibrated DOFs K + A'WA = scale x "
-        "the inverse covariance (1/rad^2) of the component and b = 0. A solve blends the components' "
-        "equilibria by the probability of the pinned values under each (mixture weights 'weight').");
+        root, "description",
+        "Calibrated potential of natural posture: eq. 3.17 fitted to joint-angle samples "
+        "(thesis 3.2.2); the energy of each component is the samples' Gaussian");
+    if (source_note) cJSON_AddStringToObject(root, "source", source_note);
+    cJSON_AddStringToObject(root, "reading",
+                            "Each component is a constraint set on displacements from its relaxed "
+                            "posture (degrees): springs "
+                            "K ('stiffness') and rows A theta + b = 0 with weights W; on the "
+                            "calibrated DOFs K + A'WA = scale x "
+                            "the inverse covariance (1/rad^2) of the component and b = 0. A solve "
+                            "blends the components' "
+                            "equilibria by the probability of the pinned values under each "
+                            "(mixture weights 'weight').");
     cJSON *dofs = cJSON_AddArrayToObject(root, "dofs");
     for (int a = 0; dofs && a < p->dof_count; a++)
         cJSON_AddItemToArray(dofs, cJSON_CreateString(sk_hand_dof(p->dof[a])->name));
@@ -59,12 +63,14 @@ sk_result sk_hand_potential_write_json(const sk_hand_potential *p, const char *s
         cJSON_AddNumberToObject(o, "weight", c->weight);
         cJSON *relaxed = cJSON_AddObjectToObject(o, "relaxed_deg");
         for (int a = 0; relaxed && a < p->dof_count; a++)
-            cJSON_AddNumberToObject(relaxed, sk_hand_dof(p->dof[a])->name, c->relaxed[p->dof[a]] * SK_RAD_TO_DEG);
+            cJSON_AddNumberToObject(relaxed, sk_hand_dof(p->dof[a])->name,
+                                    c->relaxed[p->dof[a]] * SK_RAD_TO_DEG);
         cJSON_AddStringToObject(o, "angles", "displacement");
         cJSON_AddStringToObject(o, "b_unit", "deg");
         cJSON *stiff = cJSON_AddObjectToObject(o, "stiffness");
         for (int i = 0; stiff && i < SK_HAND_DOF_COUNT; i++)
-            if (c->constraints.has_stiffness[i] && c->constraints.stiffness[i] != skel.dof[i].stiffness)
+            if (c->constraints.has_stiffness[i] &&
+                c->constraints.stiffness[i] != skel.dof[i].stiffness)
                 cJSON_AddNumberToObject(stiff, sk_hand_dof(i)->name, c->constraints.stiffness[i]);
         cJSON *rows = cJSON_AddArrayToObject(o, "rows");
         for (int k = 0; rows && k < c->constraints.row_count; k++)
@@ -93,20 +99,24 @@ static sk_result read_dofs(const cJSON *root, sk_hand_potential *out, sk_error *
 {
     const cJSON *dofs = cJSON_GetObjectItemCaseSensitive(root, "dofs");
     if (!dofs) return sk_fail(err, SK_ERROR_PARSE, "dofs: missing");
-    if (!cJSON_IsArray(dofs)) return sk_fail(err, SK_ERROR_PARSE, "dofs: expected an array of DOF names");
+    if (!cJSON_IsArray(dofs))
+        return sk_fail(err, SK_ERROR_PARSE, "dofs: expected an array of DOF names");
     bool seen[SK_HAND_DOF_COUNT] = {false};
     int i = 0;
     for (const cJSON *item = dofs->child; item; item = item->next, i++) {
         char path[32];
         snprintf(path, sizeof path, "dofs[%d]", i);
-        if (!cJSON_IsString(item)) return sk_fail(err, SK_ERROR_PARSE, "%s: expected a DOF name", path);
+        if (!cJSON_IsString(item))
+            return sk_fail(err, SK_ERROR_PARSE, "%s: expected a DOF name", path);
         int d;
         sk_result r = sk_hand__dof_by_name(item->valuestring, path, &d, err);
         if (r != SK_OK) return r;
         if (d < SK_HAND_WRIST_DOF_COUNT)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: %s is a wrist DOF; a potential calibrates joints",
-                           path, item->valuestring);
-        if (seen[d]) return sk_fail(err, SK_ERROR_PARSE, "%s: %s appears twice", path, item->valuestring);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "%s: %s is a wrist DOF; a potential calibrates joints", path,
+                           item->valuestring);
+        if (seen[d])
+            return sk_fail(err, SK_ERROR_PARSE, "%s: %s appears twice", path, item->valuestring);
         seen[d] = true;
     }
     out->dof_count = sk_hand__calibrated_dofs(seen, out->dof);
@@ -115,7 +125,8 @@ static sk_result read_dofs(const cJSON *root, sk_hand_potential *out, sk_error *
 }
 
 static sk_result read_component(const cJSON *item, const char *path, const sk_hand_skeleton *skel,
-                                const sk_hand_potential *p, sk_hand_potential_component *c, sk_error *err)
+                                const sk_hand_potential *p, sk_hand_potential_component *c,
+                                sk_error *err)
 {
     static const char *const extra[] = {"weight", "relaxed_deg", NULL};
     sk_result r = sk_hand__json_expect_object(item, path, err);
@@ -125,7 +136,8 @@ static sk_result read_component(const cJSON *item, const char *path, const sk_ha
     const char *angles = NULL;
     sk_hand__json_string(item, path, "angles", &angles, NULL);
     if (angles && strcmp(angles, "displacement") != 0)
-        return sk_fail(err, SK_ERROR_PARSE, "%s.angles: a component's rows are on displacements", path);
+        return sk_fail(err, SK_ERROR_PARSE, "%s.angles: a component's rows are on displacements",
+                       path);
     c->weight = 0.0;
     r = sk_hand__json_number(item, path, "weight", 1e-12, 1.0, true, &c->weight, err);
     if (r != SK_OK) return r;
@@ -136,15 +148,17 @@ static sk_result read_component(const cJSON *item, const char *path, const sk_ha
             c->constraints.stiffness[i] = skel->dof[i].stiffness;
         }
         if (c->constraints.stiffness[i] > 1e9)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s.stiffness.%s = %g is out of range (0, 1e9]", path,
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "%s.stiffness.%s = %g is out of range (0, 1e9]", path,
                            sk_hand_dof(i)->name, c->constraints.stiffness[i]);
     }
     for (int k = 0; k < c->constraints.row_count; k++) {
         const sk_hand_row *row = &c->constraints.rows[k];
         for (int t = 0; t < row->term_count; t++)
             if (fabs(row->coeff[t]) > 1e6)
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s.rows[%d].terms.%s is out of range [-1e6, 1e6]",
-                               path, k, sk_hand_dof(row->dof[t])->name);
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                               "%s.rows[%d].terms.%s is out of range [-1e6, 1e6]", path, k,
+                               sk_hand_dof(row->dof[t])->name);
     }
     char rpath[96];
     snprintf(rpath, sizeof rpath, "%s.relaxed_deg", path);
@@ -163,32 +177,39 @@ static sk_result read_component(const cJSON *item, const char *path, const sk_ha
         for (int a = 0; a < p->dof_count; a++) calibrated |= p->dof[a] == d;
         if (!calibrated) return sk_fail(err, SK_ERROR_PARSE, "%s: not one of \"dofs\"", tpath);
         if (!cJSON_IsNumber(t)) return sk_fail(err, SK_ERROR_PARSE, "%s: expected a number", tpath);
-        double lo = skel->dof[d].min * SK_RAD_TO_DEG, hi = skel->dof[d].max * SK_RAD_TO_DEG, v = t->valuedouble;
+        double lo = skel->dof[d].min * SK_RAD_TO_DEG, hi = skel->dof[d].max * SK_RAD_TO_DEG,
+               v = t->valuedouble;
         if (!(v >= lo - 1e-9 && v <= hi + 1e-9))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %g is outside the joint limits [%g, %g]", tpath, v,
-                           lo, hi);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "%s = %g is outside the joint limits [%g, %g]", tpath, v, lo, hi);
         c->relaxed[d] = sk_clampd(v * SK_DEG_TO_RAD, skel->dof[d].min, skel->dof[d].max);
         given[d] = true;
     }
     if (r != SK_OK) return r;
     for (int a = 0; a < p->dof_count; a++)
         if (!given[p->dof[a]])
-            return sk_fail(err, SK_ERROR_PARSE, "%s.%s: missing", rpath, sk_hand_dof(p->dof[a])->name);
+            return sk_fail(err, SK_ERROR_PARSE, "%s.%s: missing", rpath,
+                           sk_hand_dof(p->dof[a])->name);
     r = sk_hand__check_positive_definite(skel, &c->constraints, err);
     if (r != SK_OK) return sk_error_prefix(err, r, "%s", path);
     return SK_OK;
 }
 
-static sk_result read_root(const cJSON *root, const sk_hand_skeleton *skel, sk_hand_potential *out, sk_error *err)
+static sk_result read_root(const cJSON *root, const sk_hand_skeleton *skel, sk_hand_potential *out,
+                           sk_error *err)
 {
-    static const char *const keys[] = {"reading", "dofs", "scale", "samples", "prior_strength", "components", NULL};
+    static const char *const keys[] = {"reading",        "dofs",       "scale", "samples",
+                                       "prior_strength", "components", NULL};
     sk_result r = sk_hand__json_expect_object(root, "", err);
     if (r == SK_OK) r = sk_hand__json_check_keys(root, "", keys, err);
     if (r == SK_OK) r = read_dofs(root, out, err);
     double samples = 0.0;
-    if (r == SK_OK) r = sk_hand__json_number(root, "", "scale", 1e-12, 1e12, true, &out->scale, err);
+    if (r == SK_OK)
+        r = sk_hand__json_number(root, "", "scale", 1e-12, 1e12, true, &out->scale, err);
     if (r == SK_OK) r = sk_hand__json_number(root, "", "samples", 0, 1e8, false, &samples, err);
-    if (r == SK_OK) r = sk_hand__json_number(root, "", "prior_strength", 0, 1e7, false, &out->prior_strength, err);
+    if (r == SK_OK)
+        r = sk_hand__json_number(root, "", "prior_strength", 0, 1e7, false, &out->prior_strength,
+                                 err);
     if (r != SK_OK) return r;
     out->sample_count = (int)samples;
     const cJSON *comps = cJSON_GetObjectItemCaseSensitive(root, "components");
@@ -196,8 +217,8 @@ static sk_result read_root(const cJSON *root, const sk_hand_skeleton *skel, sk_h
     if (!cJSON_IsArray(comps)) return sk_fail(err, SK_ERROR_PARSE, "components: expected an array");
     int m = cJSON_GetArraySize(comps);
     if (m < 1 || m > SK_HAND_POTENTIAL_MAX_COMPONENTS)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "components: %d entries, expected 1 to %d", m,
-                       SK_HAND_POTENTIAL_MAX_COMPONENTS);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "components: %d entries, expected 1 to %d",
+                       m, SK_HAND_POTENTIAL_MAX_COMPONENTS);
     out->component = calloc((size_t)m, sizeof *out->component);
     if (!out->component) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     out->component_count = m;
@@ -211,13 +232,15 @@ static sk_result read_root(const cJSON *root, const sk_hand_skeleton *skel, sk_h
         total += out->component[i].weight;
     }
     if (fabs(total - 1.0) > 1e-6)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "components: the weights sum to %g, not 1", total);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "components: the weights sum to %g, not 1",
+                       total);
     for (i = 0; i < m; i++) out->component[i].weight /= total;
     return SK_OK;
 }
 
 sk_result sk_hand_potential_parse(const char *text, size_t length, const char *source_name,
-                                  const sk_hand_skeleton *skel, sk_hand_potential *out, sk_error *err)
+                                  const sk_hand_skeleton *skel, sk_hand_potential *out,
+                                  sk_error *err)
 {
     memset(out, 0, sizeof *out);
     cJSON *root = NULL;
@@ -233,8 +256,8 @@ sk_result sk_hand_potential_parse(const char *text, size_t length, const char *s
     return r;
 }
 
-sk_result sk_hand_potential_load_file(const char *path, const sk_hand_skeleton *skel, sk_hand_potential *out,
-                                      sk_error *err)
+sk_result sk_hand_potential_load_file(const char *path, const sk_hand_skeleton *skel,
+                                      sk_hand_potential *out, sk_error *err)
 {
     char *text = NULL;
     size_t size = 0;

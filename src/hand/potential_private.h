@@ -12,9 +12,8 @@ int sk_hand__calibrated_dofs(const bool *present, int *dof);
  * that may also hold the keys in `extra` (NULL-terminated, may be NULL). Errors name the
  * key path below `path`. */
 sk_result sk_hand__constraints_from_json(const cJSON *object, const char *path,
-                                         const sk_hand_skeleton *skeleton,
-                                         const char *const *extra, sk_hand_constraints *out,
-                                         sk_error *err);
+                                         const sk_hand_skeleton *skeleton, const char *const *extra,
+                                         sk_hand_constraints *out, sk_error *err);
 
 /* Parses text as exactly one JSON value: trailing text, duplicate keys and numbers that
  * overflow are errors ("line N: ..."). */
@@ -25,7 +24,8 @@ sk_result sk_hand__json_parse_strict(const char *text, size_t length, cJSON **ou
 /* A spring of stiffness 1 alone spreads a DOF by this much when the base set is read as a
  * Gaussian (its temperature is the square). */
 #define SK_HAND__PRIOR_SPREAD (20.0 * SK_DEG_TO_RAD)
-#define SK_HAND__FIT_MAX_MASKS (SK_HAND_EVAL_MAX_PIN_SETS > SK_HAND_DOF_COUNT ? SK_HAND_EVAL_MAX_PIN_SETS : SK_HAND_DOF_COUNT)
+#define SK_HAND__FIT_MAX_MASKS                                                                     \
+    (SK_HAND_EVAL_MAX_PIN_SETS > SK_HAND_DOF_COUNT ? SK_HAND_EVAL_MAX_PIN_SETS : SK_HAND_DOF_COUNT)
 
 /* What every calibration method starts from: the samples split into a training and a
  * validation part, the pin patterns of the held-out choices, the base set's Gaussian,
@@ -34,12 +34,12 @@ typedef struct sk_hand__fit_data {
     int d, dof[SK_HAND_DOF_COUNT];
     bool masks[SK_HAND__FIT_MAX_MASKS][SK_HAND_DOF_COUNT]; /* true: pinned in pattern p */
     int mask_count;
-    double *x;        /* n x d rows (radians): the training part first, validation after */
+    double *x; /* n x d rows (radians): the training part first, validation after */
     int n, n_train, n_val;
     bool can_validate;
     double mu0[SK_HAND_DOF_COUNT], sigma0[SK_HAND_DOF_COUNT * SK_HAND_DOF_COUNT]; /* base set */
     double base_diag[SK_HAND_DOF_COUNT]; /* K + A'WA of the base set on the diagonal */
-    double nu;        /* prior strength, resolved */
+    double nu;                           /* prior strength, resolved */
     double mu[SK_HAND_DOF_COUNT], sigma[SK_HAND_DOF_COUNT * SK_HAND_DOF_COUNT]; /* shrunk, all */
     double mu_train[SK_HAND_DOF_COUNT], sigma_train[SK_HAND_DOF_COUNT * SK_HAND_DOF_COUNT];
 } sk_hand__fit_data;

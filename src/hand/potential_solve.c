@@ -35,9 +35,9 @@ void sk_hand_potential_solver_destroy(sk_hand_potential_solver *ps)
     free(ps);
 }
 
-sk_result sk_hand_potential_solver_create(sk_hand_potential_solver **out, const sk_hand_skeleton *skel,
-                                          const sk_hand_potential *p, const sk_hand_solver_desc *desc,
-                                          sk_error *err)
+sk_result sk_hand_potential_solver_create(sk_hand_potential_solver **out,
+                                          const sk_hand_skeleton *skel, const sk_hand_potential *p,
+                                          const sk_hand_solver_desc *desc, sk_error *err)
 {
     *out = NULL;
     if (p->component_count < 1 || p->component_count > M_MAX || !p->component)
@@ -61,11 +61,13 @@ sk_result sk_hand_potential_solver_create(sk_hand_potential_solver **out, const 
         r = sk_hand_potential_gaussian(p, c, ps->mean[c], ps->cov[c], err);
         memcpy(ps->prec[c], ps->cov[c], sizeof(double) * (size_t)ps->d * ps->d);
         if (r == SK_OK && !sk_hand__spd_inverse(ps->prec[c], ps->d))
-            r = sk_fail(err, SK_ERROR_NUMERIC, "component %d: the covariance is not positive definite", c);
+            r = sk_fail(err, SK_ERROR_NUMERIC,
+                        "component %d: the covariance is not positive definite", c);
         /* the component's relaxed posture replaces the skeleton's (eq. 3.7) */
         sk_hand_skeleton own = *skel;
         for (int i = 0; i < SK_HAND_DOF_COUNT; i++) own.dof[i].relaxed = comp->relaxed[i];
-        if (r == SK_OK) r = sk_hand_solver_create(&ps->solver[c], &own, &comp->constraints, NULL, 0, desc, err);
+        if (r == SK_OK)
+            r = sk_hand_solver_create(&ps->solver[c], &own, &comp->constraints, NULL, 0, desc, err);
     }
     if (r != SK_OK) {
         sk_hand_potential_solver_destroy(ps);
@@ -108,10 +110,12 @@ static double tilt(const sk_hand_potential_solver *ps, int c, const sk_hand_inpu
 /* Probability of each component given the pinned calibrated DOFs (their marginal
  * Gaussian under the component times its weight) and tilted by the torques; the prior
  * weights without inputs. */
-static void responsibilities(const sk_hand_potential_solver *ps, const sk_hand_input *in, double *resp)
+static void responsibilities(const sk_hand_potential_solver *ps, const sk_hand_input *in,
+                             double *resp)
 {
     bool torques = false;
-    for (int a = 0; a < ps->d; a++) torques |= !in->pinned[ps->dof[a]] && in->torque[ps->dof[a]] != 0.0;
+    for (int a = 0; a < ps->d; a++)
+        torques |= !in->pinned[ps->dof[a]] && in->torque[ps->dof[a]] != 0.0;
     int pin[D_MAX], np = 0;
     double v[D_MAX];
     for (int a = 0; a < ps->d; a++) {
@@ -129,8 +133,10 @@ static void responsibilities(const sk_hand_potential_solver *ps, const sk_hand_i
                 mu[j] = ps->mean[c][pin[j]];
                 for (int i = 0; i < np; i++) s[j * np + i] = ps->cov[c][pin[j] * ps->d + pin[i]];
             }
-            if (sk_hand__cholesky(s, np)) l[c] += sk_hand__gauss_logpdf(v, mu, s, sk_hand__cholesky_logdet(s, np), np);
-            else l[c] = -INFINITY;
+            if (sk_hand__cholesky(s, np))
+                l[c] += sk_hand__gauss_logpdf(v, mu, s, sk_hand__cholesky_logdet(s, np), np);
+            else
+                l[c] = -INFINITY;
         }
         if (torques && isfinite(l[c])) l[c] += tilt(ps, c, in);
         top = fmax(top, l[c]);
@@ -144,12 +150,14 @@ static void responsibilities(const sk_hand_potential_solver *ps, const sk_hand_i
 }
 
 sk_result sk_hand_potential_solve(sk_hand_potential_solver *ps, const sk_hand_input *in,
-                                  double dofs[SK_HAND_DOF_COUNT], sk_hand_solve_info *info, double *resp_out,
-                                  sk_error *err)
+                                  double dofs[SK_HAND_DOF_COUNT], sk_hand_solve_info *info,
+                                  double *resp_out, sk_error *err)
 {
     double resp[M_MAX];
-    if (ps->m == 1) resp[0] = 1.0;
-    else responsibilities(ps, in, resp);
+    if (ps->m == 1)
+        resp[0] = 1.0;
+    else
+        responsibilities(ps, in, resp);
     int best = 0;
     for (int c = 1; c < ps->m; c++)
         if (resp[c] > resp[best]) best = c;

@@ -8,14 +8,17 @@
 
 #include "hand/scan_private.h"
 
-sk_result sk_hand_register_rigid(const sk_vec3d *from, const sk_vec3d *to, int count, sk_hand_rigid *out,
-                                 double *residual_mm, sk_error *err)
+sk_result sk_hand_register_rigid(const sk_vec3d *from, const sk_vec3d *to, int count,
+                                 sk_hand_rigid *out, double *residual_mm, sk_error *err)
 {
-    if (count < 3) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "registration needs 3 or more points (got %d)", count);
+    if (count < 3)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "registration needs 3 or more points (got %d)", count);
     sk_vec3d cf = {0, 0, 0}, ct = {0, 0, 0};
     for (int i = 0; i < count; i++) {
         if (!isfinite(from[i].x + from[i].y + from[i].z) || !isfinite(to[i].x + to[i].y + to[i].z))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "registration: point %d is not finite", i);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "registration: point %d is not finite",
+                           i);
         cf = sk_v3d_add(cf, from[i]);
         ct = sk_v3d_add(ct, to[i]);
     }
@@ -31,12 +34,16 @@ sk_result sk_hand_register_rigid(const sk_vec3d *from, const sk_vec3d *to, int c
         spread += sk_v3d_dot(a, a);
     }
     double s[3], u[9], vt[9], superb[2];
-    lapack_int info = LAPACKE_dgesvd(LAPACK_COL_MAJOR, 'A', 'A', 3, 3, h, 3, s, u, 3, vt, 3, superb);
-    if (info != 0) return sk_fail(err, SK_ERROR_NUMERIC, "registration: the SVD did not converge (%d)", (int)info);
+    lapack_int info =
+        LAPACKE_dgesvd(LAPACK_COL_MAJOR, 'A', 'A', 3, 3, h, 3, s, u, 3, vt, 3, superb);
+    if (info != 0)
+        return sk_fail(err, SK_ERROR_NUMERIC, "registration: the SVD did not converge (%d)",
+                       (int)info);
     /* the points must not lie on one line: the second singular value carries the rotation
        about that line */
     if (!(s[1] > 1e-12 * (spread > 0 ? spread : 1.0)))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "registration: the points are (nearly) on one line");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "registration: the points are (nearly) on one line");
     /* R = V D U^T; V = vt^T. Element (r, c) of M column-major is m[c * 3 + r]. */
     double uu[3][3], vv[3][3];
     for (int r = 0; r < 3; r++)
@@ -60,7 +67,8 @@ sk_result sk_hand_register_rigid(const sk_vec3d *from, const sk_vec3d *to, int c
         }
     t.translation = sk_v3d_sub(ct, sk_m3d_apply(t.rotation, cf));
     if (residual_mm)
-        for (int i = 0; i < count; i++) residual_mm[i] = sk_v3d_length(sk_v3d_sub(sk_hand_rigid_apply(&t, from[i]), to[i]));
+        for (int i = 0; i < count; i++)
+            residual_mm[i] = sk_v3d_length(sk_v3d_sub(sk_hand_rigid_apply(&t, from[i]), to[i]));
     *out = t;
     return SK_OK;
 }

@@ -25,19 +25,19 @@
 #include "hand/scan_private.h"
 
 typedef struct segment {
-    int group;               /* what joins across slices: a link, or a finger's phalanges */
-    int link;                /* the link whose frame fixes a ring's sample angles */
+    int group; /* what joins across slices: a link, or a finger's phalanges */
+    int link;  /* the link whose frame fixes a ring's sample angles */
     bool ring;
-    int first, count;        /* into the slice's unwrapped theta / r arrays */
+    int first, count; /* into the slice's unwrapped theta / r arrays */
     double theta_min, theta_max;
-    sk_vec3d centre;         /* polar centre in the slice plane */
-    int vertex;              /* first resampled vertex */
+    sk_vec3d centre; /* polar centre in the slice plane */
+    int vertex;      /* first resampled vertex */
 } segment;
 
 typedef struct slice_work {
     int segment_count;
     segment *segments;
-    double *theta, *r;       /* per point, grouped by segment, theta increasing (unwrapped) */
+    double *theta, *r; /* per point, grouped by segment, theta increasing (unwrapped) */
 } slice_work;
 
 typedef struct polar {
@@ -52,14 +52,15 @@ static int compare_polar(const void *a, const void *b)
 }
 
 /* Splits a group's points (sorted by angle in (-pi, pi]) into a ring or arcs. */
-static int make_segments(const polar *p, int n, int group, int link, sk_vec3d centre, bool phalanx, double arc_gap,
-                         slice_work *w, int *used, segment *out)
+static int make_segments(const polar *p, int n, int group, int link, sk_vec3d centre, bool phalanx,
+                         double arc_gap, slice_work *w, int *used, segment *out)
 {
     if (n < 2) return 0;
     int largest = n - 1;
     double largest_gap = p[0].theta + 2.0 * SK_PI - p[n - 1].theta;
     for (int k = 0; k + 1 < n; k++)
-        if (p[k + 1].theta - p[k].theta > largest_gap) largest_gap = p[k + 1].theta - p[k].theta, largest = k;
+        if (p[k + 1].theta - p[k].theta > largest_gap)
+            largest_gap = p[k + 1].theta - p[k].theta, largest = k;
     int start = (largest + 1) % n;
     double *th = w->theta + *used, *rr = w->r + *used;
     for (int j = 0; j < n; j++) {
@@ -75,7 +76,9 @@ static int make_segments(const polar *p, int n, int group, int link, sk_vec3d ce
         int a = 0;
         for (int j = 1; j <= n; j++) {
             if (j < n && th[j] - th[j - 1] <= arc_gap) continue;
-            if (j - a >= 2) out[count++] = (segment){group, link, false, *used + a, j - a, th[a], th[j - 1], centre, 0};
+            if (j - a >= 2)
+                out[count++] =
+                    (segment){group, link, false, *used + a, j - a, th[a], th[j - 1], centre, 0};
             a = j;
         }
     }
@@ -86,7 +89,8 @@ static int make_segments(const polar *p, int n, int group, int link, sk_vec3d ce
 /* The resampling groups of one slice: each palm link alone; a finger's phalanges together
  * (at a joint a slice's points fall to two links of the finger: resampled as one ring
  * about the link holding most of them, a finger is one tube from its base to its tip). */
-static void slice_segments(const sk_hand_slices *slices, int s, double arc_gap, polar *scratch, slice_work *w)
+static void slice_segments(const sk_hand_slices *slices, int s, double arc_gap, polar *scratch,
+                           slice_work *w)
 {
     size_t a = slices->first[s], b = slices->first[s + 1];
     int used = 0;
@@ -145,8 +149,10 @@ static double radius_at(const slice_work *w, const segment *s, double t)
     int lo = 0, hi = n - 1; /* th[lo] <= t < th[hi] */
     while (hi - lo > 1) {
         int mid = (lo + hi) / 2;
-        if (th[mid] <= t) lo = mid;
-        else hi = mid;
+        if (th[mid] <= t)
+            lo = mid;
+        else
+            hi = mid;
     }
     double span = th[hi] - th[lo];
     return span > 0 ? r[lo] + (r[hi] - r[lo]) * (t - th[lo]) / span : r[lo];
@@ -182,12 +188,13 @@ static const segment *matching_arc(const slice_work *w, const segment *a, double
 }
 
 /* Angles of the n samples of a segment (eq. 4.1, or the neighbours' version). */
-static void sample_angles(const slice_work *work, int s, int count, const segment *seg, sk_hand_resample_mode mode,
-                          double theta_ref, int n, double *out)
+static void sample_angles(const slice_work *work, int s, int count, const segment *seg,
+                          sk_hand_resample_mode mode, double theta_ref, int n, double *out)
 {
     if (seg->ring) {
         if (mode == SK_HAND_RESAMPLE_THESIS) {
-            for (int i = 0; i < n; i++) out[i] = seg->theta_min + (seg->theta_max - seg->theta_min) * i / n;
+            for (int i = 0; i < n; i++)
+                out[i] = seg->theta_min + (seg->theta_max - seg->theta_min) * i / n;
         } else {
             for (int i = 0; i < n; i++) out[i] = theta_ref + 2.0 * SK_PI * i / n;
         }
@@ -261,10 +268,11 @@ static int partners(const slice_work *next, const segment *seg, const segment **
 /* The vertices of `ring` whose angles lie within half a step of the arc's range, in order
  * of angle (brought next to the arc's). Two arcs are at least arc_gap_deg apart, wider
  * than a step (360 / n deg) at the defaults, so they never share a ring edge. */
-static int ring_portion(const segment *ring, const segment *arc, const double *angle, int n, uint32_t *out_v,
-                        double *out_a)
+static int ring_portion(const segment *ring, const segment *arc, const double *angle, int n,
+                        uint32_t *out_v, double *out_a)
 {
-    double lo = angle[arc->vertex], hi = angle[arc->vertex + n - 1], c = 0.5 * (lo + hi), step = SK_PI / n;
+    double lo = angle[arc->vertex], hi = angle[arc->vertex + n - 1], c = 0.5 * (lo + hi),
+           step = SK_PI / n;
     int m = 0;
     for (int i = 0; i < n; i++) {
         double a = c + sk_hand__wrap_angle(angle[ring->vertex + i] - c);
@@ -280,8 +288,8 @@ static int ring_portion(const segment *ring, const segment *arc, const double *a
 /* Triangles between two rows of vertices in order of angle, slice s (a) and s + 1 (b),
  * advancing along whichever row's next vertex comes first: p + q - 2 triangles, wound as
  * the ring-to-ring joins. */
-static size_t zipper(const uint32_t *a, const double *aa, int p, const uint32_t *b, const double *ba, int q,
-                     uint32_t *ix)
+static size_t zipper(const uint32_t *a, const double *aa, int p, const uint32_t *b,
+                     const double *ba, int q, uint32_t *ix)
 {
     size_t t = 0;
     int i = 0, j = 0;
@@ -307,7 +315,8 @@ static double vertex_distance(const float *P, int a, int b)
  * surface and not a strip per link (the thesis's mesh, Fig. 4.7). An end takes the other
  * link's nearest start within one sample spacing of its own arc, and only if that start
  * takes it back (never two bridges on one edge). Wound as the strips. */
-static size_t bridge_strips(const slice_work *w, const slice_work *next, int n, const float *P, uint32_t *ix)
+static size_t bridge_strips(const slice_work *w, const slice_work *next, int n, const float *P,
+                            uint32_t *ix)
 {
     size_t t = 0;
     for (int k = 0; k < w->segment_count; k++) {
@@ -328,13 +337,16 @@ static size_t bridge_strips(const slice_work *w, const slice_work *next, int n, 
         bool mutual = true;
         for (int j = 0; j < w->segment_count && mutual; j++) {
             const segment *c = &w->segments[j];
-            if (c == a || c->ring || c->group == b->group || c->group >= SK_HAND_LINK_COUNT) continue;
+            if (c == a || c->ring || c->group == b->group || c->group >= SK_HAND_LINK_COUNT)
+                continue;
             mutual = vertex_distance(P, c->vertex + n - 1, b->vertex) >= best;
         }
         double shift;
         const segment *a2 = matching_arc(next, a, &shift), *b2 = matching_arc(next, b, &shift);
-        if (!mutual || !a2 || !b2 || vertex_distance(P, a2->vertex + n - 1, b2->vertex) > reach) continue;
-        uint32_t a0 = (uint32_t)a_end, a1 = (uint32_t)b->vertex, b0 = (uint32_t)(a2->vertex + n - 1), b1 = (uint32_t)b2->vertex;
+        if (!mutual || !a2 || !b2 || vertex_distance(P, a2->vertex + n - 1, b2->vertex) > reach)
+            continue;
+        uint32_t a0 = (uint32_t)a_end, a1 = (uint32_t)b->vertex,
+                 b0 = (uint32_t)(a2->vertex + n - 1), b1 = (uint32_t)b2->vertex;
         ix[6 * (t / 2)] = a0, ix[6 * (t / 2) + 1] = b0, ix[6 * (t / 2) + 2] = a1;
         ix[6 * (t / 2) + 3] = a1, ix[6 * (t / 2) + 4] = b0, ix[6 * (t / 2) + 5] = b1;
         t += 2;
@@ -354,16 +366,18 @@ static void free_work(slice_work *work, int count)
 }
 
 sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geometry *links,
-                           const sk_hand_resample_desc *desc, sk_mesh *out, sk_hand_resample_stats *stats,
-                           sk_error *err)
+                           const sk_hand_resample_desc *desc, sk_mesh *out,
+                           sk_hand_resample_stats *stats, sk_error *err)
 {
     memset(out, 0, sizeof *out);
     sk_hand_resample_desc d = desc ? *desc : (sk_hand_resample_desc){0};
     if (d.mode == SK_HAND_RESAMPLE_DEFAULT) d.mode = SK_HAND_RESAMPLE_NEIGHBOURS;
     if (d.points_per_segment == 0) d.points_per_segment = 10;
     if (d.arc_gap_deg == 0) d.arc_gap_deg = 45;
-    sk_result r = sk_check_range_i(err, "resample.mode", d.mode, SK_HAND_RESAMPLE_NEIGHBOURS, SK_HAND_RESAMPLE_THESIS);
-    if (r == SK_OK) r = sk_check_range_i(err, "resample.points_per_segment", d.points_per_segment, 3, 256);
+    sk_result r = sk_check_range_i(err, "resample.mode", d.mode, SK_HAND_RESAMPLE_NEIGHBOURS,
+                                   SK_HAND_RESAMPLE_THESIS);
+    if (r == SK_OK)
+        r = sk_check_range_i(err, "resample.points_per_segment", d.points_per_segment, 3, 256);
     if (r == SK_OK) r = sk_check_range_f(err, "resample.arc_gap_deg", d.arc_gap_deg, 5, 180);
     if (r != SK_OK) return r;
     int count = slices->count, n = d.points_per_segment;
@@ -404,12 +418,14 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
     for (int s = 0; s + 1 < count; s++)
         for (int k = 0; k < work[s].segment_count; k++) {
             const segment *with[8];
-            triangles += 2 * (size_t)n * (size_t)partners(&work[s + 1], &work[s].segments[k], with, 8) + 2;
+            triangles +=
+                2 * (size_t)n * (size_t)partners(&work[s + 1], &work[s].segments[k], with, 8) + 2;
         }
     if (vertices == 0 || triangles == 0) {
         free_work(work, count);
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "resampling: no two consecutive slices share a link "
-                                                       "(too few points near the slices)");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "resampling: no two consecutive slices share a link "
+                       "(too few points near the slices)");
     }
     r = sk_mesh_create(out, vertices, triangles, SK_MESH_NORMALS, err);
     float *link_attr = NULL;
@@ -428,7 +444,8 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
         double angles[256];
         for (int k = 0; k < work[s].segment_count; k++) {
             const segment *seg = &work[s].segments[k];
-            sample_angles(work, s, count, seg, d.mode, theta_reference(links, seg->link), n, angles);
+            sample_angles(work, s, count, seg, d.mode, theta_reference(links, seg->link), n,
+                          angles);
             sk_vec3d c = seg->centre;
             for (int i = 0; i < n; i++) {
                 double rad = radius_at(&work[s], seg, angles[i]);
@@ -439,7 +456,9 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
                 out->positions[3 * v + 1] = (float)p.y;
                 out->positions[3 * v + 2] = (float)p.z;
                 /* a finger's ring: each vertex belongs to its nearest link */
-                link_attr[v] = (float)(seg->group >= SK_HAND_LINK_COUNT ? sk_hand_nearest_link(links, p, NULL) : seg->link);
+                link_attr[v] =
+                    (float)(seg->group >= SK_HAND_LINK_COUNT ? sk_hand_nearest_link(links, p, NULL)
+                                                             : seg->link);
             }
         }
     }
@@ -459,11 +478,13 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
             if (with[0]->ring != seg->ring) {
                 /* a ring and arcs: zip each arc to the part of the ring beside it */
                 for (int w = 0; w < np; w++) {
-                    const segment *ring = seg->ring ? seg : with[w], *arc = seg->ring ? with[w] : seg;
+                    const segment *ring = seg->ring ? seg : with[w],
+                                  *arc = seg->ring ? with[w] : seg;
                     uint32_t rv[256], av[256];
                     double ra[256], aa[256];
                     int pr = ring_portion(ring, arc, angle_of, n, rv, ra);
-                    for (int i = 0; i < n; i++) av[i] = (uint32_t)(arc->vertex + i), aa[i] = angle_of[arc->vertex + i];
+                    for (int i = 0; i < n; i++)
+                        av[i] = (uint32_t)(arc->vertex + i), aa[i] = angle_of[arc->vertex + i];
                     if (pr < 2) continue;
                     t += seg->ring ? zipper(rv, ra, pr, av, aa, n, out->indices + 3 * t)
                                    : zipper(av, aa, n, rv, ra, pr, out->indices + 3 * t);
@@ -473,7 +494,8 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
             const segment *m = with[0];
             int quads = seg->ring ? n : n - 1;
             for (int i = 0; i < quads; i++) {
-                uint32_t a0 = (uint32_t)(seg->vertex + i), a1 = (uint32_t)(seg->vertex + (i + 1) % n);
+                uint32_t a0 = (uint32_t)(seg->vertex + i),
+                         a1 = (uint32_t)(seg->vertex + (i + 1) % n);
                 uint32_t b0 = (uint32_t)(m->vertex + i), b1 = (uint32_t)(m->vertex + (i + 1) % n);
                 uint32_t *ix = out->indices + 3 * t;
                 ix[0] = a0, ix[1] = b0, ix[2] = a1;
@@ -493,7 +515,8 @@ sk_result sk_hand_resample(const sk_hand_slices *slices, const sk_hand_link_geom
             }
         }
     /* pass 4: the strips of neighbouring palm links bridged where they meet */
-    for (int s = 0; s + 1 < count; s++) t += bridge_strips(&work[s], &work[s + 1], n, out->positions, out->indices + 3 * t);
+    for (int s = 0; s + 1 < count; s++)
+        t += bridge_strips(&work[s], &work[s + 1], n, out->positions, out->indices + 3 * t);
     free_work(work, count);
     free(angle_of);
     out->triangle_count = t;

@@ -101,8 +101,9 @@ static sk_result check_listed_columns(const char *list, char (*header)[128], int
         for (int c = 0; c < ncol && !found; c++)
             found = strlen(header[c]) == m && strncmp(header[c], item, m) == 0;
         if (!found)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s \"%.*s\" is not a column of the header",
-                           what, (int)(m < 64 ? m : 64), item);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "%s \"%.*s\" is not a column of the header", what,
+                           (int)(m < 64 ? m : 64), item);
     }
     return SK_OK;
 }
@@ -127,7 +128,8 @@ static void check_units(sk_hand_samples *out, sk_hand_angle_unit units)
     if (units == SK_HAND_UNIT_RAD) out->units_suspect = max_abs > 2.0 * SK_PI;
     /* read as degrees: every value within +-3.2 deg while something moves by more than a
        hundredth of that is a recording in radians */
-    else out->units_suspect = max_abs <= 3.2 * SK_DEG_TO_RAD && max_range > 0.03 * SK_DEG_TO_RAD;
+    else
+        out->units_suspect = max_abs <= 3.2 * SK_DEG_TO_RAD && max_range > 0.03 * SK_DEG_TO_RAD;
 }
 
 sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char *name,
@@ -139,9 +141,11 @@ sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char
     if (desc) d = *desc;
     if (d.units == SK_HAND_UNIT_DEFAULT) d.units = SK_HAND_UNIT_DEG;
     if (d.units != SK_HAND_UNIT_DEG && d.units != SK_HAND_UNIT_RAD)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "units = %d is not deg or rad", (int)d.units);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "units = %d is not deg or rad",
+                       (int)d.units);
     if (d.group_column && (!d.group_column[0] || strlen(d.group_column) > 127))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "group column name must have 1 to 127 characters");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "group column name must have 1 to 127 characters");
     int col_dof[MAX_COLUMNS];
     char(*header)[128] = calloc(MAX_COLUMNS, sizeof *header);
     if (!header) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
@@ -165,18 +169,20 @@ sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char
             while (more && r == SK_OK) {
                 q = next_field(q, eol, field, sizeof field, &more, &too_long);
                 if (ncol >= MAX_COLUMNS) {
-                    r = sk_fail(err, SK_ERROR_LIMIT, "line %d: more than %d columns", line_no, MAX_COLUMNS);
+                    r = sk_fail(err, SK_ERROR_LIMIT, "line %d: more than %d columns", line_no,
+                                MAX_COLUMNS);
                     break;
                 }
                 if (too_long) {
-                    r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d: header name longer than %d characters",
+                    r = sk_fail(err, SK_ERROR_PARSE,
+                                "line %d, column %d: header name longer than %d characters",
                                 line_no, ncol + 1, (int)sizeof field - 1);
                     break;
                 }
                 for (int c = 0; c < ncol && r == SK_OK; c++)
                     if (strcmp(header[c], field) == 0)
-                        r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d: \"%s\" appears twice", line_no,
-                                    ncol + 1, field);
+                        r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d: \"%s\" appears twice",
+                                    line_no, ncol + 1, field);
                 if (r != SK_OK) break;
                 snprintf(header[ncol], sizeof header[0], "%s", field);
                 int dof = COL_IGNORED;
@@ -187,10 +193,11 @@ sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char
                            !in_list(d.ignore_columns, field)) {
                     dof = sk_hand_dof_find(field);
                     if (dof < 0) {
-                        r = sk_fail(err, SK_ERROR_PARSE,
-                                    "line %d, column %d: unknown DOF \"%s\" (names like \"L.MCP.flex\"; "
-                                    "\"frame\" and \"time\" are ignored, others with --ignore-columns)",
-                                    line_no, ncol + 1, field);
+                        r = sk_fail(
+                            err, SK_ERROR_PARSE,
+                            "line %d, column %d: unknown DOF \"%s\" (names like \"L.MCP.flex\"; "
+                            "\"frame\" and \"time\" are ignored, others with --ignore-columns)",
+                            line_no, ncol + 1, field);
                         break;
                     }
                     out->present[dof] = true;
@@ -198,13 +205,16 @@ sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char
                 col_dof[ncol++] = dof;
             }
             if (r == SK_OK && want_group && !group_found)
-                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "group column \"%s\" is not in the header",
-                            d.group_column);
-            if (r == SK_OK) r = check_listed_columns(d.ignore_columns, header, ncol, "ignored column", err);
+                r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                            "group column \"%s\" is not in the header", d.group_column);
+            if (r == SK_OK)
+                r = check_listed_columns(d.ignore_columns, header, ncol, "ignored column", err);
             if (r == SK_OK) {
                 bool any = false;
                 for (int dof = 0; dof < SK_HAND_DOF_COUNT; dof++) any |= out->present[dof];
-                if (!any) r = sk_fail(err, SK_ERROR_PARSE, "line %d: no DOF columns in the header", line_no);
+                if (!any)
+                    r = sk_fail(err, SK_ERROR_PARSE, "line %d: no DOF columns in the header",
+                                line_no);
             }
             if (r != SK_OK) break;
             continue;
@@ -218,13 +228,17 @@ sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char
             for (int dof = 0; dof < SK_HAND_DOF_COUNT && r == SK_OK; dof++) {
                 if (!out->present[dof]) continue;
                 double *grown = realloc(out->column[dof], (size_t)ncap * sizeof(double));
-                if (!grown) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
-                else out->column[dof] = grown;
+                if (!grown)
+                    r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+                else
+                    out->column[dof] = grown;
             }
             if (r == SK_OK && want_group) {
                 int *grown = realloc(out->group, (size_t)ncap * sizeof(int));
-                if (!grown) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
-                else out->group = grown;
+                if (!grown)
+                    r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+                else
+                    out->group = grown;
             }
             cap = ncap;
             if (r != SK_OK) break;
@@ -233,12 +247,14 @@ sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char
         while (more && r == SK_OK) {
             q = next_field(q, eol, field, sizeof field, &more, &too_long);
             if (c >= ncol) {
-                r = sk_fail(err, SK_ERROR_PARSE, "line %d: more than the header's %d fields", line_no, ncol);
+                r = sk_fail(err, SK_ERROR_PARSE, "line %d: more than the header's %d fields",
+                            line_no, ncol);
                 break;
             }
             if (col_dof[c] == COL_GROUP) {
                 if (field[0] == '\0' || too_long || strlen(field) > 63) {
-                    r = sk_fail(err, SK_ERROR_PARSE, "line %d, column %d (%s): a group value needs 1 to 63 characters",
+                    r = sk_fail(err, SK_ERROR_PARSE,
+                                "line %d, column %d (%s): a group value needs 1 to 63 characters",
                                 line_no, c + 1, header[c]);
                     break;
                 }
@@ -256,8 +272,8 @@ sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char
             if (too_long || field[0] == '\0' || *stop != '\0' || errno == ERANGE || !isfinite(v) ||
                 fabs(v) > 1e6) {
                 r = sk_fail(err, SK_ERROR_PARSE,
-                            "line %d, column %d (%s): \"%.40s\" is not a number in [-1e6, 1e6]", line_no, c + 1,
-                            header[c], field);
+                            "line %d, column %d (%s): \"%.40s\" is not a number in [-1e6, 1e6]",
+                            line_no, c + 1, header[c], field);
                 break;
             }
             int dof = col_dof[c];
@@ -268,12 +284,14 @@ sk_result sk_hand_samples_parse_desc(const char *text, size_t length, const char
             c++;
         }
         if (r == SK_OK && c != ncol)
-            r = sk_fail(err, SK_ERROR_PARSE, "line %d: %d fields, the header has %d", line_no, c, ncol);
+            r = sk_fail(err, SK_ERROR_PARSE, "line %d: %d fields, the header has %d", line_no, c,
+                        ncol);
         if (r == SK_OK) out->count++;
     }
     free(header);
     if (r == SK_OK && !have_header) r = sk_fail(err, SK_ERROR_PARSE, "no header line of DOF names");
-    if (r == SK_OK && out->count == 0) r = sk_fail(err, SK_ERROR_PARSE, "no samples after the header");
+    if (r == SK_OK && out->count == 0)
+        r = sk_fail(err, SK_ERROR_PARSE, "no samples after the header");
     if (r == SK_OK) check_units(out, d.units);
     if (r != SK_OK) {
         sk_hand_samples_free(out);
@@ -315,19 +333,25 @@ sk_result sk_hand_parse_pairs(const char *text, int (*pairs)[2], int max_pairs, 
         const char *comma = strchr(p, ',');
         size_t n = comma ? (size_t)(comma - p) : strlen(p);
         char item[140];
-        if (n >= sizeof item) return sk_fail(err, SK_ERROR_PARSE, "pair \"%.40s...\" is too long", p);
+        if (n >= sizeof item)
+            return sk_fail(err, SK_ERROR_PARSE, "pair \"%.40s...\" is too long", p);
         memcpy(item, p, n);
         item[n] = '\0';
         char *colon = strchr(item, ':');
         if (!colon) return sk_fail(err, SK_ERROR_PARSE, "pair \"%s\": expected DOF:DOF", item);
         *colon = '\0';
         int x = sk_hand_dof_find(item), y = sk_hand_dof_find(colon + 1);
-        if (x < 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair \"%s:%s\": unknown DOF \"%s\"", item, colon + 1, item);
+        if (x < 0)
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair \"%s:%s\": unknown DOF \"%s\"",
+                           item, colon + 1, item);
         if (y < 0)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair \"%s:%s\": unknown DOF \"%s\"", item,
-                           colon + 1, colon + 1);
-        if (x == y) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair \"%s:%s\": same DOF twice", item, colon + 1);
-        if (*count >= max_pairs) return sk_fail(err, SK_ERROR_LIMIT, "more than %d pairs", max_pairs);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair \"%s:%s\": unknown DOF \"%s\"",
+                           item, colon + 1, colon + 1);
+        if (x == y)
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pair \"%s:%s\": same DOF twice", item,
+                           colon + 1);
+        if (*count >= max_pairs)
+            return sk_fail(err, SK_ERROR_LIMIT, "more than %d pairs", max_pairs);
         pairs[*count][0] = x;
         pairs[*count][1] = y;
         (*count)++;

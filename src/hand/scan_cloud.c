@@ -17,7 +17,8 @@ static sk_result grow(sk_hand_cloud *c, size_t count, bool with_truth, sk_error 
         t = realloc(c->true_position, sizeof *t * (count ? count : 1));
         if (t) c->true_position = t;
     }
-    if (!p || !s || (with_truth && !t)) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "point cloud of %zu points", count);
+    if (!p || !s || (with_truth && !t))
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "point cloud of %zu points", count);
     return SK_OK;
 }
 
@@ -46,7 +47,9 @@ static bool on_marker(const sk_hand_range_scan *scan, const sk_hand_markers *m, 
     if (!m) return false;
     double keep_out = m->radius_mm + 0.5;
     for (int k = 0; k < m->count; k++)
-        if (sk_hand__dist2(p, sk_hand_rigid_apply(&scan->placement, m->centre[k])) < keep_out * keep_out) return true;
+        if (sk_hand__dist2(p, sk_hand_rigid_apply(&scan->placement, m->centre[k])) <
+            keep_out * keep_out)
+            return true;
     return false;
 }
 
@@ -57,7 +60,8 @@ sk_result sk_hand_cloud_append_scan(sk_hand_cloud *cloud, const sk_hand_range_sc
     bool with_truth = cloud->count == 0 || cloud->true_position;
     size_t extra = 0;
     size_t n = (size_t)scan->lines * (size_t)scan->points;
-    for (size_t k = 0; k < n; k++) extra += isfinite(scan->depth[k]) && scan->depth[k] >= scan->table_threshold_mm;
+    for (size_t k = 0; k < n; k++)
+        extra += isfinite(scan->depth[k]) && scan->depth[k] >= scan->table_threshold_mm;
     sk_result r = grow(cloud, cloud->count + extra, with_truth, err);
     if (r != SK_OK) return r;
     const sk_hand_rigid *truth = truth_to_hand ? truth_to_hand : to_hand;
@@ -71,8 +75,8 @@ sk_result sk_hand_cloud_append_scan(sk_hand_cloud *cloud, const sk_hand_range_sc
             if (on_marker(scan, markers, p)) continue;
             cloud->position[out] = sk_hand_rigid_apply(to_hand, p);
             if (with_truth)
-                cloud->true_position[out] =
-                    sk_hand_rigid_apply(truth, sk_hand_range_scan_point(scan, i, j, scan->true_depth[k]));
+                cloud->true_position[out] = sk_hand_rigid_apply(
+                    truth, sk_hand_range_scan_point(scan, i, j, scan->true_depth[k]));
             cloud->side[out] = (uint8_t)scan->side;
             out++;
         }
@@ -80,18 +84,21 @@ sk_result sk_hand_cloud_append_scan(sk_hand_cloud *cloud, const sk_hand_range_sc
     return SK_OK;
 }
 
-sk_result sk_hand_cloud_from_points(sk_hand_cloud *cloud, const sk_mesh *points, const sk_hand_frames *frames,
-                                    sk_error *err)
+sk_result sk_hand_cloud_from_points(sk_hand_cloud *cloud, const sk_mesh *points,
+                                    const sk_hand_frames *frames, sk_error *err)
 {
     memset(cloud, 0, sizeof *cloud);
-    if (points->vertex_count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the point cloud is empty");
+    if (points->vertex_count == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the point cloud is empty");
     if (points->vertex_count > (1u << 26))
-        return sk_fail(err, SK_ERROR_LIMIT, "the point cloud has %zu points (at most 2^26)", points->vertex_count);
+        return sk_fail(err, SK_ERROR_LIMIT, "the point cloud has %zu points (at most 2^26)",
+                       points->vertex_count);
     sk_result r = sk_hand_cloud_alloc(cloud, points->vertex_count, false, err);
     if (r != SK_OK) return r;
     sk_hand_link_geometry links;
     sk_hand_link_geometry_from_frames(frames, &links);
-    sk_vec3d palmar = {frames->rotation[0].m[0][2], frames->rotation[0].m[1][2], frames->rotation[0].m[2][2]};
+    sk_vec3d palmar = {frames->rotation[0].m[0][2], frames->rotation[0].m[1][2],
+                       frames->rotation[0].m[2][2]};
     /* a cloud written by sk_hand_cloud_write_ply says its sides */
     const sk_mesh_attribute *given = sk_mesh_find_attribute(points, "side");
     if (given && given->components != 1) given = NULL;

@@ -70,22 +70,28 @@ static cJSON *thesis_entry(double mean, double max)
 sk_result sk_hand_table41_write_json(const sk_hand_table41 *t, const char *path, sk_error *err)
 {
     cJSON *root = cJSON_CreateObject();
-    cJSON_AddStringToObject(root, "description",
-                            "Fitting error of the 96 bicubic Bezier patches in the form of Table 4.1 of Yasumuro's "
-                            "thesis (2000, sec. 4.1.4): mean and largest distance of the fitted points to the nearest "
-                            "facet of a 100 x 100 split of their patch, palm and back, in mm");
+    cJSON_AddStringToObject(
+        root, "description",
+        "Fitting error of the 96 bicubic Bezier patches in the form of Table 4.1 of Yasumuro's "
+        "thesis (2000, sec. 4.1.4): mean and largest distance of the fitted points to the nearest "
+        "facet of a 100 x 100 split of their patch, palm and back, in mm");
     cJSON *thesis = cJSON_AddObjectToObject(root, "thesis");
-    cJSON_AddItemToObject(thesis, "palm", thesis_entry(SK_HAND_THESIS_PALM_MEAN_MM, SK_HAND_THESIS_PALM_MAX_MM));
-    cJSON_AddItemToObject(thesis, "back", thesis_entry(SK_HAND_THESIS_BACK_MEAN_MM, SK_HAND_THESIS_BACK_MAX_MM));
+    cJSON_AddItemToObject(thesis, "palm",
+                          thesis_entry(SK_HAND_THESIS_PALM_MEAN_MM, SK_HAND_THESIS_PALM_MAX_MM));
+    cJSON_AddItemToObject(thesis, "back",
+                          thesis_entry(SK_HAND_THESIS_BACK_MEAN_MM, SK_HAND_THESIS_BACK_MAX_MM));
     cJSON_AddItemToObject(thesis, "all", thesis_entry(SK_HAND_THESIS_ALL_MEAN_MM, 0));
     cJSON *scan = cJSON_AddObjectToObject(root, "scan");
-    cJSON_AddStringToObject(scan, "points", "the scanned, registered points the patches were fitted to");
-    for (int s = 0; s < SK_HAND_SCAN_SIDE_COUNT; s++) cJSON_AddItemToObject(scan, side_names[s], error_entry(&t->scan[s]));
+    cJSON_AddStringToObject(scan, "points",
+                            "the scanned, registered points the patches were fitted to");
+    for (int s = 0; s < SK_HAND_SCAN_SIDE_COUNT; s++)
+        cJSON_AddItemToObject(scan, side_names[s], error_entry(&t->scan[s]));
     cJSON_AddItemToObject(scan, "all", error_entry(&t->scan_all));
     if (t->has_truth) {
         cJSON *truth = cJSON_AddObjectToObject(root, "truth");
-        cJSON_AddStringToObject(truth, "points", "the true surface points those samples measured (before noise and "
-                                                 "quantisation, with the exact registration)");
+        cJSON_AddStringToObject(truth, "points",
+                                "the true surface points those samples measured (before noise and "
+                                "quantisation, with the exact registration)");
         for (int s = 0; s < SK_HAND_SCAN_SIDE_COUNT; s++)
             cJSON_AddItemToObject(truth, side_names[s], error_entry(&t->truth[s]));
         cJSON_AddItemToObject(truth, "all", error_entry(&t->truth_all));
@@ -93,7 +99,8 @@ sk_result sk_hand_table41_write_json(const sk_hand_table41 *t, const char *path,
         cJSON_AddNullToObject(root, "truth");
     }
     cJSON *fitted = cJSON_AddObjectToObject(root, "patches_fitted");
-    for (int s = 0; s < SK_HAND_SCAN_SIDE_COUNT; s++) cJSON_AddNumberToObject(fitted, side_names[s], t->patches_fitted[s]);
+    for (int s = 0; s < SK_HAND_SCAN_SIDE_COUNT; s++)
+        cJSON_AddNumberToObject(fitted, side_names[s], t->patches_fitted[s]);
     return write_json(root, path, err);
 }
 
@@ -102,10 +109,12 @@ sk_result sk_hand_table41_write_text(const sk_hand_table41 *t, const char *path,
     char text[4096];
     size_t n = 0;
 #define OUT(...) n += (size_t)snprintf(text + n, sizeof text - n, __VA_ARGS__)
-    OUT("Table 4.1  Fitting error of the Bezier patches [mm]: distance of each fitted point to the\n"
-        "nearest facet of its patch split 100 x 100 (Yasumuro 2000, sec. 4.1.4, beside this run)\n\n");
-    OUT("%-6s %12s %12s   %12s %12s   %12s %12s   %8s\n", "side", "thesis mean", "thesis max", "scan mean", "scan max",
-        "truth mean", "truth max", "points");
+    OUT("Table 4.1  Fitting error of the Bezier patches [mm]: distance of each fitted point to "
+        "the\n"
+        "nearest facet of its patch split 100 x 100 (Yasumuro 2000, sec. 4.1.4, beside this "
+        "run)\n\n");
+    OUT("%-6s %12s %12s   %12s %12s   %12s %12s   %8s\n", "side", "thesis mean", "thesis max",
+        "scan mean", "scan max", "truth mean", "truth max", "points");
     static const double thesis[3][2] = {{SK_HAND_THESIS_PALM_MEAN_MM, SK_HAND_THESIS_PALM_MAX_MM},
                                         {SK_HAND_THESIS_BACK_MEAN_MM, SK_HAND_THESIS_BACK_MAX_MM},
                                         {SK_HAND_THESIS_ALL_MEAN_MM, 0}};
@@ -118,10 +127,14 @@ sk_result sk_hand_table41_write_text(const sk_hand_table41 *t, const char *path,
             snprintf(truth_mean, sizeof truth_mean, "%.3g", tr->mean_mm);
             snprintf(truth_max, sizeof truth_max, "%.3g", tr->max_mm);
         }
-        OUT("%-6s %12.2g %12s   %12.3g %12.3g   %12s %12s   %8zu\n", row == 0 ? "palm" : row == 1 ? "back" : "all",
+        OUT("%-6s %12.2g %12s   %12.3g %12.3g   %12s %12s   %8zu\n",
+            row == 0   ? "palm"
+            : row == 1 ? "back"
+                       : "all",
             thesis[row][0], tmax, s->mean_mm, s->max_mm, truth_mean, truth_max, s->points);
     }
-    OUT("\npatches fitted: %d palm, %d back (of 48 each)\n", t->patches_fitted[0], t->patches_fitted[1]);
+    OUT("\npatches fitted: %d palm, %d back (of 48 each)\n", t->patches_fitted[0],
+        t->patches_fitted[1]);
     if (t->scan_all.worst_patch >= 0) OUT("largest error: patch %d\n", t->scan_all.worst_patch);
     if (!t->has_truth) OUT("truth: not known for a point cloud given as input\n");
 #undef OUT
@@ -132,19 +145,23 @@ static cJSON *rigid_json(const sk_hand_rigid *t)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON *rot = cJSON_AddArrayToObject(o, "rotation");
-    for (int r = 0; r < 3; r++) cJSON_AddItemToArray(rot, vec3(sk_v3d(t->rotation.m[r][0], t->rotation.m[r][1], t->rotation.m[r][2])));
+    for (int r = 0; r < 3; r++)
+        cJSON_AddItemToArray(
+            rot, vec3(sk_v3d(t->rotation.m[r][0], t->rotation.m[r][1], t->rotation.m[r][2])));
     cJSON_AddItemToObject(o, "translation_mm", vec3(t->translation));
     return o;
 }
 
-sk_result sk_hand_registration_write_json(const sk_hand_registration *reg, const sk_hand_markers *markers,
-                                          const char *path, sk_error *err)
+sk_result sk_hand_registration_write_json(const sk_hand_registration *reg,
+                                          const sk_hand_markers *markers, const char *path,
+                                          sk_error *err)
 {
     cJSON *root = cJSON_CreateObject();
-    cJSON_AddStringToObject(root, "description",
-                            "Registration of the back scan onto the palm scan by least squares on the 9 markers "
-                            "(Yasumuro 2000, sec. 4.1.1): a rigid transform back-scanner frame -> palm-scanner frame, "
-                            "x' = R x + t (rows of R), and each marker's residual after it");
+    cJSON_AddStringToObject(
+        root, "description",
+        "Registration of the back scan onto the palm scan by least squares on the 9 markers "
+        "(Yasumuro 2000, sec. 4.1.1): a rigid transform back-scanner frame -> palm-scanner frame, "
+        "x' = R x + t (rows of R), and each marker's residual after it");
     cJSON *list = cJSON_AddArrayToObject(root, "markers");
     for (int k = 0; k < markers->count; k++) {
         cJSON *m = cJSON_CreateObject();
@@ -169,10 +186,12 @@ sk_result sk_hand_registration_write_json(const sk_hand_registration *reg, const
 sk_result sk_hand_patches_write_json(const sk_hand_patch_set *set, const char *path, sk_error *err)
 {
     cJSON *root = cJSON_CreateObject();
-    cJSON_AddStringToObject(root, "description",
-                            "Bicubic Bezier patches fitted to the scan (Yasumuro 2000, sec. 4.1.4): Q(u, v) = sum "
-                            "B_i(u) B_j(v) P_ij with the cubic Bernstein basis; control_points_mm lists P_00, P_01, .., "
-                            "P_03, P_10, .., P_33 (i along u, about the link; j along v, along the link), hand frame");
+    cJSON_AddStringToObject(
+        root, "description",
+        "Bicubic Bezier patches fitted to the scan (Yasumuro 2000, sec. 4.1.4): Q(u, v) = sum "
+        "B_i(u) B_j(v) P_ij with the cubic Bernstein basis; control_points_mm lists P_00, P_01, "
+        ".., "
+        "P_03, P_10, .., P_33 (i along u, about the link; j along v, along the link), hand frame");
     cJSON_AddStringToObject(root, "unit", "mm");
     cJSON *list = cJSON_AddArrayToObject(root, "patches");
     for (int k = 0; k < set->count; k++) {
@@ -207,7 +226,8 @@ sk_result sk_hand_patches_write_json(const sk_hand_patch_set *set, const char *p
     return write_json(root, path, err);
 }
 
-sk_result sk_hand_patches_tessellate(const sk_hand_patch *patches, int count, int n, sk_mesh *out, sk_error *err)
+sk_result sk_hand_patches_tessellate(const sk_hand_patch *patches, int count, int n, sk_mesh *out,
+                                     sk_error *err)
 {
     memset(out, 0, sizeof *out);
     if (n == 0) n = 16;
@@ -215,7 +235,8 @@ sk_result sk_hand_patches_tessellate(const sk_hand_patch *patches, int count, in
     if (r == SK_OK) r = sk_check_range_i(err, "patch count", count, 1, 1 << 20);
     if (r != SK_OK) return r;
     size_t per_v = (size_t)(n + 1) * (size_t)(n + 1), per_t = 2 * (size_t)n * (size_t)n;
-    r = sk_mesh_create(out, per_v * (size_t)count, per_t * (size_t)count, SK_MESH_NORMALS | SK_MESH_UVS, err);
+    r = sk_mesh_create(out, per_v * (size_t)count, per_t * (size_t)count,
+                       SK_MESH_NORMALS | SK_MESH_UVS, err);
     float *attr = NULL;
     if (r == SK_OK) r = sk_mesh_add_attribute(out, "patch", 1, &attr, err);
     if (r != SK_OK) {
@@ -231,8 +252,10 @@ sk_result sk_hand_patches_tessellate(const sk_hand_patch *patches, int count, in
                 sk_vec3d du, dw;
                 sk_vec3d p = sk_hand_patch_eval(&patches[k], u, w, &du, &dw);
                 sk_vec3d nn = sk_v3d_normalize(sk_v3d_cross(du, dw));
-                out->positions[3 * v] = (float)p.x, out->positions[3 * v + 1] = (float)p.y, out->positions[3 * v + 2] = (float)p.z;
-                out->normals[3 * v] = (float)nn.x, out->normals[3 * v + 1] = (float)nn.y, out->normals[3 * v + 2] = (float)nn.z;
+                out->positions[3 * v] = (float)p.x, out->positions[3 * v + 1] = (float)p.y,
+                                   out->positions[3 * v + 2] = (float)p.z;
+                out->normals[3 * v] = (float)nn.x, out->normals[3 * v + 1] = (float)nn.y,
+                                 out->normals[3 * v + 2] = (float)nn.z;
                 if (sk_v3d_length(nn) == 0) out->normals[3 * v + 2] = 1.0f;
                 out->uvs[2 * v] = (float)u, out->uvs[2 * v + 1] = (float)w;
                 attr[v] = (float)k;
@@ -240,7 +263,8 @@ sk_result sk_hand_patches_tessellate(const sk_hand_patch *patches, int count, in
         size_t t0 = per_t * (size_t)k;
         for (int a = 0; a < n; a++)
             for (int b = 0; b < n; b++) {
-                uint32_t i00 = (uint32_t)(v0 + (size_t)a * (size_t)(n + 1) + (size_t)b), i10 = i00 + (uint32_t)(n + 1);
+                uint32_t i00 = (uint32_t)(v0 + (size_t)a * (size_t)(n + 1) + (size_t)b),
+                         i10 = i00 + (uint32_t)(n + 1);
                 uint32_t *ix = out->indices + 3 * (t0 + 2 * ((size_t)a * (size_t)n + (size_t)b));
                 ix[0] = i00, ix[1] = i10, ix[2] = i10 + 1;
                 ix[3] = i00, ix[4] = i10 + 1, ix[5] = i00 + 1;

@@ -17,12 +17,14 @@ static void report(const sk_progress *p, double f)
 static sk_result register_scans(sk_hand_scan_result *out, sk_error *err)
 {
     sk_hand_registration *reg = &out->registration;
-    sk_result r = sk_hand_markers_locate(&out->scan[SK_HAND_SCAN_PALM], &out->markers, reg->palm_centre, reg->palm_used, err);
+    sk_result r = sk_hand_markers_locate(&out->scan[SK_HAND_SCAN_PALM], &out->markers,
+                                         reg->palm_centre, reg->palm_used, err);
     if (r == SK_OK)
-        r = sk_hand_markers_locate(&out->scan[SK_HAND_SCAN_BACK], &out->markers, reg->back_centre, reg->back_used, err);
+        r = sk_hand_markers_locate(&out->scan[SK_HAND_SCAN_BACK], &out->markers, reg->back_centre,
+                                   reg->back_used, err);
     if (r == SK_OK)
-        r = sk_hand_register_rigid(reg->back_centre, reg->palm_centre, out->markers.count, &reg->back_to_palm,
-                                   reg->residual_mm, err);
+        r = sk_hand_register_rigid(reg->back_centre, reg->palm_centre, out->markers.count,
+                                   &reg->back_to_palm, reg->residual_mm, err);
     if (r != SK_OK) return r;
     double sum = 0.0;
     for (int k = 0; k < out->markers.count; k++) sum += reg->residual_mm[k] * reg->residual_mm[k];
@@ -30,12 +32,14 @@ static sk_result register_scans(sk_hand_scan_result *out, sk_error *err)
     sk_hand_rigid back_inv = sk_hand_rigid_inverse(&out->scan[SK_HAND_SCAN_BACK].placement);
     reg->truth = sk_hand_rigid_compose(&out->scan[SK_HAND_SCAN_PALM].placement, &back_inv);
     reg->has_truth = true;
-    sk_hand_rigid_difference(&reg->back_to_palm, &reg->truth, &reg->rotation_error_deg, &reg->translation_error_mm);
+    sk_hand_rigid_difference(&reg->back_to_palm, &reg->truth, &reg->rotation_error_deg,
+                             &reg->translation_error_mm);
     return SK_OK;
 }
 
-static sk_result scan_and_merge(const sk_hand_scan_input *in, const sk_hand_scan_desc *d, sk_hand_scan_result *out,
-                                const sk_progress *progress, sk_error *err)
+static sk_result scan_and_merge(const sk_hand_scan_input *in, const sk_hand_scan_desc *d,
+                                sk_hand_scan_result *out, const sk_progress *progress,
+                                sk_error *err)
 {
     double t0 = sk_time_seconds();
     /* bumps of 2.5 mm, larger if the scanner samples more coarsely than 1/3 of that */
@@ -44,19 +48,21 @@ static sk_result scan_and_merge(const sk_hand_scan_input *in, const sk_hand_scan
     if (radius == 0) {
         radius = fmax(2.5, 3.0 * fmax(sr.size_x_mm / sr.lines, sr.size_y_mm / sr.points));
         if (radius > 10 * (1 + 1e-9))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "scanner.lines = %d, scanner.points = %d: too coarse for the markers (3 sample spacings "
-                           "= %.3g mm, beyond their 10 mm); at least %d lines and %d points over %g x %g mm",
-                           sr.lines, sr.points, radius, (int)ceil(0.3 * sr.size_x_mm), (int)ceil(0.3 * sr.size_y_mm),
-                           sr.size_x_mm, sr.size_y_mm);
+            return sk_fail(
+                err, SK_ERROR_INVALID_ARGUMENT,
+                "scanner.lines = %d, scanner.points = %d: too coarse for the markers (3 sample "
+                "spacings "
+                "= %.3g mm, beyond their 10 mm); at least %d lines and %d points over %g x %g mm",
+                sr.lines, sr.points, radius, (int)ceil(0.3 * sr.size_x_mm),
+                (int)ceil(0.3 * sr.size_y_mm), sr.size_x_mm, sr.size_y_mm);
         radius = fmin(radius, 10);
     }
     sk_result r = sk_hand_markers_place(in->target, &out->frames, radius, &out->markers, err);
     sk_hand_rigid placement[SK_HAND_SCAN_SIDE_COUNT];
     if (r == SK_OK) r = sk_hand_scan_placements(in->target, &d->scanner, placement, err);
     for (int side = 0; side < SK_HAND_SCAN_SIDE_COUNT && r == SK_OK; side++) {
-        r = sk_hand_scan_simulate(in->target, &out->markers, (sk_hand_scan_side)side, &placement[side], &d->scanner,
-                                  d->seed, &out->scan[side], err);
+        r = sk_hand_scan_simulate(in->target, &out->markers, (sk_hand_scan_side)side,
+                                  &placement[side], &d->scanner, d->seed, &out->scan[side], err);
         report(progress, 0.15 * (side + 1));
     }
     if (r != SK_OK) return r;
@@ -68,14 +74,16 @@ static sk_result scan_and_merge(const sk_hand_scan_input *in, const sk_hand_scan
     /* the merged data in the palm scan's frame, then in the hand's: the skeleton is
        placed in it exactly where the cast lay (the thesis placed it by hand) */
     sk_hand_rigid palm_to_hand = sk_hand_rigid_inverse(&placement[SK_HAND_SCAN_PALM]);
-    sk_hand_rigid back_to_hand = sk_hand_rigid_compose(&palm_to_hand, &out->registration.back_to_palm);
+    sk_hand_rigid back_to_hand =
+        sk_hand_rigid_compose(&palm_to_hand, &out->registration.back_to_palm);
     sk_hand_rigid back_truth = sk_hand_rigid_inverse(&placement[SK_HAND_SCAN_BACK]);
     r = sk_hand_cloud_alloc(&out->cloud, 0, true, err);
     if (r == SK_OK)
-        r = sk_hand_cloud_append_scan(&out->cloud, &out->scan[SK_HAND_SCAN_PALM], &out->markers, &palm_to_hand, NULL, err);
+        r = sk_hand_cloud_append_scan(&out->cloud, &out->scan[SK_HAND_SCAN_PALM], &out->markers,
+                                      &palm_to_hand, NULL, err);
     if (r == SK_OK)
-        r = sk_hand_cloud_append_scan(&out->cloud, &out->scan[SK_HAND_SCAN_BACK], &out->markers, &back_to_hand,
-                                      &back_truth, err);
+        r = sk_hand_cloud_append_scan(&out->cloud, &out->scan[SK_HAND_SCAN_BACK], &out->markers,
+                                      &back_to_hand, &back_truth, err);
     out->timings.register_ = sk_time_seconds() - t1;
     report(progress, 0.35);
     return r;
@@ -83,8 +91,8 @@ static sk_result scan_and_merge(const sk_hand_scan_input *in, const sk_hand_scan
 
 /* Vertices of a resampled mesh against the true surface (summed in vertex order, so the
  * mean is the same for any thread count). */
-static sk_result polygons_against_truth(const sk_hand_scan_target *t, const sk_mesh *m, sk_hand_resample_stats *s,
-                                        sk_error *err)
+static sk_result polygons_against_truth(const sk_hand_scan_target *t, const sk_mesh *m,
+                                        sk_hand_resample_stats *s, sk_error *err)
 {
     long long n = (long long)m->vertex_count;
     double *dist = malloc(sizeof *dist * (size_t)(n ? n : 1));
@@ -118,17 +126,19 @@ double sk_hand_scan_memory(const sk_hand_scan_desc *desc)
     return SCAN_BYTES_PER_POINT * lines * points + SCAN_BYTES_PER_SLICE * slices;
 }
 
-sk_result sk_hand_scan_run(const sk_hand_scan_input *in, const sk_hand_scan_desc *desc, sk_hand_scan_result *out,
-                           sk_progress progress, sk_error *err)
+sk_result sk_hand_scan_run(const sk_hand_scan_input *in, const sk_hand_scan_desc *desc,
+                           sk_hand_scan_result *out, sk_progress progress, sk_error *err)
 {
     memset(out, 0, sizeof *out);
     if (!in || !in->skeleton || !in->dofs)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "scan pipeline: no skeleton or pose given");
     if (!in->target && !in->cloud)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "scan pipeline: give a surface to scan or a point cloud");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "scan pipeline: give a surface to scan or a point cloud");
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
         if (!isfinite(in->dofs[i]))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pose: %s is not a finite number", sk_hand_dof(i)->name);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pose: %s is not a finite number",
+                           sk_hand_dof(i)->name);
     sk_hand_scan_desc d = desc ? *desc : (sk_hand_scan_desc){0};
     if (d.facet_splits == 0) d.facet_splits = 100;
     sk_result r = sk_check_range_i(err, "facet_splits", d.facet_splits, 1, 1024);
@@ -144,16 +154,20 @@ sk_result sk_hand_scan_run(const sk_hand_scan_input *in, const sk_hand_scan_desc
         out->timings.register_ = sk_time_seconds() - t0;
     }
     double t = sk_time_seconds();
-    if (r == SK_OK) r = sk_hand_slices_build(&out->cloud, &out->links, &d.slices, &out->slices, err);
+    if (r == SK_OK)
+        r = sk_hand_slices_build(&out->cloud, &out->links, &d.slices, &out->slices, err);
     out->timings.segment = sk_time_seconds() - t;
     report(&progress, 0.45);
     t = sk_time_seconds();
     sk_hand_resample_desc rd = d.resample;
     rd.mode = SK_HAND_RESAMPLE_NEIGHBOURS;
-    if (r == SK_OK) r = sk_hand_resample(&out->slices, &out->links, &rd, &out->polygons, &out->polygons_stats, err);
+    if (r == SK_OK)
+        r = sk_hand_resample(&out->slices, &out->links, &rd, &out->polygons, &out->polygons_stats,
+                             err);
     rd.mode = SK_HAND_RESAMPLE_THESIS;
     if (r == SK_OK)
-        r = sk_hand_resample(&out->slices, &out->links, &rd, &out->polygons_thesis, &out->polygons_thesis_stats, err);
+        r = sk_hand_resample(&out->slices, &out->links, &rd, &out->polygons_thesis,
+                             &out->polygons_thesis_stats, err);
     out->timings.resample = sk_time_seconds() - t;
     report(&progress, 0.5);
     t = sk_time_seconds();
@@ -166,9 +180,11 @@ sk_result sk_hand_scan_run(const sk_hand_scan_input *in, const sk_hand_scan_desc
     t = sk_time_seconds();
     if (r == SK_OK) r = sk_hand_patch_set_measure(out->patches, &out->cloud, d.facet_splits, err);
     if (r == SK_OK) sk_hand_table41_compute(out->patches, &out->table);
-    if (r == SK_OK && in->target) r = polygons_against_truth(in->target, &out->polygons, &out->polygons_stats, err);
     if (r == SK_OK && in->target)
-        r = polygons_against_truth(in->target, &out->polygons_thesis, &out->polygons_thesis_stats, err);
+        r = polygons_against_truth(in->target, &out->polygons, &out->polygons_stats, err);
+    if (r == SK_OK && in->target)
+        r = polygons_against_truth(in->target, &out->polygons_thesis, &out->polygons_thesis_stats,
+                                   err);
     out->timings.measure = sk_time_seconds() - t;
     out->timings.total = sk_time_seconds() - start;
     report(&progress, 1.0);
@@ -197,10 +213,10 @@ void sk_hand_scan_cast_pose(const sk_hand_skeleton *skeleton, double dofs[SK_HAN
         double deg;
     } open_hand[] = {
         {"T.CMC.flex", -10}, {"T.CMC.abd", 10}, {"T.MCP.flex", 5}, {"T.IP.flex", 5},
-        {"I.MCP.flex", 5}, {"I.PIP.flex", 8}, {"I.DIP.flex", 4}, {"I.MCP.abd", 6},
-        {"M.MCP.flex", 5}, {"M.PIP.flex", 8}, {"M.DIP.flex", 4}, {"M.MCP.abd", 0},
-        {"R.MCP.flex", 5}, {"R.PIP.flex", 8}, {"R.DIP.flex", 4}, {"R.MCP.abd", 5},
-        {"L.MCP.flex", 5}, {"L.PIP.flex", 8}, {"L.DIP.flex", 4}, {"L.MCP.abd", 10},
+        {"I.MCP.flex", 5},   {"I.PIP.flex", 8}, {"I.DIP.flex", 4}, {"I.MCP.abd", 6},
+        {"M.MCP.flex", 5},   {"M.PIP.flex", 8}, {"M.DIP.flex", 4}, {"M.MCP.abd", 0},
+        {"R.MCP.flex", 5},   {"R.PIP.flex", 8}, {"R.DIP.flex", 4}, {"R.MCP.abd", 5},
+        {"L.MCP.flex", 5},   {"L.PIP.flex", 8}, {"L.DIP.flex", 4}, {"L.MCP.abd", 10},
     };
     sk_hand_relaxed(skeleton, dofs);
     for (size_t k = 0; k < sizeof open_hand / sizeof open_hand[0]; k++) {

@@ -22,11 +22,12 @@ typedef struct sk_hand__bvh_node {
 typedef struct sk_hand__bvh {
     uint32_t triangle_count, node_count;
     sk_hand__bvh_node *nodes;
-    sk_vec3d (*tri)[3];   /* vertices, in leaf order */
-    uint32_t *original;   /* leaf order -> caller's triangle index */
+    sk_vec3d (*tri)[3]; /* vertices, in leaf order */
+    uint32_t *original; /* leaf order -> caller's triangle index */
 } sk_hand__bvh;
 
-sk_result sk_hand__bvh_build(sk_hand__bvh *bvh, const sk_vec3d (*triangles)[3], uint32_t count, sk_error *err);
+sk_result sk_hand__bvh_build(sk_hand__bvh *bvh, const sk_vec3d (*triangles)[3], uint32_t count,
+                             sk_error *err);
 void sk_hand__bvh_free(sk_hand__bvh *bvh);
 
 typedef struct sk_hand__ray_hit {
@@ -35,10 +36,11 @@ typedef struct sk_hand__ray_hit {
 } sk_hand__ray_hit;
 
 /* First hit with t in (t_min, t_max), or false. */
-bool sk_hand__bvh_intersect(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min, double t_max,
-                            sk_hand__ray_hit *hit);
+bool sk_hand__bvh_intersect(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min,
+                            double t_max, sk_hand__ray_hit *hit);
 /* Any hit with t in (t_min, t_max). */
-bool sk_hand__bvh_occluded(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min, double t_max);
+bool sk_hand__bvh_occluded(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min,
+                           double t_max);
 /* Nearest point of the triangles to p; returns the squared distance (below max_d2, else
  * max_d2 is returned and *closest untouched). */
 double sk_hand__bvh_nearest(const sk_hand__bvh *bvh, sk_vec3d p, double max_d2, sk_vec3d *closest);
@@ -75,14 +77,14 @@ struct sk_hand_scan_target {
 
 /* Refines a ray's hit on the mesh onto the implicit surface (secant steps along the ray);
  * false when there is no implicit or it does not converge near the mesh hit. */
-bool sk_hand__target_refine(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d, double t_mesh,
-                            double *t);
+bool sk_hand__target_refine(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d,
+                            double t_mesh, double *t);
 
 /* ---------------------------------------------------------- link frames */
 /* Link coordinates of p: distance along the link's axis from its base (mm, unclamped) and
  * the angle about it in the link frame, atan2(z, x) of the frame's X and Z axes. */
-void sk_hand__link_coordinates(const sk_hand_link_geometry *links, int link, sk_vec3d p, double *along,
-                               double *angle);
+void sk_hand__link_coordinates(const sk_hand_link_geometry *links, int link, sk_vec3d p,
+                               double *along, double *angle);
 /* Is the link a phalanx (its cross-sections are closed rings around it)? */
 bool sk_hand__link_is_phalanx(int link);
 

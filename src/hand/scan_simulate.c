@@ -35,10 +35,14 @@ sk_result sk_hand_scanner_desc_validate(const sk_hand_scanner_desc *d, sk_error 
     if ((r = sk_check_range_f(err, "scanner.size_x_mm", d->size_x_mm, 10, 2000)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "scanner.size_y_mm", d->size_y_mm, 10, 2000)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "scanner.size_z_mm", d->size_z_mm, 10, 2000)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "scanner.depth_step_mm", d->depth_step_mm, 1e-4, 10)) != SK_OK) return r;
+    if ((r = sk_check_range_f(err, "scanner.depth_step_mm", d->depth_step_mm, 1e-4, 10)) != SK_OK)
+        return r;
     if ((r = sk_check_range_f(err, "scanner.noise_mm", d->noise_mm, 0, 10)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "scanner.triangulation_deg", d->triangulation_deg, 1, 80)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "scanner.grazing_deg", d->grazing_deg, 10, 89.9)) != SK_OK) return r;
+    if ((r = sk_check_range_f(err, "scanner.triangulation_deg", d->triangulation_deg, 1, 80)) !=
+        SK_OK)
+        return r;
+    if ((r = sk_check_range_f(err, "scanner.grazing_deg", d->grazing_deg, 10, 89.9)) != SK_OK)
+        return r;
     return sk_check_range_f(err, "scanner.table_threshold_mm", d->table_threshold_mm, 0.01, 100);
 }
 
@@ -59,9 +63,9 @@ static void rotated_bounds(const sk_hand_scan_target *t, sk_mat3d r, double lo[3
 
 /* Rotation r, then the translation that centres the target over the table (plus a shift)
  * with its lowest point on the table. */
-static sk_result rest_on_table(const sk_hand_scan_target *t, const sk_hand_scanner_desc *d, sk_mat3d r,
-                               double shift_x, double shift_y, const char *which, sk_hand_rigid *out,
-                               sk_error *err)
+static sk_result rest_on_table(const sk_hand_scan_target *t, const sk_hand_scanner_desc *d,
+                               sk_mat3d r, double shift_x, double shift_y, const char *which,
+                               sk_hand_rigid *out, sk_error *err)
 {
     double lo[3], hi[3];
     rotated_bounds(t, r, lo, hi);
@@ -70,9 +74,11 @@ static sk_result rest_on_table(const sk_hand_scan_target *t, const sk_hand_scann
     for (int k = 0; k < 3; k++) {
         double extent = hi[k] - lo[k] + (k < 2 ? 2.0 * fabs(k == 0 ? shift_x : shift_y) : 0.0);
         if (extent > size[k])
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "the surface lying %s is %.1f mm across the scanner's %c axis: more than "
-                           "scanner.%s = %.1f mm", which, extent, 'x' + k, names[k], size[k]);
+            return sk_fail(
+                err, SK_ERROR_INVALID_ARGUMENT,
+                "the surface lying %s is %.1f mm across the scanner's %c axis: more than "
+                "scanner.%s = %.1f mm",
+                which, extent, 'x' + k, names[k], size[k]);
     }
     out->rotation = r;
     out->translation = sk_v3d(0.5 * d->size_x_mm - 0.5 * (lo[0] + hi[0]) + shift_x,
@@ -80,7 +86,8 @@ static sk_result rest_on_table(const sk_hand_scan_target *t, const sk_hand_scann
     return SK_OK;
 }
 
-sk_result sk_hand_scan_placements(const sk_hand_scan_target *target, const sk_hand_scanner_desc *desc,
+sk_result sk_hand_scan_placements(const sk_hand_scan_target *target,
+                                  const sk_hand_scanner_desc *desc,
                                   sk_hand_rigid placement[SK_HAND_SCAN_SIDE_COUNT], sk_error *err)
 {
     sk_hand_scanner_desc d = sk_hand_scanner_desc_resolved(desc);
@@ -92,9 +99,11 @@ sk_result sk_hand_scan_placements(const sk_hand_scan_target *target, const sk_ha
     if (r != SK_OK) return r;
     /* turned over about the scanner's x axis, and not put back exactly: turned 3 deg about
        the vertical, tilted 1.5 deg, shifted by (+6, -4) mm */
-    sk_mat3d back = sk_m3d_mul(sk_m3d_rot_z(3.0 * SK_DEG_TO_RAD),
-                               sk_m3d_mul(sk_m3d_rot_x(1.5 * SK_DEG_TO_RAD), sk_m3d_mul(sk_m3d_rot_x(SK_PI), palm)));
-    return rest_on_table(target, &d, back, 6.0, -4.0, "back up", &placement[SK_HAND_SCAN_BACK], err);
+    sk_mat3d back = sk_m3d_mul(
+        sk_m3d_rot_z(3.0 * SK_DEG_TO_RAD),
+        sk_m3d_mul(sk_m3d_rot_x(1.5 * SK_DEG_TO_RAD), sk_m3d_mul(sk_m3d_rot_x(SK_PI), palm)));
+    return rest_on_table(target, &d, back, 6.0, -4.0, "back up", &placement[SK_HAND_SCAN_BACK],
+                         err);
 }
 
 /* Entry and exit of the ray o + t d (|d| = 1) with a sphere; false on a miss. */
@@ -129,13 +138,16 @@ static bool camera_blocked(const scan_setup *s, sk_vec3d p)
     if (s->markers)
         for (int k = 0; k < s->markers->count; k++) {
             double t0, t1;
-            if (ray_sphere(p, s->camera_h, s->markers->centre[k], s->markers->radius_mm, &t0, &t1) && t1 > t_min)
+            if (ray_sphere(p, s->camera_h, s->markers->centre[k], s->markers->radius_mm, &t0,
+                           &t1) &&
+                t1 > t_min)
                 return true;
         }
     return false;
 }
 
-static void scan_sample(const scan_setup *s, int i, int j, float *depth, float *true_depth, uint8_t *kind)
+static void scan_sample(const scan_setup *s, int i, int j, float *depth, float *true_depth,
+                        uint8_t *kind)
 {
     const sk_hand_scanner_desc *d = &s->d;
     double step_x = d->size_x_mm / d->lines, step_y = d->size_y_mm / d->points;
@@ -155,7 +167,8 @@ static void scan_sample(const scan_setup *s, int i, int j, float *depth, float *
         if (sk_v3d_dot(nf, s->down_h) > 0.0) nf = sk_v3d_scale(nf, -1.0);
         n_h = nf;
         /* occlusion is tested from the mesh's own hit, just off its face */
-        occ_origin = sk_v3d_add(sk_v3d_add(o, sk_v3d_scale(s->down_h, hit.t)), sk_v3d_scale(nf, 1e-4));
+        occ_origin =
+            sk_v3d_add(sk_v3d_add(o, sk_v3d_scale(s->down_h, hit.t)), sk_v3d_scale(nf, 1e-4));
         /* the hit on the implicit surface, if there is one; the facet's normal is close
            enough for the incidence angles */
         double t_fine;
@@ -164,8 +177,8 @@ static void scan_sample(const scan_setup *s, int i, int j, float *depth, float *
     if (s->markers)
         for (int k = 0; k < s->markers->count; k++) {
             double t0, t1;
-            if (ray_sphere(o, s->down_h, s->markers->centre[k], s->markers->radius_mm, &t0, &t1) && t0 > 0.0 &&
-                t0 < t_hit) {
+            if (ray_sphere(o, s->down_h, s->markers->centre[k], s->markers->radius_mm, &t0, &t1) &&
+                t0 > 0.0 && t0 < t_hit) {
                 t_hit = t0;
                 what = SK_HAND_SAMPLE_MARKER;
                 sk_vec3d p = sk_v3d_add(o, sk_v3d_scale(s->down_h, t0));
@@ -179,14 +192,16 @@ static void scan_sample(const scan_setup *s, int i, int j, float *depth, float *
     double cos_laser = n_s.z, cos_camera = sk_v3d_dot(n_s, s->camera_s);
     double z_true = z_top - t_hit;
     *true_depth = (float)z_true;
-    if (cos_laser < s->cos_grazing || cos_camera < s->cos_grazing || camera_blocked(s, occ_origin)) {
+    if (cos_laser < s->cos_grazing || cos_camera < s->cos_grazing ||
+        camera_blocked(s, occ_origin)) {
         *depth = NAN;
         *kind = SK_HAND_SAMPLE_NONE;
         return;
     }
     double sigma = d->noise_mm / (cos_camera > 0.25 ? cos_camera : 0.25);
     double z = z_true;
-    if (sigma > 0.0) z += sigma * sk_rand_normal(s->seed, (uint64_t)s->side, (uint64_t)i, (uint64_t)j);
+    if (sigma > 0.0)
+        z += sigma * sk_rand_normal(s->seed, (uint64_t)s->side, (uint64_t)i, (uint64_t)j);
     z = d->depth_step_mm * nearbyint(z / d->depth_step_mm);
     if (z > d->size_z_mm) {
         *depth = NAN;
@@ -199,12 +214,13 @@ static void scan_sample(const scan_setup *s, int i, int j, float *depth, float *
 
 sk_result sk_hand_scan_simulate(const sk_hand_scan_target *target, const sk_hand_markers *markers,
                                 sk_hand_scan_side side, const sk_hand_rigid *placement,
-                                const sk_hand_scanner_desc *desc, uint64_t seed, sk_hand_range_scan *out,
-                                sk_error *err)
+                                const sk_hand_scanner_desc *desc, uint64_t seed,
+                                sk_hand_range_scan *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
     if (side != SK_HAND_SCAN_PALM && side != SK_HAND_SCAN_BACK)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "scan side %d is neither palm (0) nor back (1)", (int)side);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "scan side %d is neither palm (0) nor back (1)", (int)side);
     scan_setup s;
     memset(&s, 0, sizeof s);
     s.target = target;
@@ -227,7 +243,8 @@ sk_result sk_hand_scan_simulate(const sk_hand_scan_target *target, const sk_hand
     out->kind = malloc(n);
     if (!out->depth || !out->true_depth || !out->kind) {
         sk_hand_range_scan_free(out);
-        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "range scan of %d x %d samples", s.d.lines, s.d.points);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "range scan of %d x %d samples", s.d.lines,
+                       s.d.points);
     }
     out->side = side;
     out->lines = s.d.lines;
@@ -249,10 +266,13 @@ sk_result sk_hand_scan_simulate(const sk_hand_scan_target *target, const sk_hand
             for (int j = 0; j < points; j++) {
                 size_t k = (size_t)i * (size_t)points + (size_t)j;
                 if (out->kind[k] != SK_HAND_SAMPLE_MARKER) continue;
-                sk_vec3d p = sk_hand_rigid_apply(&s.to_hand, sk_hand_range_scan_point(out, i, j, out->true_depth[k]));
+                sk_vec3d p = sk_hand_rigid_apply(
+                    &s.to_hand, sk_hand_range_scan_point(out, i, j, out->true_depth[k]));
                 int best = 0;
                 for (int m = 1; m < s.markers->count; m++)
-                    if (sk_hand__dist2(p, s.markers->centre[m]) < sk_hand__dist2(p, s.markers->centre[best])) best = m;
+                    if (sk_hand__dist2(p, s.markers->centre[m]) <
+                        sk_hand__dist2(p, s.markers->centre[best]))
+                        best = m;
                 out->marker_points[best]++;
             }
     return SK_OK;

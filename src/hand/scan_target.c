@@ -6,18 +6,21 @@
 
 #include "hand/scan_private.h"
 
-sk_result sk_hand_scan_target_create(sk_hand_scan_target **out, const sk_hand_scan_target_desc *desc,
-                                     sk_error *err)
+sk_result sk_hand_scan_target_create(sk_hand_scan_target **out,
+                                     const sk_hand_scan_target_desc *desc, sk_error *err)
 {
     *out = NULL;
-    if (!desc || !desc->mesh) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "scan target: no mesh given");
+    if (!desc || !desc->mesh)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "scan target: no mesh given");
     const sk_mesh *m = desc->mesh;
     sk_result r = sk_mesh_validate(m, err);
     if (r != SK_OK) return r;
     if (m->triangle_count == 0)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "scan target: the mesh has no triangles (a point cloud)");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "scan target: the mesh has no triangles (a point cloud)");
     if (m->triangle_count > (1u << 26))
-        return sk_fail(err, SK_ERROR_LIMIT, "scan target: %zu triangles (at most 2^26)", m->triangle_count);
+        return sk_fail(err, SK_ERROR_LIMIT, "scan target: %zu triangles (at most 2^26)",
+                       m->triangle_count);
     sk_hand_scan_target *t = calloc(1, sizeof *t);
     sk_vec3d(*tri)[3] = malloc(sizeof *tri * m->triangle_count);
     if (!t || !tri) {
@@ -62,8 +65,8 @@ double sk_hand_scan_target_distance(const sk_hand_scan_target *target, sk_vec3d 
     return sqrt(sk_hand__bvh_nearest(&target->bvh, p, INFINITY, NULL));
 }
 
-bool sk_hand_scan_target_raycast(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d, double t_min,
-                                 double t_max, double *t, sk_vec3d *normal)
+bool sk_hand_scan_target_raycast(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d,
+                                 double t_min, double t_max, double *t, sk_vec3d *normal)
 {
     sk_hand__ray_hit hit;
     if (!sk_hand__bvh_intersect(&target->bvh, o, d, t_min, t_max, &hit)) return false;
@@ -75,15 +78,17 @@ bool sk_hand_scan_target_raycast(const sk_hand_scan_target *target, sk_vec3d o, 
     return true;
 }
 
-bool sk_hand__target_refine(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d, double t_mesh,
-                            double *t)
+bool sk_hand__target_refine(const sk_hand_scan_target *target, sk_vec3d o, sk_vec3d d,
+                            double t_mesh, double *t)
 {
     if (!target->sdf) return false;
     /* secant steps on f(o + t d) from the mesh's hit: the field's value only, no gradient
        (a field whose gradient is itself found by differences costs six values more) */
     double dl = sk_v3d_length(d), h = 0.02 / dl;
-    double t0 = t_mesh, f0 = target->sdf(target->sdf_user, sk_v3d_add(o, sk_v3d_scale(d, t0)), NULL);
-    double t1 = t_mesh + h, f1 = target->sdf(target->sdf_user, sk_v3d_add(o, sk_v3d_scale(d, t1)), NULL);
+    double t0 = t_mesh,
+           f0 = target->sdf(target->sdf_user, sk_v3d_add(o, sk_v3d_scale(d, t0)), NULL);
+    double t1 = t_mesh + h,
+           f1 = target->sdf(target->sdf_user, sk_v3d_add(o, sk_v3d_scale(d, t1)), NULL);
     for (int k = 0; k < 10; k++) {
         if (fabs(f0) < 1e-7) { /* far below the depth step and the surface's own accuracy */
             *t = t0;
@@ -109,21 +114,25 @@ static double surface_sdf(void *user, sk_vec3d p, sk_vec3d *gradient)
     return sk_hand_surface_field(s, p);
 }
 
-sk_result sk_hand_scan_target_from_surface(sk_hand_scan_target **out, const sk_hand_surface *surface, sk_error *err)
+sk_result sk_hand_scan_target_from_surface(sk_hand_scan_target **out,
+                                           const sk_hand_surface *surface, sk_error *err)
 {
-    sk_hand_scan_target_desc d = {.mesh = sk_hand_surface_mesh(surface), .sdf = surface_sdf,
-                                  .sdf_user = (void *)surface};
+    sk_hand_scan_target_desc d = {
+        .mesh = sk_hand_surface_mesh(surface), .sdf = surface_sdf, .sdf_user = (void *)surface};
     return sk_hand_scan_target_create(out, &d, err);
 }
 
 sk_result sk_hand_scan_cast(const sk_hand_skeleton *skeleton, const double dofs[SK_HAND_DOF_COUNT],
-                            const sk_hand_surface_desc *surface_desc, sk_hand_skeleton *cast_skeleton,
-                            sk_hand_surface **surface, sk_hand_scan_target **target, sk_error *err)
+                            const sk_hand_surface_desc *surface_desc,
+                            sk_hand_skeleton *cast_skeleton, sk_hand_surface **surface,
+                            sk_hand_scan_target **target, sk_error *err)
 {
     *surface = NULL;
     *target = NULL;
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
-        if (!isfinite(dofs[i])) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pose: %s is not a finite number", sk_hand_dof(i)->name);
+        if (!isfinite(dofs[i]))
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pose: %s is not a finite number",
+                           sk_hand_dof(i)->name);
     /* the surface is meshed around its skeleton's relaxed posture: make the cast's pose it */
     *cast_skeleton = *skeleton;
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) cast_skeleton->dof[i].relaxed = dofs[i];

@@ -24,9 +24,9 @@ static bool adjacent(const sk_hand_skeleton *s, int a, int b)
     return is_palm_link(a) && is_palm_link(b);
 }
 
-void sk_hand__weights_compute(const sk_hand__field *f, const sk_hand_skeleton *s, const float *positions,
-                              size_t vertex_count, uint16_t *nearest_links, float *nearest_weights,
-                              uint16_t *smooth_links, float *smooth_weights)
+void sk_hand__weights_compute(const sk_hand__field *f, const sk_hand_skeleton *s,
+                              const float *positions, size_t vertex_count, uint16_t *nearest_links,
+                              float *nearest_weights, uint16_t *smooth_links, float *smooth_weights)
 {
     double sb = s->hand_breadth_mm / 85.0;
 #pragma omp parallel for schedule(static) if (vertex_count > 2048)

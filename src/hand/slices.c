@@ -37,16 +37,19 @@ sk_result sk_hand_slices_build(const sk_hand_cloud *cloud, const sk_hand_link_ge
     if (d.count == 0) d.count = 75;
     if (d.half_thickness_mm == 0) d.half_thickness_mm = 0.5;
     sk_result r = sk_check_range_i(err, "slices.count", d.count, 2, 2000);
-    if (r == SK_OK) r = sk_check_range_f(err, "slices.half_thickness_mm", d.half_thickness_mm, 1e-6, 50);
+    if (r == SK_OK)
+        r = sk_check_range_f(err, "slices.half_thickness_mm", d.half_thickness_mm, 1e-6, 50);
     if (r != SK_OK) return r;
-    if (cloud->count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "slices: the point cloud is empty");
+    if (cloud->count == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "slices: the point cloud is empty");
     double lo = INFINITY, hi = -INFINITY;
     for (size_t i = 0; i < cloud->count; i++) {
         double y = cloud->position[i].y;
         if (y < lo) lo = y;
         if (y > hi) hi = y;
     }
-    if (!(hi > lo)) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "slices: the points have no extent along y");
+    if (!(hi > lo))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "slices: the points have no extent along y");
     int n = d.count;
     double spacing = (hi - lo) / n;
     out->count = n;
@@ -62,7 +65,8 @@ sk_result sk_hand_slices_build(const sk_hand_cloud *cloud, const sk_hand_link_ge
     }
     for (int s = 0; s < n; s++) {
         out->y[s] = lo + (s + 0.5) * spacing;
-        for (int l = 0; l < SK_HAND_LINK_COUNT; l++) out->centre[s][l] = axis_crossing(links, l, out->y[s]);
+        for (int l = 0; l < SK_HAND_LINK_COUNT; l++)
+            out->centre[s][l] = axis_crossing(links, l, out->y[s]);
     }
     for (size_t i = 0; i < cloud->count; i++) {
         double y = cloud->position[i].y;

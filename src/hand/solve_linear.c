@@ -39,7 +39,8 @@ sk_result sk_hand__solve_linear(sk_hand_solver *s, const bool *pinned, double *t
         for (int a = 0; a < f->nf; a++) {
             int i = f->free_dof[a];
             double v = rhs[i];
-            for (int q = 0; q < fixed_count; q++) v -= s->h[(size_t)fixed[q] * N_DOF + i] * theta[fixed[q]];
+            for (int q = 0; q < fixed_count; q++)
+                v -= s->h[(size_t)fixed[q] * N_DOF + i] * theta[fixed[q]];
             b[a] = v;
         }
         sk_hand__factor_solve(f, b);

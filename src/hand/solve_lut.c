@@ -27,8 +27,8 @@ static uint64_t fixed_set(const sk_hand_solver *s, const bool *pinned, const dou
 }
 
 /* Projected backtracking line search along d (indexed by free[]); true if accepted. */
-static bool line_search(sk_hand_solver *s, const int *free_dof, int nf, const double *d, const double *rhs,
-                        double *theta, double *grad, double *energy)
+static bool line_search(sk_hand_solver *s, const int *free_dof, int nf, const double *d,
+                        const double *rhs, double *theta, double *grad, double *energy)
 {
     double trial[N_DOF], grad_new[N_DOF];
     double alpha = 1.0;
@@ -57,8 +57,8 @@ static bool line_search(sk_hand_solver *s, const int *free_dof, int nf, const do
 
 /* Newton direction on the free DOFs from the exact Hessian of the interpolated energy,
  * shifted by mu I until positive definite. */
-static bool newton_direction(const sk_hand_solver *s, const int *free_dof, int nf, const double *theta,
-                             const double *grad, double *d)
+static bool newton_direction(const sk_hand_solver *s, const int *free_dof, int nf,
+                             const double *theta, const double *grad, double *d)
 {
     double hess[N_DOF * N_DOF];
     memcpy(hess, s->h, sizeof hess);

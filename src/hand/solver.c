@@ -29,7 +29,8 @@ sk_result sk_hand_solver_create(sk_hand_solver **out, const sk_hand_skeleton *sk
     if (r == SK_OK) r = sk_check_range_i(err, "lut_count", lut_count, 0, 64);
     if (r != SK_OK) return r;
     if (lut_count > 0 && !luts)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "luts is NULL with lut_count = %d", lut_count);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "luts is NULL with lut_count = %d",
+                       lut_count);
     for (int p = 0; p < lut_count; p++)
         if (!sk_hand_dof(luts[p].dof_x) || !sk_hand_dof(luts[p].dof_y) || !luts[p].value)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "luts[%d] is not built", p);
@@ -60,7 +61,8 @@ void sk_hand_solver_destroy(sk_hand_solver *s) { free(s); }
 
 sk_result sk_hand_solver_set_stiffness(sk_hand_solver *s, int dof, double k, sk_error *err)
 {
-    if (!sk_hand_dof(dof)) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "dof = %d is not a DOF", dof);
+    if (!sk_hand_dof(dof))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "dof = %d is not a DOF", dof);
     if (!(k > 0.0) || !isfinite(k))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "stiffness of %s = %g must be positive",
                        sk_hand_dof(dof)->name, k);
@@ -123,9 +125,12 @@ sk_result sk_hand_solve(sk_hand_solver *s, const sk_hand_input *in, double dofs[
     for (int i = 0; i < N_DOF; i++) {
         /* a DOF held at a limit reports the limit exactly (relaxed + (min - relaxed) may
            differ from min in the last bit) */
-        if (theta[i] <= s->lo[i]) dofs[i] = s->min_abs[i];
-        else if (theta[i] >= s->hi[i]) dofs[i] = s->max_abs[i];
-        else dofs[i] = sk_clampd(s->relaxed[i] + theta[i], s->min_abs[i], s->max_abs[i]);
+        if (theta[i] <= s->lo[i])
+            dofs[i] = s->min_abs[i];
+        else if (theta[i] >= s->hi[i])
+            dofs[i] = s->max_abs[i];
+        else
+            dofs[i] = sk_clampd(s->relaxed[i] + theta[i], s->min_abs[i], s->max_abs[i]);
     }
     return SK_OK;
 }

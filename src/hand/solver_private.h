@@ -9,7 +9,7 @@
 
 /* A factorisation of the free-DOF block of H (or of H plus the lookup tables' curvature). */
 typedef struct sk_hand_factor {
-    uint64_t key;      /* bit i: DOF i fixed; bit 63: with lookup-table curvature */
+    uint64_t key; /* bit i: DOF i fixed; bit 63: with lookup-table curvature */
     bool valid;
     uint64_t last_use;
     int nf;
@@ -21,22 +21,22 @@ typedef struct sk_hand_factor {
 #define SK_HAND_MAX_CACHE 64
 
 struct sk_hand_solver {
-    sk_hand_solver_desc desc; /* resolved */
+    sk_hand_solver_desc desc;    /* resolved */
     double lo[N_DOF], hi[N_DOF]; /* limits as displacements from the relaxed posture */
     double relaxed[N_DOF];
     double min_abs[N_DOF], max_abs[N_DOF]; /* limits of absolute values */
     double k[N_DOF];
     sk_hand_constraints rows;
-    double h[N_DOF * N_DOF];     /* K + A'WA, column-major (symmetric) */
-    double lut_curv[N_DOF];      /* 2 * lookup weights per DOF (Gauss-Newton curvature) */
-    double g0[N_DOF];            /* -A'Wb */
-    double c0;                   /* 1/2 b'Wb */
+    double h[N_DOF * N_DOF]; /* K + A'WA, column-major (symmetric) */
+    double lut_curv[N_DOF];  /* 2 * lookup weights per DOF (Gauss-Newton curvature) */
+    double g0[N_DOF];        /* -A'Wb */
+    double c0;               /* 1/2 b'Wb */
     const sk_hand_lut *luts;
     int lut_count;
     sk_hand_factor cache[SK_HAND_MAX_CACHE];
     uint64_t clock;
-    int8_t clamp_side[N_DOF];    /* last solve: -1 at the lower limit, +1 at the upper
-                                    (warm start of the active set) */
+    int8_t clamp_side[N_DOF]; /* last solve: -1 at the lower limit, +1 at the upper
+                                 (warm start of the active set) */
 };
 
 /* Assembles h, g0, c0 and lut_curv from k, rows and luts; drops the cache. */
@@ -55,7 +55,8 @@ double sk_hand__energy(const sk_hand_solver *solver, const double *theta, const 
 /* A lookup potential with its gradient g and Hessian (h[0] = xx, h[1] = yy, h[2] = xy) at
  * absolute angles: exact for the Hermite interpolant inside a cell (its second
  * derivatives jump between cells), zero curvature for bilinear tables. */
-double sk_hand__lut_eval_hessian(const sk_hand_lut *lut, double x, double y, double g[2], double h[3]);
+double sk_hand__lut_eval_hessian(const sk_hand_lut *lut, double x, double y, double g[2],
+                                 double h[3]);
 
 /* Linear solve by active set (limits), and the iterative solve with lookup tables. */
 sk_result sk_hand__solve_linear(sk_hand_solver *solver, const bool *pinned, double *theta,

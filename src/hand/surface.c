@@ -9,32 +9,45 @@
 
 static sk_result check_flesh(const sk_hand_flesh *f, sk_error *err)
 {
-    sk_result r = sk_check_range_f(err, "flesh.reference_breadth_mm", f->reference_breadth_mm, 30, 200);
+    sk_result r =
+        sk_check_range_f(err, "flesh.reference_breadth_mm", f->reference_breadth_mm, 30, 200);
     for (int i = 0; i < SK_HAND_FINGER_COUNT && r == SK_OK; i++) {
         int n = i == SK_HAND_THUMB ? 3 : 4;
         for (int k = 0; k < n && r == SK_OK; k++) {
-            r = sk_check_range_f(err, "flesh.fingers.breadth_mm", f->finger[i].breadth_mm[k], 2, 80);
-            if (r == SK_OK) r = sk_check_range_f(err, "flesh.fingers.thickness_mm", f->finger[i].thickness_mm[k], 2, 80);
+            r = sk_check_range_f(err, "flesh.fingers.breadth_mm", f->finger[i].breadth_mm[k], 2,
+                                 80);
+            if (r == SK_OK)
+                r = sk_check_range_f(err, "flesh.fingers.thickness_mm",
+                                     f->finger[i].thickness_mm[k], 2, 80);
         }
         for (int k = 0; k < 2 && r == SK_OK; k++) {
-            r = sk_check_range_f(err, "flesh.fingers.metacarpal_breadth_mm", f->finger[i].metacarpal_breadth_mm[k], 2, 80);
+            r = sk_check_range_f(err, "flesh.fingers.metacarpal_breadth_mm",
+                                 f->finger[i].metacarpal_breadth_mm[k], 2, 80);
             if (r == SK_OK)
-                r = sk_check_range_f(err, "flesh.fingers.metacarpal_thickness_mm", f->finger[i].metacarpal_thickness_mm[k],
-                                     2, 80);
+                r = sk_check_range_f(err, "flesh.fingers.metacarpal_thickness_mm",
+                                     f->finger[i].metacarpal_thickness_mm[k], 2, 80);
         }
     }
-    if (r == SK_OK) r = sk_check_range_f(err, "flesh.wrist.breadth_mm", f->wrist_breadth_mm, 10, 200);
-    if (r == SK_OK) r = sk_check_range_f(err, "flesh.wrist.thickness_mm", f->wrist_thickness_mm, 10, 200);
-    if (r == SK_OK) r = sk_check_range_f(err, "flesh.wrist.stump_length_mm", f->stump_length_mm, 0, 200);
+    if (r == SK_OK)
+        r = sk_check_range_f(err, "flesh.wrist.breadth_mm", f->wrist_breadth_mm, 10, 200);
+    if (r == SK_OK)
+        r = sk_check_range_f(err, "flesh.wrist.thickness_mm", f->wrist_thickness_mm, 10, 200);
+    if (r == SK_OK)
+        r = sk_check_range_f(err, "flesh.wrist.stump_length_mm", f->stump_length_mm, 0, 200);
     const sk_hand_flesh_pad *pads[2] = {&f->thenar, &f->hypothenar};
     for (int i = 0; i < 2 && r == SK_OK; i++)
-        for (int k = 0; k < 3 && r == SK_OK; k++) r = sk_check_range_f(err, "flesh pad radius_mm", pads[i]->radius_mm[k], 1, 100);
+        for (int k = 0; k < 3 && r == SK_OK; k++)
+            r = sk_check_range_f(err, "flesh pad radius_mm", pads[i]->radius_mm[k], 1, 100);
     if (r == SK_OK) r = sk_check_range_f(err, "flesh.webs.reach", f->web_reach, 0, 0.8);
-    if (r == SK_OK) r = sk_check_range_f(err, "flesh.webs.thickness_mm", f->web_thickness_mm, 1, 40);
-    if (r == SK_OK) r = sk_check_range_f(err, "flesh.webs.thumb_thickness_mm", f->thumb_web_thickness_mm, 1, 40);
+    if (r == SK_OK)
+        r = sk_check_range_f(err, "flesh.webs.thickness_mm", f->web_thickness_mm, 1, 40);
+    if (r == SK_OK)
+        r = sk_check_range_f(err, "flesh.webs.thumb_thickness_mm", f->thumb_web_thickness_mm, 1,
+                             40);
     if (r == SK_OK) r = sk_check_range_f(err, "flesh.nails.length", f->nail_length, 0.1, 0.9);
     if (r == SK_OK) r = sk_check_range_f(err, "flesh.nails.breadth", f->nail_breadth, 0.1, 0.95);
-    if (r == SK_OK) r = sk_check_range_f(err, "flesh.nails.thickness_mm", f->nail_thickness_mm, 0, 3);
+    if (r == SK_OK)
+        r = sk_check_range_f(err, "flesh.nails.thickness_mm", f->nail_thickness_mm, 0, 3);
     if (r == SK_OK) r = sk_check_range_f(err, "flesh.blend.joint_mm", f->blend_joint_mm, 0.1, 20);
     if (r == SK_OK) r = sk_check_range_f(err, "flesh.blend.root_mm", f->blend_root_mm, 0.1, 20);
     if (r == SK_OK) r = sk_check_range_f(err, "flesh.blend.palm_mm", f->blend_palm_mm, 0.1, 30);
@@ -64,7 +77,8 @@ static void field_normals(const sk_hand__field *field, sk_mesh *m)
     for (size_t v = 0; v < m->vertex_count; v++) {
         const float *p = m->positions + 3 * v;
         sk_vec3d g = sk_v3d_normalize(sk_hand__field_gradient(field, sk_v3d(p[0], p[1], p[2])));
-        m->normals[3 * v] = (float)g.x, m->normals[3 * v + 1] = (float)g.y, m->normals[3 * v + 2] = (float)g.z;
+        m->normals[3 * v] = (float)g.x, m->normals[3 * v + 1] = (float)g.y,
+                       m->normals[3 * v + 2] = (float)g.z;
     }
 }
 
@@ -75,14 +89,16 @@ sk_result sk_hand__surface_finish(sk_hand_surface *s, sk_error *err)
     for (int i = 0; i < 2; i++) {
         s->links[i] = calloc(4 * V, sizeof *s->links[i]);
         s->weights[i] = calloc(4 * V, sizeof *s->weights[i]);
-        if (!s->links[i] || !s->weights[i]) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin weights");
+        if (!s->links[i] || !s->weights[i])
+            return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin weights");
     }
     s->influences = malloc(V);
     s->by_influence = malloc(V * sizeof *s->by_influence);
-    if (!s->influences || !s->by_influence) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin weights");
+    if (!s->influences || !s->by_influence)
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin weights");
     field_normals(&s->field, m);
-    sk_hand__weights_compute(&s->field, &s->right, m->positions, V, s->links[0], s->weights[0], s->links[1],
-                             s->weights[1]);
+    sk_hand__weights_compute(&s->field, &s->right, m->positions, V, s->links[0], s->weights[0],
+                             s->links[1], s->weights[1]);
     for (size_t v = 0; v < V; v++) {
         int n = 0;
         while (n < 4 && s->weights[1][4 * v + n] > 0.0f) n++;
@@ -101,7 +117,9 @@ sk_result sk_hand__surface_finish(sk_hand_surface *s, sk_error *err)
     for (size_t v = 0; v < V; v++) {
         const float *p = m->positions + 3 * v;
         for (int i = 0; i < s->field.count; i++)
-            if (s->field.prim[i].nail && sk_hand__prim_eval(&s->field.prim[i], sk_v3d(p[0], p[1], p[2])) < 0.25) nail[v] = 1;
+            if (s->field.prim[i].nail &&
+                sk_hand__prim_eval(&s->field.prim[i], sk_v3d(p[0], p[1], p[2])) < 0.25)
+                nail[v] = 1;
     }
     if ((r = sk_hand__atlas_build(s, err)) != SK_OK) return r;
     if (s->skeleton.side == SK_HAND_SIDE_LEFT) {
@@ -149,8 +167,8 @@ double sk_hand_surface_memory(const sk_hand_skeleton *skeleton, const sk_hand_su
     }
     double cell = grid_step(skeleton, &d, triangles);
     if (!(cell > 0)) cell = 0.2;
-    return SURFACE_BYTES_FIXED +
-           SURFACE_BYTES_PER_AREA_CELL * skeleton->hand_length_mm * skeleton->hand_breadth_mm / (cell * cell);
+    return SURFACE_BYTES_FIXED + SURFACE_BYTES_PER_AREA_CELL * skeleton->hand_length_mm *
+                                     skeleton->hand_breadth_mm / (cell * cell);
 }
 
 sk_result sk_hand_surface_create(sk_hand_surface **out, const sk_hand_skeleton *skeleton,
@@ -166,8 +184,10 @@ sk_result sk_hand_surface_create(sk_hand_surface **out, const sk_hand_skeleton *
     if (r != SK_OK) return r;
     sk_hand_surface *s = calloc(1, sizeof *s);
     if (!s) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the hand surface");
-    if (d.flesh) s->flesh = *d.flesh;
-    else sk_hand_flesh_default(&s->flesh);
+    if (d.flesh)
+        s->flesh = *d.flesh;
+    else
+        sk_hand_flesh_default(&s->flesh);
     if ((r = check_flesh(&s->flesh, err)) != SK_OK) {
         free(s);
         return r;
@@ -209,7 +229,10 @@ static sk_vec3d to_right(const sk_hand_surface *s, sk_vec3d p)
     return p;
 }
 
-double sk_hand_surface_field(const sk_hand_surface *s, sk_vec3d p) { return sk_hand__field_eval(&s->field, to_right(s, p)); }
+double sk_hand_surface_field(const sk_hand_surface *s, sk_vec3d p)
+{
+    return sk_hand__field_eval(&s->field, to_right(s, p));
+}
 
 sk_vec3d sk_hand_surface_field_gradient(const sk_hand_surface *s, sk_vec3d p)
 {
@@ -225,8 +248,8 @@ double sk_hand_surface_distance(const sk_hand_surface *s, sk_vec3d p, sk_vec3d *
     return d;
 }
 
-void sk_hand_surface_weights(const sk_hand_surface *s, sk_hand_weights which, const uint16_t **links,
-                             const float **weights)
+void sk_hand_surface_weights(const sk_hand_surface *s, sk_hand_weights which,
+                             const uint16_t **links, const float **weights)
 {
     int i = which == SK_HAND_WEIGHTS_NEAREST ? 0 : 1;
     if (links) *links = s->links[i];

@@ -39,7 +39,8 @@ sk_result sk_hand__atlas_build(sk_hand_surface *s, sk_error *err)
     /* rest normals (right hand: +z is palmar) */
     for (size_t t = 0; t < T; t++) {
         const uint32_t *tv = m->indices + 3 * t;
-        float nz = m->normals[3 * tv[0] + 2] + m->normals[3 * tv[1] + 2] + m->normals[3 * tv[2] + 2];
+        float nz =
+            m->normals[3 * tv[0] + 2] + m->normals[3 * tv[1] + 2] + m->normals[3 * tv[2] + 2];
         chart[t] = nz > 0.0f;
     }
     /* triangle neighbours across edges */
@@ -71,7 +72,8 @@ sk_result sk_hand__atlas_build(sk_hand_surface *s, sk_error *err)
     for (int pass = 0; pass < 4; pass++) {
         for (size_t t = 0; t < T; t++) {
             int other = 0;
-            for (int k = 0; k < 3; k++) other += nb[3 * t + k] != UINT32_MAX && chart[nb[3 * t + k]] != chart[t];
+            for (int k = 0; k < 3; k++)
+                other += nb[3 * t + k] != UINT32_MAX && chart[nb[3 * t + k]] != chart[t];
             next[t] = other >= 2 ? !chart[t] : chart[t];
         }
         memcpy(chart, next, T);
@@ -118,7 +120,8 @@ sk_result sk_hand__atlas_build(sk_hand_surface *s, sk_error *err)
         s->export_uv[2 * e + 1] = 0.5f + k * (y - cy);
     }
     for (size_t t = 0; t < T; t++)
-        for (int j = 0; j < 3; j++) s->export_indices[3 * t + j] = first[2 * m->indices[3 * t + j] + chart[t]];
+        for (int j = 0; j < 3; j++)
+            s->export_indices[3 * t + j] = first[2 * m->indices[3 * t + j] + chart[t]];
 done:
     free(chart), free(next), free(nb), free(edges), free(first);
     return r;
@@ -130,8 +133,9 @@ const uint32_t *sk_hand_surface_export_map(const sk_hand_surface *s, size_t *cou
     return s->export_map;
 }
 
-sk_result sk_hand_surface_export_mesh(const sk_hand_surface *s, const float *positions, const float *normals,
-                                      bool with_weights, sk_mesh *out, sk_error *err)
+sk_result sk_hand_surface_export_mesh(const sk_hand_surface *s, const float *positions,
+                                      const float *normals, bool with_weights, sk_mesh *out,
+                                      sk_error *err)
 {
     const sk_mesh *m = &s->mesh;
     if (!positions) positions = m->positions;

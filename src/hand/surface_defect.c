@@ -13,7 +13,8 @@ static double mesh_volume(const float *pos, const uint32_t *tri, size_t T)
 {
     double v = 0;
     for (size_t t = 0; t < T; t++) {
-        const float *a = pos + 3 * tri[3 * t], *b = pos + 3 * tri[3 * t + 1], *c = pos + 3 * tri[3 * t + 2];
+        const float *a = pos + 3 * tri[3 * t], *b = pos + 3 * tri[3 * t + 1],
+                    *c = pos + 3 * tri[3 * t + 2];
         v += (double)a[0] * ((double)b[1] * c[2] - (double)b[2] * c[1]) -
              (double)a[1] * ((double)b[0] * c[2] - (double)b[2] * c[0]) +
              (double)a[2] * ((double)b[0] * c[1] - (double)b[1] * c[0]);
@@ -29,12 +30,14 @@ static const sk_hand__prim *link_prim(const sk_hand__field *f, int link)
     return NULL;
 }
 
-sk_result sk_hand_surface_defect(const sk_hand_surface *s, const double dofs[SK_HAND_DOF_COUNT], sk_hand_skinning method,
-                                 sk_hand_finger finger, sk_hand_defect *out, sk_error *err)
+sk_result sk_hand_surface_defect(const sk_hand_surface *s, const double dofs[SK_HAND_DOF_COUNT],
+                                 sk_hand_skinning method, sk_hand_finger finger,
+                                 sk_hand_defect *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
     if ((int)finger < 0 || finger >= SK_HAND_FINGER_COUNT)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "finger = %d is out of range [0, 4]", (int)finger);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "finger = %d is out of range [0, 4]",
+                       (int)finger);
     sk_mesh posed;
     sk_result r = sk_hand_surface_pose(s, dofs, method, &posed, err);
     if (r != SK_OK) return r;
@@ -48,8 +51,10 @@ sk_result sk_hand_surface_defect(const sk_hand_surface *s, const double dofs[SK_
     for (int k = 1; k < count; k++) {
         const sk_hand__prim *p = link_prim(&s->field, first + k);
         if (!p) continue;
-        finger_volume += SK_PI * p->length * (p->rx[0] * p->rz[0] + p->rx[1] * p->rz[1] +
-                                              0.5 * (p->rx[0] * p->rz[1] + p->rx[1] * p->rz[0])) / 3.0;
+        finger_volume += SK_PI * p->length *
+                         (p->rx[0] * p->rz[0] + p->rx[1] * p->rz[1] +
+                          0.5 * (p->rx[0] * p->rz[1] + p->rx[1] * p->rz[0])) /
+                         3.0;
     }
     out->volume_lost_percent = finger_volume > 0 ? 100.0 * out->volume_lost_mm3 / finger_volume : 0;
     sk_hand_frames fr;
@@ -66,8 +71,10 @@ sk_result sk_hand_surface_defect(const sk_hand_surface *s, const double dofs[SK_
             const sk_hand__prim *p = nlink >= 0 ? link_prim(&s->field, nlink) : NULL;
             if (!p) continue;
             /* the posed vertex in the neighbour's relaxed frame */
-            sk_vec3d x = sk_v3d(posed.positions[3 * v], posed.positions[3 * v + 1], posed.positions[3 * v + 2]);
-            sk_vec3d o = fr.point[sk_hand_link_point(nlink)], b = s->bind.point[sk_hand_link_point(nlink)];
+            sk_vec3d x = sk_v3d(posed.positions[3 * v], posed.positions[3 * v + 1],
+                                posed.positions[3 * v + 2]);
+            sk_vec3d o = fr.point[sk_hand_link_point(nlink)],
+                     b = s->bind.point[sk_hand_link_point(nlink)];
             sk_vec3d local = sk_m3d_apply(sk_m3d_transpose(fr.rotation[nlink]), sk_v3d_sub(x, o));
             sk_vec3d rest = sk_v3d_add(b, sk_m3d_apply(s->bind.rotation[nlink], local));
             if (left) rest.x = -rest.x;

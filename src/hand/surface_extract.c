@@ -89,8 +89,11 @@ typedef struct extract_ctx {
 /* The vertex on the edge from grid point a (value va) to b (value vb). */
 static uint32_t edge_vertex(extract_ctx *c, long ia[3], int code, double va, double vb)
 {
-    uint64_t key = ((((uint64_t)ia[2] * (uint64_t)c->ny + (uint64_t)ia[1]) * (uint64_t)c->nx + (uint64_t)ia[0]) * 7 +
-                    (uint64_t)code) + 1;
+    uint64_t key = ((((uint64_t)ia[2] * (uint64_t)c->ny + (uint64_t)ia[1]) * (uint64_t)c->nx +
+                     (uint64_t)ia[0]) *
+                        7 +
+                    (uint64_t)code) +
+                   1;
     edge_map *m = &c->map;
     if ((m->used + 1) * 2 > m->cap && !map_rehash(m)) {
         c->oom = true;
@@ -119,7 +122,8 @@ static uint32_t edge_vertex(extract_ctx *c, long ia[3], int code, double va, dou
     return (uint32_t)o->vertex_count++;
 }
 
-static void emit(extract_ctx *c, uint32_t a, uint32_t b, uint32_t d, sk_vec3d inside, sk_vec3d outside)
+static void emit(extract_ctx *c, uint32_t a, uint32_t b, uint32_t d, sk_vec3d inside,
+                 sk_vec3d outside)
 {
     sk_hand__trimesh *o = c->out;
     const double *pa = o->pos + 3 * a, *pb = o->pos + 3 * b, *pd = o->pos + 3 * d;
@@ -142,7 +146,8 @@ static void emit(extract_ctx *c, uint32_t a, uint32_t b, uint32_t d, sk_vec3d in
 /* Marching tetrahedra in one cube with corner values v (bit 0 = +x, 1 = +y, 2 = +z). */
 static void cube(extract_ctx *c, long i, long j, long k, const double v[8])
 {
-    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                   {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     for (int t = 0; t < 6; t++) {
         int corner[4];
         corner[0] = 0;
@@ -151,8 +156,10 @@ static void cube(extract_ctx *c, long i, long j, long k, const double v[8])
         corner[3] = 7;
         int in[4], out[4], ni = 0, no = 0;
         for (int q = 0; q < 4; q++) {
-            if (v[corner[q]] < 0.0) in[ni++] = corner[q];
-            else out[no++] = corner[q];
+            if (v[corner[q]] < 0.0)
+                in[ni++] = corner[q];
+            else
+                out[no++] = corner[q];
         }
         if (ni == 0 || no == 0) continue;
         uint32_t e[4];
@@ -177,27 +184,32 @@ static void cube(extract_ctx *c, long i, long j, long k, const double v[8])
         }
         /* the first edge of each triangle runs from an inside corner to an outside one */
         int ia = v[ea[0]] < 0.0 ? ea[0] : eb[0], oa = ia == ea[0] ? eb[0] : ea[0];
-        sk_vec3d pin = sk_v3d(c->lo.x + c->cell * (double)(i + (ia & 1)), c->lo.y + c->cell * (double)(j + ((ia >> 1) & 1)),
+        sk_vec3d pin = sk_v3d(c->lo.x + c->cell * (double)(i + (ia & 1)),
+                              c->lo.y + c->cell * (double)(j + ((ia >> 1) & 1)),
                               c->lo.z + c->cell * (double)(k + ((ia >> 2) & 1)));
-        sk_vec3d pout = sk_v3d(c->lo.x + c->cell * (double)(i + (oa & 1)), c->lo.y + c->cell * (double)(j + ((oa >> 1) & 1)),
+        sk_vec3d pout = sk_v3d(c->lo.x + c->cell * (double)(i + (oa & 1)),
+                               c->lo.y + c->cell * (double)(j + ((oa >> 1) & 1)),
                                c->lo.z + c->cell * (double)(k + ((oa >> 2) & 1)));
         emit(c, e[0], e[1], e[2], pin, pout);
         if (ne == 4) emit(c, e[0], e[2], e[3], pin, pout);
     }
 }
 
-sk_result sk_hand__extract(const sk_hand__field *f, double cell, sk_hand__trimesh *out, sk_error *err)
+sk_result sk_hand__extract(const sk_hand__field *f, double cell, sk_hand__trimesh *out,
+                           sk_error *err)
 {
     memset(out, 0, sizeof *out);
     extract_ctx c = {.field = f, .cell = cell, .out = out};
     double margin = 2.0 * cell;
     c.lo = sk_v3d(f->lo.x - margin, f->lo.y - margin, f->lo.z - margin);
     long nb[3];
-    double ext[3] = {f->hi.x - f->lo.x + 2 * margin, f->hi.y - f->lo.y + 2 * margin, f->hi.z - f->lo.z + 2 * margin};
+    double ext[3] = {f->hi.x - f->lo.x + 2 * margin, f->hi.y - f->lo.y + 2 * margin,
+                     f->hi.z - f->lo.z + 2 * margin};
     for (int a = 0; a < 3; a++) nb[a] = (long)ceil(ext[a] / (cell * BLOCK));
     c.nx = nb[0] * BLOCK + 1, c.ny = nb[1] * BLOCK + 1, c.nz = nb[2] * BLOCK + 1;
     if ((double)c.nx * (double)c.ny * (double)c.nz > 4e9)
-        return sk_fail(err, SK_ERROR_LIMIT, "cell_mm = %g makes a grid of more than 4e9 points", cell);
+        return sk_fail(err, SK_ERROR_LIMIT, "cell_mm = %g makes a grid of more than 4e9 points",
+                       cell);
     long block_count = nb[0] * nb[1] * nb[2];
     /* classify blocks: which primitives reach them, and whether they may hold surface */
     double bsize = cell * BLOCK, half_diag = 0.5 * sqrt(3.0) * bsize;
@@ -247,13 +259,16 @@ sk_result sk_hand__extract(const sk_hand__field *f, double cell, sk_hand__trimes
         for (int z = 0; z < BP; z++)
             for (int y = 0; y < BP; y++)
                 for (int x = 0; x < BP; x++) {
-                    sk_vec3d p = sk_v3d(c.lo.x + cell * (double)(bx * BLOCK + x), c.lo.y + cell * (double)(by * BLOCK + y),
+                    sk_vec3d p = sk_v3d(c.lo.x + cell * (double)(bx * BLOCK + x),
+                                        c.lo.y + cell * (double)(by * BLOCK + y),
                                         c.lo.z + cell * (double)(bz * BLOCK + z));
-                    v[(z * BP + y) * BP + x] = (float)sk_hand__field_eval_list(f, list, counts[b], p);
+                    v[(z * BP + y) * BP + x] =
+                        (float)sk_hand__field_eval_list(f, list, counts[b], p);
                 }
     }
     sk_result r = SK_OK;
-    if (!map_init(&c.map, 1u << 16)) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the surface grid");
+    if (!map_init(&c.map, 1u << 16))
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the surface grid");
     for (long a = 0; a < active_count && r == SK_OK; a++) {
         long b = active[a];
         long bx = b % nb[0], by = (b / nb[0]) % nb[1], bz = b / (nb[0] * nb[1]);

@@ -66,9 +66,12 @@ sk_vec3d sk_hand__field_gradient(const sk_hand__field *f, sk_vec3d x)
 {
     const double e = 1e-3;
     sk_vec3d g;
-    g.x = sk_hand__field_eval(f, sk_v3d(x.x + e, x.y, x.z)) - sk_hand__field_eval(f, sk_v3d(x.x - e, x.y, x.z));
-    g.y = sk_hand__field_eval(f, sk_v3d(x.x, x.y + e, x.z)) - sk_hand__field_eval(f, sk_v3d(x.x, x.y - e, x.z));
-    g.z = sk_hand__field_eval(f, sk_v3d(x.x, x.y, x.z + e)) - sk_hand__field_eval(f, sk_v3d(x.x, x.y, x.z - e));
+    g.x = sk_hand__field_eval(f, sk_v3d(x.x + e, x.y, x.z)) -
+          sk_hand__field_eval(f, sk_v3d(x.x - e, x.y, x.z));
+    g.y = sk_hand__field_eval(f, sk_v3d(x.x, x.y + e, x.z)) -
+          sk_hand__field_eval(f, sk_v3d(x.x, x.y - e, x.z));
+    g.z = sk_hand__field_eval(f, sk_v3d(x.x, x.y, x.z + e)) -
+          sk_hand__field_eval(f, sk_v3d(x.x, x.y, x.z - e));
     return sk_v3d_scale(g, 0.5 / e);
 }
 
@@ -106,7 +109,8 @@ static void prim_bounds(sk_hand__prim *p)
     p->lo = sk_v3d(DBL_MAX, DBL_MAX, DBL_MAX);
     p->hi = sk_v3d(-DBL_MAX, -DBL_MAX, -DBL_MAX);
     for (int c = 0; c < 8; c++) {
-        sk_vec3d l = sk_v3d(c & 1 ? rx : -rx, c & 2 ? p->length + p->ry[1] : -p->ry[0], c & 4 ? czhi : czlo);
+        sk_vec3d l =
+            sk_v3d(c & 1 ? rx : -rx, c & 2 ? p->length + p->ry[1] : -p->ry[0], c & 4 ? czhi : czlo);
         sk_vec3d w = sk_v3d_add(p->origin, sk_m3d_apply(p->rotation, l));
         p->lo = sk_v3d(fmin(p->lo.x, w.x), fmin(p->lo.y, w.y), fmin(p->lo.z, w.z));
         p->hi = sk_v3d(fmax(p->hi.x, w.x), fmax(p->hi.y, w.y), fmax(p->hi.z, w.z));
@@ -170,20 +174,24 @@ void sk_hand__field_build(sk_hand__field *f, const sk_hand_skeleton *s, const sk
 
     /* carpus, from the wrist crease to the CMC joints, and the stump of the forearm */
     double cmc_y = s->offset[sk_hand__first_link(SK_HAND_MIDDLE)].y;
-    double span = s->offset[sk_hand__first_link(SK_HAND_INDEX)].x - s->offset[sk_hand__first_link(SK_HAND_LITTLE)].x;
+    double span = s->offset[sk_hand__first_link(SK_HAND_INDEX)].x -
+                  s->offset[sk_hand__first_link(SK_HAND_LITTLE)].x;
     sk_hand__prim *p = add(f, 0, 0, kp);
     p->rotation = carpus;
-    p->origin = sk_v3d_add(wrist, sk_v3d_scale(column(carpus, 0), 0.5 * (s->offset[4].x + s->offset[16].x)));
+    p->origin = sk_v3d_add(
+        wrist, sk_v3d_scale(column(carpus, 0), 0.5 * (s->offset[4].x + s->offset[16].x)));
     p->length = cmc_y;
-    set_section(p, fl->wrist_breadth_mm * sb, fl->wrist_thickness_mm * sb, fmax(fl->wrist_breadth_mm * sb, span + 20 * sb),
+    set_section(p, fl->wrist_breadth_mm * sb, fl->wrist_thickness_mm * sb,
+                fmax(fl->wrist_breadth_mm * sb, span + 20 * sb),
                 fl->wrist_thickness_mm * sb * 0.85);
     p = add(f, 0, 0, kp);
     p->rotation = carpus;
     p->origin = sk_v3d_sub(wrist, sk_v3d_scale(column(carpus, 1), fl->stump_length_mm * sb));
-    p->origin = sk_v3d_add(p->origin, sk_v3d_scale(column(carpus, 0), 0.5 * (s->offset[4].x + s->offset[16].x)));
+    p->origin = sk_v3d_add(
+        p->origin, sk_v3d_scale(column(carpus, 0), 0.5 * (s->offset[4].x + s->offset[16].x)));
     p->length = fl->stump_length_mm * sb;
-    set_section(p, fl->wrist_breadth_mm * sb * 0.96, fl->wrist_thickness_mm * sb * 0.96, fl->wrist_breadth_mm * sb,
-                fl->wrist_thickness_mm * sb);
+    set_section(p, fl->wrist_breadth_mm * sb * 0.96, fl->wrist_thickness_mm * sb * 0.96,
+                fl->wrist_breadth_mm * sb, fl->wrist_thickness_mm * sb);
     p->ry[0] = 0.25 * p->rz[0]; /* a nearly flat cut end */
 
     /* metacarpals: the palm for I..L, the thumb's inside the thenar */
@@ -205,8 +213,9 @@ void sk_hand__field_build(sk_hand__field *f, const sk_hand_skeleton *s, const sk
         const sk_hand_flesh_pad *pd = pads[i];
         p = add(f, 0, pad_link[i], 0.75 * kp);
         p->rotation = sk_m3d_mul(carpus, sk_m3d_rot_z(pd->angle_deg * SK_DEG_TO_RAD));
-        p->origin = sk_v3d_add(wrist, sk_m3d_apply(carpus, sk_v3d(pd->centre_x_hb * hb, pd->centre_y_hl * hl,
-                                                                  pd->centre_z_mm * sb)));
+        p->origin = sk_v3d_add(
+            wrist, sk_m3d_apply(carpus, sk_v3d(pd->centre_x_hb * hb, pd->centre_y_hl * hl,
+                                               pd->centre_z_mm * sb)));
         p->rx[0] = p->rx[1] = pd->radius_mm[0] * sb;
         p->ry[0] = p->ry[1] = pd->radius_mm[1] * sb;
         p->rz[0] = p->rz[1] = pd->radius_mm[2] * sb;
@@ -217,7 +226,8 @@ void sk_hand__field_build(sk_hand__field *f, const sk_hand_skeleton *s, const sk
         int la = sk_hand__first_link(fi) + 1, lb = sk_hand__first_link(fi + 1) + 1;
         double half = 0.5 * fl->web_reach;
         sk_vec3d a = along(&fr, s, la, half), b = along(&fr, s, lb, half);
-        sk_vec3d up = sk_v3d_normalize(sk_v3d_add(column(fr.rotation[la], 2), column(fr.rotation[lb], 2)));
+        sk_vec3d up =
+            sk_v3d_normalize(sk_v3d_add(column(fr.rotation[la], 2), column(fr.rotation[lb], 2)));
         p = add(f, 0, -1, 0.4 * kp);
         between(p, a, b, up);
         double r = 0.5 * fl->web_thickness_mm * sb;
@@ -247,8 +257,8 @@ void sk_hand__field_build(sk_hand__field *f, const sk_hand_skeleton *s, const sk
             p = add(f, 1 + fi, link, kj);
             p->rotation = fr.rotation[link];
             p->origin = fr.point[sk_hand_link_point(link)];
-            set_section(p, ff->breadth_mm[k - 1] * sb, ff->thickness_mm[k - 1] * sb, ff->breadth_mm[k] * sb,
-                        ff->thickness_mm[k] * sb);
+            set_section(p, ff->breadth_mm[k - 1] * sb, ff->thickness_mm[k - 1] * sb,
+                        ff->breadth_mm[k] * sb, ff->thickness_mm[k] * sb);
             p->length = s->length[link] - (last ? p->ry[1] : 0.0);
             if (!last) continue;
             /* nail plate: a flat elliptic plate on the dorsal side (local -Z), its outer

@@ -32,8 +32,8 @@ static void grow(const uint32_t *idx, size_t T, uint8_t *mark, size_t V)
  * again with its border locked, so those triangles fit back exactly; the held region
  * grows by a ring each time a defect remains. It ends: with every triangle held the
  * result is the full mesh. `dst` gets up to 3 T indices into the full mesh. */
-static sk_result simplify_manifold(const uint32_t *idx, size_t T, const float *pos, size_t V, size_t target,
-                                   uint32_t *dst, size_t *out_count, sk_error *err)
+static sk_result simplify_manifold(const uint32_t *idx, size_t T, const float *pos, size_t V,
+                                   size_t target, uint32_t *dst, size_t *out_count, sk_error *err)
 {
     if (target >= T) {
         memcpy(dst, idx, 3 * T * sizeof *dst);
@@ -41,7 +41,8 @@ static sk_result simplify_manifold(const uint32_t *idx, size_t T, const float *p
         return SK_OK;
     }
     uint8_t *held = calloc(V, 1), *bad = malloc(V);
-    uint32_t *kept = malloc(3 * T * sizeof *kept), *compact = malloc(3 * T * sizeof *compact), *map = malloc(V * sizeof *map);
+    uint32_t *kept = malloc(3 * T * sizeof *kept), *compact = malloc(3 * T * sizeof *compact),
+             *map = malloc(V * sizeof *map);
     sk_result r = SK_OK;
     if (!held || !bad || !kept || !compact || !map) {
         r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a level of detail");
@@ -57,13 +58,14 @@ static sk_result simplify_manifold(const uint32_t *idx, size_t T, const float *p
         }
         nh = T - nk;
         size_t want = target > nh ? target - nh : 0;
-        size_t n = nk > want ? meshopt_simplify(dst, kept, 3 * nk, pos, V, 3 * sizeof *pos, 3 * want, 1.0f,
-                                                meshopt_SimplifyLockBorder, NULL)
+        size_t n = nk > want ? meshopt_simplify(dst, kept, 3 * nk, pos, V, 3 * sizeof *pos,
+                                                3 * want, 1.0f, meshopt_SimplifyLockBorder, NULL)
                              : 3 * nk;
         if (nk <= want) memcpy(dst, kept, 3 * nk * sizeof *dst);
         for (size_t t = 0; t < T; t++) {
             const uint32_t *tv = idx + 3 * t;
-            if (held[tv[0]] || held[tv[1]] || held[tv[2]]) memcpy(dst + n, tv, 3 * sizeof *tv), n += 3;
+            if (held[tv[0]] || held[tv[1]] || held[tv[2]])
+                memcpy(dst + n, tv, 3 * sizeof *tv), n += 3;
         }
         /* check it on its own vertices */
         for (size_t v = 0; v < V; v++) map[v] = UINT32_MAX;
@@ -88,7 +90,8 @@ done:
     return r;
 }
 
-sk_result sk_hand_surface_simplify(sk_hand_surface **out, const sk_hand_surface *base, int target, sk_error *err)
+sk_result sk_hand_surface_simplify(sk_hand_surface **out, const sk_hand_surface *base, int target,
+                                   sk_error *err)
 {
     *out = NULL;
     sk_result r = sk_check_range_i(err, "target_triangles", target, 100, 1000000);
@@ -97,7 +100,8 @@ sk_result sk_hand_surface_simplify(sk_hand_surface **out, const sk_hand_surface 
     size_t V = m->vertex_count, T = m->triangle_count;
     bool left = base->skeleton.side == SK_HAND_SIDE_LEFT;
     float *pos = malloc(3 * V * sizeof *pos);
-    uint32_t *idx = malloc(3 * T * sizeof *idx), *dst = malloc(3 * T * sizeof *dst), *remap = malloc(V * sizeof *remap);
+    uint32_t *idx = malloc(3 * T * sizeof *idx), *dst = malloc(3 * T * sizeof *dst),
+             *remap = malloc(V * sizeof *remap);
     sk_hand_surface *s = calloc(1, sizeof *s);
     if (!pos || !idx || !dst || !remap || !s) {
         r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a level of detail");
@@ -128,7 +132,8 @@ sk_result sk_hand_surface_simplify(sk_hand_surface **out, const sk_hand_surface 
     memcpy(s->atlas_hi, base->atlas_hi, sizeof s->atlas_hi);
     if ((r = sk_mesh_create(&s->mesh, nv, n / 3, SK_MESH_NORMALS, err)) != SK_OK) goto done;
     for (size_t v = 0; v < V; v++)
-        if (remap[v] != UINT32_MAX) memcpy(s->mesh.positions + 3 * (size_t)remap[v], pos + 3 * v, 3 * sizeof *pos);
+        if (remap[v] != UINT32_MAX)
+            memcpy(s->mesh.positions + 3 * (size_t)remap[v], pos + 3 * v, 3 * sizeof *pos);
     for (size_t i = 0; i < n; i++) s->mesh.indices[i] = remap[dst[i]];
     r = sk_hand__surface_finish(s, err);
 done:

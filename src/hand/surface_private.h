@@ -11,15 +11,15 @@
  * varying linearly from the base to the end, closed by half-ellipsoids whose semi-axis
  * along Y is ry. A pad is a capsule of length 0. */
 typedef struct sk_hand__prim {
-    sk_mat3d rotation;       /* local axes as columns, in the rest-pose world */
+    sk_mat3d rotation; /* local axes as columns, in the rest-pose world */
     sk_vec3d origin;
     double length;
     double rx[2], rz[2], ry[2], cz[2];
-    double blend;            /* smooth-union radius with what came before in its group */
-    int group;               /* 0 = palm, 1 + finger = that finger's chain */
-    int link;                /* link it belongs to (weights), -1 for webs */
-    bool nail;               /* a nail plate (the material region) */
-    sk_vec3d lo, hi;         /* bounds in the world (without blending) */
+    double blend;    /* smooth-union radius with what came before in its group */
+    int group;       /* 0 = palm, 1 + finger = that finger's chain */
+    int link;        /* link it belongs to (weights), -1 for webs */
+    bool nail;       /* a nail plate (the material region) */
+    sk_vec3d lo, hi; /* bounds in the world (without blending) */
 } sk_hand__prim;
 
 #define SK_HAND__MAX_PRIMS 64
@@ -28,8 +28,8 @@ typedef struct sk_hand__prim {
 typedef struct sk_hand__field {
     int count;
     sk_hand__prim prim[SK_HAND__MAX_PRIMS];
-    double root_blend;       /* fingers into the palm */
-    sk_vec3d lo, hi;         /* bounds of all primitives */
+    double root_blend; /* fingers into the palm */
+    sk_vec3d lo, hi;   /* bounds of all primitives */
 } sk_hand__field;
 
 /* Builds the primitives of a right hand in the skeleton's relaxed posture. */
@@ -38,7 +38,8 @@ void sk_hand__field_build(sk_hand__field *field, const sk_hand_skeleton *right_s
 /* Distance-like value of one primitive (negative inside). */
 double sk_hand__prim_eval(const sk_hand__prim *p, sk_vec3d x);
 /* The field from a subset of primitives (indices ascending; NULL = all). */
-double sk_hand__field_eval_list(const sk_hand__field *field, const int *list, int count, sk_vec3d x);
+double sk_hand__field_eval_list(const sk_hand__field *field, const int *list, int count,
+                                sk_vec3d x);
 static inline double sk_hand__field_eval(const sk_hand__field *field, sk_vec3d x)
 {
     return sk_hand__field_eval_list(field, NULL, field->count, x);
@@ -50,15 +51,16 @@ double sk_hand__field_project(const sk_hand__field *field, sk_vec3d x, sk_vec3d 
 /* A growing triangle soup with shared vertices (the meshing steps' working mesh). */
 typedef struct sk_hand__trimesh {
     size_t vertex_count, vertex_cap;
-    double *pos;      /* 3 per vertex */
+    double *pos; /* 3 per vertex */
     size_t tri_count, tri_cap;
-    uint32_t *tri;    /* 3 per triangle, counter-clockwise seen from outside */
+    uint32_t *tri; /* 3 per triangle, counter-clockwise seen from outside */
 } sk_hand__trimesh;
 void sk_hand__trimesh_free(sk_hand__trimesh *m);
 
 /* Marching tetrahedra (Kuhn split of every cube) of the field on a narrow band of a grid
  * of step `cell`: a closed, manifold, self-intersection-free piecewise-linear level set. */
-sk_result sk_hand__extract(const sk_hand__field *field, double cell, sk_hand__trimesh *out, sk_error *err);
+sk_result sk_hand__extract(const sk_hand__field *field, double cell, sk_hand__trimesh *out,
+                           sk_error *err);
 /* Quadric edge collapses (Garland & Heckbert 1997) down to `target` triangles, keeping
  * the mesh manifold (link condition) and every triangle's orientation. */
 sk_result sk_hand__simplify(sk_hand__trimesh *mesh, size_t target, sk_error *err);
@@ -73,29 +75,30 @@ void sk_hand__untangle(sk_hand__trimesh *mesh, const sk_hand__field *field);
  * (every edge in exactly two triangles wound oppositely, every vertex's triangles one
  * fan), 0 if not, -1 out of memory; `euler` (may be NULL) gets V - E + F when 1; `bad`
  * (vertex_count entries, may be NULL) marks the vertices of every defect with 1. */
-int sk_hand__mesh_topology(const uint32_t *tri, size_t triangle_count, size_t vertex_count, long *euler,
-                           uint8_t *bad);
+int sk_hand__mesh_topology(const uint32_t *tri, size_t triangle_count, size_t vertex_count,
+                           long *euler, uint8_t *bad);
 
 /* Skin weights: 4 links and weights per vertex. */
 void sk_hand__weights_compute(const sk_hand__field *field, const sk_hand_skeleton *right_skeleton,
                               const float *positions, size_t vertex_count, uint16_t *nearest_links,
-                              float *nearest_weights, uint16_t *smooth_links, float *smooth_weights);
+                              float *nearest_weights, uint16_t *smooth_links,
+                              float *smooth_weights);
 
 struct sk_hand_surface {
-    sk_hand_skeleton skeleton;      /* as given (side included) */
-    sk_hand_skeleton right;         /* the same on the right side */
+    sk_hand_skeleton skeleton; /* as given (side included) */
+    sk_hand_skeleton right;    /* the same on the right side */
     sk_hand_flesh flesh;
-    sk_hand__field field;           /* right-hand rest pose */
-    sk_hand_frames bind;            /* relaxed frames of `skeleton` */
-    sk_mesh mesh;                   /* on `skeleton`'s side */
-    uint16_t *links[2];             /* [0] nearest, [1] smooth: vertex_count x 4 */
+    sk_hand__field field; /* right-hand rest pose */
+    sk_hand_frames bind;  /* relaxed frames of `skeleton` */
+    sk_mesh mesh;         /* on `skeleton`'s side */
+    uint16_t *links[2];   /* [0] nearest, [1] smooth: vertex_count x 4 */
     float *weights[2];
-    uint8_t *influences;            /* non-zero smooth weights per vertex (1..4) */
-    uint32_t *by_influence;         /* the vertices grouped by influence count, ascending
-                                       within each group: the skinning loops run one
-                                       count at a time, without a branch per vertex */
-    uint32_t influence_first[5];    /* group n (1..4) is by_influence[first[n-1] ..
-                                       first[n]); first[0] = 0 */
+    uint8_t *influences;         /* non-zero smooth weights per vertex (1..4) */
+    uint32_t *by_influence;      /* the vertices grouped by influence count, ascending
+                                    within each group: the skinning loops run one
+                                    count at a time, without a branch per vertex */
+    uint32_t influence_first[5]; /* group n (1..4) is by_influence[first[n-1] ..
+                                    first[n]); first[0] = 0 */
     /* atlas: export vertices (seam split) */
     size_t export_count;
     uint32_t *export_map;           /* export vertex -> mesh vertex */

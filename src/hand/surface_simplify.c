@@ -22,7 +22,7 @@ typedef struct heap_entry {
 
 typedef struct simplifier {
     sk_hand__trimesh *m;
-    double *q;           /* 10 per vertex: the symmetric 4x4 quadric */
+    double *q; /* 10 per vertex: the symmetric 4x4 quadric */
     uint32_t *stamp;
     bool *vdead, *tdead;
     uint32_t *start, *count, *cap, *pool;
@@ -48,7 +48,8 @@ static const double *P(const simplifier *s, uint32_t v) { return s->m->pos + 3 *
 
 static void tri_normal(const double *a, const double *b, const double *c, double n[3])
 {
-    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+           w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     n[0] = u[1] * w[2] - u[2] * w[1];
     n[1] = u[2] * w[0] - u[0] * w[2];
     n[2] = u[0] * w[1] - u[1] * w[0];
@@ -119,8 +120,8 @@ static double quadric_eval(const double *q, const double *p)
 {
     /* q: a11 a12 a13 a14 a22 a23 a24 a33 a34 a44 */
     double x = p[0], y = p[1], z = p[2];
-    return q[0] * x * x + 2 * q[1] * x * y + 2 * q[2] * x * z + 2 * q[3] * x + q[4] * y * y + 2 * q[5] * y * z +
-           2 * q[6] * y + q[7] * z * z + 2 * q[8] * z + q[9];
+    return q[0] * x * x + 2 * q[1] * x * y + 2 * q[2] * x * z + 2 * q[3] * x + q[4] * y * y +
+           2 * q[5] * y * z + 2 * q[6] * y + q[7] * z * z + 2 * q[8] * z + q[9];
 }
 
 static void edge_cost(simplifier *s, uint32_t a, uint32_t b, heap_entry *e)
@@ -132,8 +133,10 @@ static void edge_cost(simplifier *s, uint32_t a, uint32_t b, heap_entry *e)
     double len2 = 0;
     for (int k = 0; k < 3; k++) len2 += (pa[k] - pb[k]) * (pa[k] - pb[k]);
     /* optimal point: solve A p = -b by Cramer's rule when well conditioned */
-    double A[3][3] = {{q[0], q[1], q[2]}, {q[1], q[4], q[5]}, {q[2], q[5], q[7]}}, r[3] = {-q[3], -q[6], -q[8]};
-    double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+    double A[3][3] = {{q[0], q[1], q[2]}, {q[1], q[4], q[5]}, {q[2], q[5], q[7]}},
+           r[3] = {-q[3], -q[6], -q[8]};
+    double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+                 A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
                  A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
     double scale = q[0] + q[4] + q[7];
     double best[3], best_err = DBL_MAX;
@@ -143,7 +146,8 @@ static void edge_cost(simplifier *s, uint32_t a, uint32_t b, heap_entry *e)
             double M[3][3];
             memcpy(M, A, sizeof M);
             for (int k = 0; k < 3; k++) M[k][c] = r[k];
-            p[c] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+            p[c] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
+                    M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
                     M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
                    det;
         }
@@ -185,7 +189,8 @@ static bool ring_ok(simplifier *s, uint32_t v, uint32_t other, const double *p)
         double l0 = sqrt(n0[0] * n0[0] + n0[1] * n0[1] + n0[2] * n0[2]);
         double l1 = sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]);
         if (l1 <= 0.0) return false;
-        if (l0 > 0.0 && (n0[0] * n1[0] + n0[1] * n1[1] + n0[2] * n1[2]) < 0.5 * l0 * l1) return false;
+        if (l0 > 0.0 && (n0[0] * n1[0] + n0[1] * n1[1] + n0[2] * n1[2]) < 0.5 * l0 * l1)
+            return false;
         /* no new slivers (a sliver of the marching tetrahedra may only get better) */
         double qn = quality(c[0], c[1], c[2]);
         if (qn < 0.02 && qn < quality(o[0], o[1], o[2])) return false;
@@ -225,7 +230,6 @@ static bool can_collapse(simplifier *s, uint32_t a, uint32_t b, const double *p)
         if (adj_compact(s, third[k]) <= 3) return false;
     return ring_ok(s, a, b, p) && ring_ok(s, b, a, p);
 }
-
 
 static void adj_remove(simplifier *s, uint32_t v, uint32_t t)
 {
@@ -267,7 +271,9 @@ static size_t flip_pass(simplifier *s, const uint32_t *live, size_t live_n)
             tri_normal(pb, pa, pd, n2);
             double l1 = sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]);
             double l2 = sqrt(n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]);
-            if (l1 <= 0 || l2 <= 0 || n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2] < 0.95 * l1 * l2) continue;
+            if (l1 <= 0 || l2 <= 0 ||
+                n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2] < 0.95 * l1 * l2)
+                continue;
             double before = fmin(quality(pa, pb, pc), quality(pb, pa, pd));
             double after = fmin(quality(pa, pd, pc), quality(pd, pb, pc));
             if (after <= before * 1.05) continue;
@@ -275,7 +281,8 @@ static size_t flip_pass(simplifier *s, const uint32_t *live, size_t live_n)
             double m1[3], m2[3];
             tri_normal(pa, pd, pc, m1);
             tri_normal(pd, pb, pc, m2);
-            if (m1[0] * n1[0] + m1[1] * n1[1] + m1[2] * n1[2] <= 0 || m2[0] * n1[0] + m2[1] * n1[1] + m2[2] * n1[2] <= 0)
+            if (m1[0] * n1[0] + m1[1] * n1[1] + m1[2] * n1[2] <= 0 ||
+                m2[0] * n1[0] + m2[1] * n1[1] + m2[2] * n1[2] <= 0)
                 continue;
             /* the edge c-d must not exist yet */
             uint32_t rc[MAX_RING];
@@ -359,7 +366,8 @@ sk_result sk_hand__simplify(sk_hand__trimesh *m, size_t target, sk_error *err)
         double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         for (int k = 0; k < 3; k++) {
             const double *a = P(&s, tv[k]), *b = P(&s, tv[(k + 1) % 3]);
-            mean_len2 += (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+            mean_len2 += (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                         (a[2] - b[2]) * (a[2] - b[2]);
         }
         if (l <= 0) continue;
         double area = 0.5 * l;
@@ -456,7 +464,8 @@ sk_result sk_hand__simplify(sk_hand__trimesh *m, size_t target, sk_error *err)
         free(remap);
     }
 done:
-    free(s.q), free(s.stamp), free(s.vdead), free(s.tdead), free(s.start), free(s.count), free(s.cap), free(s.pool);
+    free(s.q), free(s.stamp), free(s.vdead), free(s.tdead), free(s.start), free(s.count),
+        free(s.cap), free(s.pool);
     free(s.heap);
     return r;
 }

@@ -23,14 +23,17 @@ static const directed_edge *find_edge(const directed_edge *e, size_t n, uint32_t
     return bsearch(&key, e, n, sizeof *e, compare_edges);
 }
 
-int sk_hand__mesh_topology(const uint32_t *tri, size_t triangle_count, size_t vertex_count, long *euler, uint8_t *bad)
+int sk_hand__mesh_topology(const uint32_t *tri, size_t triangle_count, size_t vertex_count,
+                           long *euler, uint8_t *bad)
 {
     size_t n = 3 * triangle_count;
     if (triangle_count == 0) return 0;
     directed_edge *e = malloc(n * sizeof *e);
     if (!e) return -1;
     for (size_t t = 0; t < triangle_count; t++)
-        for (int k = 0; k < 3; k++) e[3 * t + k] = (directed_edge){tri[3 * t + k], tri[3 * t + (k + 1) % 3], tri[3 * t + (k + 2) % 3]};
+        for (int k = 0; k < 3; k++)
+            e[3 * t + k] =
+                (directed_edge){tri[3 * t + k], tri[3 * t + (k + 1) % 3], tri[3 * t + (k + 2) % 3]};
     qsort(e, n, sizeof *e, compare_edges);
     int ok = 1;
     if (bad) memset(bad, 0, vertex_count);
@@ -41,7 +44,8 @@ int sk_hand__mesh_topology(const uint32_t *tri, size_t triangle_count, size_t ve
             continue;
         }
         /* a degenerate triangle, an edge used twice the same way, or one without its twin */
-        bool wrong = e[i].from == e[i].to || (i + 1 < n && e[i].from == e[i + 1].from && e[i].to == e[i + 1].to) ||
+        bool wrong = e[i].from == e[i].to ||
+                     (i + 1 < n && e[i].from == e[i + 1].from && e[i].to == e[i + 1].to) ||
                      !find_edge(e, n, e[i].to, e[i].from);
         if (!wrong) continue;
         ok = 0;

@@ -94,8 +94,8 @@ static void append(text_buffer *b, const char *fmt, ...)
     }
 }
 
-sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char **text, size_t *length,
-                                       sk_error *err)
+sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char **text,
+                                       size_t *length, sk_error *err)
 {
     *text = NULL;
     *length = 0;
@@ -124,23 +124,37 @@ sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char 
         }
     text_buffer b = {malloc(1 << 16), 0, 1 << 16, false};
     if (!b.data) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
-    append(&b,
-           "# Synthetic glove recordings of finger flexion, made by shitsukan (sk_hand_synthetic_grasps_csv,\n"
-           "# `shitsukan hand synthesize`: seed %llu, %d people x %d grasp types x %d trials x %d frames).\n"
-           "# Not a measurement: it stands in for real recordings, with the couplings reported for real\n"
-           "# glove data. Each trial reaches from the person's relaxed posture to a grasp, holds it and\n"
-           "# releases. A grasp type fixes MCP and PIP flexion per finger; per trial an aperture moves the\n"
-           "# PIPs of all fingers together (sd 10 deg; each PIP also 5 on its own) and each MCP by sd 10\n"
-           "# deg, partly shared with its radial neighbour (r = 0.5 index-middle, 0.7 middle-ring, 0.8\n"
-           "# ring-little), so neighbouring PIPs are strongly coupled, neighbouring MCPs moderately and\n"
-           "# the MCP and PIP of one finger weakly. On the way to an object and off it the hand opens\n"
-           "# beyond the grasp (pre-shaping: up to 15 deg MCP and 25 deg PIP extension, x 0.7-1.3 per\n"
-           "# trial, widest at 65 %% of the reach and 35 %% of the release). The DIP follows its PIP\n"
-           "# along a hinge (none below 20 deg of PIP, then 0.7 of the rest) times a personal gain of\n"
-           "# 0.45-1. People differ by an offset (sd 5 deg) and a range (x 0.85-1.15); every trial has a\n"
-           "# glove calibration offset (sd 2 deg) and every sample glove noise (sd %.3g deg); angles are\n"
-           "# clamped to the joint limits. Grasp types:",
-           (unsigned long long)d.seed, d.people, GRASPS, d.trials, d.frames, d.noise_deg);
+    append(
+        &b,
+        "# Synthetic glove recordings of finger flexion, made by shitsukan "
+        "(sk_hand_synthetic_grasps_csv,\n"
+        "# `shitsukan hand synthesize`: seed %llu, %d people x %d grasp types x %d trials x %d "
+        "frames).\n"
+        "# Not a measurement: it stands in for real recordings, with the couplings reported for "
+        "real\n"
+        "# glove data. Each trial reaches from the person's relaxed posture to a grasp, holds it "
+        "and\n"
+        "# releases. A grasp type fixes MCP and PIP flexion per finger; per trial an aperture "
+        "moves the\n"
+        "# PIPs of all fingers together (sd 10 deg; each PIP also 5 on its own) and each MCP by sd "
+        "10\n"
+        "# deg, partly shared with its radial neighbour (r = 0.5 index-middle, 0.7 middle-ring, "
+        "0.8\n"
+        "# ring-little), so neighbouring PIPs are strongly coupled, neighbouring MCPs moderately "
+        "and\n"
+        "# the MCP and PIP of one finger weakly. On the way to an object and off it the hand "
+        "opens\n"
+        "# beyond the grasp (pre-shaping: up to 15 deg MCP and 25 deg PIP extension, x 0.7-1.3 "
+        "per\n"
+        "# trial, widest at 65 %% of the reach and 35 %% of the release). The DIP follows its PIP\n"
+        "# along a hinge (none below 20 deg of PIP, then 0.7 of the rest) times a personal gain "
+        "of\n"
+        "# 0.45-1. People differ by an offset (sd 5 deg) and a range (x 0.85-1.15); every trial "
+        "has a\n"
+        "# glove calibration offset (sd 2 deg) and every sample glove noise (sd %.3g deg); angles "
+        "are\n"
+        "# clamped to the joint limits. Grasp types:",
+        (unsigned long long)d.seed, d.people, GRASPS, d.trials, d.frames, d.noise_deg);
     for (int g = 0; g < GRASPS; g++) append(&b, "%s %s", g ? "," : "", GRASP[g].name);
     append(&b, ".\nperson,trial,frame");
     for (int f = 0; f < FINGERS; f++)
@@ -148,18 +162,21 @@ sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char 
     append(&b, "\n");
     for (int p = 0; p < d.people && !b.failed; p++) {
         sk_rng pr = sk_rng_make(d.seed, 0x706572, (uint64_t)p, 0);
-        double offset[FINGERS][3], range = sk_rng_range(&pr, 0.85, 1.15), gain = sk_rng_range(&pr, 0.45, 1.0);
+        double offset[FINGERS][3], range = sk_rng_range(&pr, 0.85, 1.15),
+                                   gain = sk_rng_range(&pr, 0.45, 1.0);
         for (int f = 0; f < FINGERS; f++)
             for (int j = 0; j < 3; j++) offset[f][j] = 5.0 * sk_rng_normal(&pr);
         for (int g = 0; g < GRASPS; g++)
             for (int t = 0; t < d.trials; t++) {
                 sk_rng tr = sk_rng_make(d.seed, 0x747269, (uint64_t)p, (uint64_t)(g * 1000 + t));
-                double aperture = sk_rng_normal(&tr), calib[FINGERS][3], mcp_own[FINGERS], pip_own[FINGERS];
+                double aperture = sk_rng_normal(&tr), calib[FINGERS][3], mcp_own[FINGERS],
+                       pip_own[FINGERS];
                 /* each MCP's own variation shares part of its radial neighbour's */
                 static const double NEIGHBOUR_R[FINGERS] = {0.0, 0.5, 0.7, 0.8};
                 double z = 0.0;
                 for (int f = 0; f < FINGERS; f++) {
-                    z = NEIGHBOUR_R[f] * z + sqrt(1.0 - NEIGHBOUR_R[f] * NEIGHBOUR_R[f]) * sk_rng_normal(&tr);
+                    z = NEIGHBOUR_R[f] * z +
+                        sqrt(1.0 - NEIGHBOUR_R[f] * NEIGHBOUR_R[f]) * sk_rng_normal(&tr);
                     mcp_own[f] = 10.0 * z;
                     pip_own[f] = 5.0 * sk_rng_normal(&tr);
                     for (int j = 0; j < 3; j++) calib[f][j] = 2.0 * sk_rng_normal(&tr);
@@ -171,17 +188,24 @@ sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char 
                     /* reach (first 30 %), hold, release (last 30 %); on the way to an object and
                        off it the hand opens beyond the grasp (widest at 65 % of the reach and
                        35 % of the release) */
-                    double w = s < 0.3 ? smoothstep(s / 0.3) : s > 0.7 ? smoothstep((1.0 - s) / 0.3) : 1.0;
-                    double open = opening * (s < 0.3 ? bump(s / 0.3, 0.65) : s > 0.7 ? bump((s - 0.7) / 0.3, 0.35) : 0.0);
+                    double w = s < 0.3   ? smoothstep(s / 0.3)
+                               : s > 0.7 ? smoothstep((1.0 - s) / 0.3)
+                                         : 1.0;
+                    double open = opening * (s < 0.3   ? bump(s / 0.3, 0.65)
+                                             : s > 0.7 ? bump((s - 0.7) / 0.3, 0.35)
+                                                       : 0.0);
                     double drift = sin(tremor_phase + 9.0 * s);
                     append(&b, "p%d,p%d-g%d-t%d,%d", p + 1, p + 1, g + 1, t + 1, k);
-                    sk_rng nr = sk_rng_make(d.seed, 0x6e6f69, (uint64_t)p, (uint64_t)((g * 1000 + t) * 10000 + k));
+                    sk_rng nr = sk_rng_make(d.seed, 0x6e6f69, (uint64_t)p,
+                                            (uint64_t)((g * 1000 + t) * 10000 + k));
                     for (int f = 0; f < FINGERS; f++) {
                         double mcp_rest = GRASP[0].mcp[f], pip_rest = GRASP[0].pip[f];
                         double mcp_g = GRASP[g].mcp[f] + mcp_own[f] + 1.0 * drift;
                         double pip_g = GRASP[g].pip[f] + 10.0 * aperture + pip_own[f] + 1.5 * drift;
-                        double mcp = range * (mcp_rest + w * (mcp_g - mcp_rest)) + offset[f][0] - 15.0 * open;
-                        double pip = range * (pip_rest + w * (pip_g - pip_rest)) + offset[f][1] - 25.0 * open;
+                        double mcp = range * (mcp_rest + w * (mcp_g - mcp_rest)) + offset[f][0] -
+                                     15.0 * open;
+                        double pip = range * (pip_rest + w * (pip_g - pip_rest)) + offset[f][1] -
+                                     25.0 * open;
                         double dip = dip_of_pip(pip, gain) + offset[f][2];
                         double v[3] = {mcp, pip, dip};
                         for (int j = 0; j < 3; j++) {
@@ -204,7 +228,8 @@ sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char 
     return SK_OK;
 }
 
-sk_result sk_hand_synthetic_grasps_write(const sk_hand_synthetic_desc *desc, const char *path, sk_error *err)
+sk_result sk_hand_synthetic_grasps_write(const sk_hand_synthetic_desc *desc, const char *path,
+                                         sk_error *err)
 {
     char *text = NULL;
     size_t length = 0;

@@ -33,13 +33,15 @@ static sk_result tile_make(const sk_skin *skin, relief_tile *t, sk_error *err)
 static double tile_height(const relief_tile *t, double x, double y)
 {
     if (!t->h) return 0.0;
-    double u = sk_fmodpos(x / t->size[0], 1.0) * t->n, v = (1.0 - sk_fmodpos(y / t->size[1], 1.0)) * t->n;
+    double u = sk_fmodpos(x / t->size[0], 1.0) * t->n,
+           v = (1.0 - sk_fmodpos(y / t->size[1], 1.0)) * t->n;
     int x0 = (int)floor(u), y0 = (int)floor(v);
     double fx = u - x0, fy = v - y0;
     int x1 = (x0 + 1) % t->n, y1 = (y0 + 1) % t->n;
     x0 %= t->n, y0 %= t->n;
     const float *h = t->h;
-    double a = h[y0 * t->n + x0], b = h[y0 * t->n + x1], c = h[y1 * t->n + x0], d = h[y1 * t->n + x1];
+    double a = h[y0 * t->n + x0], b = h[y0 * t->n + x1], c = h[y1 * t->n + x0],
+           d = h[y1 * t->n + x1];
     return (a + (b - a) * fx) * (1 - fy) + (c + (d - c) * fx) * fy;
 }
 
@@ -73,13 +75,16 @@ static double creases(const bake_ctx *c, sk_vec3d p, double w_palm)
             bool dorsal = d.z < 0;
             if (dorsal && k > 1) {
                 /* knuckle wrinkles over PIP and DIP: a few transverse folds */
-                for (int i = -2; i <= 2; i++) h -= 0.35 * fade * groove(along - 1.3 * i, 0.35) * (1.0 - w_palm);
+                for (int i = -2; i <= 2; i++)
+                    h -= 0.35 * fade * groove(along - 1.3 * i, 0.35) * (1.0 - w_palm);
             } else if (!dorsal) {
                 /* flexion creases: two at the PIP, one at the DIP and at the finger's base */
                 double offsets[2] = {k == 2 ? -1.2 : 0.0, k == 2 ? 1.2 : 0.0};
                 int count = k == 2 ? 2 : 1;
-                double base_shift = k == 1 ? 0.35 * sk->length[link] : 0.0; /* the finger's base crease lies at the web */
-                for (int i = 0; i < count; i++) h -= fade * groove(along - offsets[i] - base_shift, 0.45) * w_palm;
+                double base_shift = k == 1 ? 0.35 * sk->length[link]
+                                           : 0.0; /* the finger's base crease lies at the web */
+                for (int i = 0; i < count; i++)
+                    h -= fade * groove(along - offsets[i] - base_shift, 0.45) * w_palm;
             }
         }
     }
@@ -110,18 +115,23 @@ double sk_hand_texture_memory(const sk_hand_texture_desc *desc)
     return n * n * (double)(sizeof(texel) + sizeof(float) + 2 * 3 * sizeof(float));
 }
 
-sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_desc *desc, sk_image *albedo,
-                               sk_image *normal_map, sk_error *err)
+sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_desc *desc,
+                               sk_image *albedo, sk_image *normal_map, sk_error *err)
 {
     sk_hand_texture_desc d = {0};
     if (desc) d = *desc;
     int N = d.size ? d.size : 1024;
     sk_result r = sk_check_range_i(err, "size", N, 64, 8192);
-    if (r == SK_OK && d.relief_scale != 0) r = sk_check_range_f(err, "relief_scale", d.relief_scale, 0, 100);
-    if (r == SK_OK && d.crease_depth_mm != 0) r = sk_check_range_f(err, "crease_depth_mm", d.crease_depth_mm, 0, 5);
-    if (r == SK_OK && d.seam_width != 0) r = sk_check_range_f(err, "seam_width", d.seam_width, 1e-3, 1);
+    if (r == SK_OK && d.relief_scale != 0)
+        r = sk_check_range_f(err, "relief_scale", d.relief_scale, 0, 100);
+    if (r == SK_OK && d.crease_depth_mm != 0)
+        r = sk_check_range_f(err, "crease_depth_mm", d.crease_depth_mm, 0, 5);
+    if (r == SK_OK && d.seam_width != 0)
+        r = sk_check_range_f(err, "seam_width", d.seam_width, 1e-3, 1);
     if (r != SK_OK) return r;
-    bake_ctx c = {.s = s, .relief = d.relief_scale ? d.relief_scale : 1.0, .crease = d.crease_depth_mm ? d.crease_depth_mm : 0.25,
+    bake_ctx c = {.s = s,
+                  .relief = d.relief_scale ? d.relief_scale : 1.0,
+                  .crease = d.crease_depth_mm ? d.crease_depth_mm : 0.25,
                   .seam = d.seam_width ? d.seam_width : 0.3};
     double q[SK_HAND_DOF_COUNT];
     sk_hand_relaxed(&s->right, q);
@@ -134,7 +144,8 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_d
         free(tx), free(height);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a %d x %d atlas", N, N);
     }
-    if ((r = tile_make(d.back_skin, &c.back, err)) == SK_OK) r = tile_make(d.palm_skin, &c.palm, err);
+    if ((r = tile_make(d.back_skin, &c.back, err)) == SK_OK)
+        r = tile_make(d.palm_skin, &c.palm, err);
     if (r == SK_OK) r = sk_image_create(albedo, N, N, 3, err);
     if (r == SK_OK) r = sk_image_create(normal_map, N, N, 3, err);
     if (r != SK_OK) goto done;
@@ -145,11 +156,15 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_d
     for (size_t t = 0; t < m->triangle_count; t++) {
         const uint32_t *e = s->export_indices + 3 * t;
         double u[3], v[3];
-        for (int k = 0; k < 3; k++) u[k] = s->export_uv[2 * e[k]] * N - 0.5, v[k] = (1.0 - s->export_uv[2 * e[k] + 1]) * N - 0.5;
+        for (int k = 0; k < 3; k++)
+            u[k] = s->export_uv[2 * e[k]] * N - 0.5,
+            v[k] = (1.0 - s->export_uv[2 * e[k] + 1]) * N - 0.5;
         double area = (u[1] - u[0]) * (v[2] - v[0]) - (u[2] - u[0]) * (v[1] - v[0]);
         if (fabs(area) < 1e-12) continue;
-        int x0 = (int)fmax(0, floor(fmin(u[0], fmin(u[1], u[2])))), x1 = (int)fmin(N - 1, ceil(fmax(u[0], fmax(u[1], u[2]))));
-        int y0 = (int)fmax(0, floor(fmin(v[0], fmin(v[1], v[2])))), y1 = (int)fmin(N - 1, ceil(fmax(v[0], fmax(v[1], v[2]))));
+        int x0 = (int)fmax(0, floor(fmin(u[0], fmin(u[1], u[2])))),
+            x1 = (int)fmin(N - 1, ceil(fmax(u[0], fmax(u[1], u[2]))));
+        int y0 = (int)fmax(0, floor(fmin(v[0], fmin(v[1], v[2])))),
+            y1 = (int)fmin(N - 1, ceil(fmax(v[0], fmax(v[1], v[2]))));
         for (int y = y0; y <= y1; y++)
             for (int x = x0; x <= x1; x++) {
                 double b1 = ((u[2] - x) * (v[0] - y) - (u[0] - x) * (v[2] - y)) / area;
@@ -163,16 +178,19 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_d
                 te->nail = 0;
                 for (int k = 0; k < 3; k++) {
                     uint32_t vi = s->export_map[e[k]];
-                    const float *P = m->positions + 3 * (size_t)vi, *Nn = m->normals + 3 * (size_t)vi;
+                    const float *P = m->positions + 3 * (size_t)vi,
+                                *Nn = m->normals + 3 * (size_t)vi;
                     te->p = sk_v3d_add(te->p, sk_v3d_scale(sk_v3d(flip * P[0], P[1], P[2]), b[k]));
-                    te->n = sk_v3d_add(te->n, sk_v3d_scale(sk_v3d(flip * Nn[0], Nn[1], Nn[2]), b[k]));
+                    te->n =
+                        sk_v3d_add(te->n, sk_v3d_scale(sk_v3d(flip * Nn[0], Nn[1], Nn[2]), b[k]));
                     if (nail) te->nail += b[k] * nail->data[vi];
                 }
                 te->n = sk_v3d_normalize(te->n);
             }
     }
     sk_vec3f back_colour = sk_v3f(0.56f, 0.34f, 0.25f), palm_colour = sk_v3f(0.68f, 0.43f, 0.35f);
-    sk_vec3f knuckle = sk_v3f(0.55f, 0.29f, 0.24f), nail_colour = sk_v3f(0.72f, 0.47f, 0.45f), edge = sk_v3f(0.86f, 0.8f, 0.72f);
+    sk_vec3f knuckle = sk_v3f(0.55f, 0.29f, 0.24f), nail_colour = sk_v3f(0.72f, 0.47f, 0.45f),
+             edge = sk_v3f(0.86f, 0.8f, 0.72f);
     float lo[2] = {s->atlas_lo[0], s->atlas_lo[1]}, hi[2] = {s->atlas_hi[0], s->atlas_hi[1]};
 #pragma omp parallel for schedule(dynamic, 16)
     for (int y = 0; y < N; y++)
@@ -187,15 +205,19 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_d
             if (d.back_photo) {
                 float px[4] = {0};
                 const sk_image *ph = d.back_photo;
-                int ix = (int)sk_clampd((1.0 - fu) * ph->width, 0, ph->width - 1), iy = (int)sk_clampd((1.0 - fv) * ph->height, 0, ph->height - 1);
-                memcpy(px, sk_image_pixel(ph, ix, iy), (size_t)(ph->channels < 3 ? 1 : 3) * sizeof(float));
+                int ix = (int)sk_clampd((1.0 - fu) * ph->width, 0, ph->width - 1),
+                    iy = (int)sk_clampd((1.0 - fv) * ph->height, 0, ph->height - 1);
+                memcpy(px, sk_image_pixel(ph, ix, iy),
+                       (size_t)(ph->channels < 3 ? 1 : 3) * sizeof(float));
                 back = ph->channels < 3 ? sk_v3f(px[0], px[0], px[0]) : sk_v3f(px[0], px[1], px[2]);
             }
             if (d.palm_photo) {
                 float px[4] = {0};
                 const sk_image *ph = d.palm_photo;
-                int ix = (int)sk_clampd(fu * ph->width, 0, ph->width - 1), iy = (int)sk_clampd((1.0 - fv) * ph->height, 0, ph->height - 1);
-                memcpy(px, sk_image_pixel(ph, ix, iy), (size_t)(ph->channels < 3 ? 1 : 3) * sizeof(float));
+                int ix = (int)sk_clampd(fu * ph->width, 0, ph->width - 1),
+                    iy = (int)sk_clampd((1.0 - fv) * ph->height, 0, ph->height - 1);
+                memcpy(px, sk_image_pixel(ph, ix, iy),
+                       (size_t)(ph->channels < 3 ? 1 : 3) * sizeof(float));
                 palm = ph->channels < 3 ? sk_v3f(px[0], px[0], px[0]) : sk_v3f(px[0], px[1], px[2]);
             }
             if (!d.back_photo) {
@@ -216,17 +238,21 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_d
                 for (int f = 0; f < SK_HAND_FINGER_COUNT; f++) {
                     int link = sk_hand__first_link(f) + sk_hand__link_count_of_finger(f) - 1;
                     sk_vec3d o = c.rest.point[sk_hand_link_point(link)];
-                    sk_vec3d l = sk_m3d_apply(sk_m3d_transpose(c.rest.rotation[link]), sk_v3d_sub(p, o));
+                    sk_vec3d l =
+                        sk_m3d_apply(sk_m3d_transpose(c.rest.rotation[link]), sk_v3d_sub(p, o));
                     if (fabs(l.x) < 12 && l.y > 0 && l.y < c.s->right.length[link] * 1.1)
-                        t_edge = fmax(t_edge, sk_clampd((l.y / c.s->right.length[link] - 0.8) / 0.08, 0, 1));
+                        t_edge = fmax(
+                            t_edge, sk_clampd((l.y / c.s->right.length[link] - 0.8) / 0.08, 0, 1));
                 }
                 sk_vec3f nc = sk_v3f_lerp(nail_colour, edge, (float)t_edge);
                 col = sk_v3f_lerp(col, nc, (float)sk_clampd(te->nail, 0, 1));
             }
             float *a = sk_image_pixel(albedo, x, y);
             a[0] = col.x, a[1] = col.y, a[2] = col.z;
-            double relief = (1.0 - w) * tile_height(&c.back, p.x, p.y) + w * tile_height(&c.palm, p.x, p.y);
-            height[(size_t)y * N + x] = (float)(c.relief * relief * (1.0 - te->nail) + creases(&c, p, w) * (1.0 - te->nail));
+            double relief =
+                (1.0 - w) * tile_height(&c.back, p.x, p.y) + w * tile_height(&c.palm, p.x, p.y);
+            height[(size_t)y * N + x] = (float)(c.relief * relief * (1.0 - te->nail) +
+                                                creases(&c, p, w) * (1.0 - te->nail));
         }
     /* mm per texel on both charts */
     double mm = 1.0 / (N * 0.97 * fmin(0.5 / (hi[0] - lo[0]), 1.0 / (hi[1] - lo[1])));
@@ -241,12 +267,17 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_d
                 int xr = x + 1 < N && tx[(size_t)y * N + x + 1].covered ? x + 1 : x;
                 int yu = y > 0 && tx[(size_t)(y - 1) * N + x].covered ? y - 1 : y;
                 int yd = y + 1 < N && tx[(size_t)(y + 1) * N + x].covered ? y + 1 : y;
-                if (xr > xl) gx = (height[(size_t)y * N + xr] - height[(size_t)y * N + xl]) / ((xr - xl) * mm);
+                if (xr > xl)
+                    gx = (height[(size_t)y * N + xr] - height[(size_t)y * N + xl]) /
+                         ((xr - xl) * mm);
                 /* image rows run down, v runs up */
-                if (yd > yu) gy = (height[(size_t)yu * N + x] - height[(size_t)yd * N + x]) / ((yd - yu) * mm);
+                if (yd > yu)
+                    gy = (height[(size_t)yu * N + x] - height[(size_t)yd * N + x]) /
+                         ((yd - yu) * mm);
             }
             sk_vec3d n = sk_v3d_normalize(sk_v3d(-gx, -gy, 1.0));
-            o[0] = (float)(0.5 * n.x + 0.5), o[1] = (float)(0.5 * n.y + 0.5), o[2] = (float)(0.5 * n.z + 0.5);
+            o[0] = (float)(0.5 * n.x + 0.5), o[1] = (float)(0.5 * n.y + 0.5),
+            o[2] = (float)(0.5 * n.z + 0.5);
         }
     /* grow the charts' colours a few texels outward so filtering at their borders finds skin */
     for (int pass = 0; pass < 4; pass++) {
@@ -257,8 +288,11 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_d
                 static const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
                 for (int k = 0; k < 4; k++) {
                     int xx = x + dx[k], yy = y + dy[k];
-                    if (xx < 0 || yy < 0 || xx >= N || yy >= N || !tx[(size_t)yy * N + xx].covered || tx[(size_t)yy * N + xx].nail < 0) continue;
-                    memcpy(sk_image_pixel(albedo, x, y), sk_image_pixel(albedo, xx, yy), 3 * sizeof(float));
+                    if (xx < 0 || yy < 0 || xx >= N || yy >= N ||
+                        !tx[(size_t)yy * N + xx].covered || tx[(size_t)yy * N + xx].nail < 0)
+                        continue;
+                    memcpy(sk_image_pixel(albedo, x, y), sk_image_pixel(albedo, xx, yy),
+                           3 * sizeof(float));
                     te->nail = -1; /* filled this pass, not a source until the next */
                     break;
                 }

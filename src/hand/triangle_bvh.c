@@ -74,11 +74,13 @@ static uint32_t build_node(builder *b, uint32_t first, uint32_t count)
     return id;
 }
 
-sk_result sk_hand__bvh_build(sk_hand__bvh *bvh, const sk_vec3d (*triangles)[3], uint32_t count, sk_error *err)
+sk_result sk_hand__bvh_build(sk_hand__bvh *bvh, const sk_vec3d (*triangles)[3], uint32_t count,
+                             sk_error *err)
 {
     memset(bvh, 0, sizeof *bvh);
     if (count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "mesh has no triangles");
-    if (count > (1u << 26)) return sk_fail(err, SK_ERROR_LIMIT, "mesh has %u triangles (at most 2^26)", count);
+    if (count > (1u << 26))
+        return sk_fail(err, SK_ERROR_LIMIT, "mesh has %u triangles (at most 2^26)", count);
     /* a median-split tree of n >= 1 triangles has fewer than 2n / LEAF_SIZE * 2 + 1 nodes */
     uint32_t max_nodes = 2 * count + 1;
     builder b = {bvh, triangles, malloc(sizeof(sk_vec3d) * count), malloc(sizeof(uint32_t) * count),
@@ -97,11 +99,12 @@ sk_result sk_hand__bvh_build(sk_hand__bvh *bvh, const sk_vec3d (*triangles)[3], 
             if (!isfinite(p.x) || !isfinite(p.y) || !isfinite(p.z)) {
                 free(b.centroid), free(b.order), free(b.scratch);
                 sk_hand__bvh_free(bvh);
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "triangle %u has a non-finite vertex", t);
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                               "triangle %u has a non-finite vertex", t);
             }
         }
-        b.centroid[t] = sk_v3d_scale(sk_v3d_add(sk_v3d_add(triangles[t][0], triangles[t][1]), triangles[t][2]),
-                                     1.0 / 3.0);
+        b.centroid[t] = sk_v3d_scale(
+            sk_v3d_add(sk_v3d_add(triangles[t][0], triangles[t][1]), triangles[t][2]), 1.0 / 3.0);
         b.order[t] = t;
     }
     bvh->triangle_count = count;
@@ -123,8 +126,8 @@ void sk_hand__bvh_free(sk_hand__bvh *bvh)
 }
 
 /* Slab test; returns the entry parameter or INFINITY on a miss. */
-static double ray_box(const sk_hand__bvh_node *n, const double o[3], const double inv[3], const int zero[3],
-                      double t_min, double t_max)
+static double ray_box(const sk_hand__bvh_node *n, const double o[3], const double inv[3],
+                      const int zero[3], double t_min, double t_max)
 {
     double t0 = t_min, t1 = t_max;
     for (int k = 0; k < 3; k++) {
@@ -162,8 +165,8 @@ static double ray_triangle(const sk_vec3d tri[3], sk_vec3d o, sk_vec3d d)
     return sk_v3d_dot(e2, q) * inv;
 }
 
-static bool traverse(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min, double t_max, bool any,
-                     sk_hand__ray_hit *hit)
+static bool traverse(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min, double t_max,
+                     bool any, sk_hand__ray_hit *hit)
 {
     if (bvh->node_count == 0) return false;
     double oo[3] = {o.x, o.y, o.z}, dd[3] = {d.x, d.y, d.z}, inv[3];
@@ -212,13 +215,14 @@ static bool traverse(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_m
     return found;
 }
 
-bool sk_hand__bvh_intersect(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min, double t_max,
-                            sk_hand__ray_hit *hit)
+bool sk_hand__bvh_intersect(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min,
+                            double t_max, sk_hand__ray_hit *hit)
 {
     return traverse(bvh, o, d, t_min, t_max, false, hit);
 }
 
-bool sk_hand__bvh_occluded(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min, double t_max)
+bool sk_hand__bvh_occluded(const sk_hand__bvh *bvh, sk_vec3d o, sk_vec3d d, double t_min,
+                           double t_max)
 {
     return traverse(bvh, o, d, t_min, t_max, true, NULL);
 }
@@ -268,7 +272,8 @@ double sk_hand__bvh_nearest(const sk_hand__bvh *bvh, sk_vec3d p, double max_d2, 
         if (sk_hand__box_distance2(n->lo, n->hi, p) >= best) continue;
         if (n->count > 0) {
             for (uint32_t i = n->first; i < n->first + n->count; i++) {
-                sk_vec3d q = sk_hand__closest_on_triangle(p, bvh->tri[i][0], bvh->tri[i][1], bvh->tri[i][2]);
+                sk_vec3d q =
+                    sk_hand__closest_on_triangle(p, bvh->tri[i][0], bvh->tri[i][1], bvh->tri[i][2]);
                 double d2 = sk_hand__dist2(p, q);
                 if (d2 < best) {
                     best = d2;

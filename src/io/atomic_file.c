@@ -157,8 +157,8 @@ sk_result sk_atomic_file_open(sk_atomic_file *file, const char *path, sk_error *
                                 (uint64_t)(sk_time_seconds() * 1e9), 0);
         for (int attempt = 0; attempt < 16 && fd < 0; attempt++) {
             free(file->temp_path);
-            file->temp_path = sk__sibling_name(file->final_path, ".tmp",
-                                               sk_mix64(salt + (uint64_t)attempt));
+            file->temp_path =
+                sk__sibling_name(file->final_path, ".tmp", sk_mix64(salt + (uint64_t)attempt));
             if (!file->temp_path) {
                 reset(file);
                 return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");

@@ -23,7 +23,8 @@ static int channel_code_index(char c)
 sk_result sk_bvh_add_joint(sk_bvh *b, const char *name, int parent, sk_vec3d offset,
                            const char *channels, bool end_site, int *out_index, sk_error *err)
 {
-    if (b->motion) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joints must be added before the motion");
+    if (b->motion)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joints must be added before the motion");
     if (b->joint_count >= SK_BVH_MAX_JOINTS)
         return sk_fail(err, SK_ERROR_LIMIT, "more than %d joints and end sites", SK_BVH_MAX_JOINTS);
     if (!name || !name[0] || strlen(name) >= SK_BVH_NAME_SIZE || strpbrk(name, " \t\r\n{}"))
@@ -31,8 +32,8 @@ sk_result sk_bvh_add_joint(sk_bvh *b, const char *name, int parent, sk_vec3d off
                        "joint name \"%s\" must be 1-%d bytes without white space or braces",
                        name ? name : "(null)", SK_BVH_NAME_SIZE - 1);
     if (parent < -1 || parent >= b->joint_count || (parent >= 0 && b->end_site[parent]))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joint \"%s\": parent %d is not a joint added before",
-                       name, parent);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "joint \"%s\": parent %d is not a joint added before", name, parent);
     if (end_site && parent < 0)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "end site \"%s\" needs a parent", name);
     size_t n = channels ? strlen(channels) : 0;
@@ -42,7 +43,8 @@ sk_result sk_bvh_add_joint(sk_bvh *b, const char *name, int parent, sk_vec3d off
     for (size_t i = 0; i < n; i++)
         if (channel_code_index(channels[i]) < 0 || memchr(channels, channels[i], i))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "joint \"%s\": channels \"%s\" must be distinct codes of xyzXYZ", name, channels);
+                           "joint \"%s\": channels \"%s\" must be distinct codes of xyzXYZ", name,
+                           channels);
     if (!isfinite(offset.x) || !isfinite(offset.y) || !isfinite(offset.z))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joint \"%s\": offset is not finite", name);
     int j = b->joint_count++;
@@ -60,14 +62,18 @@ sk_result sk_bvh_add_joint(sk_bvh *b, const char *name, int parent, sk_vec3d off
 
 sk_result sk_bvh_alloc_motion(sk_bvh *b, int frame_count, double frame_time, sk_error *err)
 {
-    if (frame_count < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame count %d must be at least 1", frame_count);
+    if (frame_count < 1)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame count %d must be at least 1",
+                       frame_count);
     if (!(frame_time > 0.0) || !isfinite(frame_time))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame time %g must be positive", frame_time);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame time %g must be positive",
+                       frame_time);
     size_t total;
-    if (!sk_size_mul((size_t)frame_count, (size_t)(b->channels_per_frame ? b->channels_per_frame : 1), &total) ||
+    if (!sk_size_mul((size_t)frame_count,
+                     (size_t)(b->channels_per_frame ? b->channels_per_frame : 1), &total) ||
         total > ((size_t)1 << 30))
-        return sk_fail(err, SK_ERROR_LIMIT, "%d frames x %d channels is too much motion", frame_count,
-                       b->channels_per_frame);
+        return sk_fail(err, SK_ERROR_LIMIT, "%d frames x %d channels is too much motion",
+                       frame_count, b->channels_per_frame);
     free(b->motion);
     b->motion = calloc(total, sizeof *b->motion);
     if (!b->motion) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
@@ -86,8 +92,10 @@ static void write_joint(FILE *out, const sk_bvh *b, int j, int depth)
     static const char *const names[6] = {"Xposition", "Yposition", "Zposition",
                                          "Xrotation", "Yrotation", "Zrotation"};
     indent(out, depth);
-    if (b->end_site[j]) fputs("End Site\n", out);
-    else fprintf(out, "%s %s\n", b->parent[j] < 0 ? "ROOT" : "JOINT", b->name[j]);
+    if (b->end_site[j])
+        fputs("End Site\n", out);
+    else
+        fprintf(out, "%s %s\n", b->parent[j] < 0 ? "ROOT" : "JOINT", b->name[j]);
     indent(out, depth);
     fputs("{\n", out);
     indent(out, depth + 1);
@@ -95,7 +103,8 @@ static void write_joint(FILE *out, const sk_bvh *b, int j, int depth)
     if (!b->end_site[j]) {
         indent(out, depth + 1);
         fprintf(out, "CHANNELS %d", b->channel_count[j]);
-        for (int c = 0; c < b->channel_count[j]; c++) fprintf(out, " %s", names[channel_code_index(b->channel[j][c])]);
+        for (int c = 0; c < b->channel_count[j]; c++)
+            fprintf(out, " %s", names[channel_code_index(b->channel[j][c])]);
         fputc('\n', out);
     }
     for (int k = j + 1; k < b->joint_count; k++)
@@ -124,14 +133,18 @@ sk_result sk_bvh_write_stream(const sk_bvh *b, FILE *out)
 
 sk_result sk_bvh_write(const sk_bvh *b, const char *path, sk_error *err)
 {
-    if (b->joint_count < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "a BVH needs at least one joint");
+    if (b->joint_count < 1)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "a BVH needs at least one joint");
     if (b->frame_count < 1 || !b->motion)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "a BVH needs at least one frame of motion");
-    if (!(b->frame_time > 0.0)) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame time %g must be positive", b->frame_time);
+    if (!(b->frame_time > 0.0))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame time %g must be positive",
+                       b->frame_time);
     size_t total = (size_t)b->frame_count * (size_t)b->channels_per_frame;
     for (size_t i = 0; i < total; i++)
         if (!isfinite(b->motion[i]))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "motion value %zu (frame %zu) is not finite", i,
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "motion value %zu (frame %zu) is not finite", i,
                            i / (size_t)b->channels_per_frame);
     sk_atomic_file file;
     sk_result r = sk_atomic_file_open(&file, path, err);

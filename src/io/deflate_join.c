@@ -84,7 +84,12 @@ static inline unsigned take(bit_reader *br, unsigned n)
 /* Second levels take at most 2^(15 - ROOT_BITS) entries per code longer than ROOT_BITS. */
 #define TABLE_ENTRIES ((1u << ROOT_BITS) + MAX_SYMBOLS * (1u << (TABLE_MAX_BITS - ROOT_BITS)))
 #define ENTRY_LINK 0x80u
-enum { KIND_NONE, KIND_LITERAL, KIND_LENGTH, KIND_END }; /* distance and code-length codes: LITERAL */
+enum {
+    KIND_NONE,
+    KIND_LITERAL,
+    KIND_LENGTH,
+    KIND_END
+}; /* distance and code-length codes: LITERAL */
 
 typedef struct huffman {
     uint32_t entry[TABLE_ENTRIES];
@@ -92,7 +97,7 @@ typedef struct huffman {
 
 static const uint8_t length_extra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
                                          2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
-static const uint8_t distance_extra[30] = {0, 0, 0, 0, 1, 1, 2,  2,  3,  3,  4,  4,  5,  5,  6,
+static const uint8_t distance_extra[30] = {0, 0, 0, 0, 1, 1, 2, 2,  3,  3,  4,  4,  5,  5,  6,
                                            6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
 
 enum { ALPHABET_LITLEN, ALPHABET_DISTANCE, ALPHABET_CODELEN };
@@ -205,7 +210,8 @@ static bool skip_symbols(bit_reader *br, const huffman *litlen, const huffman *d
 
 static bool read_dynamic_codes(bit_reader *br, huffman *litlen, huffman *dist, huffman *codelen)
 {
-    static const uint8_t order[19] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
+    static const uint8_t order[19] = {16, 17, 18, 0, 8,  7, 9,  6, 10, 5,
+                                      11, 4,  12, 3, 13, 2, 14, 1, 15};
     int hlit = (int)take(br, 5) + 257, hdist = (int)take(br, 5) + 1, hclen = (int)take(br, 4) + 4;
     if (hlit > 286 || hdist > 30) return false;
     uint8_t cl[19] = {0}, lengths[286 + 30];
@@ -265,15 +271,25 @@ bool sk__deflate_stream_end(const uint8_t *data, size_t size, size_t *final_head
         unsigned final = take(&br, 1), type = take(&br, 2);
         if (type == 0) {
             size_t at = (bit_position(&br) + 7) & ~(size_t)7;
-            if (at + 32 > br.limit) { ok = false; break; }
+            if (at + 32 > br.limit) {
+                ok = false;
+                break;
+            }
             seek(&br, at);
             unsigned len = take(&br, 16), nlen = take(&br, 16);
-            if ((len ^ 0xffffu) != nlen) { ok = false; break; }
+            if ((len ^ 0xffffu) != nlen) {
+                ok = false;
+                break;
+            }
             at += 32 + (size_t)len * 8;
-            if (at > br.limit) { ok = false; break; }
+            if (at > br.limit) {
+                ok = false;
+                break;
+            }
             seek(&br, at);
         } else if (type == 1 || type == 2) {
-            ok = type == 1 ? fixed_codes(litlen, dist) : read_dynamic_codes(&br, litlen, dist, codelen);
+            ok = type == 1 ? fixed_codes(litlen, dist)
+                           : read_dynamic_codes(&br, litlen, dist, codelen);
             if (!ok || !(ok = skip_symbols(&br, litlen, dist))) break;
         } else {
             ok = false;
@@ -293,7 +309,7 @@ bool sk__deflate_make_continuable(uint8_t *data, size_t *size)
 {
     size_t header, end;
     if (!sk__deflate_stream_end(data, *size, &header, &end) || (end + 7) / 8 != *size) return false;
-    data[header >> 3] &= (uint8_t)~(1u << (header & 7)); /* not final any more */
+    data[header >> 3] &= (uint8_t) ~(1u << (header & 7)); /* not final any more */
     /* an empty stored block: 3 header bits of 0 where the stream ended, zeros to the next
        byte, LEN = 0, NLEN = 0xffff */
     size_t byte = end >> 3;

@@ -165,13 +165,18 @@ static void collect_metadata(exr_reader *r, sk_image_metadata *meta)
 static double max_ratio(exr_compression_t c)
 {
     switch (c) {
-    case EXR_COMPRESSION_NONE: return 1.0;
-    case EXR_COMPRESSION_RLE: return 64.0;
+    case EXR_COMPRESSION_NONE:
+        return 1.0;
+    case EXR_COMPRESSION_RLE:
+        return 64.0;
     case EXR_COMPRESSION_B44:
-    case EXR_COMPRESSION_B44A: return 16.0;
+    case EXR_COMPRESSION_B44A:
+        return 16.0;
     case EXR_COMPRESSION_DWAA:
-    case EXR_COMPRESSION_DWAB: return 65536.0;
-    default: return 1032.0;
+    case EXR_COMPRESSION_DWAB:
+        return 65536.0;
+    default:
+        return 1032.0;
     }
 }
 

@@ -48,8 +48,12 @@ static sk_result check_desc(exr_writer *w, const sk_exr_write_desc *desc, sk_err
     if (desc) d = *desc;
     switch (d.pixel_type) {
     case SK_EXR_PIXEL_DEFAULT:
-    case SK_EXR_PIXEL_FLOAT: w->pixel_type = EXR_PIXEL_FLOAT; break;
-    case SK_EXR_PIXEL_HALF: w->pixel_type = EXR_PIXEL_HALF; break;
+    case SK_EXR_PIXEL_FLOAT:
+        w->pixel_type = EXR_PIXEL_FLOAT;
+        break;
+    case SK_EXR_PIXEL_HALF:
+        w->pixel_type = EXR_PIXEL_HALF;
+        break;
     default:
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pixel_type = %d is not a sk_exr_pixel_type",
                        (int)d.pixel_type);
@@ -60,15 +64,25 @@ static sk_result check_desc(exr_writer *w, const sk_exr_write_desc *desc, sk_err
        "EXR compression"). */
     int default_level = 4;
     switch (d.compression) {
-    case SK_EXR_COMPRESSION_NONE: w->compression = EXR_COMPRESSION_NONE; break;
+    case SK_EXR_COMPRESSION_NONE:
+        w->compression = EXR_COMPRESSION_NONE;
+        break;
     case SK_EXR_COMPRESSION_DEFAULT:
         w->compression = EXR_COMPRESSION_ZIP;
         default_level = 1;
         break;
-    case SK_EXR_COMPRESSION_ZIP: w->compression = EXR_COMPRESSION_ZIP; break;
-    case SK_EXR_COMPRESSION_PIZ: w->compression = EXR_COMPRESSION_PIZ; break;
-    case SK_EXR_COMPRESSION_RLE: w->compression = EXR_COMPRESSION_RLE; break;
-    case SK_EXR_COMPRESSION_ZIPS: w->compression = EXR_COMPRESSION_ZIPS; break;
+    case SK_EXR_COMPRESSION_ZIP:
+        w->compression = EXR_COMPRESSION_ZIP;
+        break;
+    case SK_EXR_COMPRESSION_PIZ:
+        w->compression = EXR_COMPRESSION_PIZ;
+        break;
+    case SK_EXR_COMPRESSION_RLE:
+        w->compression = EXR_COMPRESSION_RLE;
+        break;
+    case SK_EXR_COMPRESSION_ZIPS:
+        w->compression = EXR_COMPRESSION_ZIPS;
+        break;
     default:
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "compression = %d is not a sk_exr_compression", (int)d.compression);
@@ -197,7 +211,8 @@ static exr_result_t encode_chunk(chunk_worker *w, exr_const_context_t ctxt, chun
 
 static exr_result_t write_slot(const exr_writer *w, exr_context_t ctxt, const chunk_slot *slot)
 {
-    if (w->tile_size == 0) return exr_write_scanline_chunk(ctxt, 0, slot->y0, slot->bytes, slot->size);
+    if (w->tile_size == 0)
+        return exr_write_scanline_chunk(ctxt, 0, slot->y0, slot->bytes, slot->size);
     return exr_write_tile_chunk(ctxt, 0, slot->tx, slot->ty, 0, 0, slot->bytes, slot->size);
 }
 
@@ -228,7 +243,8 @@ static exr_result_t write_pixels(const exr_writer *w, exr_context_t ctxt)
     bool zip = w->compression == EXR_COMPRESSION_ZIP || w->compression == EXR_COMPRESSION_ZIPS;
     exr_result_t result = EXR_ERR_SUCCESS;
     /* images of a megabyte or less are encoded on the calling thread */
-    bool parallel = chunks > 1 && (size_t)im->width * im->height * im->channels * sizeof(float) > ((size_t)1 << 20);
+    bool parallel = chunks > 1 && (size_t)im->width * im->height * im->channels * sizeof(float) >
+                                      ((size_t)1 << 20);
 #pragma omp parallel if (parallel)
     {
         chunk_worker wk;
@@ -253,7 +269,8 @@ static exr_result_t write_pixels(const exr_writer *w, exr_context_t ctxt)
                     slot->ty = c / per_row;
                     slot->x0 = slot->tx * w->tile_size;
                     slot->y0 = slot->ty * w->tile_size;
-                    result = exr_write_tile_chunk_info(ctxt, 0, slot->tx, slot->ty, 0, 0, &slot->info);
+                    result =
+                        exr_write_tile_chunk_info(ctxt, 0, slot->tx, slot->ty, 0, 0, &slot->info);
                 }
             }
 #pragma omp for schedule(dynamic, 1)

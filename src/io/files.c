@@ -14,8 +14,9 @@ sk_result sk_read_file(const char *path, size_t max_bytes, char **out_data, size
     if (out_size) *out_size = 0;
     if (max_bytes == 0) max_bytes = (size_t)256 << 20;
     FILE *fp = fopen(path, "rb");
-    if (!fp) return sk_fail(err, errno == ENOENT ? SK_ERROR_NOT_FOUND : SK_ERROR_IO,
-                            "%s: cannot open (%s)", path, strerror(errno));
+    if (!fp)
+        return sk_fail(err, errno == ENOENT ? SK_ERROR_NOT_FOUND : SK_ERROR_IO,
+                       "%s: cannot open (%s)", path, strerror(errno));
     struct stat st;
     if (fstat(fileno(fp), &st) != 0 || !S_ISREG(st.st_mode)) {
         fclose(fp);

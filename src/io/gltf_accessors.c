@@ -79,11 +79,16 @@ int sk__gltf_put_view(sk__gltf_out *out, const void *data, size_t bytes, int tar
 static const char *type_name(int components)
 {
     switch (components) {
-    case 1: return "SCALAR";
-    case 2: return "VEC2";
-    case 3: return "VEC3";
-    case 4: return "VEC4";
-    default: return "MAT4";
+    case 1:
+        return "SCALAR";
+    case 2:
+        return "VEC2";
+    case 3:
+        return "VEC3";
+    case 4:
+        return "VEC4";
+    default:
+        return "MAT4";
     }
 }
 

@@ -40,18 +40,23 @@ float sk__gltf_accessor_value(const sk_gltf_doc *doc, const sk__gltf_accessor *a
     uint32_t bits = raw_bits(doc, a, i, c);
     float f;
     switch (a->component_type) {
-    case SK__GLTF_FLOAT: memcpy(&f, &bits, 4); return f;
+    case SK__GLTF_FLOAT:
+        memcpy(&f, &bits, 4);
+        return f;
     case SK__GLTF_BYTE: {
         float v = (float)(int8_t)(uint8_t)bits;
         return a->normalized ? (v / 127.0f < -1.0f ? -1.0f : v / 127.0f) : v;
     }
-    case SK__GLTF_UNSIGNED_BYTE: return a->normalized ? (float)bits / 255.0f : (float)bits;
+    case SK__GLTF_UNSIGNED_BYTE:
+        return a->normalized ? (float)bits / 255.0f : (float)bits;
     case SK__GLTF_SHORT: {
         float v = (float)(int16_t)(uint16_t)bits;
         return a->normalized ? (v / 32767.0f < -1.0f ? -1.0f : v / 32767.0f) : v;
     }
-    case SK__GLTF_UNSIGNED_SHORT: return a->normalized ? (float)bits / 65535.0f : (float)bits;
-    default: return (float)bits; /* UNSIGNED_INT */
+    case SK__GLTF_UNSIGNED_SHORT:
+        return a->normalized ? (float)bits / 65535.0f : (float)bits;
+    default:
+        return (float)bits; /* UNSIGNED_INT */
     }
 }
 

@@ -155,7 +155,8 @@ static sk_result check_material(const sk_gltf_material_desc *d, sk_error *err)
     if (r == SK_OK) r = sk_check_range_f(err, "roughness", d->roughness, 0.0, 1.0);
     if (r == SK_OK) r = sk_check_range_f(err, "normal_scale", d->normal_scale, -100.0, 100.0);
     static const char *const glow[3] = {"emissive[0]", "emissive[1]", "emissive[2]"};
-    for (int c = 0; c < 3 && r == SK_OK; c++) r = sk_check_range_f(err, glow[c], d->emissive[c], 0.0, 1.0);
+    for (int c = 0; c < 3 && r == SK_OK; c++)
+        r = sk_check_range_f(err, glow[c], d->emissive[c], 0.0, 1.0);
     if (r == SK_OK && d->emissive_texture && all_zero(d->emissive, 3))
         r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                     "emissive_texture without an emissive factor: all zero emits nothing");

@@ -186,7 +186,8 @@ static sk_result copy_material_needs(const sk_gltf *gltf, const sk_gltf_mesh_des
                        "material = %d is not a material of the document (%d materials)",
                        d->material, gltf->material_count);
     const sk__gltf_material *mat = &gltf->materials[d->material];
-    bool textured = mat->base_color_image >= 0 || mat->normal_image >= 0 || mat->emissive_image >= 0;
+    bool textured =
+        mat->base_color_image >= 0 || mat->normal_image >= 0 || mat->emissive_image >= 0;
     if (textured && !d->mesh->uvs)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "material = %d has a texture: the mesh needs uvs", d->material);

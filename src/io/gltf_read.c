@@ -244,12 +244,16 @@ static int component_size(int type)
 {
     switch (type) {
     case SK__GLTF_BYTE:
-    case SK__GLTF_UNSIGNED_BYTE: return 1;
+    case SK__GLTF_UNSIGNED_BYTE:
+        return 1;
     case SK__GLTF_SHORT:
-    case SK__GLTF_UNSIGNED_SHORT: return 2;
+    case SK__GLTF_UNSIGNED_SHORT:
+        return 2;
     case SK__GLTF_UNSIGNED_INT:
-    case SK__GLTF_FLOAT: return 4;
-    default: return 0;
+    case SK__GLTF_FLOAT:
+        return 4;
+    default:
+        return 0;
     }
 }
 

@@ -48,8 +48,10 @@ static const char *find_inexact_integer(const char *text, size_t length, size_t 
     for (size_t i = 0; i < length; i++) {
         char c = text[i];
         if (in_string) {
-            if (c == '\\') i++;
-            else if (c == '"') in_string = false;
+            if (c == '\\')
+                i++;
+            else if (c == '"')
+                in_string = false;
             continue;
         }
         if (c == '"') {
@@ -66,8 +68,8 @@ static const char *find_inexact_integer(const char *text, size_t length, size_t 
         while (stop < length && (isalnum((unsigned char)text[stop]) || text[stop] == '.' ||
                                  text[stop] == '+' || text[stop] == '-'))
             stop++;
-        if (!fraction && (digits > 16 ||
-                          (digits == 16 && memcmp(text + digits_start, k_max, 16) > 0))) {
+        if (!fraction &&
+            (digits > 16 || (digits == 16 && memcmp(text + digits_start, k_max, 16) > 0))) {
             *len = end - start;
             return text + start;
         }

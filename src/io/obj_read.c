@@ -1,5 +1,5 @@
-/* Wavefront OBJ reader: v (with optional sRGB colour, decoded to linear), vt, vn and f statements with strict
- * validation; (v, vt, vn) corner triples unified into single-index vertices by a hash
+/* Wavefront OBJ reader: v (with optional sRGB colour, decoded to linear), vt, vn and f statements
+ * with strict validation; (v, vt, vn) corner triples unified into single-index vertices by a hash
  * map; polygons triangulated. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>

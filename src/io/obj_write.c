@@ -100,7 +100,8 @@ static sk_result check_desc(const sk_mesh *mesh, const sk_obj_write_desc *d, sk_
                        "texture_path must be non-empty and on one line");
     if (d->material_count < 0 || d->group_count < 0 || (d->material_count > 0 && !d->materials) ||
         (d->group_count > 0 && !d->groups))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "material_count / group_count without arrays");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "material_count / group_count without arrays");
     for (int i = 0; i < d->material_count; i++) {
         const sk_obj_material *m = &d->materials[i];
         if (!is_name(m->name))
@@ -112,7 +113,8 @@ static sk_result check_desc(const sk_mesh *mesh, const sk_obj_write_desc *d, sk_
                 return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                                "materials[%d].diffuse[%d] = %g is out of range [0, 1]", i, c,
                                (double)m->diffuse[c]);
-        if (m->texture_path && (!m->texture_path[0] || has_space_or_newline(m->texture_path, false)))
+        if (m->texture_path &&
+            (!m->texture_path[0] || has_space_or_newline(m->texture_path, false)))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "materials[%d].texture_path must be non-empty and on one line", i);
     }
@@ -148,10 +150,12 @@ sk_result sk_mesh_write_obj(const sk_mesh *mesh, const char *path, const sk_obj_
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "texture_path / material_name and materials / groups exclude each other");
     /* the single-texture form: one white material with the diffuse map */
-    sk_obj_material single = {d.material_name ? d.material_name : "material", {1, 1, 1}, d.texture_path};
+    sk_obj_material single = {
+        d.material_name ? d.material_name : "material", {1, 1, 1}, d.texture_path};
     if (d.material_name && !is_name(d.material_name))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "material_name \"%s\" must be non-empty without white space", d.material_name);
+                       "material_name \"%s\" must be non-empty without white space",
+                       d.material_name);
     if ((res = check_desc(mesh, &d, err)) != SK_OK) return res;
     if (d.texture_path) {
         d.materials = &single;
@@ -159,11 +163,15 @@ sk_result sk_mesh_write_obj(const sk_mesh *mesh, const char *path, const sk_obj_
     }
     bool with_mtl = d.material_count > 0;
     if (d.mtl_name && (!d.mtl_name[0] || has_space_or_newline(d.mtl_name, false)))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "mtl_name must be non-empty and on one line");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "mtl_name must be non-empty and on one line");
     char *mtl_path = with_mtl ? (d.mtl_path ? strdup(d.mtl_path) : sk_obj_mtl_path(path)) : NULL;
     if (with_mtl && !mtl_path) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     const char *slash = mtl_path ? strrchr(mtl_path, '/') : NULL;
-    const char *mtl_name = !mtl_path ? NULL : d.mtl_name ? d.mtl_name : slash ? slash + 1 : mtl_path;
+    const char *mtl_name = !mtl_path    ? NULL
+                           : d.mtl_name ? d.mtl_name
+                           : slash      ? slash + 1
+                                        : mtl_path;
     sk_atomic_file obj = {0}, mtl = {0};
     res = sk_atomic_file_open(&obj, path, err);
     if (res == SK_OK && mtl_path) res = sk_atomic_file_open(&mtl, mtl_path, err);

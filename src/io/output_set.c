@@ -131,8 +131,7 @@ sk_result sk_output_set_file(sk_output_set *set, const char *path, const char **
     }
     if (already_reserved(set, final)) {
         free(final);
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: the same output is given twice",
-                       path);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: the same output is given twice", path);
     }
     /* a stream is written under the name given (a link keeps the extension writers read) */
     char *name = NULL;
@@ -185,8 +184,10 @@ static sk_result make_folders(sk_output_set *set, const char *path, bool self, s
                 }
             }
             char *copy = set->created_count < set->created_capacity ? strdup(buf) : NULL;
-            if (copy) set->created[set->created_count++] = copy;
-            else r = out_of_memory(err);
+            if (copy)
+                set->created[set->created_count++] = copy;
+            else
+                r = out_of_memory(err);
         } else if (errno != EEXIST) {
             r = sk_fail(err, SK_ERROR_IO, "%s: cannot create folder (%s)", buf, strerror(errno));
         }
@@ -213,8 +214,7 @@ sk_result sk_output_set_folder(sk_output_set *set, const char *path, const char 
     }
     if (already_reserved(set, final)) {
         free(final);
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: the same output is given twice",
-                       path);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: the same output is given twice", path);
     }
     sk_result r = make_folders(set, final, false, err);
     char *name = r == SK_OK ? staged_name(set, final) : NULL;
@@ -250,8 +250,10 @@ static void remove_folder(const char *path)
             char child[4096];
             snprintf(child, sizeof child, "%s/%s", path, d->d_name);
             struct stat st;
-            if (lstat(child, &st) == 0 && S_ISDIR(st.st_mode)) remove_folder(child);
-            else unlink(child);
+            if (lstat(child, &st) == 0 && S_ISDIR(st.st_mode))
+                remove_folder(child);
+            else
+                unlink(child);
         }
         closedir(dir);
     }
@@ -262,8 +264,10 @@ static void remove_folder(const char *path)
 static void remove_moved(const char *path)
 {
     struct stat st;
-    if (lstat(path, &st) == 0 && S_ISDIR(st.st_mode)) remove_folder(path);
-    else unlink(path);
+    if (lstat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        remove_folder(path);
+    else
+        unlink(path);
 }
 
 static sk_result note_moved(entry *e, const char *to, sk_error *err)
@@ -291,7 +295,8 @@ static sk_result merge_folder(entry *e, const char *from, const char *to, sk_err
         snprintf(src, sizeof src, "%s/%s", from, d->d_name);
         snprintf(dst, sizeof dst, "%s/%s", to, d->d_name);
         struct stat s_st, d_st;
-        if (lstat(src, &s_st) == 0 && S_ISDIR(s_st.st_mode) && stat(dst, &d_st) == 0 && S_ISDIR(d_st.st_mode)) {
+        if (lstat(src, &s_st) == 0 && S_ISDIR(s_st.st_mode) && stat(dst, &d_st) == 0 &&
+            S_ISDIR(d_st.st_mode)) {
             r = merge_folder(e, src, dst, err);
             if (r == SK_OK) rmdir(src);
         } else if (rename(src, dst) != 0) {
@@ -364,8 +369,10 @@ void sk_output_set_abort(sk_output_set *set)
             if (set->entries[k].kind == ENTRY_FOLDER && set->entries[k].placed &&
                 strcmp(set->entries[k].final, path) == 0)
                 output_folder = true;
-        if (output_folder) remove_folder(path);
-        else rmdir(path);
+        if (output_folder)
+            remove_folder(path);
+        else
+            rmdir(path);
     }
     destroy(set);
 }
@@ -388,7 +395,8 @@ sk_result sk_output_set_commit(sk_output_set *set, sk_error *err)
             else if (rename(e->staged, e->final) != 0)
                 r = sk_fail(err, SK_ERROR_IO, "%s: cannot move into place (%s)", e->final,
                             strerror(errno));
-            else e->placed = true;
+            else
+                e->placed = true;
         } else if (e->kind == ENTRY_FOLDER) {
             r = place_folder(set, e, err);
             if (r == SK_OK) e->placed = true;

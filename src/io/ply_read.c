@@ -1,7 +1,7 @@
 /* PLY 1.0 reader (ascii, binary little and big endian): header with any elements and
- * scalar or list properties of every PLY type; vertex positions, normals, UVs, colours (sRGB, decoded) and
- * other scalars as attributes; face lists triangulated; other elements skipped. Counts are
- * checked against the file size and the read cap before anything is allocated. */
+ * scalar or list properties of every PLY type; vertex positions, normals, UVs, colours (sRGB,
+ * decoded) and other scalars as attributes; face lists triangulated; other elements skipped. Counts
+ * are checked against the file size and the read cap before anything is allocated. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <float.h>
@@ -558,12 +558,24 @@ static sk_result read_value(ply_reader *r, ply_type t, bool first, double *out)
     r->pos += (size_t)size;
     r->consumed += (uint64_t)size;
     switch (t) {
-    case T_INT8: *out = (int8_t)(uint8_t)bits; break;
-    case T_UINT8: *out = (uint8_t)bits; break;
-    case T_INT16: *out = (int16_t)(uint16_t)bits; break;
-    case T_UINT16: *out = (uint16_t)bits; break;
-    case T_INT32: *out = (int32_t)(uint32_t)bits; break;
-    case T_UINT32: *out = (uint32_t)bits; break;
+    case T_INT8:
+        *out = (int8_t)(uint8_t)bits;
+        break;
+    case T_UINT8:
+        *out = (uint8_t)bits;
+        break;
+    case T_INT16:
+        *out = (int16_t)(uint16_t)bits;
+        break;
+    case T_UINT16:
+        *out = (uint16_t)bits;
+        break;
+    case T_INT32:
+        *out = (int32_t)(uint32_t)bits;
+        break;
+    case T_UINT32:
+        *out = (uint32_t)bits;
+        break;
     case T_FLOAT32: {
         uint32_t u = (uint32_t)bits;
         float f;
@@ -571,8 +583,11 @@ static sk_result read_value(ply_reader *r, ply_type t, bool first, double *out)
         *out = f;
         break;
     }
-    case T_FLOAT64: memcpy(out, &bits, sizeof *out); break;
-    case T_NONE: break;
+    case T_FLOAT64:
+        memcpy(out, &bits, sizeof *out);
+        break;
+    case T_NONE:
+        break;
     }
     return SK_OK;
 }
@@ -596,24 +611,32 @@ static sk_result store_vertex_value(ply_reader *r, const ply_property *p, size_t
     switch (p->role) {
     case R_X:
     case R_Y:
-    case R_Z: m->positions[3 * i + (size_t)(p->role - R_X)] = (float)v; break;
+    case R_Z:
+        m->positions[3 * i + (size_t)(p->role - R_X)] = (float)v;
+        break;
     case R_NX:
     case R_NY:
-    case R_NZ: m->normals[3 * i + (size_t)(p->role - R_NX)] = (float)v; break;
+    case R_NZ:
+        m->normals[3 * i + (size_t)(p->role - R_NX)] = (float)v;
+        break;
     case R_U:
-    case R_V: m->uvs[2 * i + (size_t)(p->role - R_U)] = (float)v; break;
+    case R_V:
+        m->uvs[2 * i + (size_t)(p->role - R_U)] = (float)v;
+        break;
     case R_RED:
     case R_GREEN:
     case R_BLUE:
         /* stored sRGB-encoded, as tools write them; linear in memory */
-        m->colors[3 * i + (size_t)(p->role - R_RED)] = (float)sk__srgb_decode(v / type_max[p->type]);
+        m->colors[3 * i + (size_t)(p->role - R_RED)] =
+            (float)sk__srgb_decode(v / type_max[p->type]);
         break;
     case R_ATTR: {
         sk_mesh_attribute *a = &m->attributes[p->attr];
         a->data[i * (size_t)a->components + (size_t)p->component] = (float)v;
         break;
     }
-    default: break;
+    default:
+        break;
     }
     return SK_OK;
 }

@@ -54,7 +54,8 @@ void sk__png_quantize_row(const sk__png_quantizer *q, const float *src, int widt
     if (q->bit_depth == 8) {
         for (int x = 0; x < width; x++, src += channels, out += channels) {
             for (int c = 0; c < colour; c++)
-                out[c] = (uint8_t)(srgb ? sk__png_srgb8_code(q, src[c]) : linear_code(src[c], 255.0));
+                out[c] =
+                    (uint8_t)(srgb ? sk__png_srgb8_code(q, src[c]) : linear_code(src[c], 255.0));
             if (colour < channels) out[colour] = (uint8_t)linear_code(src[colour], 255.0);
         }
         return;

@@ -1,5 +1,5 @@
-/* Float samples to PNG sample codes (private to the PNG writer and sk_image_codes8): linear rounding, the sRGB
- * curve for colour channels (alpha stays linear), 8 or 16 bits big-endian. */
+/* Float samples to PNG sample codes (private to the PNG writer and sk_image_codes8): linear
+ * rounding, the sRGB curve for colour channels (alpha stays linear), 8 or 16 bits big-endian. */
 #ifndef SK_IO_PNG_QUANTIZE_H
 #define SK_IO_PNG_QUANTIZE_H
 

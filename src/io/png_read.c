@@ -38,12 +38,18 @@ static int expanded_channels(png_structp png, png_infop info, int color_type)
 {
     bool trns = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
     switch (color_type) {
-    case PNG_COLOR_TYPE_GRAY: return trns ? 2 : 1;
-    case PNG_COLOR_TYPE_GRAY_ALPHA: return 2;
-    case PNG_COLOR_TYPE_RGB: return trns ? 4 : 3;
-    case PNG_COLOR_TYPE_RGB_ALPHA: return 4;
-    case PNG_COLOR_TYPE_PALETTE: return trns ? 4 : 3;
-    default: return 0;
+    case PNG_COLOR_TYPE_GRAY:
+        return trns ? 2 : 1;
+    case PNG_COLOR_TYPE_GRAY_ALPHA:
+        return 2;
+    case PNG_COLOR_TYPE_RGB:
+        return trns ? 4 : 3;
+    case PNG_COLOR_TYPE_RGB_ALPHA:
+        return 4;
+    case PNG_COLOR_TYPE_PALETTE:
+        return trns ? 4 : 3;
+    default:
+        return 0;
     }
 }
 

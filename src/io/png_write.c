@@ -328,7 +328,8 @@ static bool encode_strip(const png_job *job, strip_worker *w, int s, strip_out *
     size_t m = libdeflate_deflate_compress(w->compressor, w->raw, n, d, cap - head - 9);
     /* a strip that does not compress or join (never seen: the walk reads what libdeflate
        writes) is stored, which joins by construction */
-    if (m == 0 || (!last && !sk__deflate_make_continuable(d, &m))) m = sk__deflate_store(w->raw, n, last, d);
+    if (m == 0 || (!last && !sk__deflate_make_continuable(d, &m)))
+        m = sk__deflate_store(w->raw, n, last, d);
     out->size = head + m;
     if (!last) out->crc = chunk_crc("IDAT", out->bytes, out->size);
     return true;
@@ -338,8 +339,8 @@ static bool encode_strip(const png_job *job, strip_worker *w, int s, strip_out *
 typedef struct strip_queue {
     strip_out *outs; /* per strip; bytes == NULL once written */
     bool *done;
-    int next;        /* the first strip not yet written */
-    uint32_t adler;  /* of the strips written */
+    int next;       /* the first strip not yet written */
+    uint32_t adler; /* of the strips written */
 } strip_queue;
 
 /* Writes the strips from queue->next on that are done (under the caller's lock; next is
@@ -350,7 +351,8 @@ static void write_ready_strips(png_out *o, const png_job *job, strip_queue *q, b
     for (; next < job->strips && q->done[next]; next++) {
         strip_out *so = &q->outs[next];
         if (ok && o->ok) {
-            q->adler = next == 0 ? so->adler : sk__adler32_combine(q->adler, so->adler, so->raw_size);
+            q->adler =
+                next == 0 ? so->adler : sk__adler32_combine(q->adler, so->adler, so->raw_size);
             if (next == job->strips - 1) {
                 put32(so->bytes + so->size, q->adler);
                 so->size += 4;
@@ -373,7 +375,8 @@ static void write_ready_strips(png_out *o, const png_job *job, strip_queue *q, b
 static sk_result emit_image_data(png_out *o, const png_job *job, sk_error *err)
 {
     strip_queue q = {.outs = calloc((size_t)job->strips, sizeof *q.outs),
-                     .done = calloc((size_t)job->strips, sizeof *q.done), .adler = 1};
+                     .done = calloc((size_t)job->strips, sizeof *q.done),
+                     .adler = 1};
     if (!q.outs || !q.done) {
         free(q.outs), free(q.done);
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the PNG strips");
@@ -420,7 +423,8 @@ static sk_result emit_image_data(png_out *o, const png_job *job, sk_error *err)
     for (int s = 0; s < job->strips; s++) free(q.outs[s].bytes); /* after a failure */
     free(q.outs);
     free(q.done);
-    if (!memory_ok) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory while compressing the PNG");
+    if (!memory_ok)
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory while compressing the PNG");
     return SK_OK;
 }
 
@@ -454,8 +458,8 @@ static sk_result source_of_image(const sk_image *image, png_source *src, sk_erro
 {
     sk_result r = sk__image_validate(image, err);
     if (r != SK_OK) return r;
-    src->rows = (sk_image_rows){.width = image->width, .height = image->height,
-                                .channels = image->channels};
+    src->rows = (sk_image_rows){
+        .width = image->width, .height = image->height, .channels = image->channels};
     src->image = image;
     return SK_OK;
 }
@@ -468,7 +472,8 @@ static sk_result encode(const png_source *src, const sk_png_write_desc *d, sk__p
     sk__png_quantizer *q = malloc(sizeof *q);
     if (!q) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     sk__png_quantizer_init(q, image->channels, d->bit_depth, d->encoding);
-    png_job job = {.rows = image, .image = src->image, .quantizer = q, .level = d->compression_level};
+    png_job job = {
+        .rows = image, .image = src->image, .quantizer = q, .level = d->compression_level};
     job.row_bytes = (size_t)image->width * (size_t)image->channels * (size_t)(d->bit_depth / 8);
     size_t rows = STRIP_BYTES / (job.row_bytes + 1);
     job.rows_per_strip = rows < 1 ? 1 : (rows > (size_t)image->height ? image->height : (int)rows);
@@ -511,7 +516,8 @@ static sk_result write_file(const png_source *src, const char *path, const sk_pn
     if (r != SK_OK) return r;
     sk__png_sink sink = {file_write, file.fp};
     r = encode(src, &d, &sink, path, err);
-    if (r == SK_ERROR_IO && ferror(file.fp)) return sk_atomic_file_write_failed(&file, err); /* names the reason */
+    if (r == SK_ERROR_IO && ferror(file.fp))
+        return sk_atomic_file_write_failed(&file, err); /* names the reason */
     if (r != SK_OK) {
         sk_atomic_file_abort(&file);
         return r;

@@ -40,8 +40,8 @@ void sk_preset_free(sk_preset *preset)
     free(preset);
 }
 
-sk_result sk_preset_parse(sk_preset **out, const char *text, size_t length,
-                          const char *source_name, sk_error *err)
+sk_result sk_preset_parse(sk_preset **out, const char *text, size_t length, const char *source_name,
+                          sk_error *err)
 {
     *out = NULL;
     const char *name = source_name ? source_name : "preset";
@@ -171,8 +171,8 @@ sk_result sk_preset_set(sk_preset *preset, const char *assignment, sk_error *err
 {
     const char *eq = strchr(assignment, '=');
     if (!eq)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "--set '%s': expected key.path=value", assignment);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "--set '%s': expected key.path=value",
+                       assignment);
     path_step steps[MAX_PATH_STEPS];
     int count;
     sk_result r = parse_path(assignment, (size_t)(eq - assignment), steps, &count, err);

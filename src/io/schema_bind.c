@@ -88,8 +88,8 @@ static sk_result unknown_key(sk_error *err, const char *path, const char *key,
         used += (size_t)n;
     }
     if (closest)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: unknown key (did you mean '%s'?)",
-                       path, closest);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: unknown key (did you mean '%s'?)", path,
+                       closest);
     return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: unknown key; accepted keys: %s", path,
                    accepted);
 }
@@ -99,7 +99,8 @@ static sk_result check_doc_value(const cJSON *item, const char *path, sk_error *
     if (cJSON_IsString(item)) return SK_OK;
     if (cJSON_IsArray(item)) {
         const cJSON *e;
-        cJSON_ArrayForEach(e, item) if (!cJSON_IsString(e)) return type_error(err, path, "a string", e);
+        cJSON_ArrayForEach(e, item) if (!cJSON_IsString(e)) return type_error(err, path, "a string",
+                                                                              e);
         return SK_OK;
     }
     return type_error(err, path, "a string or an array of strings", item);
@@ -187,8 +188,8 @@ static sk_result bind_value(const cJSON *item, const sk_schema_field *f, unsigne
                 memcpy(ptr, &i, sizeof i);
                 return SK_OK;
             }
-            int n = snprintf(names + used, sizeof names - used, "%s%s", used ? ", " : "",
-                             f->names[i]);
+            int n =
+                snprintf(names + used, sizeof names - used, "%s%s", used ? ", " : "", f->names[i]);
             if (n > 0 && (size_t)n < sizeof names - used) used += (size_t)n;
         }
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = \"%s\" is not one of: %s", path,

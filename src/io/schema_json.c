@@ -107,15 +107,24 @@ static const char *type_name(const sk_schema_field *f)
 {
     switch (f->type) {
     case SK_FIELD_FLOAT:
-    case SK_FIELD_DOUBLE: return "number";
-    case SK_FIELD_INT: return "integer";
-    case SK_FIELD_SEED: return "integer";
-    case SK_FIELD_BOOL: return "boolean";
-    case SK_FIELD_ENUM: return "string";
-    case SK_FIELD_STRING: return "string";
-    case SK_FIELD_FLOATS: return "numbers";
-    case SK_FIELD_OBJECT: return "object";
-    case SK_FIELD_ARRAY: return "array";
+    case SK_FIELD_DOUBLE:
+        return "number";
+    case SK_FIELD_INT:
+        return "integer";
+    case SK_FIELD_SEED:
+        return "integer";
+    case SK_FIELD_BOOL:
+        return "boolean";
+    case SK_FIELD_ENUM:
+        return "string";
+    case SK_FIELD_STRING:
+        return "string";
+    case SK_FIELD_FLOATS:
+        return "numbers";
+    case SK_FIELD_OBJECT:
+        return "object";
+    case SK_FIELD_ARRAY:
+        return "array";
     }
     return "?";
 }
@@ -146,8 +155,8 @@ static void print_fields(const sk_schema *schema, const char *prefix, FILE *out)
         case SK_FIELD_ENUM: {
             size_t used = 0;
             for (int k = 0; f->names && f->names[k]; k++) {
-                int n = snprintf(range + used, sizeof range - used, "%s%s", k ? "|" : "",
-                                 f->names[k]);
+                int n =
+                    snprintf(range + used, sizeof range - used, "%s%s", k ? "|" : "", f->names[k]);
                 if (n < 0 || (size_t)n >= sizeof range - used) break;
                 used += (size_t)n;
             }
@@ -162,12 +171,14 @@ static void print_fields(const sk_schema *schema, const char *prefix, FILE *out)
         if (f->type == SK_FIELD_OBJECT) {
             print_fields(f->schema, path, out);
         } else if (f->type == SK_FIELD_ARRAY) {
-            fprintf(out, "  %-36s %-8s %-22s %s\n", path, type_name(f), range, f->doc ? f->doc : "");
+            fprintf(out, "  %-36s %-8s %-22s %s\n", path, type_name(f), range,
+                    f->doc ? f->doc : "");
             char elem[sizeof path + 4];
             snprintf(elem, sizeof elem, "%s[]", path);
             print_fields(f->schema, elem, out);
         } else {
-            fprintf(out, "  %-36s %-8s %-22s %s\n", path, type_name(f), range, f->doc ? f->doc : "");
+            fprintf(out, "  %-36s %-8s %-22s %s\n", path, type_name(f), range,
+                    f->doc ? f->doc : "");
         }
     }
 }
@@ -177,16 +188,26 @@ void sk_schema_print(const sk_schema *schema, FILE *out) { print_fields(schema, 
 static const char *field_kind(const sk_schema_field *f)
 {
     switch (f->type) {
-    case SK_FIELD_FLOAT: return "float";
-    case SK_FIELD_DOUBLE: return "double";
-    case SK_FIELD_INT: return "int";
-    case SK_FIELD_SEED: return "seed";
-    case SK_FIELD_BOOL: return "bool";
-    case SK_FIELD_ENUM: return "enum";
-    case SK_FIELD_STRING: return "string";
-    case SK_FIELD_FLOATS: return "floats";
-    case SK_FIELD_OBJECT: return "object";
-    case SK_FIELD_ARRAY: return "array";
+    case SK_FIELD_FLOAT:
+        return "float";
+    case SK_FIELD_DOUBLE:
+        return "double";
+    case SK_FIELD_INT:
+        return "int";
+    case SK_FIELD_SEED:
+        return "seed";
+    case SK_FIELD_BOOL:
+        return "bool";
+    case SK_FIELD_ENUM:
+        return "enum";
+    case SK_FIELD_STRING:
+        return "string";
+    case SK_FIELD_FLOATS:
+        return "floats";
+    case SK_FIELD_OBJECT:
+        return "object";
+    case SK_FIELD_ARRAY:
+        return "array";
     }
     return "?";
 }
@@ -197,8 +218,10 @@ static cJSON *describe_fields(const sk_schema *schema)
     for (int i = 0; i < schema->field_count; i++) {
         const sk_schema_field *f = &schema->fields[i];
         cJSON *o = cJSON_CreateObject();
-        if (f->key) cJSON_AddStringToObject(o, "key", f->key);
-        else cJSON_AddNullToObject(o, "key");
+        if (f->key)
+            cJSON_AddStringToObject(o, "key", f->key);
+        else
+            cJSON_AddNullToObject(o, "key");
         cJSON_AddStringToObject(o, "type", field_kind(f));
         switch (f->type) {
         case SK_FIELD_FLOAT:

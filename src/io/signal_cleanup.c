@@ -91,8 +91,10 @@ void sk__cleanup_now(void)
     for (int i = 0; i < SLOTS; i++) {
         const char *path = atomic_load(&g_paths[i]);
         if (!path) continue;
-        if (atomic_load(&g_folder[i])) remove_folder(path);
-        else unlink(path);
+        if (atomic_load(&g_folder[i]))
+            remove_folder(path);
+        else
+            unlink(path);
     }
 }
 

@@ -10,7 +10,8 @@
 static void le16(uint8_t *p, unsigned v) { p[0] = (uint8_t)v, p[1] = (uint8_t)(v >> 8); }
 static void le32(uint8_t *p, uint32_t v)
 {
-    p[0] = (uint8_t)v, p[1] = (uint8_t)(v >> 8), p[2] = (uint8_t)(v >> 16), p[3] = (uint8_t)(v >> 24);
+    p[0] = (uint8_t)v, p[1] = (uint8_t)(v >> 8), p[2] = (uint8_t)(v >> 16),
+    p[3] = (uint8_t)(v >> 24);
 }
 
 int16_t sk_wav_sample_16(float v)
@@ -30,8 +31,9 @@ sk_result sk_wav_write(const char *path, const float *samples, size_t frames, in
     size_t count, bytes;
     if (!sk_size_mul(frames, (size_t)channels, &count) || !sk_size_mul(count, 2, &bytes) ||
         bytes > 0xffffffffu - 44)
-        return sk_fail(err, SK_ERROR_LIMIT, "%zu sample frames of %d channels do not fit a WAV file (4 GiB)",
-                       frames, channels);
+        return sk_fail(err, SK_ERROR_LIMIT,
+                       "%zu sample frames of %d channels do not fit a WAV file (4 GiB)", frames,
+                       channels);
     if (count > 0 && !samples) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no samples given");
     sk_atomic_file f;
     if ((r = sk_atomic_file_open(&f, path, err)) != SK_OK) return r;

@@ -199,7 +199,8 @@ sk_result sk__export_build(const sk_render_scene *scene, const sk_render_export_
    uvs and tangents, and the indices. */
 static double mesh_bytes(double v, double t) { return v * (12 + 12 + 8 + 16) + t * 12; }
 
-double sk_render_scene_export_memory(const sk_render_scene *scene, const sk_render_export_desc *desc)
+double sk_render_scene_export_memory(const sk_render_scene *scene,
+                                     const sk_render_export_desc *desc)
 {
     double size = desc && desc->texture_size > 0 ? desc->texture_size : DEFAULT_TEXTURE_SIZE;
     bool textures = !(desc && desc->no_textures);
@@ -220,7 +221,8 @@ double sk_render_scene_export_memory(const sk_render_scene *scene, const sk_rend
         int maps[2] = {m->albedo_texture, m->normal_map};
         for (int j = 0; j < 2 && !m->skin; j++)
             if (maps[j] >= 0)
-                bytes += 12.0 * scene->textures[maps[j]].image.width * scene->textures[maps[j]].image.height;
+                bytes += 12.0 * scene->textures[maps[j]].image.width *
+                         scene->textures[maps[j]].image.height;
     }
     /* the writers put the meshes together once more (one OBJ mesh, the GLB buffer), with the
        encoded textures */
@@ -254,7 +256,9 @@ sk_result sk_render_scene_export(const sk_render_scene *scene, const char *path,
         sk__export_free(&e);
     }
     free(mtl);
-    if (own && r == SK_OK) r = sk_output_set_commit(own, err);
-    else if (own) sk_output_set_abort(own);
+    if (own && r == SK_OK)
+        r = sk_output_set_commit(own, err);
+    else if (own)
+        sk_output_set_abort(own);
     return r;
 }

@@ -19,7 +19,8 @@ static bool trace(const sk_render_scene *scene, sk__worker *w, struct RTCRayHit 
     return hit;
 }
 
-static bool occluded(const sk_render_scene *scene, sk__worker *w, sk_vec3f o, sk_vec3f d, float tfar)
+static bool occluded(const sk_render_scene *scene, sk__worker *w, sk_vec3f o, sk_vec3f d,
+                     float tfar)
 {
     w->shadow_rays++;
     if (!w->timing) return sk__occluded(scene, o, d, tfar);
@@ -105,7 +106,8 @@ void sk__sample_id_init(const sk_render_scene *scene, uint64_t pixel, sk__sample
     uint32_t spp = (uint32_t)d->image.samples;
     id->sample = 0;
     if (d->environment.ambient_occlusion)
-        id->ao = sk__pattern_make(d->seed, pixel, SK__SAMPLE_AO, spp * (uint32_t)d->environment.ao_samples);
+        id->ao = sk__pattern_make(d->seed, pixel, SK__SAMPLE_AO,
+                                  spp * (uint32_t)d->environment.ao_samples);
     for (int li = 0; li < scene->light_count; li++)
         if (scene->lights[li].type == SK_RENDER_LIGHT_RECT)
             id->lights[li] = sk__pattern_make(d->seed, pixel, SK__SAMPLE_LIGHT + (uint32_t)li,

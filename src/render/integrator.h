@@ -15,8 +15,8 @@ typedef struct sk__worker {
 /* The sample patterns of one pixel (made once per pixel) and the current sample's index:
  * all random numbers of a sample derive from these. */
 typedef struct sk__sample_id {
-    uint32_t sample;                         /* index of the camera sample in the pixel */
-    sk__pattern ao;                          /* occlusion rays: ao_samples per sample */
+    uint32_t sample;                          /* index of the camera sample in the pixel */
+    sk__pattern ao;                           /* occlusion rays: ao_samples per sample */
     sk__pattern lights[SK_RENDER_MAX_LIGHTS]; /* area light points: samples per sample */
 } sk__sample_id;
 

@@ -49,7 +49,8 @@ sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
 {
     const sk_render_scene_desc *d = &scene->desc;
     int max_textures = 2 * d->material_count;
-    scene->textures = calloc((size_t)(max_textures > 0 ? max_textures : 1), sizeof *scene->textures);
+    scene->textures =
+        calloc((size_t)(max_textures > 0 ? max_textures : 1), sizeof *scene->textures);
     if (!scene->textures) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for textures");
     sk_result r = SK_OK;
     for (int i = 0; i < d->material_count && r == SK_OK; i++) {
@@ -61,15 +62,20 @@ sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
         if (m->desc.albedo_image)
             borrowed_texture(scene, m->desc.albedo_image, &m->albedo_texture);
         else if (m->desc.albedo_texture[0] &&
-                 (r = texture_index(scene, m->desc.albedo_texture, true, &m->albedo_texture, err)) != SK_OK)
-            sk_error_prefix(err, r, "materials[%d].albedo_texture = \"%s\"", i, m->desc.albedo_texture);
+                 (r = texture_index(scene, m->desc.albedo_texture, true, &m->albedo_texture,
+                                    err)) != SK_OK)
+            sk_error_prefix(err, r, "materials[%d].albedo_texture = \"%s\"", i,
+                            m->desc.albedo_texture);
         if (r == SK_OK && m->desc.normal_image)
             borrowed_texture(scene, m->desc.normal_image, &m->normal_map);
         else if (r == SK_OK && m->desc.normal_map[0] &&
-                 (r = texture_index(scene, m->desc.normal_map, false, &m->normal_map, err)) != SK_OK)
+                 (r = texture_index(scene, m->desc.normal_map, false, &m->normal_map, err)) !=
+                     SK_OK)
             sk_error_prefix(err, r, "materials[%d].normal_map = \"%s\"", i, m->desc.normal_map);
-        if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_SKIN) r = sk__skin_material_build(m, i, err);
-        if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_WOOD) r = sk__wood_material_build(m, i, err);
+        if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_SKIN)
+            r = sk__skin_material_build(m, i, err);
+        if (r == SK_OK && m->desc.type == SK_RENDER_MATERIAL_WOOD)
+            r = sk__wood_material_build(m, i, err);
     }
     if (r != SK_OK) return r;
     /* the default material of objects without one: grey diffuse */
@@ -97,7 +103,8 @@ void sk__material_eval(const sk_render_scene *scene, sk__shading *sh)
     const sk__material *m = sh->material;
     const sk_render_material_desc *d = &m->desc;
     sk_render_surface *s = &sh->surface;
-    s->st = sk_v2f(s->uv.x * d->uv_scale[0] + d->uv_offset[0], s->uv.y * d->uv_scale[1] + d->uv_offset[1]);
+    s->st = sk_v2f(s->uv.x * d->uv_scale[0] + d->uv_offset[0],
+                   s->uv.y * d->uv_scale[1] + d->uv_offset[1]);
     float unit = scene->desc.unit_mm;
     s->st_per_mm = sk_v2f(sh->du_len > 0 ? d->uv_scale[0] / (sh->du_len * unit) : 0.0f,
                           sh->dv_len > 0 ? d->uv_scale[1] / (sh->dv_len * unit) : 0.0f);

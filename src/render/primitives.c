@@ -34,7 +34,8 @@ static size_t add_vertex(builder *b, sk_vec3f p, sk_vec3f n, sk_vec3f t, float u
 static void add_triangle(builder *b, size_t a, size_t c, size_t d)
 {
     const float *p = b->mesh->positions, *n = b->mesh->normals;
-    sk_vec3f pa = sk__v3f_from(p + 3 * a), pc = sk__v3f_from(p + 3 * c), pd = sk__v3f_from(p + 3 * d);
+    sk_vec3f pa = sk__v3f_from(p + 3 * a), pc = sk__v3f_from(p + 3 * c),
+             pd = sk__v3f_from(p + 3 * d);
     sk_vec3f face = sk_v3f_cross(sk_v3f_sub(pc, pa), sk_v3f_sub(pd, pa));
     sk_vec3f ns = sk_v3f_add(sk_v3f_add(sk__v3f_from(n + 3 * a), sk__v3f_from(n + 3 * c)),
                              sk__v3f_from(n + 3 * d));
@@ -130,7 +131,8 @@ static void add_cap(builder *b, float radius, float y, bool up, int segments, bo
         float x = radius * sinf(phi), z = radius * cosf(phi);
         add_vertex(b, sk_v3f(x, y, z), n, t, (x + radius) * scale, (zsign * z + radius) * scale);
     }
-    for (int k = 0; k < segments; k++) add_triangle(b, centre, first + (size_t)k, first + (size_t)k + 1);
+    for (int k = 0; k < segments; k++)
+        add_triangle(b, centre, first + (size_t)k, first + (size_t)k + 1);
 }
 
 /* Points of a quarter circle of radius r centred at (0, yc), latitude lat0 -> lat1. */
@@ -171,7 +173,8 @@ sk_result sk_render_make_primitive(const sk_render_object_desc *object, sk_mesh 
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "segments = %d is out of range [3, 4096]",
                        segments);
     if (rings < 2 || rings > 4096)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "rings = %d is out of range [2, 4096]", rings);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "rings = %d is out of range [2, 4096]",
+                       rings);
     float sx = object->size[0], sy = object->size[1], sz = object->size[2];
     if (sx == 0 && sy == 0 && sz == 0) sx = sy = sz = 1.0f;
     float radius = object->radius > 0 ? object->radius : 0.5f;
@@ -210,7 +213,8 @@ sk_result sk_render_make_primitive(const sk_render_object_desc *object, sk_mesh 
         int half = rings / 2 > 0 ? rings / 2 : 1;
         count = arc_points(prof, radius, -height / 2, -SK_PI_F / 2, 0.0f, half, 0.0f, false);
         float s_top = SK_PI_F * radius / 2 + height;
-        count += arc_points(prof + count, radius, height / 2, 0.0f, SK_PI_F / 2, half, s_top, false);
+        count +=
+            arc_points(prof + count, radius, height / 2, 0.0f, SK_PI_F / 2, half, s_top, false);
         v_len = SK_PI_F * radius + height;
         break;
     }

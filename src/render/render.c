@@ -98,7 +98,8 @@ sk_result sk_render_scene_render(const sk_render_scene *scene, const sk_render_o
         stats->seconds = sk_time_seconds() - start;
         stats->camera_rays = (long long)d->image.width * d->image.height * d->image.samples;
         stats->shadow_rays = shadow_rays;
-        stats->camera_rays_per_second = stats->seconds > 0 ? stats->camera_rays / stats->seconds : 0;
+        stats->camera_rays_per_second =
+            stats->seconds > 0 ? stats->camera_rays / stats->seconds : 0;
         if (opt.timing) {
             stats->intersect_seconds = intersect_seconds;
             stats->shade_seconds = busy_seconds - intersect_seconds;

@@ -18,16 +18,16 @@ typedef struct sk__rmesh {
 /* An object: a mesh placed by an affine transform. */
 typedef struct sk__instance {
     int mesh;
-    int material;             /* index into scene->materials (the default is last) */
-    sk_mat4f to_world;        /* object -> scene */
-    sk_mat4f to_object;       /* scene -> object */
-    sk_mat3f normal_matrix;   /* inverse transpose of the linear part */
-    sk_mat3f rotation;        /* the rotation alone (the object frame of solid textures) */
-    float handedness;         /* sign of the linear part's determinant */
+    int material;           /* index into scene->materials (the default is last) */
+    sk_mat4f to_world;      /* object -> scene */
+    sk_mat4f to_object;     /* scene -> object */
+    sk_mat3f normal_matrix; /* inverse transpose of the linear part */
+    sk_mat3f rotation;      /* the rotation alone (the object frame of solid textures) */
+    float handedness;       /* sign of the linear part's determinant */
 } sk__instance;
 
 typedef struct sk__texture {
-    sk_image image; /* linear floats, 1-4 channels */
+    sk_image image;                 /* linear floats, 1-4 channels */
     char name[SK_RENDER_PATH_SIZE]; /* as the scene names it */
     bool srgb;                      /* decoded from sRGB (colour) or read linearly */
     bool borrowed;                  /* image is the caller's (C API images): not freed */
@@ -41,12 +41,12 @@ typedef enum sk__brdf_kind {
 typedef struct sk__material {
     sk_render_material_desc desc; /* resolved */
     sk__brdf_kind brdf;
-    int albedo_texture; /* index into scene->textures, or -1 */
-    int normal_map;     /* index into scene->textures, or -1 */
-    sk_skin *skin;      /* type skin: the microrelief */
+    int albedo_texture;  /* index into scene->textures, or -1 */
+    int normal_map;      /* index into scene->textures, or -1 */
+    sk_skin *skin;       /* type skin: the microrelief */
     const sk_wood *wood; /* type wood: the solid texture */
     sk_wood *owned_wood; /* the same when the scene built it (not the desc's wood_tree) */
-    float wood_kd;      /* type wood: diffuse weight (lights the environment term) */
+    float wood_kd;       /* type wood: diffuse weight (lights the environment term) */
 } sk__material;
 
 typedef struct sk__camera {
@@ -78,7 +78,7 @@ struct sk_render_scene {
     sk__instance instances[SK_RENDER_MAX_OBJECTS];
     int instance_count;
     sk__material materials[SK_RENDER_MAX_MATERIALS + 1]; /* + the default material */
-    int material_count;                                   /* including the default */
+    int material_count;                                  /* including the default */
     sk__texture *textures;
     int texture_count;
     sk__camera camera;
@@ -92,17 +92,17 @@ struct sk_render_scene {
 
 /* Everything known about a camera-ray hit, in the scene frame. */
 typedef struct sk__shading {
-    sk_render_surface surface;   /* point, normals, tangent frame, uv, st, footprint */
-    sk_vec3f geometric_normal;   /* unit, facing the viewer */
-    sk_vec3f shading_normal;     /* after bump / normal maps, facing the viewer */
-    sk_vec3f to_viewer;          /* unit, from the point towards the camera */
-    float du_len, dv_len;        /* scene length per unit of u and v (0: no UV metric) */
+    sk_render_surface surface; /* point, normals, tangent frame, uv, st, footprint */
+    sk_vec3f geometric_normal; /* unit, facing the viewer */
+    sk_vec3f shading_normal;   /* after bump / normal maps, facing the viewer */
+    sk_vec3f to_viewer;        /* unit, from the point towards the camera */
+    float du_len, dv_len;      /* scene length per unit of u and v (0: no UV metric) */
     const sk__instance *instance;
     const sk__material *material;
     sk_render_texel texel;
-    float lobe_norm;             /* K(shininess) of the Blinn-Phong lobe */
-    sk_wood_sample wood;         /* wood: the solid texture at the point (object frame) */
-    sk_vec3f texture_color;      /* the texture/shading blend's unlit colour */
+    float lobe_norm;        /* K(shininess) of the Blinn-Phong lobe */
+    sk_wood_sample wood;    /* wood: the solid texture at the point (object frame) */
+    sk_vec3f texture_color; /* the texture/shading blend's unlit colour */
 } sk__shading;
 
 /* ---- geometry (scene_geometry.c) */
@@ -110,8 +110,8 @@ sk_result sk__geometry_build(sk_render_scene *scene, sk_error *err);
 void sk__geometry_destroy(sk_render_scene *scene);
 /* Fills the geometric part of `sh` for a hit of Embree's ray (instance, triangle, u, v),
  * with normals as the mesh winds. */
-void sk__geometry_hit(const sk_render_scene *scene, unsigned instance, unsigned triangle,
-                      float u, float v, sk__shading *sh);
+void sk__geometry_hit(const sk_render_scene *scene, unsigned instance, unsigned triangle, float u,
+                      float v, sk__shading *sh);
 /* Sets to_viewer and turns the frame to face the viewer (on the back of a surface normal,
  * tangent and bitangent are all negated: the same height field seen from behind). */
 void sk__shading_face(sk__shading *sh, sk_vec3f ray_dir);
@@ -168,7 +168,8 @@ sk_vec3f sk__material_ambient_albedo(const sk__shading *sh);
 sk_result sk__skin_material_build(sk__material *m, int index, sk_error *err);
 void sk__skin_material_destroy(sk__material *m);
 /* Adds the skin's height gradient at st (mm) to the texel's slope. */
-void sk__skin_material_texel(const sk__material *m, const sk_render_surface *s, sk_render_texel *tx);
+void sk__skin_material_texel(const sk__material *m, const sk_render_surface *s,
+                             sk_render_texel *tx);
 /* (material_wood.c) */
 sk_result sk__wood_material_build(sk__material *m, int index, sk_error *err);
 void sk__wood_material_destroy(sk__material *m);

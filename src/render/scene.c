@@ -30,7 +30,8 @@ sk_result sk_render_scene_create(const sk_render_scene_desc *desc, sk_render_sce
     sk_render_scene *scene = calloc(1, sizeof *scene);
     if (!scene) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the scene");
     sk_render_scene_desc_resolve(desc, &scene->desc);
-    if ((r = sk__materials_build(scene, err)) == SK_OK && (r = sk__geometry_build(scene, err)) == SK_OK) {
+    if ((r = sk__materials_build(scene, err)) == SK_OK &&
+        (r = sk__geometry_build(scene, err)) == SK_OK) {
         sk__camera_setup(scene);
         sk__lights_setup(scene);
         *out = scene;

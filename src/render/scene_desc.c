@@ -33,7 +33,8 @@ static void object_resolve(sk_render_object_desc *o)
 static void light_resolve(sk_render_light_desc *l)
 {
     if (sk__v3f_is_zero(l->color)) l->color[0] = l->color[1] = l->color[2] = 1.0f;
-    if (l->type == SK_RENDER_LIGHT_DIRECTIONAL && sk__v3f_is_zero(l->direction)) l->direction[1] = -1.0f;
+    if (l->type == SK_RENDER_LIGHT_DIRECTIONAL && sk__v3f_is_zero(l->direction))
+        l->direction[1] = -1.0f;
     if (l->size[0] == 0 && l->size[1] == 0) l->size[0] = l->size[1] = 1.0f;
     if (sk__v3f_is_zero(l->up)) l->up[1] = 1.0f;
     if (l->samples == 0) l->samples = 1;
@@ -68,7 +69,8 @@ void sk_render_scene_desc_resolve(const sk_render_scene_desc *desc, sk_render_sc
         sk__material_desc_resolve(&out->materials[i]);
     for (int i = 0; i < out->object_count && i < SK_RENDER_MAX_OBJECTS; i++)
         object_resolve(&out->objects[i]);
-    for (int i = 0; i < out->light_count && i < SK_RENDER_MAX_LIGHTS; i++) light_resolve(&out->lights[i]);
+    for (int i = 0; i < out->light_count && i < SK_RENDER_MAX_LIGHTS; i++)
+        light_resolve(&out->lights[i]);
 }
 
 /* ---- checks with formatted key paths */
@@ -134,11 +136,14 @@ static sk_result validate_material(const sk_render_material_desc *given, int i, 
     char p[PATH];
     sk_render_material_desc resolved = *given, *m = &resolved;
     sk__material_desc_resolve(m);
-    if (!bounded_string(m->name, sizeof m->name) || !bounded_string(m->albedo_texture, sizeof m->albedo_texture) ||
+    if (!bounded_string(m->name, sizeof m->name) ||
+        !bounded_string(m->albedo_texture, sizeof m->albedo_texture) ||
         !bounded_string(m->normal_map, sizeof m->normal_map))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d]: a string is not terminated", i);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d]: a string is not terminated",
+                       i);
     if (m->name[0] == '\0')
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d].name is empty (objects refer to materials by name)", i);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "materials[%d].name is empty (objects refer to materials by name)", i);
     TRY(check_f(err, m->type, 0, SK_RENDER_MATERIAL_TYPE_COUNT - 1, "materials[%d].type", i));
     snprintf(p, sizeof p, "materials[%d].albedo", i);
     TRY(check_v(err, m->albedo, 3, 0, 1, p));
@@ -153,11 +158,13 @@ static sk_result validate_material(const sk_render_material_desc *given, int i, 
     TRY(check_f(err, m->texture_radiance, 0, BIG, "materials[%d].texture_radiance", i));
     if (!bounded_string(m->skin_preset, sizeof m->skin_preset) ||
         !bounded_string(m->wood_preset, sizeof m->wood_preset))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "materials[%d]: a preset name is not terminated", i);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "materials[%d]: a preset name is not terminated", i);
     sk_result r;
     if (m->type == SK_RENDER_MATERIAL_SKIN && (r = sk_skin_desc_validate(&m->skin, err)) != SK_OK)
         return sk_error_prefix(err, r, "materials[%d].skin", i);
-    if (m->type == SK_RENDER_MATERIAL_WOOD && !m->wood_tree && (r = sk_wood_desc_validate(&m->wood, err)) != SK_OK)
+    if (m->type == SK_RENDER_MATERIAL_WOOD && !m->wood_tree &&
+        (r = sk_wood_desc_validate(&m->wood, err)) != SK_OK)
         return sk_error_prefix(err, r, "materials[%d].wood", i);
     const sk_image *images[2] = {m->albedo_image, m->normal_image};
     const char *image_names[2] = {"albedo_image", "normal_image"};
@@ -166,8 +173,9 @@ static sk_result validate_material(const sk_render_material_desc *given, int i, 
                           images[k]->channels < 1 || images[k]->channels > 4))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "materials[%d].%s is not an image (%d x %d, %d channels; needs 1-4 "
-                           "channels and pixels)", i, image_names[k], images[k]->width,
-                           images[k]->height, images[k]->channels);
+                           "channels and pixels)",
+                           i, image_names[k], images[k]->width, images[k]->height,
+                           images[k]->channels);
     return SK_OK;
 }
 
@@ -179,13 +187,15 @@ static sk_result validate_object(const sk_render_scene_desc *d, const sk_render_
     object_resolve(o);
     if (!bounded_string(o->name, sizeof o->name) || !bounded_string(o->file, sizeof o->file) ||
         !bounded_string(o->material, sizeof o->material))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "objects[%d]: a string is not terminated", i);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "objects[%d]: a string is not terminated",
+                       i);
     TRY(check_f(err, o->shape, 0, SK_RENDER_SHAPE_COUNT - 1, "objects[%d].shape", i));
     TRY(check_f(err, o->uv, 0, SK_RENDER_UV_COUNT - 1, "objects[%d].uv", i));
     if (o->shape == SK_RENDER_SHAPE_MESH && o->file[0] == '\0' && !o->mesh)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "objects[%d].file is empty: shape \"mesh\" needs a mesh file (or choose a "
-                       "shape: plane, box, sphere, cylinder, capsule)", i);
+                       "shape: plane, box, sphere, cylinder, capsule)",
+                       i);
     snprintf(p, sizeof p, "objects[%d].size", i);
     TRY(check_v(err, o->size, 3, 0, BIG, p));
     if (o->shape == SK_RENDER_SHAPE_PLANE && !(o->size[0] > 0 && o->size[2] > 0))
@@ -209,9 +219,10 @@ static sk_result validate_object(const sk_render_scene_desc *d, const sk_render_
             if (n < 0 || (size_t)n >= sizeof names - used) break;
             used += (size_t)n;
         }
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "objects[%d].material = \"%s\" is not a material of the scene (materials: %s)",
-                       i, o->material, d->material_count ? names : "none");
+        return sk_fail(
+            err, SK_ERROR_INVALID_ARGUMENT,
+            "objects[%d].material = \"%s\" is not a material of the scene (materials: %s)", i,
+            o->material, d->material_count ? names : "none");
     }
     snprintf(p, sizeof p, "objects[%d].transform", i);
     return validate_transform(&o->transform, p, err);
@@ -280,7 +291,8 @@ sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_err
     if (!auto_frame && sk_v3f_length(forward) == 0)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "camera.position = camera.target = [%g, %g, %g]: the camera has no view "
-                       "direction", c->position[0], c->position[1], c->position[2]);
+                       "direction",
+                       c->position[0], c->position[1], c->position[2]);
     if (!auto_frame) {
         sk_vec3f f = sk_v3f_normalize(forward), up = sk_v3f_normalize(sk__v3f_from(c->up));
         if (sk_v3f_length(sk_v3f_cross(f, up)) < 1e-6f)

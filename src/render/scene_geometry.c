@@ -114,7 +114,7 @@ static sk_result rtc_check(sk_render_scene *scene, const char *what, sk_error *e
     enum RTCError code = rtcGetDeviceError(scene->device);
     if (code == RTC_ERROR_NONE && scene->rtc_error == RTC_ERROR_NONE) return SK_OK;
     if (scene->rtc_error != RTC_ERROR_NONE) code = scene->rtc_error;
-    sk_result r = code == RTC_ERROR_OUT_OF_MEMORY ? SK_ERROR_OUT_OF_MEMORY
+    sk_result r = code == RTC_ERROR_OUT_OF_MEMORY     ? SK_ERROR_OUT_OF_MEMORY
                   : code == RTC_ERROR_UNSUPPORTED_CPU ? SK_ERROR_UNSUPPORTED
                                                       : SK_ERROR_INVALID_ARGUMENT;
     return sk_fail(err, r, "%s: Embree error %d (%s)", what, (int)code, scene->rtc_message);
@@ -154,15 +154,17 @@ static sk_result build_mesh(sk_render_scene *scene, sk__rmesh *m, sk_error *err)
 static void grow_bounds(sk_render_scene *scene, const sk__instance *in, const sk__rmesh *m)
 {
     for (int c = 0; c < 8; c++) {
-        sk_vec3f p = sk_v3f(c & 1 ? m->hi.x : m->lo.x, c & 2 ? m->hi.y : m->lo.y,
-                            c & 4 ? m->hi.z : m->lo.z);
+        sk_vec3f p =
+            sk_v3f(c & 1 ? m->hi.x : m->lo.x, c & 2 ? m->hi.y : m->lo.y, c & 4 ? m->hi.z : m->lo.z);
         p = sk_m4f_apply_point(in->to_world, p);
         if (!scene->has_bounds) {
             scene->lo = scene->hi = p;
             scene->has_bounds = true;
         }
-        scene->lo = sk_v3f(fminf(scene->lo.x, p.x), fminf(scene->lo.y, p.y), fminf(scene->lo.z, p.z));
-        scene->hi = sk_v3f(fmaxf(scene->hi.x, p.x), fmaxf(scene->hi.y, p.y), fmaxf(scene->hi.z, p.z));
+        scene->lo =
+            sk_v3f(fminf(scene->lo.x, p.x), fminf(scene->lo.y, p.y), fminf(scene->lo.z, p.z));
+        scene->hi =
+            sk_v3f(fmaxf(scene->hi.x, p.x), fmaxf(scene->hi.y, p.y), fmaxf(scene->hi.z, p.z));
     }
 }
 
@@ -186,7 +188,8 @@ sk_result sk__geometry_build(sk_render_scene *scene, sk_error *err)
         return sk_fail(err, SK_ERROR_UNSUPPORTED, "Embree device: error %d",
                        (int)rtcGetDeviceError(NULL));
     rtcSetDeviceErrorFunction(scene->device, rtc_error_handler, scene);
-    scene->meshes = calloc((size_t)(d->object_count > 0 ? d->object_count : 1), sizeof *scene->meshes);
+    scene->meshes =
+        calloc((size_t)(d->object_count > 0 ? d->object_count : 1), sizeof *scene->meshes);
     if (!scene->meshes) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for meshes");
     int mesh_of[SK_RENDER_MAX_OBJECTS];
     for (int i = 0; i < d->object_count; i++) {
@@ -198,7 +201,8 @@ sk_result sk__geometry_build(sk_render_scene *scene, sk_error *err)
         sk_result r = object_mesh(scene, i, &m->mesh, err);
         if (r != SK_OK) return r;
         scene->mesh_count++;
-        if ((r = build_mesh(scene, m, err)) != SK_OK) return sk_error_prefix(err, r, "objects[%d]", i);
+        if ((r = build_mesh(scene, m, err)) != SK_OK)
+            return sk_error_prefix(err, r, "objects[%d]", i);
         mesh_of[i] = scene->mesh_count - 1;
     }
     scene->top = rtcNewScene(scene->device);
@@ -248,8 +252,8 @@ void sk__geometry_destroy(sk_render_scene *scene)
     if (scene->device) rtcReleaseDevice(scene->device);
 }
 
-void sk__geometry_hit(const sk_render_scene *scene, unsigned instance, unsigned triangle,
-                      float u, float v, sk__shading *sh)
+void sk__geometry_hit(const sk_render_scene *scene, unsigned instance, unsigned triangle, float u,
+                      float v, sk__shading *sh)
 {
     const sk__instance *in = &scene->instances[instance];
     const sk__rmesh *m = &scene->meshes[in->mesh];
@@ -284,7 +288,8 @@ void sk__geometry_hit(const sk_render_scene *scene, unsigned instance, unsigned 
         float det = a1 * c2 - a2 * c1;
         if (det != 0.0f && isfinite(det)) {
             dpdu = sk_v3f_scale(sk_v3f_sub(sk_v3f_scale(e1, c2), sk_v3f_scale(e2, c1)), 1.0f / det);
-            sk_vec3f dpdv = sk_v3f_scale(sk_v3f_sub(sk_v3f_scale(e2, a1), sk_v3f_scale(e1, a2)), 1.0f / det);
+            sk_vec3f dpdv =
+                sk_v3f_scale(sk_v3f_sub(sk_v3f_scale(e2, a1), sk_v3f_scale(e1, a2)), 1.0f / det);
             du_len = sk_v3f_length(apply_linear(&in->to_world, dpdu));
             dv_len = sk_v3f_length(apply_linear(&in->to_world, dpdv));
         }
@@ -335,8 +340,8 @@ void sk__shading_face(sk__shading *sh, sk_vec3f ray_dir)
     }
 }
 
-void sk_render_scene_intersect(const sk_render_scene *scene, sk_vec3f origin,
-                               sk_vec3f direction, float max_distance, sk_render_hit *hit)
+void sk_render_scene_intersect(const sk_render_scene *scene, sk_vec3f origin, sk_vec3f direction,
+                               float max_distance, sk_render_hit *hit)
 {
     memset(hit, 0, sizeof *hit);
     hit->object = -1;

@@ -49,7 +49,8 @@ static bool find_preset_file(const sk_render_load_desc *load, const char *base_d
         sk__join_path(base_dir, name, path, size);
         return true;
     }
-    if (load && load->find_preset) return load->find_preset(load->find_preset_user, module, name, path, size);
+    if (load && load->find_preset)
+        return load->find_preset(load->find_preset_user, module, name, path, size);
     char rel[SK_RENDER_PATH_SIZE + 64];
     snprintf(rel, sizeof rel, "../%s/%s.json", module, name);
     sk__join_path(base_dir[0] ? base_dir : ".", rel, path, size);
@@ -66,21 +67,25 @@ static sk_result resolve_preset(const sk_render_load_desc *load, const char *bas
         if (ref->set_count > 0)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "materials[%d].%s_set needs materials[%d].%s_preset (edit the %s keys "
-                           "directly otherwise)", index, m, index, m, m);
+                           "directly otherwise)",
+                           index, m, index, m, m);
         return SK_OK;
     }
     if (!all_zero(ref->desc, ref->desc_size))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "materials[%d]: give either %s_preset or %s, not both (use %s_set to edit "
-                       "a preset)", index, m, m, m);
+                       "a preset)",
+                       index, m, m, m);
     char path[2 * SK_RENDER_PATH_SIZE + 64];
     if (!find_preset_file(load, base_dir, m, ref->name, path, sizeof path))
         return sk_fail(err, SK_ERROR_NOT_FOUND,
                        "materials[%d].%s_preset = \"%s\" is not a shipped %s preset (see "
-                       "'shitsukan presets %s')", index, m, ref->name, m, m);
+                       "'shitsukan presets %s')",
+                       index, m, ref->name, m, m);
     sk_preset *preset = NULL;
     sk_result r = sk_preset_load_file(&preset, path, err);
-    if (r != SK_OK) return sk_error_prefix(err, r, "materials[%d].%s_preset = \"%s\"", index, m, ref->name);
+    if (r != SK_OK)
+        return sk_error_prefix(err, r, "materials[%d].%s_preset = \"%s\"", index, m, ref->name);
     for (int k = 0; r == SK_OK && k < ref->set_count; k++)
         if ((r = sk_preset_set(preset, ref->sets[k].text, err)) != SK_OK)
             sk_error_prefix(err, r, "materials[%d].%s_set[%d]", index, m, k);
@@ -103,11 +108,11 @@ sk_result sk_render_scene_desc_bind(const sk_preset *scene, const sk_render_load
                        scene_path, sizeof desc->base_dir - 1);
     for (int i = 0; i < desc->material_count; i++) {
         sk_render_material_desc *m = &desc->materials[i];
-        preset_ref skin = {"skin", &sk_skin_schema, m->skin_preset, m->skin_set_count,
-                           m->skin_set, &m->skin, sizeof m->skin};
+        preset_ref skin = {"skin",      &sk_skin_schema, m->skin_preset, m->skin_set_count,
+                           m->skin_set, &m->skin,        sizeof m->skin};
         if ((r = resolve_preset(load, desc->base_dir, i, &skin, err)) != SK_OK) return r;
-        preset_ref wood = {"wood", &sk_wood_schema, m->wood_preset, m->wood_set_count,
-                           m->wood_set, &m->wood, sizeof m->wood};
+        preset_ref wood = {"wood",      &sk_wood_schema, m->wood_preset, m->wood_set_count,
+                           m->wood_set, &m->wood,        sizeof m->wood};
         if ((r = resolve_preset(load, desc->base_dir, i, &wood, err)) != SK_OK) return r;
     }
     return sk_render_scene_desc_validate(desc, err);

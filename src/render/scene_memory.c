@@ -23,8 +23,12 @@ static double primitive_bytes(const sk_render_object_desc *o)
     double rings = o->rings > 0 ? o->rings : 32;
     double vertices, triangles;
     switch (o->shape) {
-    case SK_RENDER_SHAPE_PLANE: vertices = 4, triangles = 2; break;
-    case SK_RENDER_SHAPE_BOX: vertices = 24, triangles = 12; break;
+    case SK_RENDER_SHAPE_PLANE:
+        vertices = 4, triangles = 2;
+        break;
+    case SK_RENDER_SHAPE_BOX:
+        vertices = 24, triangles = 12;
+        break;
     default: /* surfaces of revolution: rings of segments, caps */
         vertices = (rings + 4) * (segments + 1) + 2 * (segments + 2);
         triangles = 2 * (rings + 3) * segments + 2 * segments;

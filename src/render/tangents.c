@@ -44,8 +44,10 @@ sk_result sk_render_compute_tangents(sk_mesh *mesh, sk_error *err)
             float det = a1 * b2 - a2 * b1;
             if (det != 0.0f && isfinite(det)) {
                 float area = 0.5f * sk_v3f_length(face);
-                du = sk_v3f_normalize(sk_v3f_scale(sk_v3f_sub(sk_v3f_scale(e1, b2), sk_v3f_scale(e2, b1)), 1.0f / det));
-                dv = sk_v3f_normalize(sk_v3f_scale(sk_v3f_sub(sk_v3f_scale(e2, a1), sk_v3f_scale(e1, a2)), 1.0f / det));
+                du = sk_v3f_normalize(sk_v3f_scale(
+                    sk_v3f_sub(sk_v3f_scale(e1, b2), sk_v3f_scale(e2, b1)), 1.0f / det));
+                dv = sk_v3f_normalize(sk_v3f_scale(
+                    sk_v3f_sub(sk_v3f_scale(e2, a1), sk_v3f_scale(e1, a2)), 1.0f / det));
                 du = sk_v3f_scale(du, area);
                 dv = sk_v3f_scale(dv, area);
             }

@@ -20,10 +20,18 @@ static void texel(const sk_image *img, int x, int y, float out[4])
 {
     const float *p = sk_image_pixel(img, x, y);
     switch (img->channels) {
-    case 1: out[0] = out[1] = out[2] = p[0], out[3] = 1.0f; break;
-    case 2: out[0] = out[1] = out[2] = p[0], out[3] = p[1]; break;
-    case 3: out[0] = p[0], out[1] = p[1], out[2] = p[2], out[3] = 1.0f; break;
-    default: out[0] = p[0], out[1] = p[1], out[2] = p[2], out[3] = p[3]; break;
+    case 1:
+        out[0] = out[1] = out[2] = p[0], out[3] = 1.0f;
+        break;
+    case 2:
+        out[0] = out[1] = out[2] = p[0], out[3] = p[1];
+        break;
+    case 3:
+        out[0] = p[0], out[1] = p[1], out[2] = p[2], out[3] = 1.0f;
+        break;
+    default:
+        out[0] = p[0], out[1] = p[1], out[2] = p[2], out[3] = p[3];
+        break;
     }
 }
 

@@ -50,21 +50,24 @@ sk_result sk_render_tonemap(const sk_image *linear, const sk_render_film_desc *f
     return SK_OK;
 }
 
-sk_result sk_render_write(const sk_image *linear, const sk_render_film_desc *film,
-                          const char *path, const sk_image_metadata *metadata, sk_error *err)
+sk_result sk_render_write(const sk_image *linear, const sk_render_film_desc *film, const char *path,
+                          const sk_image_metadata *metadata, sk_error *err)
 {
     sk_result r;
     sk_image out = {0};
     if (sk__has_extension(path, ".png")) {
         if ((r = sk_render_tonemap(linear, film, &out, err)) != SK_OK) return r;
-        sk_png_write_desc desc = {.bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB, .metadata = metadata};
+        sk_png_write_desc desc = {
+            .bit_depth = 8, .encoding = SK_PNG_ENCODING_SRGB, .metadata = metadata};
         r = sk_image_write_png(&out, path, &desc, err);
     } else if (sk__has_extension(path, ".exr")) {
         const sk_image *src = linear;
         if (film->opaque) { /* alpha is 1 everywhere: plain RGB */
-            if ((r = sk_image_create(&out, linear->width, linear->height, 3, err)) != SK_OK) return r;
+            if ((r = sk_image_create(&out, linear->width, linear->height, 3, err)) != SK_OK)
+                return r;
             size_t n = (size_t)linear->width * (size_t)linear->height;
-            for (size_t i = 0; i < n; i++) memcpy(out.data + 3 * i, linear->data + 4 * i, 3 * sizeof(float));
+            for (size_t i = 0; i < n; i++)
+                memcpy(out.data + 3 * i, linear->data + 4 * i, 3 * sizeof(float));
             src = &out;
         }
         sk_exr_write_desc desc = {.metadata = metadata};

@@ -26,13 +26,14 @@
 #define EDGE_RAMP_SLOPE 4.0
 
 sk_result sk__contact_posture(const sk__contact *c, sk_vec3d wrist, const double *extra_torque,
-                              double dofs[SK_HAND_DOF_COUNT], sk_hand_frames *frames, sk_vec3d pads[5],
-                              sk_error *err)
+                              double dofs[SK_HAND_DOF_COUNT], sk_hand_frames *frames,
+                              sk_vec3d pads[5], sk_error *err)
 {
     sk_hand_input input;
     memset(&input, 0, sizeof input);
     sk_vec3d w = sk__scene_to_hand(wrist);
-    const double pin[6] = {w.x, w.y, w.z, c->rig->wrist_angles[0], c->rig->wrist_angles[1], c->rig->wrist_angles[2]};
+    const double pin[6] = {
+        w.x, w.y, w.z, c->rig->wrist_angles[0], c->rig->wrist_angles[1], c->rig->wrist_angles[2]};
     for (int i = 0; i < 6; i++) input.pinned[i] = true, input.pin_value[i] = pin[i];
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++)
         input.torque[i] = c->rig->base_torque[i] + (extra_torque ? extra_torque[i] : 0);
@@ -53,7 +54,8 @@ sk_result sk__contact_posture(const sk__contact *c, sk_vec3d wrist, const double
 /* Horizontal distance from (x, z) to a rectangle [x0, x1] x [z0, z1]. */
 static double rect_distance(double x, double z, double x0, double x1, double z0, double z1)
 {
-    double dx = x < x0 ? x0 - x : (x > x1 ? x - x1 : 0), dz = z < z0 ? z0 - z : (z > z1 ? z - z1 : 0);
+    double dx = x < x0 ? x0 - x : (x > x1 ? x - x1 : 0),
+           dz = z < z0 ? z0 - z : (z > z1 ? z - z1 : 0);
     return sqrt(dx * dx + dz * dz);
 }
 
@@ -68,7 +70,8 @@ static double key_distance_xz(const sk_piano_key *k, double x, double z)
     return fmin(front, back);
 }
 
-static double keys_surface_except(const sk_piano *piano, sk_vec3d centre, double radius, int except);
+static double keys_surface_except(const sk_piano *piano, sk_vec3d centre, double radius,
+                                  int except);
 
 double sk__keys_surface(const sk_piano *piano, sk_vec3d centre, double radius)
 {
@@ -97,7 +100,8 @@ static double keys_surface_except(const sk_piano *piano, sk_vec3d centre, double
 
 /* How far a pad turns a key down: the smallest angle at which the key's top under the
  * pad's centre is no higher than the sphere there (0 if the pad is above it). */
-static double pushed_angle(const sk_piano *piano, const sk_piano_key *k, sk_vec3d centre, double radius)
+static double pushed_angle(const sk_piano *piano, const sk_piano_key *k, sk_vec3d centre,
+                           double radius)
 {
     double rho = key_distance_xz(k, centre.x, centre.z);
     if (rho >= radius) return 0;
@@ -117,7 +121,7 @@ static double pushed_angle(const sk_piano *piano, const sk_piano_key *k, sk_vec3
 
 typedef struct unknown {
     int finger;
-    bool aim;  /* the aim torque, else the press amplitude */
+    bool aim; /* the aim torque, else the press amplitude */
 } unknown;
 
 /* A posture solved for some torques. The lifts and the Newton steps often ask again for
@@ -136,8 +140,8 @@ typedef struct problem {
     const sk__intent *in;
     int count;
     unknown u[MAX_UNKNOWNS];
-    double lift[5];  /* press amplitude (negative: extension) holding a free finger up */
-    int solves;      /* hand solves done */
+    double lift[5]; /* press amplitude (negative: extension) holding a free finger up */
+    int solves;     /* hand solves done */
     posture recent[RECENT];
     int recent_count, recent_next;
 } problem;
@@ -173,7 +177,8 @@ static sk_result misses(problem *p, const double *x, double *res, double dofs[SK
         if (memcmp(p->recent[k].torque, torque, sizeof torque) == 0) known = &p->recent[k];
     if (!known) {
         posture *fresh = &p->recent[p->recent_next];
-        sk_result r = sk__contact_posture(c, p->in->wrist, torque, fresh->dofs, &fresh->frames, fresh->pads, err);
+        sk_result r = sk__contact_posture(c, p->in->wrist, torque, fresh->dofs, &fresh->frames,
+                                          fresh->pads, err);
         p->solves++;
         if (r != SK_OK) return r;
         memcpy(fresh->torque, torque, sizeof torque);
@@ -203,7 +208,8 @@ static sk_result misses(problem *p, const double *x, double *res, double dofs[SK
         double off = pads[f].z - (key->front_mm - FRONT_MARGIN_MM);
         if (off > 0) target += FRONT_SLOPE * off;
         /* never into the keys beside it */
-        double others = keys_surface_except(c->piano, pads[f], rad, fi->key) + c->desc->clearance_mm;
+        double others =
+            keys_surface_except(c->piano, pads[f], rad, fi->key) + c->desc->clearance_mm;
         if (others > target) target = others;
         res[k] = bottom - target;
     }
@@ -227,7 +233,8 @@ static sk_result free_clearance(problem *p, int f, double *x, double *gap, sk_er
     sk_vec3d pads[5];
     sk_result r = misses(p, x, res, dofs, &frames, pads, err);
     double rad = p->c->rig->tip_radius[f];
-    *gap = pads[f].y - rad - (sk__keys_surface(p->c->piano, pads[f], rad) + p->c->desc->clearance_mm);
+    *gap =
+        pads[f].y - rad - (sk__keys_surface(p->c->piano, pads[f], rad) + p->c->desc->clearance_mm);
     return r;
 }
 
@@ -279,8 +286,8 @@ static sk_result lift_finger(problem *p, int f, double *x, sk_error *err)
     return SK_OK;
 }
 
-sk_result sk__contact_solve(const sk__contact *c, const sk__intent *in, double t, sk_showcase_pose *out,
-                            sk_error *err)
+sk_result sk__contact_solve(const sk__contact *c, const sk__intent *in, double t,
+                            sk_showcase_pose *out, sk_error *err)
 {
     problem p;
     memset(&p, 0, sizeof p);
@@ -294,7 +301,8 @@ sk_result sk__contact_solve(const sk__contact *c, const sk__intent *in, double t
     sk_vec3d pads[5];
     memset(out, 0, sizeof *out);
     out->time_s = t;
-    sk__newton_desc nd = {p.count, contact_fn, &p, TOLERANCE_MM, MAX_ITERATIONS, DIFF_STEP, MAX_STEP};
+    sk__newton_desc nd = {p.count,        contact_fn, &p,      TOLERANCE_MM,
+                          MAX_ITERATIONS, DIFF_STEP,  MAX_STEP};
     sk_result r = sk__newton_solve(&nd, x, res, err);
     /* fingers that do not play but sink into a key are lifted one by one, then the
        playing fingers solved again with those lifts held (a few Gauss-Seidel rounds) */
@@ -312,7 +320,8 @@ sk_result sk__contact_solve(const sk__contact *c, const sk__intent *in, double t
     if (r == SK_OK) r = misses(&p, x, res, out->dofs, &out->frames, pads, err);
     if (r != SK_OK) return r;
     out->solves = p.solves;
-    for (int k = 0; k < p.count; k++) out->contact_error_mm = fmax(out->contact_error_mm, fabs(res[k]));
+    for (int k = 0; k < p.count; k++)
+        out->contact_error_mm = fmax(out->contact_error_mm, fabs(res[k]));
     for (int f = 0; f < 5; f++) {
         out->tip_centre[f] = pads[f];
         out->tip_radius[f] = c->rig->tip_radius[f];
@@ -322,7 +331,8 @@ sk_result sk__contact_solve(const sk__contact *c, const sk__intent *in, double t
     for (int i = 0; i < SK_PIANO_KEY_COUNT; i++) {
         const sk_piano_key *k = &c->piano->keys[i];
         for (int f = 0; f < 5; f++) {
-            if (fabs(pads[f].x - k->x_mm) > c->piano->desc.white_pitch_mm + out->tip_radius[f]) continue;
+            if (fabs(pads[f].x - k->x_mm) > c->piano->desc.white_pitch_mm + out->tip_radius[f])
+                continue;
             double a = pushed_angle(c->piano, k, pads[f], out->tip_radius[f]);
             if (a > out->key_angle[i]) {
                 out->key_angle[i] = a;

@@ -13,9 +13,9 @@
  * 0.2. Notes held together never use two fingers the hand cannot hold down together
  * (`apart`). Two notes whose fingers are busy at once (from one's approach to the other's
  * lift) keep the keys' order (no finger passes another), share a finger only on the same
- * key or with at least `move_gap_s` between them, and on neighbouring fingers (index to little) take keys at least
- * `spacing_mm` apart (a half step would put one fingertip into the other). Fingers given in the input are kept (states that contradict them are
- * left out). */
+ * key or with at least `move_gap_s` between them, and on neighbouring fingers (index to little)
+ * take keys at least `spacing_mm` apart (a half step would put one fingertip into the other).
+ * Fingers given in the input are kept (states that contradict them are left out). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,12 +28,12 @@
 typedef struct fstate {
     int8_t finger[MAX_HELD + 1]; /* fingers (0..4) of the notes of the step's set, in order */
     double cost;
-    int back;                    /* state index at the previous step */
+    int back; /* state index at the previous step */
 } fstate;
 
 typedef struct step {
     int held_count;
-    int held[MAX_HELD];          /* notes j < i still sounding at i's start, ascending */
+    int held[MAX_HELD]; /* notes j < i still sounding at i's start, ascending */
     int state_count;
     fstate *states;
 } step;
@@ -81,7 +81,9 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
         (r = sk_check_range_f(err, "fingering.busy_after_s", d.busy_after_s, 0, 2)) != SK_OK)
         return r;
     for (int f = 0; f < 5; f++)
-        if ((r = sk_check_range_f(err, "fingering.finger_x_mm", d.finger_x_mm[f], -500, 500)) != SK_OK) return r;
+        if ((r = sk_check_range_f(err, "fingering.finger_x_mm", d.finger_x_mm[f], -500, 500)) !=
+            SK_OK)
+            return r;
     int n = melody->note_count;
     if (cost) *cost = 0;
     if (n == 0) return SK_OK;
@@ -89,7 +91,8 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
     fstate *pool = calloc((size_t)n * MAX_STATES, sizeof *pool);
     if (!steps || !pool) {
         free(steps), free(pool);
-        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the fingering of %d notes", n);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the fingering of %d notes",
+                       n);
     }
     const sk_note *notes = melody->notes;
     char where[192];
@@ -110,7 +113,8 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
                     if (st->held_count == MAX_HELD - 1) {
                         sk__melody_where(melody, ni->source, where, sizeof where);
                         r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                                    "%smore than 5 notes sound at %g s; one hand has five fingers", where, ni->start_s);
+                                    "%smore than 5 notes sound at %g s; one hand has five fingers",
+                                    where, ni->start_s);
                         break;
                     }
                     st->held[st->held_count++] = candidates[k];
@@ -145,7 +149,8 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
                     double dx = xi - sk_piano_key_get(piano, nj->key)->x_mm;
                     int a = held_f[k];
                     if (a == b || (b - a) * dx <= 0 || d.apart[a][b] || d.apart[b][a] ||
-                        fabs(dx - (d.finger_x_mm[b] - d.finger_x_mm[a])) > d.reach_mm || cramped(a, b, dx, &d))
+                        fabs(dx - (d.finger_x_mm[b] - d.finger_x_mm[a])) > d.reach_mm ||
+                        cramped(a, b, dx, &d))
                         ok = false;
                 }
                 if (!ok) continue;
@@ -156,15 +161,18 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
                     double s = fabs(dx - (d.finger_x_mm[b] - d.finger_x_mm[a]));
                     bool held = np->start_s + np->duration_s > ni->start_s + 1e-9;
                     double gap = ni->start_s - np->start_s;
-                    bool busy = np->start_s + np->duration_s + d.busy_after_s > ni->start_s - d.busy_before_s;
+                    bool busy = np->start_s + np->duration_s + d.busy_after_s >
+                                ni->start_s - d.busy_before_s;
                     if (busy && (cramped(a, b, dx, &d) || (a != b && (b - a) * dx <= 0) ||
-                                 (a == b && np->key != ni->key && ni->start_s - (np->start_s + np->duration_s) < d.move_gap_s)))
+                                 (a == b && np->key != ni->key &&
+                                  ni->start_s - (np->start_s + np->duration_s) < d.move_gap_s)))
                         continue;
                     if (held)
                         c += s / d.pitch_mm;
                     else
                         c += s / d.pitch_mm * (1 + 0.1 * (s / d.pitch_mm) / fmax(gap, 0.05)) +
-                             (a == b && np->key != ni->key ? 2.0 : 0.0) + (a != b && np->key == ni->key ? 0.3 : 0.0);
+                             (a == b && np->key != ni->key ? 2.0 : 0.0) +
+                             (a != b && np->key == ni->key ? 0.3 : 0.0);
                 }
                 c += note_cost(black, b);
                 /* merge with an equal state */
@@ -173,7 +181,8 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
                 cand.finger[st->held_count] = (int8_t)b;
                 int same = -1;
                 for (int q = 0; q < st->state_count && same < 0; q++)
-                    if (memcmp(st->states[q].finger, cand.finger, (size_t)st->held_count + 1) == 0) same = q;
+                    if (memcmp(st->states[q].finger, cand.finger, (size_t)st->held_count + 1) == 0)
+                        same = q;
                 if (same >= 0) {
                     if (c < st->states[same].cost) st->states[same] = cand;
                 } else if (st->state_count < MAX_STATES) {
@@ -186,7 +195,8 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
             sk_note_name(ni->key, name, sizeof name);
             sk__melody_where(melody, ni->source, where, sizeof where);
             r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                        "%sno finger can play %s at %g s with the %d note%s still sounding: the keys held together "
+                        "%sno finger can play %s at %g s with the %d note%s still sounding: the "
+                        "keys held together "
                         "are wider than the hand reaches or the given fingers are out of order",
                         where, name, ni->start_s, st->held_count, st->held_count == 1 ? "" : "s");
         }

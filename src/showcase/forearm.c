@@ -4,10 +4,10 @@
  * on the middle of the hand's wrist stump (measured on the hand's surface); the elbow
  * follows the wrist's travel only part way (the upper arm swings), so the forearm turns
  * as the hand moves along the keys and drops a little with the wrist at every strike
- * (performance.c), and the fat lags and swings (sec. 5). The motion is a function of time alone, sampled by the simulation at every
- * internal step; the simulation runs forward from time 0, so a frame's flesh is the same
- * whichever frames were asked for before it (an earlier frame restarts it from its
- * state at time 0). The skin carries UVs in mm (around and along the forearm in its rest
+ * (performance.c), and the fat lags and swings (sec. 5). The motion is a function of time alone,
+ * sampled by the simulation at every internal step; the simulation runs forward from time 0, so a
+ * frame's flesh is the same whichever frames were asked for before it (an earlier frame restarts it
+ * from its state at time 0). The skin carries UVs in mm (around and along the forearm in its rest
  * frame) for the skin microrelief. */
 #include <math.h>
 #include <stdlib.h>
@@ -31,10 +31,12 @@ static sk_mat3d forearm_basis(sk_vec3d d, sk_vec3d across)
 }
 
 /* Where the elbow is and how the forearm is turned when the wrist is at `wrist`. */
-static void forearm_place(const sk__forearm *fa, sk_vec3d wrist, sk_vec3d *elbow, sk_quatd *rotation)
+static void forearm_place(const sk__forearm *fa, sk_vec3d wrist, sk_vec3d *elbow,
+                          sk_quatd *rotation)
 {
     sk_vec3d moved = sk_v3d_sub(wrist, fa->home_wrist);
-    sk_vec3d guess = sk_v3d_add(fa->home_elbow, sk_v3d_scale(moved, ELBOW_FOLLOW)); /* before keeping the length */
+    sk_vec3d guess = sk_v3d_add(fa->home_elbow,
+                                sk_v3d_scale(moved, ELBOW_FOLLOW)); /* before keeping the length */
     sk_vec3d d = sk_v3d_normalize(sk_v3d_sub(wrist, guess));
     *elbow = sk_v3d_sub(wrist, sk_v3d_scale(d, fa->length));
     sk_mat3d target = forearm_basis(d, fa->across);
@@ -53,7 +55,8 @@ static void forearm_sample(void *user, double seconds, sk_quatd *local, sk_vec3d
     const sk_showcase *sc = user;
     sk__intent in;
     sk__performance_at(&sc->perf, seconds, &in);
-    forearm_place(&sc->forearm, sk_v3d_add(in.wrist, sc->forearm.ride), root_mm, &local[sc->forearm.root]);
+    forearm_place(&sc->forearm, sk_v3d_add(in.wrist, sc->forearm.ride), root_mm,
+                  &local[sc->forearm.root]);
 }
 
 /* UVs in mm: around the forearm (angle times the point's distance from the axis, the
@@ -64,7 +67,8 @@ static void forearm_uvs(const sk__forearm *fa, sk_mesh *mesh, sk_vec3d elbow_res
         const float *p = mesh->positions + 3 * v;
         sk_vec3d q = sk_v3d_sub((sk_vec3d){p[0], p[1], p[2]}, elbow_rest);
         double c[3]; /* rest frame coordinates: across, back, along */
-        for (int k = 0; k < 3; k++) c[k] = q.x * fa->rest.m[0][k] + q.y * fa->rest.m[1][k] + q.z * fa->rest.m[2][k];
+        for (int k = 0; k < 3; k++)
+            c[k] = q.x * fa->rest.m[0][k] + q.y * fa->rest.m[1][k] + q.z * fa->rest.m[2][k];
         double x = c[0], y = c[1], z = c[2];
         double radius = sqrt(x * x + y * y);
         mesh->uvs[2 * v] = (float)(atan2(x, y) * radius);
@@ -77,7 +81,8 @@ static void forearm_uvs(const sk__forearm *fa, sk_mesh *mesh, sk_vec3d elbow_res
    (the whole texture's mean at the hand's vertices if the stump has none), and the middle
    of its extent across and through the carpus (carpus frame, from the wrist), where the
    forearm's axis must run for the stump to lie inside it. */
-static sk_result measure_stump(const sk_showcase *sc, float albedo_out[3], sk_vec3d *centre, sk_error *err)
+static sk_result measure_stump(const sk_showcase *sc, float albedo_out[3], sk_vec3d *centre,
+                               sk_error *err)
 {
     const sk_image *albedo = sc->skin_albedo;
     for (int c = 0; c < 3; c++) albedo_out[c] = 0.6f;
@@ -90,7 +95,8 @@ static sk_result measure_stump(const sk_showcase *sc, float albedo_out[3], sk_ve
     sk_hand_relaxed(&sc->skeleton, dofs);
     sk_hand_forward(&sc->skeleton, dofs, &frames);
     sk_mat3d to_carpus = sk_m3d_transpose(frames.rotation[0]);
-    double sum[2][3] = {{0, 0, 0}, {0, 0, 0}}, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double sum[2][3] = {{0, 0, 0}, {0, 0, 0}}, lo[3] = {INFINITY, INFINITY, INFINITY},
+           hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     size_t count[2] = {0, 0};
     bool textured = albedo && albedo->width > 0 && albedo->height > 0 && mesh.uvs;
     for (size_t v = 0; v < mesh.vertex_count; v++) {
@@ -98,10 +104,12 @@ static sk_result measure_stump(const sk_showcase *sc, float albedo_out[3], sk_ve
         sk_vec3d q = sk_v3d_sub((sk_vec3d){p[0], p[1], p[2]}, frames.point[0]);
         sk_vec3d l = sk_m3d_apply(to_carpus, q);
         const double local[3] = {l.x, l.y, l.z}; /* across, along the fingers, palmar */
-        int part = local[1] < 0 ? 0 : 1; /* 0: the stump */
-        for (int k = 0; part == 0 && k < 3; k++) lo[k] = fmin(lo[k], local[k]), hi[k] = fmax(hi[k], local[k]);
+        int part = local[1] < 0 ? 0 : 1;         /* 0: the stump */
+        for (int k = 0; part == 0 && k < 3; k++)
+            lo[k] = fmin(lo[k], local[k]), hi[k] = fmax(hi[k], local[k]);
         if (!textured) continue;
-        int x = (int)(mesh.uvs[2 * v] * albedo->width), y = (int)((1 - mesh.uvs[2 * v + 1]) * albedo->height);
+        int x = (int)(mesh.uvs[2 * v] * albedo->width),
+            y = (int)((1 - mesh.uvs[2 * v + 1]) * albedo->height);
         x = x < 0 ? 0 : x >= albedo->width ? albedo->width - 1 : x;
         y = y < 0 ? 0 : y >= albedo->height ? albedo->height - 1 : y;
         const float *t = sk_image_pixel(albedo, x, y);
@@ -138,7 +146,8 @@ static sk_result tuck_weights(sk__forearm *fa, sk_error *err)
     fa->tuck = malloc((n ? n : 1) * sizeof *fa->tuck);
     if (!fa->tuck) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the forearm");
     double end = 0, from = fa->length - TUCK_FROM_MM;
-    for (size_t v = 0; v < n; v++) end = fmax(end, fa->mesh.uvs[2 * v + 1]); /* along, mm from the elbow */
+    for (size_t v = 0; v < n; v++)
+        end = fmax(end, fa->mesh.uvs[2 * v + 1]); /* along, mm from the elbow */
     fa->relief.fade_from = (float)(from - RELIEF_FADE_MM);
     fa->relief.fade_to = (float)fmax(end, from);
     fa->relief.end_weight = RELIEF_END_WEIGHT;
@@ -180,7 +189,8 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
         if (strcmp(cd->joints[j].name, "wrist") == 0) wrist = j;
     }
     if (r == SK_OK && wrist < 0)
-        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "forearm: no joint named \"wrist\" (it rides on the hand's wrist)");
+        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                    "forearm: no joint named \"wrist\" (it rides on the hand's wrist)");
     if (r == SK_OK) r = sk_tissue_model_build(cd, NULL, &fa->model, err);
     if (r != SK_OK) {
         free(cd);
@@ -202,8 +212,8 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     free(cd);
     fa->length = sk_v3d_length(along);
     if (!(fa->length > 1))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "forearm: the wrist is %g mm from the root joint (need > 1)",
-                       fa->length);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "forearm: the wrist is %g mm from the root joint (need > 1)", fa->length);
     fa->rest = forearm_basis(along, (sk_vec3d){1, 0, 0});
     /* the hand's carpus in the playing posture: the forearm lies along it (sloping down
        to the wrist as the carpus does), so the hand's wrist stump runs inside it */
@@ -217,8 +227,10 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     r = measure_stump(sc, sc->forearm_albedo, &stump, err);
     if (r != SK_OK) return r;
     fa->ride = sk__hand_to_scene(sk_m3d_apply(*carpus, stump));
-    sk_vec3d fingers = sk__hand_to_scene((sk_vec3d){carpus->m[0][1], carpus->m[1][1], carpus->m[2][1]});
-    sk_vec3d across = sk__hand_to_scene((sk_vec3d){carpus->m[0][0], carpus->m[1][0], carpus->m[2][0]});
+    sk_vec3d fingers =
+        sk__hand_to_scene((sk_vec3d){carpus->m[0][1], carpus->m[1][1], carpus->m[2][1]});
+    sk_vec3d across =
+        sk__hand_to_scene((sk_vec3d){carpus->m[0][0], carpus->m[1][0], carpus->m[2][0]});
     fa->home_axis = sk_v3d_normalize(fingers);
     /* across must make the back of the forearm face up */
     if (sk_v3d_cross(across, fa->home_axis).y < 0) across = sk_v3d_scale(across, -1);
@@ -233,7 +245,8 @@ sk_result sk__forearm_setup(sk_showcase *sc, sk_error *err)
     if (r != SK_OK) return sk_error_prefix(err, r, "forearm");
     fa->start_size = sk_tissue_sim_state_size(fa->sim);
     fa->start = malloc(fa->start_size);
-    if (!fa->start) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the forearm's state");
+    if (!fa->start)
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the forearm's state");
     r = sk_tissue_sim_save_state(fa->sim, fa->start, fa->start_size, err);
     if (r == SK_OK) r = sk_tissue_model_rest_skin(fa->model, &fa->mesh, err);
     if (r != SK_OK) return r;
@@ -258,7 +271,8 @@ sk_result sk__forearm_advance(sk_showcase *sc, double seconds, sk_error *err)
     sk__forearm *fa = &sc->forearm;
     if (!fa->sim) return SK_OK;
     sk_result r = SK_OK;
-    if (seconds < sk_tissue_sim_time(fa->sim) - 1e-9) r = sk_tissue_sim_load_state(fa->sim, fa->start, fa->start_size, err);
+    if (seconds < sk_tissue_sim_time(fa->sim) - 1e-9)
+        r = sk_tissue_sim_load_state(fa->sim, fa->start, fa->start_size, err);
     if (r == SK_OK) r = sk_tissue_sim_skin(fa->sim, seconds, fa->mesh.positions, err);
     return r == SK_OK ? r : sk_error_prefix(err, r, "forearm");
 }
@@ -292,11 +306,14 @@ size_t sk_showcase_forearm_points(const sk_showcase *sc)
     return sc->forearm.sim ? sc->forearm.mesh.vertex_count : 0;
 }
 
-sk_result sk_showcase_forearm_at(sk_showcase *sc, int frame, float *skin, float *carried, sk_error *err)
+sk_result sk_showcase_forearm_at(sk_showcase *sc, int frame, float *skin, float *carried,
+                                 sk_error *err)
 {
-    if (!sc->forearm.sim) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the showcase has no forearm");
+    if (!sc->forearm.sim)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the showcase has no forearm");
     if (frame < 0 || frame >= sc->frame_count)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame %d is out of range [0, %d]", frame, sc->frame_count - 1);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame %d is out of range [0, %d]", frame,
+                       sc->frame_count - 1);
     sk_result r = sk__forearm_advance(sc, frame / sc->desc.fps, err);
     if (r != SK_OK) return r;
     size_t n = 3 * sc->forearm.mesh.vertex_count;

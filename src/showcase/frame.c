@@ -6,12 +6,13 @@
 
 #include "showcase/showcase_internal.h"
 
-sk_result sk_showcase_render_frame(sk_showcase *sc, int frame, sk_image *image, sk_showcase_stats *stats,
-                                   sk_error *err)
+sk_result sk_showcase_render_frame(sk_showcase *sc, int frame, sk_image *image,
+                                   sk_showcase_stats *stats, sk_error *err)
 {
     memset(image, 0, sizeof *image);
     if (frame < 0 || frame >= sc->frame_count)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame %d is out of range [0, %d]", frame, sc->frame_count - 1);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frame %d is out of range [0, %d]", frame,
+                       sc->frame_count - 1);
     double t = frame / sc->desc.fps;
     double t0 = sk_time_seconds();
     sk__intent in;

@@ -26,7 +26,8 @@ sk_result sk__hand_mesh_setup(sk_showcase *sc, sk_error *err)
     size_t n = mesh->vertex_count;
     sc->positions = malloc(3 * n * sizeof *sc->positions);
     sc->normals = malloc(3 * n * sizeof *sc->normals);
-    if (!sc->positions || !sc->normals) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the hand mesh");
+    if (!sc->positions || !sc->normals)
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the hand mesh");
     /* flesh radii in the relaxed posture (the surface's bind pose) */
     double dofs[SK_HAND_DOF_COUNT];
     sk_hand_relaxed(&sc->skeleton, dofs);
@@ -49,7 +50,9 @@ sk_result sk__hand_mesh_setup(sk_showcase *sc, sk_error *err)
         double radial = sqrt(lx * lx + lz * lz);
         if (radial > sc->link_radius[l]) sc->link_radius[l] = radial;
         for (int f = 0; f < 5; f++)
-            if (l == sk__distal_link(f) && ly > sc->skeleton.length[l] - TIP_REACH_MM && radial > tip[f]) tip[f] = radial;
+            if (l == sk__distal_link(f) && ly > sc->skeleton.length[l] - TIP_REACH_MM &&
+                radial > tip[f])
+                tip[f] = radial;
     }
     bool given = false;
     for (int f = 0; f < 5; f++) given = given || sc->desc.performance.tip_radius_mm[f] != 0;
@@ -80,10 +83,12 @@ void sk__hand_mesh_free(sk_showcase *sc)
     free(sc->normals);
 }
 
-sk_result sk__hand_mesh_posed(sk_showcase *sc, const sk_hand_frames *frames, sk_mesh *out, sk_error *err)
+sk_result sk__hand_mesh_posed(sk_showcase *sc, const sk_hand_frames *frames, sk_mesh *out,
+                              sk_error *err)
 {
     sk_hand_surface_deform(sc->surface, frames, SK_HAND_SKINNING_DQS, sc->positions, sc->normals);
-    sk_result r = sk_hand_surface_export_mesh(sc->surface, sc->positions, sc->normals, false, out, err);
+    sk_result r =
+        sk_hand_surface_export_mesh(sc->surface, sc->positions, sc->normals, false, out, err);
     if (r != SK_OK) return r;
     for (size_t v = 0; v < out->vertex_count; v++) { /* into the scene */
         float *p = out->positions + 3 * v;

@@ -36,7 +36,8 @@ sk_result sk__melody_alloc(sk_melody *out, int count, const char *name, sk_melod
     out->format = format;
     snprintf(out->name, sizeof out->name, "%s", name ? name : "");
     out->notes = calloc((size_t)(count > 0 ? count : 1), sizeof *out->notes);
-    if (!out->notes) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d notes", count);
+    if (!out->notes)
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d notes", count);
     return SK_OK;
 }
 
@@ -51,7 +52,8 @@ sk_result sk_melody_copy(const sk_melody *melody, sk_melody *out, sk_error *err)
 {
     sk_result r = sk__melody_alloc(out, melody->note_count, melody->name, melody->format, err);
     if (r != SK_OK) return r;
-    if (melody->note_count > 0) memcpy(out->notes, melody->notes, (size_t)melody->note_count * sizeof *out->notes);
+    if (melody->note_count > 0)
+        memcpy(out->notes, melody->notes, (size_t)melody->note_count * sizeof *out->notes);
     out->note_count = melody->note_count;
     return SK_OK;
 }
@@ -70,30 +72,32 @@ sk_result sk_melody_validate(sk_melody *melody, sk_error *err)
 {
     char where[192];
     if (melody->note_count < 0 || melody->note_count > SK_MELODY_MAX_NOTES)
-        return sk_fail(err, SK_ERROR_LIMIT, "%s%d notes: at most %d", melody->name, melody->note_count,
-                       SK_MELODY_MAX_NOTES);
+        return sk_fail(err, SK_ERROR_LIMIT, "%s%d notes: at most %d", melody->name,
+                       melody->note_count, SK_MELODY_MAX_NOTES);
     if (melody->note_count > 0 && !melody->notes)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "melody: %d notes but no note array", melody->note_count);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "melody: %d notes but no note array",
+                       melody->note_count);
     for (int i = 0; i < melody->note_count; i++) {
         const sk_note *n = &melody->notes[i];
         sk__melody_where(melody, n->source, where, sizeof where);
         if (n->key < SK_PIANO_KEY_FIRST || n->key > SK_PIANO_KEY_LAST)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%skey %d is not a piano key (%d..%d, A0..C8)",
-                           where, n->key, SK_PIANO_KEY_FIRST, SK_PIANO_KEY_LAST);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "%skey %d is not a piano key (%d..%d, A0..C8)", where, n->key,
+                           SK_PIANO_KEY_FIRST, SK_PIANO_KEY_LAST);
         if (!isfinite(n->start_s) || n->start_s < 0 || n->start_s > SK_MELODY_MAX_SECONDS)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%sstart %g s is out of range [0, %g]", where,
-                           n->start_s, SK_MELODY_MAX_SECONDS);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%sstart %g s is out of range [0, %g]",
+                           where, n->start_s, SK_MELODY_MAX_SECONDS);
         if (!isfinite(n->duration_s) || n->duration_s <= 0 ||
             n->start_s + n->duration_s > SK_MELODY_MAX_SECONDS)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "%sduration %g s must be > 0 and end by %g s", where, n->duration_s,
                            SK_MELODY_MAX_SECONDS);
         if (n->finger < 0 || n->finger > 5)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%sfinger %d is out of range 1..5 (0 = automatic)",
-                           where, n->finger);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "%sfinger %d is out of range 1..5 (0 = automatic)", where, n->finger);
         if (n->velocity < 1 || n->velocity > 127)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%svelocity %d is out of range 1..127", where,
-                           n->velocity);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%svelocity %d is out of range 1..127",
+                           where, n->velocity);
     }
     sk__melody_sort(melody->notes, melody->note_count);
     /* a key struck again while it sounds */
@@ -115,8 +119,8 @@ sk_result sk_melody_validate(sk_melody *melody, sk_error *err)
             else
                 snprintf(other, sizeof other, "an earlier note");
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "%skey %s is struck at %g s while %s still holds it until %g s", where, name,
-                           n->start_s, other, held_until[k]);
+                           "%skey %s is struck at %g s while %s still holds it until %g s", where,
+                           name, n->start_s, other, held_until[k]);
         }
         held_by[k] = i;
         held_until[k] = n->start_s + n->duration_s;

@@ -21,7 +21,8 @@ static bool parse_decimal(const char *s, double *out)
 {
     if (!*s) return false;
     for (const char *p = s; *p; p++)
-        if (!isdigit((unsigned char)*p) && *p != '.' && *p != 'e' && *p != 'E' && *p != '+' && *p != '-')
+        if (!isdigit((unsigned char)*p) && *p != '.' && *p != 'e' && *p != 'E' && *p != '+' &&
+            *p != '-')
             return false;
     char *end = NULL;
     errno = 0;
@@ -65,7 +66,8 @@ static sk_result line_fail(const text_reader *r, const char *fmt, ...)
 }
 
 /* Splits one line (without its newline, comments cut) into tokens. */
-static int split(const char *line, size_t length, char tokens[MAX_FIELDS + 1][MAX_TOKEN], bool *too_long)
+static int split(const char *line, size_t length, char tokens[MAX_FIELDS + 1][MAX_TOKEN],
+                 bool *too_long)
 {
     int count = 0;
     size_t i = 0;
@@ -93,20 +95,25 @@ static sk_result parse_note(const text_reader *r, char tok[MAX_FIELDS + 1][MAX_T
                             double seconds_per_unit, sk_note *n)
 {
     if (count < 3)
-        return line_fail(r, "a note needs NOTE START DURATION [FINGER] [VELOCITY] (%d field%s given)", count,
-                         count == 1 ? "" : "s");
+        return line_fail(r,
+                         "a note needs NOTE START DURATION [FINGER] [VELOCITY] (%d field%s given)",
+                         count, count == 1 ? "" : "s");
     if (count > 5)
-        return line_fail(r, "%d fields: a note has at most 5 (NOTE START DURATION FINGER VELOCITY)", count);
+        return line_fail(r, "%d fields: a note has at most 5 (NOTE START DURATION FINGER VELOCITY)",
+                         count);
     memset(n, 0, sizeof *n);
     n->source = r->line;
     n->velocity = 80;
     int key;
     if (!sk_note_parse(tok[0], &key))
-        return line_fail(r, "note \"%s\" is neither a note name (C4, F#3, Bb5: A-G, # or b, octave -1..9) nor a key "
-                            "number %d..%d", tok[0], SK_PIANO_KEY_FIRST, SK_PIANO_KEY_LAST);
+        return line_fail(r,
+                         "note \"%s\" is neither a note name (C4, F#3, Bb5: A-G, # or b, octave "
+                         "-1..9) nor a key "
+                         "number %d..%d",
+                         tok[0], SK_PIANO_KEY_FIRST, SK_PIANO_KEY_LAST);
     if (key < SK_PIANO_KEY_FIRST || key > SK_PIANO_KEY_LAST)
-        return line_fail(r, "note \"%s\" (key %d) is not on the piano (%d..%d, A0..C8)", tok[0], key,
-                         SK_PIANO_KEY_FIRST, SK_PIANO_KEY_LAST);
+        return line_fail(r, "note \"%s\" (key %d) is not on the piano (%d..%d, A0..C8)", tok[0],
+                         key, SK_PIANO_KEY_FIRST, SK_PIANO_KEY_LAST);
     n->key = key;
     double start, duration;
     double limit = SK_MELODY_MAX_SECONDS / seconds_per_unit;
@@ -117,7 +124,8 @@ static sk_result parse_note(const text_reader *r, char tok[MAX_FIELDS + 1][MAX_T
     n->start_s = start * seconds_per_unit;
     n->duration_s = duration * seconds_per_unit;
     if (count >= 4 && strcmp(tok[3], "-") != 0 && !parse_int(tok[3], 1, 5, &n->finger))
-        return line_fail(r, "finger \"%s\" must be 1 (thumb) .. 5 (little) or - (automatic)", tok[3]);
+        return line_fail(r, "finger \"%s\" must be 1 (thumb) .. 5 (little) or - (automatic)",
+                         tok[3]);
     if (count >= 5 && !parse_int(tok[4], 1, 127, &n->velocity))
         return line_fail(r, "velocity \"%s\" must be an integer 1..127", tok[4]);
     return SK_OK;
@@ -129,8 +137,8 @@ sk_result sk_melody_parse_text(const char *text, size_t length, const char *sour
     memset(out, 0, sizeof *out);
     text_reader r = {source_name ? source_name : "melody", 0, err};
     if (length > SK_MELODY_MAX_BYTES)
-        return sk_fail(err, SK_ERROR_LIMIT, "%s: %zu bytes: a melody file may have at most %u", r.name, length,
-                       SK_MELODY_MAX_BYTES);
+        return sk_fail(err, SK_ERROR_LIMIT, "%s: %zu bytes: a melody file may have at most %u",
+                       r.name, length, SK_MELODY_MAX_BYTES);
     /* count candidate lines for the allocation */
     size_t lines = 1;
     for (size_t i = 0; i < length; i++) lines += text[i] == '\n';
@@ -151,7 +159,8 @@ sk_result sk_melody_parse_text(const char *text, size_t length, const char *sour
                 break;
             }
             /* a comment starts at a '#' that begins a field (so C#4 is a note) */
-            if (text[i] == '#' && content == end && (i == pos || text[i - 1] == ' ' || text[i - 1] == '\t'))
+            if (text[i] == '#' && content == end &&
+                (i == pos || text[i - 1] == ' ' || text[i - 1] == '\t'))
                 content = i;
         }
         if (res != SK_OK) break;
@@ -191,7 +200,8 @@ sk_result sk_melody_write_text(const sk_melody *melody, const char *path, sk_err
     sk_atomic_file f;
     sk_result r = sk_atomic_file_open(&f, path, err);
     if (r != SK_OK) return r;
-    fprintf(f.fp, "# shitsukan melody: NOTE START DURATION FINGER VELOCITY (seconds; fingers 1 thumb .. 5 little)\n");
+    fprintf(f.fp, "# shitsukan melody: NOTE START DURATION FINGER VELOCITY (seconds; fingers 1 "
+                  "thumb .. 5 little)\n");
     if (melody->name[0]) fprintf(f.fp, "# from %s\n", melody->name);
     for (int i = 0; i < melody->note_count; i++) {
         const sk_note *n = &melody->notes[i];
@@ -201,7 +211,8 @@ sk_result sk_melody_write_text(const sk_melody *melody, const char *path, sk_err
             snprintf(finger, sizeof finger, "%d", n->finger);
         else
             snprintf(finger, sizeof finger, "-");
-        fprintf(f.fp, "%-4s %.10g %.10g %s %d\n", name, n->start_s, n->duration_s, finger, n->velocity);
+        fprintf(f.fp, "%-4s %.10g %.10g %s %d\n", name, n->start_s, n->duration_s, finger,
+                n->velocity);
     }
     return sk_atomic_file_commit(&f, err);
 }

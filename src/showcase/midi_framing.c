@@ -52,7 +52,10 @@ static void put_vlq(byte_buffer *b, uint32_t v)
     put(b, x + 4 - n, (size_t)n);
 }
 
-static uint32_t be32(const uint8_t *p) { return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3]; }
+static uint32_t be32(const uint8_t *p)
+{
+    return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
+}
 static unsigned be16(const uint8_t *p) { return (unsigned)p[0] << 8 | p[1]; }
 
 typedef struct framer {
@@ -83,7 +86,8 @@ static sk_result read_vlq(const framer *f, size_t *p, size_t end, uint32_t *valu
     uint32_t v = 0;
     size_t start = *p;
     for (int n = 0; n < 4; n++) {
-        if (*p >= end) return fail_at(f, start, "a variable-length number runs past the end of its track");
+        if (*p >= end)
+            return fail_at(f, start, "a variable-length number runs past the end of its track");
         uint8_t c = f->data[(*p)++];
         v = (v << 7) | (c & 0x7f);
         if (!(c & 0x80)) {
@@ -136,7 +140,8 @@ static sk_result frame_track(const framer *f, size_t p, size_t end, int track, b
             uint32_t len;
             if ((r = read_vlq(f, &p, end, &len)) != SK_OK) break;
             if (len > end - p) {
-                r = fail_at(f, at, "meta event 0x%02x claims %u bytes, its track has %zu left", type, len, end - p);
+                r = fail_at(f, at, "meta event 0x%02x claims %u bytes, its track has %zu left",
+                            type, len, end - p);
                 break;
             }
             if (type == 0x2f) {
@@ -156,7 +161,8 @@ static sk_result frame_track(const framer *f, size_t p, size_t end, int track, b
                     r = fail_at(f, at, "tempo of 0 microseconds per quarter note");
                     break;
                 }
-                plain[0] = 0xff, plain[1] = 0x51, plain[2] = 3, plain[3] = t[0], plain[4] = t[1], plain[5] = t[2];
+                plain[0] = 0xff, plain[1] = 0x51, plain[2] = 3, plain[3] = t[0], plain[4] = t[1],
+                plain[5] = t[2];
                 plain_n = 6, keep = true;
             }
             p += len;
@@ -166,7 +172,8 @@ static sk_result frame_track(const framer *f, size_t p, size_t end, int track, b
             uint32_t len;
             if ((r = read_vlq(f, &p, end, &len)) != SK_OK) break;
             if (len > end - p) {
-                r = fail_at(f, at, "system exclusive event claims %u bytes, its track has %zu left", len, end - p);
+                r = fail_at(f, at, "system exclusive event claims %u bytes, its track has %zu left",
+                            len, end - p);
                 break;
             }
             p += len;
@@ -174,14 +181,19 @@ static sk_result frame_track(const framer *f, size_t p, size_t end, int track, b
         } else {
             if (status & 0x80) {
                 if (status >= 0xf0) {
-                    r = fail_at(f, at, "status byte 0x%02x is not allowed in a MIDI file (only channel messages, "
-                                       "0xF0/0xF7 system exclusive and 0xFF meta events)", status);
+                    r = fail_at(
+                        f, at,
+                        "status byte 0x%02x is not allowed in a MIDI file (only channel messages, "
+                        "0xF0/0xF7 system exclusive and 0xFF meta events)",
+                        status);
                     break;
                 }
                 running = status;
                 p++;
             } else if (!running) {
-                r = fail_at(f, at, "data byte 0x%02x without a status byte (no running status here)", status);
+                r = fail_at(f, at,
+                            "data byte 0x%02x without a status byte (no running status here)",
+                            status);
                 break;
             }
             uint8_t kind = running & 0xf0;
@@ -192,12 +204,14 @@ static sk_result frame_track(const framer *f, size_t p, size_t end, int track, b
             }
             for (int k = 0; k < data_bytes; k++)
                 if (f->data[p + (size_t)k] & 0x80) {
-                    r = fail_at(f, p + (size_t)k, "data byte 0x%02x has its top bit set", f->data[p + (size_t)k]);
+                    r = fail_at(f, p + (size_t)k, "data byte 0x%02x has its top bit set",
+                                f->data[p + (size_t)k]);
                     break;
                 }
             if (r != SK_OK) break;
             if (kind == 0x80 || kind == 0x90) {
-                plain[0] = running, plain[1] = f->data[p], plain[2] = f->data[p + 1], plain_n = 3, keep = true;
+                plain[0] = running, plain[1] = f->data[p], plain[2] = f->data[p + 1], plain_n = 3,
+                keep = true;
             }
             p += (size_t)data_bytes;
         }
@@ -218,7 +232,8 @@ static sk_result frame_track(const framer *f, size_t p, size_t end, int track, b
         }
         if (ended) break;
     }
-    if (r == SK_OK && !ended) r = fail_at(f, end, "track %d has no end-of-track event (FF 2F 00)", track);
+    if (r == SK_OK && !ended)
+        r = fail_at(f, end, "track %d has no end-of-track event (FF 2F 00)", track);
     if (r == SK_OK && p != end)
         r = fail_at(f, p, "%zu bytes after the end-of-track event of track %d", end - p, track);
     if (r != SK_OK) {
@@ -247,19 +262,23 @@ sk_result sk__midi_plain_make(const uint8_t *data, size_t length, const char *na
     memset(out, 0, sizeof *out);
     framer f = {data, length, name, err};
     if (length > SK_MELODY_MAX_BYTES)
-        return sk_fail(err, SK_ERROR_LIMIT, "%s: %zu bytes: a melody file may have at most %u", name, length,
-                       SK_MELODY_MAX_BYTES);
+        return sk_fail(err, SK_ERROR_LIMIT, "%s: %zu bytes: a melody file may have at most %u",
+                       name, length, SK_MELODY_MAX_BYTES);
     if (length < 14 || memcmp(data, "MThd", 4) != 0)
-        return fail_at(&f, 0, "not a Standard MIDI File (it must start with an MThd chunk of 14 bytes)");
+        return fail_at(&f, 0,
+                       "not a Standard MIDI File (it must start with an MThd chunk of 14 bytes)");
     uint32_t header_length = be32(data + 4);
     if (header_length != 6) return fail_at(&f, 4, "MThd length %u (must be 6)", header_length);
     unsigned format = be16(data + 8), tracks = be16(data + 10), division = be16(data + 12);
     if (format > 1)
-        return fail_at(&f, 8, "format %u: only formats 0 (one track) and 1 (tracks played together) are read",
-                       format);
+        return fail_at(
+            &f, 8, "format %u: only formats 0 (one track) and 1 (tracks played together) are read",
+            format);
     if (tracks == 0) return fail_at(&f, 10, "no tracks (the header says 0)");
-    if (format == 0 && tracks != 1) return fail_at(&f, 10, "format 0 with %u tracks (must be 1)", tracks);
-    if (division & 0x8000) return fail_at(&f, 12, "SMPTE time division is not supported (ticks per quarter only)");
+    if (format == 0 && tracks != 1)
+        return fail_at(&f, 10, "format 0 with %u tracks (must be 1)", tracks);
+    if (division & 0x8000)
+        return fail_at(&f, 12, "SMPTE time division is not supported (ticks per quarter only)");
     if (division == 0) return fail_at(&f, 12, "0 ticks per quarter note");
 
     byte_buffer b = {0};
@@ -278,17 +297,19 @@ sk_result sk__midi_plain_make(const uint8_t *data, size_t length, const char *na
     int found = 0;
     while (p < length && r == SK_OK) {
         if (length - p < 8) {
-            r = fail_at(&f, p, "%zu bytes after the last chunk, too few for a chunk header", length - p);
+            r = fail_at(&f, p, "%zu bytes after the last chunk, too few for a chunk header",
+                        length - p);
             break;
         }
         const uint8_t *id = data + p;
         for (int k = 0; k < 4 && r == SK_OK; k++)
-            if (id[k] < 0x20 || id[k] > 0x7e) r = fail_at(&f, p, "a chunk's type is not 4 ASCII letters");
+            if (id[k] < 0x20 || id[k] > 0x7e)
+                r = fail_at(&f, p, "a chunk's type is not 4 ASCII letters");
         if (r != SK_OK) break;
         uint32_t len = be32(data + p + 4);
         if (len > length - p - 8) {
-            r = fail_at(&f, p, "chunk \"%.4s\" claims %u bytes, the file has %zu left", (const char *)id, len,
-                        length - p - 8);
+            r = fail_at(&f, p, "chunk \"%.4s\" claims %u bytes, the file has %zu left",
+                        (const char *)id, len, length - p - 8);
             break;
         }
         if (memcmp(id, "MTrk", 4) == 0) {
@@ -297,7 +318,8 @@ sk_result sk__midi_plain_make(const uint8_t *data, size_t length, const char *na
                 break;
             }
             byte_buffer t = {0};
-            r = frame_track(&f, p + 8, p + 8 + len, found + 1, &t, &out->offset[found], &out->event_count[found]);
+            r = frame_track(&f, p + 8, p + 8 + len, found + 1, &t, &out->offset[found],
+                            &out->event_count[found]);
             if (r == SK_OK) {
                 out->track_count = found + 1;
                 put(&b, (const uint8_t *)"MTrk", 4);
@@ -313,7 +335,8 @@ sk_result sk__midi_plain_make(const uint8_t *data, size_t length, const char *na
     }
     if (r == SK_OK && (unsigned)found < tracks)
         r = fail_at(&f, length, "the header declares %u tracks, the file holds %d", tracks, found);
-    if (r == SK_OK && b.failed) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory reading %s", name);
+    if (r == SK_OK && b.failed)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory reading %s", name);
     if (r != SK_OK) {
         free(b.data);
         sk__midi_plain_free(out);

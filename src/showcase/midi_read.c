@@ -20,7 +20,8 @@ typedef struct log_capture {
     char first[256];
 } log_capture;
 
-static void capture_log(const gchar *domain, GLogLevelFlags level, const gchar *message, gpointer user)
+static void capture_log(const gchar *domain, GLogLevelFlags level, const gchar *message,
+                        gpointer user)
 {
     (void)domain, (void)level;
     log_capture *c = user;
@@ -45,8 +46,8 @@ static void end_note(sk_melody *m, pairing *pr, int k, double t, bool *dropped)
     pr->note[k] = -1;
 }
 
-static sk_result read_events(smf_t *smf, const sk__midi_plain *plain, const char *name, sk_melody *m,
-                             sk_error *err)
+static sk_result read_events(smf_t *smf, const sk__midi_plain *plain, const char *name,
+                             sk_melody *m, sk_error *err)
 {
     pairing pr;
     for (int k = 0; k < SK_PIANO_KEY_COUNT; k++) pr.note[k] = pr.track[k] = -1;
@@ -56,7 +57,8 @@ static sk_result read_events(smf_t *smf, const sk__midi_plain *plain, const char
         int track = e->track ? e->track->track_number : 0;
         if (track < 1 || track > plain->track_count || e->event_number < 1 ||
             e->event_number > plain->event_count[track - 1] || e->midi_buffer_length < 1)
-            return sk_fail(err, SK_ERROR_PARSE, "%s: libsmf returned an event the file does not hold", name);
+            return sk_fail(err, SK_ERROR_PARSE,
+                           "%s: libsmf returned an event the file does not hold", name);
         long offset = plain->offset[track - 1][e->event_number - 1];
         const uint8_t *b = e->midi_buffer;
         double t = e->time_seconds;
@@ -75,14 +77,15 @@ static sk_result read_events(smf_t *smf, const sk__midi_plain *plain, const char
             char nm[8];
             sk_note_name(key, nm, sizeof nm);
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "%s: byte %ld: note %d (%s) is not a piano key (%d..%d, A0..C8)", name, offset, key, nm,
-                           SK_PIANO_KEY_FIRST, SK_PIANO_KEY_LAST);
+                           "%s: byte %ld: note %d (%s) is not a piano key (%d..%d, A0..C8)", name,
+                           offset, key, nm, SK_PIANO_KEY_FIRST, SK_PIANO_KEY_LAST);
         }
         int k = key - SK_PIANO_KEY_FIRST;
         end_note(m, &pr, k, t, &dropped); /* a note-off, or a key struck again */
         if (!on) continue;
         if (m->note_count >= SK_MELODY_MAX_NOTES)
-            return sk_fail(err, SK_ERROR_LIMIT, "%s: byte %ld: more than %d notes", name, offset, SK_MELODY_MAX_NOTES);
+            return sk_fail(err, SK_ERROR_LIMIT, "%s: byte %ld: more than %d notes", name, offset,
+                           SK_MELODY_MAX_NOTES);
         sk_note *n = &m->notes[m->note_count];
         memset(n, 0, sizeof *n);
         n->key = key;
@@ -118,8 +121,9 @@ sk_result sk_melody_parse_midi(const uint8_t *data, size_t length, const char *s
     }
     log_capture capture = {0};
     pthread_mutex_lock(&log_lock);
-    guint handler = g_log_set_handler("libsmf", (GLogLevelFlags)(G_LOG_LEVEL_MASK | G_LOG_FLAG_FATAL | G_LOG_FLAG_RECURSION),
-                                      capture_log, &capture);
+    guint handler = g_log_set_handler(
+        "libsmf", (GLogLevelFlags)(G_LOG_LEVEL_MASK | G_LOG_FLAG_FATAL | G_LOG_FLAG_RECURSION),
+        capture_log, &capture);
     smf_t *smf = smf_load_from_memory(plain.bytes, (int)plain.size);
     if (smf && capture.count == 0) {
         smf_rewind(smf);
@@ -129,7 +133,8 @@ sk_result sk_melody_parse_midi(const uint8_t *data, size_t length, const char *s
     g_log_remove_handler("libsmf", handler);
     pthread_mutex_unlock(&log_lock);
     if (r == SK_OK && (!smf || capture.count > 0))
-        r = sk_fail(err, SK_ERROR_PARSE, "%s: libsmf: %s", name, capture.count ? capture.first : "the file could not be read");
+        r = sk_fail(err, SK_ERROR_PARSE, "%s: libsmf: %s", name,
+                    capture.count ? capture.first : "the file could not be read");
     sk__midi_plain_free(&plain);
     if (r == SK_OK) r = sk_melody_validate(out, err);
     if (r != SK_OK) sk_melody_free(out);

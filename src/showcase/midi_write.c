@@ -72,14 +72,37 @@ sk_result sk_melody_write_midi(const sk_melody *melody, const char *path, sk_err
         free(ev);
         return r;
     }
-    static const uint8_t header[14] = {'M', 'T', 'h', 'd', 0, 0, 0, 6, 0, 0, 0, 1,
-                                       TICKS_PER_QUARTER >> 8, TICKS_PER_QUARTER & 0xff};
+    static const uint8_t header[14] = {'M',
+                                       'T',
+                                       'h',
+                                       'd',
+                                       0,
+                                       0,
+                                       0,
+                                       6,
+                                       0,
+                                       0,
+                                       0,
+                                       1,
+                                       TICKS_PER_QUARTER >> 8,
+                                       TICKS_PER_QUARTER & 0xff};
     fwrite(header, 1, sizeof header, f.fp);
-    uint8_t track[8] = {'M', 'T', 'r', 'k', (uint8_t)(length >> 24), (uint8_t)(length >> 16),
-                        (uint8_t)(length >> 8), (uint8_t)length};
+    uint8_t track[8] = {'M',
+                        'T',
+                        'r',
+                        'k',
+                        (uint8_t)(length >> 24),
+                        (uint8_t)(length >> 16),
+                        (uint8_t)(length >> 8),
+                        (uint8_t)length};
     fwrite(track, 1, sizeof track, f.fp);
-    uint8_t tempo[7] = {0, 0xff, 0x51, 3, (MICROSECONDS_PER_QUARTER >> 16) & 0xff,
-                        (MICROSECONDS_PER_QUARTER >> 8) & 0xff, MICROSECONDS_PER_QUARTER & 0xff};
+    uint8_t tempo[7] = {0,
+                        0xff,
+                        0x51,
+                        3,
+                        (MICROSECONDS_PER_QUARTER >> 16) & 0xff,
+                        (MICROSECONDS_PER_QUARTER >> 8) & 0xff,
+                        MICROSECONDS_PER_QUARTER & 0xff};
     fwrite(tempo, 1, sizeof tempo, f.fp);
     uint32_t prev = 0;
     for (int i = 0; i < 2 * n; i++) {

@@ -63,10 +63,12 @@ static double max_abs(const double *v, int n)
 sk_result sk__newton_solve(const sk__newton_desc *d, double *x, double *res, sk_error *err)
 {
     int n = d->n;
-    double jac[SK__NEWTON_MAX * SK__NEWTON_MAX], xs[SK__NEWTON_MAX], rs[SK__NEWTON_MAX], dx[SK__NEWTON_MAX];
+    double jac[SK__NEWTON_MAX * SK__NEWTON_MAX], xs[SK__NEWTON_MAX], rs[SK__NEWTON_MAX],
+        dx[SK__NEWTON_MAX];
     bool fresh = false, have = false; /* Jacobian just taken at x / one at hand */
     sk_result r = d->fn(d->user, x, res, err);
-    for (int it = 0; it < d->max_iterations && r == SK_OK && n > 0 && max_abs(res, n) > d->tolerance; it++) {
+    for (int it = 0;
+         it < d->max_iterations && r == SK_OK && n > 0 && max_abs(res, n) > d->tolerance; it++) {
         if (!have) { /* forward differences at x */
             for (int j = 0; j < n && r == SK_OK; j++) {
                 memcpy(xs, x, (size_t)n * sizeof *x);

@@ -36,7 +36,8 @@ bool sk_note_parse(const char *text, int *key)
 
 void sk_note_name(int key, char *out, size_t size)
 {
-    static const char *names[12] = {"C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B"};
+    static const char *names[12] = {"C",  "C#", "D",  "D#", "E",  "F",
+                                    "F#", "G",  "G#", "A",  "A#", "B"};
     if (key < 0 || key > 127) {
         snprintf(out, size, "?");
         return;

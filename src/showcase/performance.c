@@ -13,7 +13,8 @@
  * puts its finger over its key; the wrist takes a weighted mean of those positions, a
  * note's weight rising during the second half of its approach, 1 while its key is down
  * and falling as a Gaussian (width travel_s) once it comes up, so the hand stays put
- * while a key is held, travels between the presses, and is in place when a finger lands. It gives way a little at every strike (strike_drop_mm). */
+ * while a key is held, travels between the presses, and is in place when a finger lands. It gives
+ * way a little at every strike (strike_drop_mm). */
 #include <math.h>
 #include <string.h>
 
@@ -22,8 +23,9 @@
 #define RECOVER_S 0.08 /* the wrist's recovery after a strike */
 #define NEAREST_WEIGHT 1e-3
 #define CONTACT_MARGIN_MM 3.0 /* pads keep this far inside a key's part they press */
-#define KEY_EDGE_CLEARANCE_MM 5.0 /* a white key's pad this far in front of the black keys
-                                     beyond its radius (their edges' ramp, contact.c) */
+#define KEY_EDGE_CLEARANCE_MM                                                                      \
+    5.0                         /* a white key's pad this far in front of the black keys           \
+                                   beyond its radius (their edges' ramp, contact.c) */
 #define HAND_DROP_MARGIN_MM 3.0 /* a press keeps this much of its arc in reserve */
 
 sk_performance_desc sk__performance_desc_resolved(const sk_performance_desc *desc)
@@ -49,18 +51,22 @@ sk_result sk__performance_desc_validate(const sk_performance_desc *d, sk_error *
         (r = sk_check_range_f(err, "performance.lift_s", d->lift_s, 0.02, 1)) != SK_OK ||
         (r = sk_check_range_f(err, "performance.hover_mm", d->hover_mm, 2, 40)) != SK_OK ||
         (r = sk_check_range_f(err, "performance.clearance_mm", d->clearance_mm, 0, 10)) != SK_OK ||
-        (r = sk_check_range_f(err, "performance.press_pip_ratio", d->press_pip_ratio, 0, 4)) != SK_OK ||
+        (r = sk_check_range_f(err, "performance.press_pip_ratio", d->press_pip_ratio, 0, 4)) !=
+            SK_OK ||
         (r = sk_check_range_f(err, "performance.travel_s", d->travel_s, 0.01, 2)) != SK_OK ||
-        (r = sk_check_range_f(err, "performance.strike_drop_mm", d->strike_drop_mm, 0, 10)) != SK_OK)
+        (r = sk_check_range_f(err, "performance.strike_drop_mm", d->strike_drop_mm, 0, 10)) !=
+            SK_OK)
         return r;
     if (d->approach_s <= 0.5 * d->descent_s)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "performance.approach_s = %g must exceed half of performance.descent_s = %g", d->approach_s,
-                       d->descent_s);
+                       "performance.approach_s = %g must exceed half of performance.descent_s = %g",
+                       d->approach_s, d->descent_s);
     bool any = false;
     for (int f = 0; f < 5; f++) any = any || d->tip_radius_mm[f] != 0;
     for (int f = 0; f < 5 && any; f++)
-        if ((r = sk_check_range_f(err, "performance.tip_radius_mm", d->tip_radius_mm[f], 2, 20)) != SK_OK) return r;
+        if ((r = sk_check_range_f(err, "performance.tip_radius_mm", d->tip_radius_mm[f], 2, 20)) !=
+            SK_OK)
+            return r;
     return SK_OK;
 }
 
@@ -111,8 +117,8 @@ sk_vec3d sk__performance_note_wrist(const sk__performance *perf, int i)
     return (sk_vec3d){k->x_mm - off.x, perf->hover_y + rise - drop, contact_z - off.z};
 }
 
-void sk__performance_contact_range(const sk__hand_rig *rig, const sk_piano_key *k, int finger, double *lo,
-                                   double *hi)
+void sk__performance_contact_range(const sk__hand_rig *rig, const sk_piano_key *k, int finger,
+                                   double *lo, double *hi)
 {
     double radius = rig->tip_radius[finger];
     if (k->black) {
@@ -146,7 +152,8 @@ void sk__performance_at(const sk__performance *perf, double t, sk__intent *out)
     for (int i = 0; i < m->note_count; i++) {
         const sk_note *n = &m->notes[i];
         double D = descent_of(d, n);
-        double dist = outside(t, n->start_s - 0.5 * d->approach_s, n->start_s + n->duration_s - 0.5 * D);
+        double dist =
+            outside(t, n->start_s - 0.5 * d->approach_s, n->start_s + n->duration_s - 0.5 * D);
         if (dist < nearest) nearest = dist;
     }
     sk_vec3d wrist = {0, perf->hover_y, perf->piano->desc.front_mm};
@@ -174,7 +181,8 @@ void sk__performance_at(const sk__performance *perf, double t, sk__intent *out)
         /* the strike: the wrist gives way while the key goes down, then recovers */
         double tau = t - s0;
         if (tau > -0.5 * D && tau < 0.5 * D + 10 * RECOVER_S)
-            drop += ease((tau + 0.5 * D) / D) * exp(-fmax(tau - 0.5 * D, 0) / RECOVER_S) * n->velocity / 127.0;
+            drop += ease((tau + 0.5 * D) / D) * exp(-fmax(tau - 0.5 * D, 0) / RECOVER_S) *
+                    n->velocity / 127.0;
     }
     if (total > 0) wrist = (sk_vec3d){sum.x / total, sum.y / total, sum.z / total};
     /* held together, notes need a depth that suits all their fingers: the mean, kept

@@ -15,8 +15,8 @@
 #define WHITE_THICKNESS_MM 22.0
 #define BLACK_WIDTH_MM 13.0
 #define BLACK_LENGTH_MM 92.0
-#define BLACK_RISE_MM 12.0    /* black top above the white tops */
-#define NOTCH_GAP_MM 0.8      /* white key's back part to a black key's side */
+#define BLACK_RISE_MM 12.0 /* black top above the white tops */
+#define NOTCH_GAP_MM 0.8   /* white key's back part to a black key's side */
 #define WHITE_KEY_COUNT 52
 
 static sk_result check(sk_error *err, const char *name, double v, double lo, double hi)
@@ -113,12 +113,15 @@ static int key_boxes(const sk_piano_key *k, sk_vec3d centre[2], sk_vec3d half[2]
     double y = k->top_mm - 0.5 * k->thickness_mm;
     if (k->black) {
         centre[0] = (sk_vec3d){k->x_mm, y, 0.5 * (k->front_mm + k->back_mm)};
-        half[0] = (sk_vec3d){0.5 * k->width_mm, 0.5 * k->thickness_mm, 0.5 * (k->front_mm - k->back_mm)};
+        half[0] =
+            (sk_vec3d){0.5 * k->width_mm, 0.5 * k->thickness_mm, 0.5 * (k->front_mm - k->back_mm)};
         return 1;
     }
     centre[0] = (sk_vec3d){k->x_mm, y, 0.5 * (k->front_mm + k->notch_front_mm)};
-    half[0] = (sk_vec3d){0.5 * k->width_mm, 0.5 * k->thickness_mm, 0.5 * (k->front_mm - k->notch_front_mm)};
-    centre[1] = (sk_vec3d){0.5 * (k->back_x0_mm + k->back_x1_mm), y, 0.5 * (k->notch_front_mm + k->back_mm)};
+    half[0] = (sk_vec3d){0.5 * k->width_mm, 0.5 * k->thickness_mm,
+                         0.5 * (k->front_mm - k->notch_front_mm)};
+    centre[1] = (sk_vec3d){0.5 * (k->back_x0_mm + k->back_x1_mm), y,
+                           0.5 * (k->notch_front_mm + k->back_mm)};
     half[1] = (sk_vec3d){0.5 * (k->back_x1_mm - k->back_x0_mm), 0.5 * k->thickness_mm,
                          0.5 * (k->notch_front_mm - k->back_mm)};
     return 2;
@@ -132,7 +135,8 @@ static sk_vec3d turn(const sk_piano *piano, sk_vec3d p, double angle)
     return (sk_vec3d){p.x, yp + y * c - z * s, zp + y * s + z * c};
 }
 
-double sk_piano_key_distance(const sk_piano *piano, const sk_piano_key *key, double angle, sk_vec3d p)
+double sk_piano_key_distance(const sk_piano *piano, const sk_piano_key *key, double angle,
+                             sk_vec3d p)
 {
     sk_vec3d q = turn(piano, p, -angle); /* into the key's rest frame */
     sk_vec3d centre[2], half[2];
@@ -160,7 +164,8 @@ int sk_piano_key_objects(const sk_piano *piano, const sk_piano_key *key, double 
         memset(o, 0, sizeof *o);
         snprintf(o->name, sizeof o->name, "key-%s%s", name, b ? "-back" : "");
         o->shape = SK_RENDER_SHAPE_BOX;
-        o->size[0] = (float)(2 * half[b].x), o->size[1] = (float)(2 * half[b].y), o->size[2] = (float)(2 * half[b].z);
+        o->size[0] = (float)(2 * half[b].x), o->size[1] = (float)(2 * half[b].y),
+        o->size[2] = (float)(2 * half[b].z);
         snprintf(o->material, sizeof o->material, "%s", material);
         sk_vec3d c = turn(piano, centre[b], angle);
         o->transform.translate[0] = (float)c.x, o->transform.translate[1] = (float)c.y;

@@ -14,15 +14,17 @@
 
 #define POSTURE_UNKNOWNS 14
 #define PRESS_MARGIN_MM 2.0 /* a press stops short of the bottom of its arc */
-#define WRIST_FLEX 0.12 /* the wrist slightly flexed: the forearm level, the hand sloping
-                           down to the knuckles */
+#define WRIST_FLEX                                                                                 \
+    0.12 /* the wrist slightly flexed: the forearm level, the hand sloping                         \
+            down to the knuckles */
 
 static const char *const press_names[5][2] = {{"T.CMC.abd", "T.MCP.flex"},
                                               {"I.MCP.flex", "I.PIP.flex"},
                                               {"M.MCP.flex", "M.PIP.flex"},
                                               {"R.MCP.flex", "R.PIP.flex"},
                                               {"L.MCP.flex", "L.PIP.flex"}};
-static const char *const aim_names[5] = {"T.CMC.flex", "I.MCP.abd", "M.MCP.abd", "R.MCP.abd", "L.MCP.abd"};
+static const char *const aim_names[5] = {"T.CMC.flex", "I.MCP.abd", "M.MCP.abd", "R.MCP.abd",
+                                         "L.MCP.abd"};
 #define THUMB_PRESS_MCP 0.3 /* MCP torque per CMC abduction torque of a thumb press */
 
 typedef struct posture_targets {
@@ -30,8 +32,8 @@ typedef struct posture_targets {
 } posture_targets;
 
 /* Misses of the pads from the targets for the 14 posture torques. */
-static sk_result posture_misses(sk_showcase *sc, const posture_targets *tg, const double *u, double *res,
-                                sk_vec3d pads[5], sk_error *err)
+static sk_result posture_misses(sk_showcase *sc, const posture_targets *tg, const double *u,
+                                double *res, sk_vec3d pads[5], sk_error *err)
 {
     sk__hand_rig *rig = &sc->rig;
     double torque[SK_HAND_DOF_COUNT] = {0};
@@ -45,7 +47,8 @@ static sk_result posture_misses(sk_showcase *sc, const posture_targets *tg, cons
     }
     double dofs[SK_HAND_DOF_COUNT];
     sk_hand_frames frames;
-    sk_result r = sk__contact_posture(&sc->contact, (sk_vec3d){0, 0, 0}, torque, dofs, &frames, pads, err);
+    sk_result r =
+        sk__contact_posture(&sc->contact, (sk_vec3d){0, 0, 0}, torque, dofs, &frames, pads, err);
     if (r != SK_OK) return r;
     k = 0;
     res[k++] = pads[0].x - tg->x[0];
@@ -87,7 +90,8 @@ static sk_result press_fn(void *user, const double *a, double *res, sk_error *er
     torque[rig->press_dof[p->finger][1]] = a[0] * rig->press_dir[p->finger][1];
     double dofs[SK_HAND_DOF_COUNT];
     sk_hand_frames frames;
-    sk_result r = sk__contact_posture(&p->sc->contact, (sk_vec3d){0, 0, 0}, torque, dofs, &frames, p->pads, err);
+    sk_result r = sk__contact_posture(&p->sc->contact, (sk_vec3d){0, 0, 0}, torque, dofs, &frames,
+                                      p->pads, err);
     res[0] = p->pads[p->finger].y - rig->tip_radius[p->finger] - p->target;
     return r;
 }
@@ -109,7 +113,8 @@ sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err)
     sk_vec3d pads[5];
     double dofs[SK_HAND_DOF_COUNT];
     sk_hand_frames frames;
-    sk_result r = sk__contact_posture(&sc->contact, (sk_vec3d){0, 0, 0}, NULL, dofs, &frames, pads, err);
+    sk_result r =
+        sk__contact_posture(&sc->contact, (sk_vec3d){0, 0, 0}, NULL, dofs, &frames, pads, err);
     if (r != SK_OK) return r;
     posture_targets tg;
     double pitch = sc->piano.desc.white_pitch_mm;
@@ -117,7 +122,8 @@ sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err)
        hand; the long middle and ring fingers uncurl to it */
     double bottom = 0;
     const int level_fingers[3] = {0, 1, 4};
-    for (int k = 0; k < 3; k++) bottom += (pads[level_fingers[k]].y - rig->tip_radius[level_fingers[k]]) / 3;
+    for (int k = 0; k < 3; k++)
+        bottom += (pads[level_fingers[k]].y - rig->tip_radius[level_fingers[k]]) / 3;
     tg.bottom = bottom;
     /* reaches: halfway between each finger's relaxed reach and the index and middle
        fingers' (a quarter of the way for the short little finger); curled further, a
@@ -135,7 +141,8 @@ sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err)
     for (int i = 0; i < POSTURE_UNKNOWNS; i++) worst = fmax(worst, fabs(res[i]));
     if (worst > 0.05)
         return sk_fail(err, SK_ERROR_NUMERIC,
-                       "the hand cannot take the playing posture (fingertips one white key apart, %.3g mm off): "
+                       "the hand cannot take the playing posture (fingertips one white key apart, "
+                       "%.3g mm off): "
                        "its hand_breadth_mm is too small for the keys' white_pitch_mm",
                        worst);
     int k = 0;
@@ -146,7 +153,8 @@ sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err)
         rig->base_torque[rig->press_dof[f][1]] = u[k++];
         rig->base_torque[rig->aim_dof[f]] = u[k++];
     }
-    if ((r = sk__contact_posture(&sc->contact, (sk_vec3d){0, 0, 0}, NULL, dofs, &frames, pads, err)) != SK_OK)
+    if ((r = sk__contact_posture(&sc->contact, (sk_vec3d){0, 0, 0}, NULL, dofs, &frames, pads,
+                                 err)) != SK_OK)
         return r;
     for (int f = 0; f < 5; f++) rig->pad_offset[f] = pads[f];
     rig->hover_depth = -tg.bottom;
@@ -159,7 +167,8 @@ sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err)
         const double g = 0.5 * (sqrt(5.0) - 1);
         for (int it = 0; it < 40; it++) {
             double m1 = b - g * (b - a), m2 = a + g * (b - a), y1, y2;
-            if ((r = press_fn(&pp2, &m1, &y1, err)) != SK_OK || (r = press_fn(&pp2, &m2, &y2, err)) != SK_OK)
+            if ((r = press_fn(&pp2, &m1, &y1, err)) != SK_OK ||
+                (r = press_fn(&pp2, &m2, &y2, err)) != SK_OK)
                 return r;
             if (y1 < y2)
                 b = m2;
@@ -170,7 +179,8 @@ sk_result sk__hand_rig_make(sk_showcase *sc, sk_error *err)
         if ((r = press_fn(&pp2, &at, &miss, err)) != SK_OK) return r;
         rig->max_depth[f] = tg.bottom - miss; /* target 0: miss = the bottom's height */
         /* and where the pad is when it presses a key to the bottom (or as deep as it goes) */
-        double depth = fmin(sc->desc.performance.hover_mm + sc->piano.desc.dip_mm, rig->max_depth[f] - PRESS_MARGIN_MM);
+        double depth = fmin(sc->desc.performance.hover_mm + sc->piano.desc.dip_mm,
+                            rig->max_depth[f] - PRESS_MARGIN_MM);
         pp2.target = tg.bottom - depth;
         sk__newton_desc nd2 = {1, press_fn, &pp2, 1e-3, 30, 1e-4, 0.5};
         double amp = 0;

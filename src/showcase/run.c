@@ -27,7 +27,8 @@ sk_result sk_showcase_write_wav(const sk_showcase *sc, const char *path, sk_erro
     int rate = sc->desc.synth.sample_rate ? sc->desc.synth.sample_rate : 44100;
     size_t count = (size_t)((double)sc->frame_count / sc->desc.fps * rate + 0.5);
     float *samples = malloc((count > 0 ? count : 1) * sizeof *samples);
-    if (!samples) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu samples", count);
+    if (!samples)
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu samples", count);
     sk_result r = sk_synth_render(&sc->melody, &sc->desc.synth, samples, count, err);
     if (r == SK_OK) r = sk_wav_write(path, samples, count, 1, rate, err);
     free(samples);
@@ -40,27 +41,30 @@ sk_result sk_showcase_check_output(const sk_showcase_run_desc *desc, sk_error *e
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase run: no output folder");
     struct stat st;
     if (stat(desc->output_dir, &st) == 0 && !S_ISDIR(st.st_mode))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: exists and is not a folder (the output is a folder)",
-                       desc->output_dir);
-    if (desc->ffmpeg && !desc->no_video && !sk__ffmpeg_available(desc->ffmpeg))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "ffmpeg '%s' does not run ('%s -version' failed): give a working ffmpeg or --no-video",
-                       desc->ffmpeg, desc->ffmpeg);
+                       "%s: exists and is not a folder (the output is a folder)", desc->output_dir);
+    if (desc->ffmpeg && !desc->no_video && !sk__ffmpeg_available(desc->ffmpeg))
+        return sk_fail(
+            err, SK_ERROR_INVALID_ARGUMENT,
+            "ffmpeg '%s' does not run ('%s -version' failed): give a working ffmpeg or --no-video",
+            desc->ffmpeg, desc->ffmpeg);
     return SK_OK;
 }
 
-sk_result sk_showcase_run(sk_showcase *sc, const sk_showcase_run_desc *desc, sk_showcase_stats *stats,
-                          sk_error *err)
+sk_result sk_showcase_run(sk_showcase *sc, const sk_showcase_run_desc *desc,
+                          sk_showcase_stats *stats, sk_error *err)
 {
     sk_showcase_stats local;
     if (!stats) stats = &local;
     memset(stats, 0, sizeof *stats);
     sk_result checked = sk_showcase_check_output(desc, err);
     if (checked != SK_OK) return checked;
-    int first = desc->first_frame, last = desc->last_frame < 0 ? sc->frame_count - 1 : desc->last_frame;
+    int first = desc->first_frame,
+        last = desc->last_frame < 0 ? sc->frame_count - 1 : desc->last_frame;
     if (first < 0 || first >= sc->frame_count || last < first || last >= sc->frame_count)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frames %d:%d are out of range: the piece has frames 0:%d",
-                       first, last, sc->frame_count - 1);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "frames %d:%d are out of range: the piece has frames 0:%d", first, last,
+                       sc->frame_count - 1);
     const char *dir = desc->output_dir;
     size_t size = strlen(dir) + 64;
     char *path = malloc(size), *wav = malloc(size);
@@ -105,8 +109,10 @@ sk_result sk_showcase_run(sk_showcase *sc, const sk_showcase_run_desc *desc, sk_
     if (r == SK_OK && !desc->no_video) {
         if (!complete) {
             snprintf(stats->video_note, sizeof stats->video_note,
-                     "no MP4 yet: the folder does not hold all %d frames and the WAV (render the others, then "
-                     "join)", sc->frame_count);
+                     "no MP4 yet: the folder does not hold all %d frames and the WAV (render the "
+                     "others, then "
+                     "join)",
+                     sc->frame_count);
         } else {
             double t0 = sk_time_seconds();
             char *pattern = malloc(size), *mp4 = malloc(size);
@@ -115,8 +121,9 @@ sk_result sk_showcase_run(sk_showcase *sc, const sk_showcase_run_desc *desc, sk_
             } else {
                 snprintf(pattern, size, "%s/frames/frame_%%0%dd.png", dir, digits);
                 snprintf(mp4, size, "%s/showcase.mp4", dir);
-                r = sk__video_encode(desc->ffmpeg ? desc->ffmpeg : "ffmpeg", pattern, sc->desc.fps, wav, mp4,
-                                     stats->video_note, sizeof stats->video_note, &stats->video_written, err);
+                r = sk__video_encode(desc->ffmpeg ? desc->ffmpeg : "ffmpeg", pattern, sc->desc.fps,
+                                     wav, mp4, stats->video_note, sizeof stats->video_note,
+                                     &stats->video_written, err);
             }
             free(pattern), free(mp4);
             stats->seconds_video = sk_time_seconds() - t0;

@@ -22,13 +22,15 @@ void sk__scene_frame_camera(const sk_showcase *sc, sk_render_camera_desc *camera
     double half_tan = tan(0.5 * CAMERA_FOV_DEG * SK_DEG_TO_RAD);
     double half_width = fmax(0.5 * (hi - lo), 160.0);
     double distance = fmax(half_width / (half_tan * aspect), 110.0 / half_tan);
-    sk_vec3d target = {0.5 * (lo + hi), sc->piano.desc.white_top_mm + 20, sc->piano.desc.front_mm - 50};
+    sk_vec3d target = {0.5 * (lo + hi), sc->piano.desc.white_top_mm + 20,
+                       sc->piano.desc.front_mm - 50};
     /* from the player's right, in front and above: the back of the hand, the keys and
        the forearm coming from the front */
     sk_vec3d dir = {0.45, 0.55, 0.70};
     double n = sqrt(dir.x * dir.x + dir.y * dir.y + dir.z * dir.z);
     memset(camera, 0, sizeof *camera);
-    camera->target[0] = (float)target.x, camera->target[1] = (float)target.y, camera->target[2] = (float)target.z;
+    camera->target[0] = (float)target.x, camera->target[1] = (float)target.y,
+    camera->target[2] = (float)target.z;
     camera->position[0] = (float)(target.x + distance * dir.x / n);
     camera->position[1] = (float)(target.y + distance * dir.y / n);
     camera->position[2] = (float)(target.z + distance * dir.z / n);
@@ -38,8 +40,10 @@ void sk__scene_frame_camera(const sk_showcase *sc, sk_render_camera_desc *camera
 static sk_result add_object(sk_render_scene_desc *d, const sk_render_object_desc *o, sk_error *err)
 {
     if (d->object_count >= SK_RENDER_MAX_OBJECTS)
-        return sk_fail(err, SK_ERROR_LIMIT, "stage: %d objects leave no room for the keys and the hand (at most %d in all)",
-                       d->object_count, SK_RENDER_MAX_OBJECTS);
+        return sk_fail(
+            err, SK_ERROR_LIMIT,
+            "stage: %d objects leave no room for the keys and the hand (at most %d in all)",
+            d->object_count, SK_RENDER_MAX_OBJECTS);
     d->objects[d->object_count++] = *o;
     return SK_OK;
 }
@@ -63,14 +67,16 @@ static void skin_shading(sk_render_material_desc *m, const char *name)
 
 /* The hand: its skinned surface with the baked texture, shaded as the thesis shades it
  * (a white surface's shading blended with the texture, 0.3 : 0.7, sec. 4.1.6). */
-static sk_result add_hand(sk_showcase *sc, sk_render_scene_desc *d, const sk_mesh *mesh, sk_error *err)
+static sk_result add_hand(sk_showcase *sc, sk_render_scene_desc *d, const sk_mesh *mesh,
+                          sk_error *err)
 {
     sk_render_material_desc m;
     skin_shading(&m, "showcase-skin");
     m.albedo[0] = m.albedo[1] = m.albedo[2] = 1;
     m.albedo_image = sc->skin_albedo;
     m.normal_image = sc->skin_normal;
-    if (add_material(d, &m) < 0) return sk_fail(err, SK_ERROR_LIMIT, "stage: no room for the hand's material");
+    if (add_material(d, &m) < 0)
+        return sk_fail(err, SK_ERROR_LIMIT, "stage: no room for the hand's material");
     sk_render_object_desc o = {0};
     snprintf(o.name, sizeof o.name, "hand");
     o.shape = SK_RENDER_SHAPE_MESH;
@@ -91,7 +97,8 @@ static sk_result add_forearm(sk_showcase *sc, sk_render_scene_desc *d, sk_error 
         m.texture = sk__forearm_skin_texture;
         m.texture_user = (void *)&sc->forearm.relief;
     }
-    if (add_material(d, &m) < 0) return sk_fail(err, SK_ERROR_LIMIT, "stage: no room for the forearm's material");
+    if (add_material(d, &m) < 0)
+        return sk_fail(err, SK_ERROR_LIMIT, "stage: no room for the forearm's material");
     sk_render_object_desc o = {0};
     snprintf(o.name, sizeof o.name, "forearm");
     o.shape = SK_RENDER_SHAPE_MESH;
@@ -100,8 +107,8 @@ static sk_result add_forearm(sk_showcase *sc, sk_render_scene_desc *d, sk_error 
     return add_object(d, &o, err);
 }
 
-sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, const sk_mesh *hand, sk_render_scene_desc *d,
-                          sk_error *err)
+sk_result sk__scene_build(sk_showcase *sc, const sk_showcase_pose *pose, const sk_mesh *hand,
+                          sk_render_scene_desc *d, sk_error *err)
 {
     *d = *sc->stage;
     d->image.width = sc->desc.width;

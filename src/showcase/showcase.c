@@ -18,7 +18,8 @@ static sk_result resolve_desc(const sk_showcase_desc *in, sk_showcase_desc *d, s
     *d = *in;
     if (!d->melody) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase: no melody");
     if (!d->stage) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase: no stage scene");
-    if (!d->constraints) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase: no coupling constraints");
+    if (!d->constraints)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase: no coupling constraints");
     if (d->fps == 0) d->fps = 24;
     if (d->width == 0) d->width = 1280;
     if (d->height == 0) d->height = 720;
@@ -53,14 +54,18 @@ sk_result sk_showcase_create(const sk_showcase_desc *desc, sk_showcase **out, sk
     if (r == SK_OK) {
         sk_hand_skeleton_desc hd = sc->desc.hand ? *sc->desc.hand : (sk_hand_skeleton_desc){0};
         if (hd.side == SK_HAND_SIDE_LEFT)
-            r = sk_fail(err, SK_ERROR_UNSUPPORTED, "hand.side: the showcase plays with a right hand");
+            r = sk_fail(err, SK_ERROR_UNSUPPORTED,
+                        "hand.side: the showcase plays with a right hand");
         else
             r = sk_hand_skeleton_init(&sc->skeleton, &hd, err);
     }
-    if (r == SK_OK) r = sk_hand_solver_create(&sc->solver, &sc->skeleton, sc->desc.constraints, NULL, 0, NULL, err);
+    if (r == SK_OK)
+        r = sk_hand_solver_create(&sc->solver, &sc->skeleton, sc->desc.constraints, NULL, 0, NULL,
+                                  err);
     if (r == SK_OK) r = sk__hand_mesh_setup(sc, err);
     if (r == SK_OK) {
-        sc->contact = (sk__contact){sc->solver, &sc->skeleton, &sc->piano, &sc->rig, &sc->desc.performance};
+        sc->contact =
+            (sk__contact){sc->solver, &sc->skeleton, &sc->piano, &sc->rig, &sc->desc.performance};
         r = sk__hand_rig_make(sc, err);
     }
     if (r == SK_OK) {
@@ -80,7 +85,8 @@ sk_result sk_showcase_create(const sk_showcase_desc *desc, sk_showcase **out, sk
     }
     if (r == SK_OK) {
         sc->perf = (sk__performance){&sc->melody, &sc->piano, &sc->rig, sc->desc.performance, 0};
-        sc->perf.hover_y = sc->piano.desc.white_top_mm + sc->desc.performance.hover_mm + sc->rig.hover_depth;
+        sc->perf.hover_y =
+            sc->piano.desc.white_top_mm + sc->desc.performance.hover_mm + sc->rig.hover_depth;
         sk_synth_desc sd = sc->desc.synth;
         int rate = sd.sample_rate ? sd.sample_rate : 44100;
         sc->duration_s = (double)sk_synth_length(&sc->melody, &sd) / rate;
@@ -90,7 +96,8 @@ sk_result sk_showcase_create(const sk_showcase_desc *desc, sk_showcase **out, sk
     if (r == SK_OK) {
         sc->stage = malloc(sizeof *sc->stage);
         sc->scene = malloc(sizeof *sc->scene);
-        if (!sc->stage || !sc->scene) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the scene");
+        if (!sc->stage || !sc->scene)
+            r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the scene");
     }
     if (r == SK_OK) {
         *sc->stage = *sc->desc.stage;
@@ -103,7 +110,8 @@ sk_result sk_showcase_create(const sk_showcase_desc *desc, sk_showcase **out, sk
         sc->ebony = find_material(sc->stage, "ebony");
         if (sc->ivory < 0 || sc->ebony < 0)
             r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                        "stage: the keys need materials named \"ivory\" and \"ebony\" (the stage has %d materials)",
+                        "stage: the keys need materials named \"ivory\" and \"ebony\" (the stage "
+                        "has %d materials)",
                         sc->stage->material_count);
     }
     for (int i = 0; r == SK_OK && i < sc->stage->material_count; i++) {
@@ -155,7 +163,8 @@ sk_vec3d sk_showcase_hand_to_scene(const sk_showcase *sc, sk_vec3d p)
 
 sk_result sk_showcase_pose_at(sk_showcase *sc, double time_s, sk_showcase_pose *out, sk_error *err)
 {
-    if (!isfinite(time_s)) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "time %g is not finite", time_s);
+    if (!isfinite(time_s))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "time %g is not finite", time_s);
     sk__intent in;
     sk__performance_at(&sc->perf, time_s, &in);
     return sk__contact_solve(&sc->contact, &in, time_s, out, err);

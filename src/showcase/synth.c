@@ -52,8 +52,8 @@ size_t sk_synth_length(const sk_melody *melody, const sk_synth_desc *desc)
 }
 
 typedef struct tone {
-    double start, end;     /* seconds: onset, key release */
-    double stop;           /* silent after this */
+    double start, end; /* seconds: onset, key release */
+    double stop;       /* silent after this */
     int partials;
     double freq[MAX_PARTIALS], amp[MAX_PARTIALS], slow[MAX_PARTIALS], fast[MAX_PARTIALS];
 } tone;
@@ -86,7 +86,8 @@ static void make_tone(const sk_note *n, const sk_synth_desc *d, tone *t)
 }
 
 /* Adds tone t to out[0..count) of samples starting at sample s0. */
-static void add_tone(const tone *t, const sk_synth_desc *d, size_t s0, size_t count, float *out, double *work)
+static void add_tone(const tone *t, const sk_synth_desc *d, size_t s0, size_t count, float *out,
+                     double *work)
 {
     double rate = d->sample_rate, dt = 1.0 / rate;
     double a = t->start * rate, b = t->stop * rate;

@@ -60,12 +60,14 @@ bool sk__ffmpeg_available(const char *ffmpeg)
     return run_program(argv, NULL, 0) == 0;
 }
 
-sk_result sk__video_encode(const char *ffmpeg, const char *frames_pattern, double fps, const char *wav,
-                           const char *path, char *note, size_t note_size, bool *written, sk_error *err)
+sk_result sk__video_encode(const char *ffmpeg, const char *frames_pattern, double fps,
+                           const char *wav, const char *path, char *note, size_t note_size,
+                           bool *written, sk_error *err)
 {
     *written = false;
     if (!sk__ffmpeg_available(ffmpeg)) {
-        snprintf(note, note_size, "%s is not available: no MP4 (the frames and the WAV are written)", ffmpeg);
+        snprintf(note, note_size,
+                 "%s is not available: no MP4 (the frames and the WAV are written)", ffmpeg);
         return SK_OK;
     }
     sk_atomic_file f;
@@ -73,11 +75,40 @@ sk_result sk__video_encode(const char *ffmpeg, const char *frames_pattern, doubl
     if (r != SK_OK) return r;
     char rate[32];
     snprintf(rate, sizeof rate, "%.9g", fps);
-    char *argv[] = {(char *)ffmpeg, "-hide_banner", "-loglevel", "error", "-y", "-framerate", rate,
-                    "-i", (char *)frames_pattern, "-i", (char *)wav, "-map", "0:v:0", "-map", "1:a:0",
-                    "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
-                    "-crf", "18", "-c:a", "aac", "-b:a", "160k", "-shortest", "-movflags", "+faststart",
-                    "-f", "mp4", f.temp_path, NULL};
+    char *argv[] = {(char *)ffmpeg,
+                    "-hide_banner",
+                    "-loglevel",
+                    "error",
+                    "-y",
+                    "-framerate",
+                    rate,
+                    "-i",
+                    (char *)frames_pattern,
+                    "-i",
+                    (char *)wav,
+                    "-map",
+                    "0:v:0",
+                    "-map",
+                    "1:a:0",
+                    "-vf",
+                    "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                    "-c:v",
+                    "libx264",
+                    "-pix_fmt",
+                    "yuv420p",
+                    "-crf",
+                    "18",
+                    "-c:a",
+                    "aac",
+                    "-b:a",
+                    "160k",
+                    "-shortest",
+                    "-movflags",
+                    "+faststart",
+                    "-f",
+                    "mp4",
+                    f.temp_path,
+                    NULL};
     char message[256];
     int status = run_program(argv, message, sizeof message);
     if (status != 0) {

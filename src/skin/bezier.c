@@ -132,8 +132,8 @@ void sk__last_segment_guess(const sk__profile *p, float g, float xq, sk__newton 
     s->inv = 1.0f / dx;
 }
 
-float sk__last_segment_finish(const sk__profile *p, float xq, const sk__newton *s,
-                              float *dz_dx, float *dz_dg)
+float sk__last_segment_finish(const sk__profile *p, float xq, const sk__newton *s, float *dz_dx,
+                              float *dz_dg)
 {
     const float *xc = p->last_xc, *zc = p->last_zc, *zd = p->last_zd, *c = s->c;
     /* One Newton step from the table's guess (error ~1e-3) leaves ~1e-6; the reciprocal

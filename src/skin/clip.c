@@ -41,7 +41,7 @@ bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag)
     sk__poly q;
     q.n = 0;
     double first_x = 0, first_y = 0;
-    bool have = false;   /* a vertex is pending */
+    bool have = false; /* a vertex is pending */
     double hx = 0, hy = 0;
     int64_t htag = 0;
     for (int i = 0; i < n; i++) {
@@ -52,7 +52,8 @@ bool sk__poly_clip(sk__poly *p, double nx, double ny, double d, int64_t tag)
             int64_t vtag;
             if (pass == 0) {
                 if (!in_i) continue;
-                vx = p->x[i], vy = p->y[i], vtag = p->tag[i]; /* edge i survives, at least in part */
+                vx = p->x[i], vy = p->y[i],
+                vtag = p->tag[i]; /* edge i survives, at least in part */
             } else {
                 if (in_i == in_j) continue;
                 double t = dist[i] / (dist[i] - dist[j]);

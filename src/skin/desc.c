@@ -193,8 +193,8 @@ sk_result sk_skin_desc_validate(const sk_skin_desc *desc, sk_error *err)
         TRY(sk_check_range_f(err, key(name, "size_mm[%d]", i), desc->size_mm[i], 0, 1000));
     TRY(sk_check_range_i(err, key(name, "level_count"), desc->level_count, 0, SK_SKIN_MAX_LEVELS));
     for (int k = 0; k < desc->level_count; k++) TRY(validate_level(&desc->levels[k], k, err));
-    TRY(sk_check_range_i(err, key(name, "normal_model"), desc->normal_model,
-                         SK_SKIN_NORMAL_DEFAULT, SK_SKIN_NORMAL_PROFILE));
+    TRY(sk_check_range_i(err, key(name, "normal_model"), desc->normal_model, SK_SKIN_NORMAL_DEFAULT,
+                         SK_SKIN_NORMAL_PROFILE));
     TRY(validate_pore(&desc->pores.hair, "hair", err));
     TRY(validate_pore(&desc->pores.sweat, "sweat", err));
     int levels = desc->level_count ? desc->level_count : 3;

@@ -112,8 +112,8 @@ float sk__furrow_distance(const sk__level *lv, uint32_t c, float px, float py)
         float line = u[k].d - (u[k].nx * px + u[k].ny * py);
         if (line < nearest_line) nearest_line = line, nearest = k;
     }
-    float best2 = side_distance(lv, &u[nearest], &u[nearest + 1 == n ? 0 : nearest + 1], px, py,
-                                INFINITY);
+    float best2 =
+        side_distance(lv, &u[nearest], &u[nearest + 1 == n ? 0 : nearest + 1], px, py, INFINITY);
     for (uint32_t k = 0; k < n; k++) {
         if (k == nearest) continue;
         /* the polyline strays at most `bulge` from the straight side */

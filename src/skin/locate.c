@@ -122,8 +122,8 @@ static bool edge_frame_at(const sk__level *lv, const sk__edge *e, float rx, floa
     return true;
 }
 
-uint32_t sk__unwarp(const sk__level *lv, const sk__fan *fan, float *px, float *py,
-                    float jac[2][2], float *pre_x, float *pre_y)
+uint32_t sk__unwarp(const sk__level *lv, const sk__fan *fan, float *px, float *py, float jac[2][2],
+                    float *pre_x, float *pre_y)
 {
     const sk__edge *e = &lv->edges[fan->edge];
     edge_frame ef;

@@ -109,8 +109,7 @@ static size_t edge_points(const sk_skin *skin, int k, uint32_t cell, uint32_t q,
     }
     for (int s = 0; s < subdivide; s++) {
         double t = (double)s / subdivide;
-        emit(skin, k, cell, ax + t * (bx - ax), ay + t * (by - ay), carry, points, max_points,
-             &n);
+        emit(skin, k, cell, ax + t * (bx - ax), ay + t * (by - ay), carry, points, max_points, &n);
     }
     return n;
 }

@@ -64,7 +64,7 @@ sk_result sk_skin_render(const sk_skin *skin, const sk_skin_render_desc *desc, s
     double top = skin->tile[1];
     bool want_furrow = desc->furrow || desc->edges;
     /* furrow distances: every level for the overlay, else only the one asked for */
-    unsigned flags = desc->edges    ? SK_SKIN_QUERY_FURROW
+    unsigned flags = desc->edges   ? SK_SKIN_QUERY_FURROW
                      : want_furrow ? 1u << (SK__FURROW_LEVEL_SHIFT + furrow_level - 1)
                                    : 0u;
     /* only cell ids and furrow distances: down to the deepest level they name, with no

@@ -69,8 +69,7 @@ void sk__height_range(sk_skin *skin)
 
 /* The first key that places cells and differs between two resolved descs, as its preset
  * key path (written to `name`), or NULL when the cells are the same. */
-static const char *cell_key_differing(const sk_skin_desc *a, const sk_skin_desc *b,
-                                      char name[64])
+static const char *cell_key_differing(const sk_skin_desc *a, const sk_skin_desc *b, char name[64])
 {
     if (!SAME(a->seed, b->seed)) return "seed";
     if (!SAME(a->size_mm, b->size_mm)) return "size_mm";
@@ -79,15 +78,24 @@ static const char *cell_key_differing(const sk_skin_desc *a, const sk_skin_desc 
     for (int k = 0; k < a->level_count; k++) {
         const sk_skin_level *p = &a->levels[k], *q = &b->levels[k];
         const char *key = NULL;
-        if (!SAME(p->layout, q->layout)) key = "layout";
-        else if (!SAME(p->jitter, q->jitter)) key = "jitter";
-        else if (!SAME(p->jitter_rate, q->jitter_rate)) key = "jitter_rate";
-        else if (!SAME(p->spacing_mm, q->spacing_mm)) key = "spacing_mm";
-        else if (!SAME(p->perturb_rate, q->perturb_rate)) key = "perturb_rate";
-        else if (!SAME(p->perturb_decay, q->perturb_decay)) key = "perturb_decay";
-        else if (!SAME(p->perturb_depth, q->perturb_depth)) key = "perturb_depth";
-        else if (!SAME(p->stretch, q->stretch)) key = "stretch";
-        else if (!SAME(p->stretch_angle, q->stretch_angle)) key = "stretch_angle_deg";
+        if (!SAME(p->layout, q->layout))
+            key = "layout";
+        else if (!SAME(p->jitter, q->jitter))
+            key = "jitter";
+        else if (!SAME(p->jitter_rate, q->jitter_rate))
+            key = "jitter_rate";
+        else if (!SAME(p->spacing_mm, q->spacing_mm))
+            key = "spacing_mm";
+        else if (!SAME(p->perturb_rate, q->perturb_rate))
+            key = "perturb_rate";
+        else if (!SAME(p->perturb_decay, q->perturb_decay))
+            key = "perturb_decay";
+        else if (!SAME(p->perturb_depth, q->perturb_depth))
+            key = "perturb_depth";
+        else if (!SAME(p->stretch, q->stretch))
+            key = "stretch";
+        else if (!SAME(p->stretch_angle, q->stretch_angle))
+            key = "stretch_angle_deg";
         if (key) {
             snprintf(name, 64, "levels[%d].%s", k, key);
             return name;

@@ -26,14 +26,14 @@
 
 /* One side of an edge as seen by a cell (cells list their uses counter-clockwise). */
 typedef struct sk__use {
-    float vx, vy;     /* start vertex of the edge (y space, cell frame) */
-    float nx, ny, d;  /* outward unit normal and offset: inside is n . y <= d */
-    float shx, shy;   /* add to a point of this cell's frame to get the edge's frame */
-    uint32_t edge;    /* edge record of this level, or SK__SKIN_NONE (a piece of the
-                         parent's boundary, or an unpaired degenerate edge) */
+    float vx, vy;       /* start vertex of the edge (y space, cell frame) */
+    float nx, ny, d;    /* outward unit normal and offset: inside is n . y <= d */
+    float shx, shy;     /* add to a point of this cell's frame to get the edge's frame */
+    uint32_t edge;      /* edge record of this level, or SK__SKIN_NONE (a piece of the
+                           parent's boundary, or an unpaired degenerate edge) */
     uint32_t neighbour; /* cell across the edge at this level, or SK__SKIN_NONE */
-    float bulge;      /* how far the edge's perturbed polyline strays from this line (the
-                         edge record's bulge; 0 for a straight side) */
+    float bulge;        /* how far the edge's perturbed polyline strays from this line (the
+                           edge record's bulge; 0 for a straight side) */
 } sk__use;
 
 /* Per-pixel query records, one of each per use, laid out so that one record (one cache
@@ -43,28 +43,28 @@ typedef struct sk__use {
  * margin lies in the cell, and use k's line is the one the ray from the site meets: the
  * fan decides which edge's perturbation can reach the point (locate.c). */
 typedef struct sk__fan {
-    float sx, sy;         /* site */
-    float ax, ay, an;     /* vertex k minus the site; margin (|ax| + |ay|) * SK__SECTOR_MARGIN */
-    float bx, by, bn;     /* vertex k + 1 minus the site; margin */
-    float gx, gy;         /* gauge from the site: n / (d - n . site) (<= 1 inside the cell) */
-    float shx, shy;       /* add to a point of the cell's frame to get the edge's frame */
-    uint32_t edge;        /* perturbed edge record, or SK__SKIN_NONE (nothing to unwarp) */
-    uint32_t cell;        /* the cell */
-    uint32_t parent;      /* its parent (SK__SKIN_NONE at level 1) */
-    float gcut;           /* below this gauge a point is clear of the edge's perturbation
-                             support (with a margin far above rounding) */
+    float sx, sy;     /* site */
+    float ax, ay, an; /* vertex k minus the site; margin (|ax| + |ay|) * SK__SECTOR_MARGIN */
+    float bx, by, bn; /* vertex k + 1 minus the site; margin */
+    float gx, gy;     /* gauge from the site: n / (d - n . site) (<= 1 inside the cell) */
+    float shx, shy;   /* add to a point of the cell's frame to get the edge's frame */
+    uint32_t edge;    /* perturbed edge record, or SK__SKIN_NONE (nothing to unwarp) */
+    uint32_t cell;    /* the cell */
+    uint32_t parent;  /* its parent (SK__SKIN_NONE at level 1) */
+    float gcut;       /* below this gauge a point is clear of the edge's perturbation
+                         support (with a margin far above rounding) */
 } sk__fan;
 
 /* Sector k of a cell seen from its profile centre (centre, vertex k, vertex k + 1), where
  * x' is 10 times the gauge of edge k, and the pair of edge normals k, k + 1 that frames
  * the roundness (profile.c). */
 typedef struct sk__sector {
-    float cx, cy;         /* profile centre */
-    float ax, ay, an;     /* vertex k minus the centre; margin */
-    float bx, by, bn;     /* vertex k + 1 minus the centre; margin */
-    float gx, gy;         /* gauge from the centre: n_k / h_k */
-    float nx, ny, h;      /* normal of edge k, distance h_k from the centre to its line */
-    float mx, my, hm;     /* the same for edge k + 1 */
+    float cx, cy;     /* profile centre */
+    float ax, ay, an; /* vertex k minus the centre; margin */
+    float bx, by, bn; /* vertex k + 1 minus the centre; margin */
+    float gx, gy;     /* gauge from the centre: n_k / h_k */
+    float nx, ny, h;  /* normal of edge k, distance h_k from the centre to its line */
+    float mx, my, hm; /* the same for edge k + 1 */
 } sk__sector;
 
 /* A shared edge, perturbed once (paper sec. 3.2.1 (1), midpoint displacement). Geometry
@@ -74,23 +74,23 @@ typedef struct sk__sector {
  * the perturbation lives in the support |s| < H(t) (a triangle over the edge on each side,
  * inside the two cells' fan triangles), H(t) = h_apex min(t / t_apex, (1-t) / (1-t_apex)). */
 typedef struct sk__edge {
-    float ax, ay;        /* start point a */
-    float bx, by;        /* end point b */
-    float atx, aty;      /* gradient of t */
-    float asx, asy;      /* gradient of s: the unit normal towards the left site */
-    float dx, dy;        /* displacement per unit of s (the same unit normal) */
+    float ax, ay;   /* start point a */
+    float bx, by;   /* end point b */
+    float atx, aty; /* gradient of t */
+    float asx, asy; /* gradient of s: the unit normal towards the left site */
+    float dx, dy;   /* displacement per unit of s (the same unit normal) */
     float t_apex, h_apex;
-    float rise, fall;    /* slopes of H: h_apex / t_apex and h_apex / (1 - t_apex) */
-    float bulge;         /* max |f| times |d|: how far the polyline strays (y units) */
-    float shx, shy;      /* right frame = left frame - shift */
+    float rise, fall; /* slopes of H: h_apex / t_apex and h_apex / (1 - t_apex) */
+    float bulge;      /* max |f| times |d|: how far the polyline strays (y units) */
+    float shx, shy;   /* right frame = left frame - shift */
     uint32_t left, right;
-    uint32_t f_first;    /* first of the level's f values for this edge (f_count of them) */
+    uint32_t f_first; /* first of the level's f values for this edge (f_count of them) */
 } sk__edge;
 
 typedef struct sk__cell {
-    float sx, sy;          /* site (centre point of the Voronoi division), y space */
-    float zx, zy;          /* site in pre-stretch space (nearest-sibling search) */
-    float cx, cy;          /* centre of the section profile: centroid of the straight cell */
+    float sx, sy; /* site (centre point of the Voronoi division), y space */
+    float zx, zy; /* site in pre-stretch space (nearest-sibling search) */
+    float cx, cy; /* centre of the section profile: centroid of the straight cell */
     uint32_t parent;
     uint32_t first_child, child_count;
     uint32_t first_use, use_count;
@@ -98,8 +98,8 @@ typedef struct sk__cell {
 
 /* A cubic Bezier chain in (x, z) (paper sec. 3.2.1 (2), parameter 5). */
 #define SK__PROFILE_TABLE 256
-#define SK__GUESS_G 8     /* steps of g in the Newton guess table */
-#define SK__GUESS_X 128   /* steps of x' in it */
+#define SK__GUESS_G 8   /* steps of g in the Newton guess table */
+#define SK__GUESS_X 128 /* steps of x' in it */
 typedef struct sk__profile {
     int segment_count;
     float x[SK_SKIN_MAX_SEGMENTS][4];
@@ -108,7 +108,7 @@ typedef struct sk__profile {
        from the Bezier), as the cubic Hermite curve of each step in power form:
        z = a0 + u (a1 + u (a2 + u a3)), u in [0, 1] across the step */
     float zpoly[SK_SKIN_MAX_SEGMENTS][SK__PROFILE_TABLE - 1][4];
-    float last_start;      /* x where the last segment starts */
+    float last_start; /* x where the last segment starts */
     /* The last segment under roundness (its end stays at 10, so it is not a scaled copy):
        power-basis coefficients of Bx and Bz (xd3 = xc3 - 10, zd = the derivative's), and
        a first guess of t for Newton's method over (g, x'), g from 1 - roundness to 1,
@@ -117,7 +117,7 @@ typedef struct sk__profile {
     float g_min, g_step_inv;
     float t_guess[SK__GUESS_G][SK__GUESS_X][4];
     float seg_x0[SK_SKIN_MAX_SEGMENTS], seg_inv_w[SK_SKIN_MAX_SEGMENTS]; /* table mapping */
-    float z_min, z_max;    /* bounds of the control points */
+    float z_min, z_max; /* bounds of the control points */
 } sk__profile;
 /* Fills the tables of a profile whose control points are set. */
 void sk__profile_prepare(sk__profile *p);
@@ -126,10 +126,10 @@ void sk__profile_prepare(sk__profile *p);
  * straight polygon meets it. */
 typedef struct sk__grid {
     int nx, ny;
-    double inv_w, inv_h;   /* squares per mm */
-    uint32_t *start;       /* nx * ny + 1 */
+    double inv_w, inv_h; /* squares per mm */
+    uint32_t *start;     /* nx * ny + 1 */
     uint32_t *cell;
-    double *shift;         /* 2 per entry: origin of the cell's frame in this tile period */
+    double *shift; /* 2 per entry: origin of the cell's frame in this tile period */
 } sk__grid;
 
 typedef struct sk__level {
@@ -137,25 +137,25 @@ typedef struct sk__level {
     sk__cell *cells;
     sk__use *uses;
     sk__edge *edges;
-    sk__fan *fans;         /* per use */
-    sk__sector *sectors;   /* per use */
-    double *vxy;           /* use start vertices in double (2 per use), for clipping */
-    float *f;              /* perturbation offsets, f_count per edge */
-    int depth;             /* division depths; f_count = 2^depth + 1 */
-    double amp[11];        /* midpoint displacement amplitude A 2^(-n h) at depth n */
+    sk__fan *fans;       /* per use */
+    sk__sector *sectors; /* per use */
+    double *vxy;         /* use start vertices in double (2 per use), for clipping */
+    float *f;            /* perturbation offsets, f_count per edge */
+    int depth;           /* division depths; f_count = 2^depth + 1 */
+    double amp[11];      /* midpoint displacement amplitude A 2^(-n h) at depth n */
     int f_count;
-    float f_step;          /* 1 / (f_count - 1): t from one f value to the next */
+    float f_step; /* 1 / (f_count - 1): t from one f value to the next */
     bool perturbed;
     double m[2][2], minv[2][2]; /* stretch and its inverse */
     float minvf[2][2];
     sk__profile profile;
     float roundness;
-    float z_scale;         /* mm per profile z unit: spacing / 20 */
-    float spacing;         /* nominal spacing (mm, before stretch) */
+    float z_scale; /* mm per profile z unit: spacing / 20 */
+    float spacing; /* nominal spacing (mm, before stretch) */
 } sk__level;
 
 typedef struct sk__pore {
-    float x, y;            /* world, inside the tile period */
+    float x, y; /* world, inside the tile period */
     float radius, depth;
 } sk__pore;
 
@@ -172,27 +172,27 @@ typedef struct sk__pore_near {
 typedef struct sk__pore_grid {
     int nx, ny;
     double inv_w, inv_h;
-    uint32_t *start;       /* nx * ny + 1 */
+    uint32_t *start; /* nx * ny + 1 */
     sk__pore_near *near;
-    uint32_t count;        /* pores */
+    uint32_t count; /* pores */
     float max_radius;
 } sk__pore_grid;
 
 struct sk_skin {
-    sk_skin_desc desc;     /* resolved */
+    sk_skin_desc desc; /* resolved */
     int level_count;
-    double period[2];      /* repeat period in mm (the tile, or more when aperiodic) */
-    double tile[2];        /* the tile (the map's extent) */
+    double period[2]; /* repeat period in mm (the tile, or more when aperiodic) */
+    double tile[2];   /* the tile (the map's extent) */
     sk__level levels[SK_SKIN_MAX_LEVELS];
-    sk__grid grid;         /* level 1 */
-    double *origin;        /* level-1 cell frames: the site in the tile period (2 per cell);
-                              cells of every level store coordinates relative to the site
-                              of their level-1 ancestor */
+    sk__grid grid;  /* level 1 */
+    double *origin; /* level-1 cell frames: the site in the tile period (2 per cell);
+                       cells of every level store coordinates relative to the site
+                       of their level-1 ancestor */
     sk__pore_grid pores;
     float height_min, height_max;
     /* shading, resolved */
     float light[3], half[3], albedo[3], sun, sky, spec, shininess;
-    int shininess_int;     /* the exponent if it is a whole number up to 1000, else 0 */
+    int shininess_int; /* the exponent if it is a whole number up to 1000, else 0 */
 };
 
 /* The smaller of two numbers that are not NaN (fmin is a library call without fast-math). */
@@ -256,8 +256,8 @@ sk_result sk__build_children(sk_skin *skin, int level, const double *xy, uint32_
  * k0 = (left cell << 32 | right cell) and k1, the same from both sides, and its side. */
 enum { SK__SIDE_LEFT, SK__SIDE_RIGHT, SK__SIDE_NONE };
 typedef struct sk__edge_key {
-    uint64_t k0, k1;     /* identity of the edge (same from both sides) */
-    uint8_t side;        /* SK__SIDE_LEFT / RIGHT, or NONE for a use that is no shared edge */
+    uint64_t k0, k1; /* identity of the edge (same from both sides) */
+    uint8_t side;    /* SK__SIDE_LEFT / RIGHT, or NONE for a use that is no shared edge */
 } sk__edge_key;
 sk_result sk__build_edges(sk_skin *skin, int level, const sk__edge_key *keys,
                           const double *site_left_y, sk_error *err);
@@ -267,8 +267,8 @@ sk_result sk__build_query_records(sk__level *lv, sk_error *err);
 void sk__perturb_edge(const sk_skin *skin, int level, uint64_t edge_key, double length,
                       double t_apex, double h_apex, float *f);
 /* The perturbation support of an edge from its left site (perturb.c). */
-void sk__support(double ax, double ay, double bx, double by, double px, double py,
-                 double *t_apex, double *h_apex);
+void sk__support(double ax, double ay, double bx, double by, double px, double py, double *t_apex,
+                 double *h_apex);
 
 /* What a built skin can change without moving its cells (reprofile.c): level k's section
  * profile tables and roundness, the height range (after the pores), the shading. */
@@ -290,8 +290,7 @@ float sk__pores_deepest(const sk_skin *skin);
 uint32_t sk__locate_level1(const sk_skin *skin, double x, double y, float *px, float *py,
                            uint32_t *use, double shift[2]);
 /* Nearest sibling among the children of `parent` at level `level` (0-based). */
-uint32_t sk__locate_child(const sk__level *lv, uint32_t first, uint32_t count, float px,
-                          float py);
+uint32_t sk__locate_child(const sk__level *lv, uint32_t first, uint32_t count, float px, float py);
 /* Fan triangle of point p in cell c: the use whose line the ray from the site through p
  * meets first. */
 uint32_t sk__fan_use(const sk__level *lv, uint32_t c, float px, float py);
@@ -299,8 +298,8 @@ uint32_t sk__fan_use(const sk__level *lv, uint32_t c, float px, float py);
  * that edge's support: returns the owner cell (f's cell or its neighbour), moves p into the
  * owner's frame and straight cell, multiplies jac by the unwarp's Jacobian and writes the
  * point before the unwarp in the owner's frame to pre (left alone outside the support). */
-uint32_t sk__unwarp(const sk__level *lv, const sk__fan *f, float *px, float *py,
-                    float jac[2][2], float *pre_x, float *pre_y);
+uint32_t sk__unwarp(const sk__level *lv, const sk__fan *f, float *px, float *py, float jac[2][2],
+                    float *pre_x, float *pre_y);
 /* Relative margin of the sector tests (far above float rounding). */
 #define SK__SECTOR_MARGIN 1e-4f
 
@@ -338,8 +337,8 @@ typedef struct sk__newton {
     float t, inv; /* guess of t and 1 / Bx'(t) */
 } sk__newton;
 void sk__last_segment_guess(const sk__profile *p, float g, float xq, sk__newton *s);
-float sk__last_segment_finish(const sk__profile *p, float xq, const sk__newton *s,
-                              float *dz_dx, float *dz_dg);
+float sk__last_segment_finish(const sk__profile *p, float xq, const sk__newton *s, float *dz_dx,
+                              float *dz_dg);
 float sk__profile_scaled(const sk__profile *p, float g, float xq, float *dz_dx, float *dz_dg);
 /* Cells found by the previous query of a row of pixels: tried first, and kept only where
  * the point is inside them by a margin, so results never depend on the hint. */

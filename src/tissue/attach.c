@@ -42,7 +42,8 @@ static bool may_be_closer(const sk__ellipsoid *e, sk_vec3d p, double best)
  * *bone gets the bone, or the muscle's origin bone; *near the muscles within two grid
  * spacings of that nearest distance (the muscles the point lies against, which it is kept
  * out of; muscles of other limbs it may meet in a pose are not obstacles to it). */
-static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, sk_vec3d x, int *bone, uint64_t *near)
+static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, sk_vec3d x,
+                          int *bone, uint64_t *near)
 {
     double best = HUGE_VAL;
     int muscle = -1;
@@ -68,7 +69,8 @@ static int nearest_tissue(const sk_tissue_model *m, const sk__tissue_shapes *t, 
     *near = 0;
     double reach = best + 2.0 * m->grid.spacing;
     for (int i = 0; i < t->muscle_count; i++)
-        if (may_be_closer(&t->muscle[i], x, reach) && surface_distance(&t->muscle[i], x) <= reach) *near |= (uint64_t)1 << i;
+        if (may_be_closer(&t->muscle[i], x, reach) && surface_distance(&t->muscle[i], x) <= reach)
+            *near |= (uint64_t)1 << i;
     return muscle;
 }
 
@@ -85,7 +87,8 @@ static void track(sk_tissue_model *m)
     for (int k = 0; k < d->tracked_count; k++) {
         const sk_tissue_tracked_desc *t = &d->tracked[k];
         const sk__bone *b = &m->bones[sk__bone_find(d, t->bone)];
-        sk_vec3d o = sk_v3d_add(m->skeleton.rest[b->joint], sk__bone_point(b, t->at, sk_v3d(0, 0, 0)));
+        sk_vec3d o =
+            sk_v3d_add(m->skeleton.rest[b->joint], sk__bone_point(b, t->at, sk_v3d(0, 0, 0)));
         sk_vec3d dir = sk_v3d_normalize(sk_v3d(t->direction[0], t->direction[1], t->direction[2]));
         double near = 1.5 * m->grid.spacing, best_t = DBL_MAX, best_perp = DBL_MAX;
         int first = -1, closest = -1;
@@ -117,7 +120,8 @@ void sk__model_attach(sk_tissue_model *m, const sk__tissue_shapes *t)
     double *area = calloc(m->skin_count ? m->skin_count : 1, sizeof *area);
     for (size_t i = 0; area && i < m->triangle_count; i++) {
         const uint32_t *v = m->triangles + 3 * i;
-        sk_vec3d e1 = sk_v3d_sub(m->rest[v[1]], m->rest[v[0]]), e2 = sk_v3d_sub(m->rest[v[2]], m->rest[v[0]]);
+        sk_vec3d e1 = sk_v3d_sub(m->rest[v[1]], m->rest[v[0]]),
+                 e2 = sk_v3d_sub(m->rest[v[2]], m->rest[v[0]]);
         double third = 0.5 * sk_v3d_length(sk_v3d_cross(e1, e2)) * 1e-6 / 3.0;
         for (int k = 0; k < 3; k++) area[v[k]] += third;
     }

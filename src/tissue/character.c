@@ -98,29 +98,33 @@ static sk_result not_a(sk_error *err, const char *path, const char *value, const
         list_names(names, sizeof names, d->bone_count, d->bones[0].name, sizeof d->bones[0]);
     else
         list_names(names, sizeof names, d->muscle_count, d->muscles[0].name, sizeof d->muscles[0]);
-    return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = \"%s\" is not a %s (%ss: %s)", path, value, what, what, names);
+    return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = \"%s\" is not a %s (%ss: %s)", path, value,
+                   what, what, names);
 }
 
 static sk_result check_positive(sk_error *err, const char *path, double v, double hi)
 {
     if (!(v > 0.0) || v > hi)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %g is out of range (0, %g]%s", path, v, hi,
-                       v == 0.0 ? " (required)" : "");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %g is out of range (0, %g]%s", path, v,
+                       hi, v == 0.0 ? " (required)" : "");
     return SK_OK;
 }
 
 static sk_result check_name(sk_error *err, const char *path, const char *name)
 {
-    if (!name[0]) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s is missing (a non-empty name)", path);
+    if (!name[0])
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s is missing (a non-empty name)", path);
     return SK_OK;
 }
 
-static sk_result check_unique(sk_error *err, const char *what, int count, const char *first, size_t stride)
+static sk_result check_unique(sk_error *err, const char *what, int count, const char *first,
+                              size_t stride)
 {
     for (int i = 0; i < count; i++)
         for (int k = 0; k < i; k++)
             if (strcmp(first + stride * (size_t)i, first + stride * (size_t)k) == 0)
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s[%d].name = \"%s\" is also %s[%d]'s", what, i,
+                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                               "%s[%d].name = \"%s\" is also %s[%d]'s", what, i,
                                first + stride * (size_t)i, what, k);
     return SK_OK;
 }
@@ -130,8 +134,11 @@ static bool is_zero3(const float v[3]) { return v[0] == 0.0f && v[1] == 0.0f && 
 static sk_result check_joints(const sk_tissue_character_desc *d, sk_error *err)
 {
     char path[96];
-    if (d->joint_count < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joints: a character needs at least one joint");
-    sk_result r = check_unique(err, "joints", d->joint_count, d->joints[0].name, sizeof d->joints[0]);
+    if (d->joint_count < 1)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "joints: a character needs at least one joint");
+    sk_result r =
+        check_unique(err, "joints", d->joint_count, d->joints[0].name, sizeof d->joints[0]);
     if (r != SK_OK) return r;
     int roots = 0;
     for (int i = 0; i < d->joint_count; i++) {
@@ -139,28 +146,34 @@ static sk_result check_joints(const sk_tissue_character_desc *d, sk_error *err)
         if ((r = check_name(err, path, d->joints[i].name)) != SK_OK) return r;
         if (!d->joints[i].parent[0]) {
             if (roots++)
-                return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                               "joints[%d] (\"%s\") has no parent, but the skeleton already has a root", i,
-                               d->joints[i].name);
+                return sk_fail(
+                    err, SK_ERROR_INVALID_ARGUMENT,
+                    "joints[%d] (\"%s\") has no parent, but the skeleton already has a root", i,
+                    d->joints[i].name);
             continue;
         }
         snprintf(path, sizeof path, "joints[%d].parent", i);
-        if (sk__joint_find(d, d->joints[i].parent) < 0) return not_a(err, path, d->joints[i].parent, "joint", d);
+        if (sk__joint_find(d, d->joints[i].parent) < 0)
+            return not_a(err, path, d->joints[i].parent, "joint", d);
     }
-    if (roots == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joints: no root (one joint must have no parent)");
+    if (roots == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "joints: no root (one joint must have no parent)");
     /* no cycles: every chain of parents reaches the root within joint_count steps */
     for (int i = 0; i < d->joint_count; i++) {
         int j = i, steps = 0;
-        while (d->joints[j].parent[0] && steps++ <= d->joint_count) j = sk__joint_find(d, d->joints[j].parent);
+        while (d->joints[j].parent[0] && steps++ <= d->joint_count)
+            j = sk__joint_find(d, d->joints[j].parent);
         if (steps > d->joint_count)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "joints[%d] (\"%s\"): its parents form a cycle", i,
-                           d->joints[i].name);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "joints[%d] (\"%s\"): its parents form a cycle", i, d->joints[i].name);
     }
     return SK_OK;
 }
 
-static sk_result check_attachment(const sk_tissue_character_desc *d, const sk_tissue_attachment_desc *a,
-                                  const char *path, sk_error *err)
+static sk_result check_attachment(const sk_tissue_character_desc *d,
+                                  const sk_tissue_attachment_desc *a, const char *path,
+                                  sk_error *err)
 {
     char p[128];
     snprintf(p, sizeof p, "%s.bone", path);
@@ -172,8 +185,12 @@ static sk_result check_body(const sk_tissue_character_desc *d, sk_error *err)
 {
     char path[96];
     sk_result r;
-    if (d->bone_count < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "bones: a character needs at least one bone");
-    if ((r = check_unique(err, "bones", d->bone_count, d->bones[0].name, sizeof d->bones[0])) != SK_OK) return r;
+    if (d->bone_count < 1)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "bones: a character needs at least one bone");
+    if ((r = check_unique(err, "bones", d->bone_count, d->bones[0].name, sizeof d->bones[0])) !=
+        SK_OK)
+        return r;
     for (int i = 0; i < d->bone_count; i++) {
         const sk_tissue_bone_desc *b = &d->bones[i];
         snprintf(path, sizeof path, "bones[%d].name", i);
@@ -191,14 +208,16 @@ static sk_result check_body(const sk_tissue_character_desc *d, sk_error *err)
         snprintf(path, sizeof path, "bones[%d].end_length_mm", i);
         if ((r = check_positive(err, path, b->end_length_mm, 1000)) != SK_OK) return r;
     }
-    if ((r = check_unique(err, "muscles", d->muscle_count, d->muscles[0].name, sizeof d->muscles[0])) != SK_OK)
+    if ((r = check_unique(err, "muscles", d->muscle_count, d->muscles[0].name,
+                          sizeof d->muscles[0])) != SK_OK)
         return r;
     for (int i = 0; i < d->muscle_count; i++) {
         const sk_tissue_muscle_desc *m = &d->muscles[i];
         snprintf(path, sizeof path, "muscles[%d].name", i);
         if ((r = check_name(err, path, m->name)) != SK_OK) return r;
         if (sk__bone_find(d, m->name) >= 0)
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "muscles[%d].name = \"%s\" is also a bone's", i, m->name);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "muscles[%d].name = \"%s\" is also a bone's", i, m->name);
         snprintf(path, sizeof path, "muscles[%d].origin", i);
         if ((r = check_attachment(d, &m->origin, path, err)) != SK_OK) return r;
         snprintf(path, sizeof path, "muscles[%d].insertion", i);
@@ -224,15 +243,17 @@ static sk_result check_extras(const sk_tissue_character_desc *d, sk_error *err)
             if (d->muscle_count == 0) return not_a(err, path, f->around, "bone", d);
             char bones[200], muscles[200];
             list_names(bones, sizeof bones, d->bone_count, d->bones[0].name, sizeof d->bones[0]);
-            list_names(muscles, sizeof muscles, d->muscle_count, d->muscles[0].name, sizeof d->muscles[0]);
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = \"%s\" is neither a bone (%s) nor a muscle (%s)", path,
-                           f->around, bones, muscles);
+            list_names(muscles, sizeof muscles, d->muscle_count, d->muscles[0].name,
+                       sizeof d->muscles[0]);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "%s = \"%s\" is neither a bone (%s) nor a muscle (%s)", path, f->around,
+                           bones, muscles);
         }
         snprintf(path, sizeof path, "fat[%d].thickness_mm", i);
         if ((r = check_positive(err, path, f->thickness_mm, 500)) != SK_OK) return r;
         if (!(f->from < f->to))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "fat[%d]: from = %g must be less than to = %g", i, f->from,
-                           f->to);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "fat[%d]: from = %g must be less than to = %g", i, f->from, f->to);
         snprintf(path, sizeof path, "fat[%d].spread_deg", i);
         if ((r = check_positive(err, path, f->spread_deg, 180)) != SK_OK) return r;
     }
@@ -240,17 +261,21 @@ static sk_result check_extras(const sk_tissue_character_desc *d, sk_error *err)
         snprintf(path, sizeof path, "joint_map[%d].motion", i);
         if ((r = check_name(err, path, d->joint_map[i].motion)) != SK_OK) return r;
         snprintf(path, sizeof path, "joint_map[%d].joint", i);
-        if (sk__joint_find(d, d->joint_map[i].joint) < 0) return not_a(err, path, d->joint_map[i].joint, "joint", d);
+        if (sk__joint_find(d, d->joint_map[i].joint) < 0)
+            return not_a(err, path, d->joint_map[i].joint, "joint", d);
     }
-    if ((r = check_unique(err, "tracked", d->tracked_count, d->tracked[0].name, sizeof d->tracked[0])) != SK_OK)
+    if ((r = check_unique(err, "tracked", d->tracked_count, d->tracked[0].name,
+                          sizeof d->tracked[0])) != SK_OK)
         return r;
     for (int i = 0; i < d->tracked_count; i++) {
         snprintf(path, sizeof path, "tracked[%d].name", i);
         if ((r = check_name(err, path, d->tracked[i].name)) != SK_OK) return r;
         snprintf(path, sizeof path, "tracked[%d].bone", i);
-        if (sk__bone_find(d, d->tracked[i].bone) < 0) return not_a(err, path, d->tracked[i].bone, "bone", d);
+        if (sk__bone_find(d, d->tracked[i].bone) < 0)
+            return not_a(err, path, d->tracked[i].bone, "bone", d);
         if (is_zero3(d->tracked[i].direction))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "tracked[%d].direction must not be zero", i);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "tracked[%d].direction must not be zero",
+                           i);
     }
     return SK_OK;
 }
@@ -260,29 +285,49 @@ static sk_result check_parameters(const sk_tissue_character_desc *d, sk_error *e
     const sk_tissue_skin_desc *s = &d->skin;
     const sk_tissue_material_desc *m = &d->material;
     sk_result r;
-    if ((r = sk_check_range_f(err, "motion_unit_mm", d->motion_unit_mm, 1e-3, 1e4)) != SK_OK) return r;
+    if ((r = sk_check_range_f(err, "motion_unit_mm", d->motion_unit_mm, 1e-3, 1e4)) != SK_OK)
+        return r;
     if ((r = sk_check_range_f(err, "skin.spacing_mm", s->spacing_mm, 0.5, 50)) != SK_OK) return r;
     if ((r = sk_check_range_i(err, "skin.dilations", s->dilations, 1, 32)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "skin.dilation_radius_mm", s->dilation_radius_mm, s->spacing_mm,
                               10.0 * s->spacing_mm)) != SK_OK)
         return r;
     if (!(s->threshold > 0.0f && s->threshold < 1.0f))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin.threshold = %g is out of range (0, 1)", s->threshold);
-    if ((r = sk_check_range_i(err, "skin.smooth_iterations", s->smooth_iterations, 0, 200)) != SK_OK) return r;
-    if (s->neighbourhood != 18 && s->neighbourhood != 26)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin.neighbourhood = %d must be 18 or 26", s->neighbourhood);
-    if ((r = sk_check_range_f(err, "material.fat_stiffness", m->fat_stiffness, 1e-3, 1e6)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "material.anchor_stiffness", m->anchor_stiffness, 1e-3, 1e6)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "material.skin_stiffness", m->skin_stiffness, 1e-3, 1e6)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "material.tether_stiffness", m->tether_stiffness, 1e-4, 1e6)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "material.fat_density", m->fat_density, 100, 20000)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "material.skin_density", m->skin_density, 100, 20000)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "material.skin_thickness_mm", m->skin_thickness_mm, 0, 20)) != SK_OK) return r;
-    if ((r = check_positive(err, "material.damping_ratio", m->damping_ratio, 4)) != SK_OK) return r;
-    if ((r = sk_check_range_i(err, "simulation.step_hz", d->simulation.step_hz, 60, 20000)) != SK_OK) return r;
-    if ((r = sk_check_range_i(err, "simulation.iterations", d->simulation.iterations, 1, 64)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "simulation.teleport_speed_m_s", d->simulation.teleport_speed_m_s, 0.1, 1e6)) !=
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin.threshold = %g is out of range (0, 1)",
+                       s->threshold);
+    if ((r = sk_check_range_i(err, "skin.smooth_iterations", s->smooth_iterations, 0, 200)) !=
         SK_OK)
+        return r;
+    if (s->neighbourhood != 18 && s->neighbourhood != 26)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin.neighbourhood = %d must be 18 or 26",
+                       s->neighbourhood);
+    if ((r = sk_check_range_f(err, "material.fat_stiffness", m->fat_stiffness, 1e-3, 1e6)) != SK_OK)
+        return r;
+    if ((r = sk_check_range_f(err, "material.anchor_stiffness", m->anchor_stiffness, 1e-3, 1e6)) !=
+        SK_OK)
+        return r;
+    if ((r = sk_check_range_f(err, "material.skin_stiffness", m->skin_stiffness, 1e-3, 1e6)) !=
+        SK_OK)
+        return r;
+    if ((r = sk_check_range_f(err, "material.tether_stiffness", m->tether_stiffness, 1e-4, 1e6)) !=
+        SK_OK)
+        return r;
+    if ((r = sk_check_range_f(err, "material.fat_density", m->fat_density, 100, 20000)) != SK_OK)
+        return r;
+    if ((r = sk_check_range_f(err, "material.skin_density", m->skin_density, 100, 20000)) != SK_OK)
+        return r;
+    if ((r = sk_check_range_f(err, "material.skin_thickness_mm", m->skin_thickness_mm, 0, 20)) !=
+        SK_OK)
+        return r;
+    if ((r = check_positive(err, "material.damping_ratio", m->damping_ratio, 4)) != SK_OK) return r;
+    if ((r = sk_check_range_i(err, "simulation.step_hz", d->simulation.step_hz, 60, 20000)) !=
+        SK_OK)
+        return r;
+    if ((r = sk_check_range_i(err, "simulation.iterations", d->simulation.iterations, 1, 64)) !=
+        SK_OK)
+        return r;
+    if ((r = sk_check_range_f(err, "simulation.teleport_speed_m_s",
+                              d->simulation.teleport_speed_m_s, 0.1, 1e6)) != SK_OK)
         return r;
     return SK_OK;
 }
@@ -297,7 +342,8 @@ sk_result sk_tissue_character_desc_validate(const sk_tissue_character_desc *d, s
     return r;
 }
 
-sk_result sk_tissue_character_bind(const sk_preset *preset, sk_tissue_character_desc *d, sk_error *err)
+sk_result sk_tissue_character_bind(const sk_preset *preset, sk_tissue_character_desc *d,
+                                   sk_error *err)
 {
     memset(d, 0, sizeof *d);
     sk_result r = sk_preset_bind(preset, &sk_tissue_character_schema, d, err);

@@ -15,7 +15,7 @@
 
 #define BLOCK 64 /* at most 64: a block's points are the bits of a mask */
 _Static_assert(BLOCK <= 64, "a block's points must fit a 64-bit mask");
-#define MARGIN 1e-6 /* in level units: just outside the surface */
+#define MARGIN 1e-6                              /* in level units: just outside the surface */
 #define INSIDE ((1.0 + MARGIN) * (1.0 + MARGIN)) /* a level below this is inside */
 
 static void part_setup(sk__obstacle_part *q, const sk__ellipsoid *e)
@@ -23,7 +23,8 @@ static void part_setup(sk__obstacle_part *q, const sk__ellipsoid *e)
     q->e = *e;
     for (int r = 0; r < 3; r++) {
         double inv = 1.0 / (r == 0 ? e->radii.x : (r == 1 ? e->radii.y : e->radii.z));
-        for (int c = 0; c < 3; c++) q->to_unit[r][c] = e->axes.m[c][r] * inv; /* row r: axis r / radius r */
+        for (int c = 0; c < 3; c++)
+            q->to_unit[r][c] = e->axes.m[c][r] * inv; /* row r: axis r / radius r */
     }
     sk__ellipsoid_bounds(e, &q->lo, &q->hi);
 }
@@ -41,8 +42,8 @@ static void bounds_of_parts(sk__obstacle *o)
     }
 }
 
-int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
-                  sk__obstacle *out)
+int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose,
+                  const sk__muscle_state *muscle, sk__obstacle *out)
 {
     int n = 0;
     for (int b = 0; b < m->desc.bone_count; b++, n++) {
@@ -67,7 +68,8 @@ int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose, const sk
 /* (The comparisons joined without branches: where a point lies is hard to predict.) */
 static bool in_box(const double *p, sk_vec3d lo, sk_vec3d hi)
 {
-    return (p[0] >= lo.x) & (p[0] <= hi.x) & (p[1] >= lo.y) & (p[1] <= hi.y) & (p[2] >= lo.z) & (p[2] <= hi.z);
+    return (p[0] >= lo.x) & (p[0] <= hi.x) & (p[1] >= lo.y) & (p[1] <= hi.y) & (p[2] >= lo.z) &
+           (p[2] <= hi.z);
 }
 
 static double level(const sk__obstacle_part *q, const double *p)
@@ -112,14 +114,14 @@ static void block_bounds(const double *x, size_t p0, size_t p1, double lo[3], do
 
 /* The obstacles of one kind (muscles: parts == 1, bones: parts == 3) whose bounds meet
  * the box; returns how many were written to `out`. */
-static int near_block(const sk__obstacle *obstacles, int count, int parts, const double lo[3], const double hi[3],
-                      int *out)
+static int near_block(const sk__obstacle *obstacles, int count, int parts, const double lo[3],
+                      const double hi[3], int *out)
 {
     int n = 0;
     for (int b = 0; b < count; b++) {
         const sk__obstacle *o = &obstacles[b];
-        if (o->parts != parts || o->lo.x > hi[0] || o->hi.x < lo[0] || o->lo.y > hi[1] || o->hi.y < lo[1] ||
-            o->lo.z > hi[2] || o->hi.z < lo[2])
+        if (o->parts != parts || o->lo.x > hi[0] || o->hi.x < lo[0] || o->lo.y > hi[1] ||
+            o->hi.y < lo[1] || o->lo.z > hi[2] || o->hi.z < lo[2])
             continue;
         out[n++] = b;
     }
@@ -132,40 +134,48 @@ static int near_block(const sk__obstacle *obstacles, int count, int parts, const
  * Four points at a time in AVX2 lanes with in_box's and level's operations; without AVX2
  * every point is a candidate (`vectors` false: the same, for the tests). */
 #if defined(SK__HAVE_AVX2_PATH)
-static inline SK__AVX2 __m256d box_lanes(__m256d x, __m256d y, __m256d z, const sk_vec3d *lo, const sk_vec3d *hi)
+static inline SK__AVX2 __m256d box_lanes(__m256d x, __m256d y, __m256d z, const sk_vec3d *lo,
+                                         const sk_vec3d *hi)
 {
     __m256d in = _mm256_and_pd(_mm256_cmp_pd(x, _mm256_broadcast_sd(&lo->x), _CMP_GE_OQ),
                                _mm256_cmp_pd(x, _mm256_broadcast_sd(&hi->x), _CMP_LE_OQ));
-    in = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(y, _mm256_broadcast_sd(&lo->y), _CMP_GE_OQ),
-                                         _mm256_cmp_pd(y, _mm256_broadcast_sd(&hi->y), _CMP_LE_OQ)));
-    return _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(z, _mm256_broadcast_sd(&lo->z), _CMP_GE_OQ),
-                                           _mm256_cmp_pd(z, _mm256_broadcast_sd(&hi->z), _CMP_LE_OQ)));
+    in =
+        _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(y, _mm256_broadcast_sd(&lo->y), _CMP_GE_OQ),
+                                        _mm256_cmp_pd(y, _mm256_broadcast_sd(&hi->y), _CMP_LE_OQ)));
+    return _mm256_and_pd(in,
+                         _mm256_and_pd(_mm256_cmp_pd(z, _mm256_broadcast_sd(&lo->z), _CMP_GE_OQ),
+                                       _mm256_cmp_pd(z, _mm256_broadcast_sd(&hi->z), _CMP_LE_OQ)));
 }
 
 /* level() in the lanes, compared: !(level >= INSIDE). */
-static inline SK__AVX2 __m256d inside_lanes(const sk__obstacle_part *q, __m256d x, __m256d y, __m256d z)
+static inline SK__AVX2 __m256d inside_lanes(const sk__obstacle_part *q, __m256d x, __m256d y,
+                                            __m256d z)
 {
     __m256d d0 = _mm256_sub_pd(x, _mm256_broadcast_sd(&q->e.centre.x));
     __m256d d1 = _mm256_sub_pd(y, _mm256_broadcast_sd(&q->e.centre.y));
     __m256d d2 = _mm256_sub_pd(z, _mm256_broadcast_sd(&q->e.centre.z));
     __m256d s = _mm256_setzero_pd();
     for (int r = 0; r < 3; r++) {
-        __m256d u = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_broadcast_sd(&q->to_unit[r][0]), d0),
-                                                _mm256_mul_pd(_mm256_broadcast_sd(&q->to_unit[r][1]), d1)),
-                                  _mm256_mul_pd(_mm256_broadcast_sd(&q->to_unit[r][2]), d2));
+        __m256d u =
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_broadcast_sd(&q->to_unit[r][0]), d0),
+                                        _mm256_mul_pd(_mm256_broadcast_sd(&q->to_unit[r][1]), d1)),
+                          _mm256_mul_pd(_mm256_broadcast_sd(&q->to_unit[r][2]), d2));
         s = _mm256_add_pd(s, _mm256_mul_pd(u, u));
     }
-    return _mm256_and_pd(box_lanes(x, y, z, &q->lo, &q->hi), _mm256_cmp_pd(s, _mm256_set1_pd(INSIDE), _CMP_NGE_UQ));
+    return _mm256_and_pd(box_lanes(x, y, z, &q->lo, &q->hi),
+                         _mm256_cmp_pd(s, _mm256_set1_pd(INSIDE), _CMP_NGE_UQ));
 }
 
-static SK__AVX2 uint64_t candidates_wide(const sk__obstacle *obstacles, const int *near, int n, int bone_count,
-                                         const uint64_t *near_muscles, const double *x, size_t p0, size_t p1)
+static SK__AVX2 uint64_t candidates_wide(const sk__obstacle *obstacles, const int *near, int n,
+                                         int bone_count, const uint64_t *near_muscles,
+                                         const double *x, size_t p0, size_t p1)
 {
     uint64_t mask = 0;
     size_t p = p0;
     for (; p + 4 <= p1; p += 4) {
         const double *q = x + 3 * p;
-        __m256d px = _mm256_setr_pd(q[0], q[3], q[6], q[9]), py = _mm256_setr_pd(q[1], q[4], q[7], q[10]),
+        __m256d px = _mm256_setr_pd(q[0], q[3], q[6], q[9]),
+                py = _mm256_setr_pd(q[1], q[4], q[7], q[10]),
                 pz = _mm256_setr_pd(q[2], q[5], q[8], q[11]);
         __m256d any = _mm256_setzero_pd();
         for (int k = 0; k < n; k++) {
@@ -173,13 +183,15 @@ static SK__AVX2 uint64_t candidates_wide(const sk__obstacle *obstacles, const in
             __m256d in = box_lanes(px, py, pz, &o->lo, &o->hi);
             if (near_muscles) {
                 int bit = near[k] - bone_count;
-                __m256i allowed = _mm256_setr_epi64x(
-                    -(long long)(near_muscles[p] >> bit & 1), -(long long)(near_muscles[p + 1] >> bit & 1),
-                    -(long long)(near_muscles[p + 2] >> bit & 1), -(long long)(near_muscles[p + 3] >> bit & 1));
+                __m256i allowed = _mm256_setr_epi64x(-(long long)(near_muscles[p] >> bit & 1),
+                                                     -(long long)(near_muscles[p + 1] >> bit & 1),
+                                                     -(long long)(near_muscles[p + 2] >> bit & 1),
+                                                     -(long long)(near_muscles[p + 3] >> bit & 1));
                 in = _mm256_and_pd(in, _mm256_castsi256_pd(allowed));
             }
             if (_mm256_movemask_pd(in) == 0) continue;
-            for (int j = 0; j < o->parts; j++) any = _mm256_or_pd(any, _mm256_and_pd(in, inside_lanes(&o->part[j], px, py, pz)));
+            for (int j = 0; j < o->parts; j++)
+                any = _mm256_or_pd(any, _mm256_and_pd(in, inside_lanes(&o->part[j], px, py, pz)));
         }
         mask |= (uint64_t)_mm256_movemask_pd(any) << (p - p0);
     }
@@ -189,18 +201,21 @@ static SK__AVX2 uint64_t candidates_wide(const sk__obstacle *obstacles, const in
 #endif
 
 static uint64_t candidates(const sk__obstacle *obstacles, const int *near, int n, int bone_count,
-                           const uint64_t *near_muscles, const double *x, size_t p0, size_t p1, bool vectors)
+                           const uint64_t *near_muscles, const double *x, size_t p0, size_t p1,
+                           bool vectors)
 {
 #if defined(SK__HAVE_AVX2_PATH)
     if (vectors) return candidates_wide(obstacles, near, n, bone_count, near_muscles, x, p0, p1);
 #endif
-    (void)obstacles, (void)near, (void)n, (void)bone_count, (void)near_muscles, (void)x, (void)vectors;
+    (void)obstacles, (void)near, (void)n, (void)bone_count, (void)near_muscles, (void)x,
+        (void)vectors;
     return p1 - p0 < 64 ? ((uint64_t)1 << (p1 - p0)) - 1 : ~(uint64_t)0;
 }
 
 /* The collisions of the points of one block. */
 static void collide_block(const sk__obstacle *obstacles, int obstacle_count, int bone_count,
-                          const uint64_t *near_muscles, double *x, size_t p0, size_t p1, bool vectors)
+                          const uint64_t *near_muscles, double *x, size_t p0, size_t p1,
+                          bool vectors)
 {
     double lo[3], hi[3];
     int near[SK__MAX_OBSTACLES];
@@ -208,7 +223,8 @@ static void collide_block(const sk__obstacle *obstacles, int obstacle_count, int
     /* muscles first, bones last: no point may end in a bone */
     int n = near_block(obstacles, obstacle_count, 1, lo, hi, near);
     bool moved = false;
-    uint64_t test = n ? candidates(obstacles, near, n, bone_count, near_muscles, x, p0, p1, vectors) : 0;
+    uint64_t test =
+        n ? candidates(obstacles, near, n, bone_count, near_muscles, x, p0, p1, vectors) : 0;
     for (size_t p = p0; p < p1; p++)
         for (int k = 0; k < n && (test >> (p - p0) & 1); k++)
             if ((near_muscles[p] >> (near[k] - bone_count) & 1) &&
@@ -221,7 +237,8 @@ static void collide_block(const sk__obstacle *obstacles, int obstacle_count, int
     for (int pass = 0; pass < 8 && again; pass++) {
         if (moved) block_bounds(x, p0, p1, lo, hi); /* else still those of the points */
         n = near_block(obstacles, obstacle_count, 3, lo, hi, near);
-        if (pass == 0) again = n ? candidates(obstacles, near, n, bone_count, NULL, x, p0, p1, vectors) : 0;
+        if (pass == 0)
+            again = n ? candidates(obstacles, near, n, bone_count, NULL, x, p0, p1, vectors) : 0;
         moved = false;
         uint64_t next = 0;
         for (size_t p = p0; p < p1; p++) {
@@ -237,8 +254,8 @@ static void collide_block(const sk__obstacle *obstacles, int obstacle_count, int
     }
 }
 
-void sk__collide(const sk__obstacle *obstacles, int obstacle_count, int bone_count, const uint64_t *near_muscles,
-                 double *x, size_t count, bool vectors)
+void sk__collide(const sk__obstacle *obstacles, int obstacle_count, int bone_count,
+                 const uint64_t *near_muscles, double *x, size_t count, bool vectors)
 {
     size_t blocks = (count + BLOCK - 1) / BLOCK;
 #pragma omp for schedule(dynamic, 16)
@@ -248,14 +265,16 @@ void sk__collide(const sk__obstacle *obstacles, int obstacle_count, int bone_cou
     }
 }
 
-void sk__collide_finish(const sk__obstacle *obstacles, int obstacle_count, int bone_count, const uint64_t *near_muscles,
-                        double *x, const double *base, double *v, double inv_h, size_t count, bool vectors)
+void sk__collide_finish(const sk__obstacle *obstacles, int obstacle_count, int bone_count,
+                        const uint64_t *near_muscles, double *x, const double *base, double *v,
+                        double inv_h, size_t count, bool vectors)
 {
     size_t blocks = (count + BLOCK - 1) / BLOCK;
 #pragma omp for schedule(dynamic, 16)
     for (size_t blk = 0; blk < blocks; blk++) {
         size_t p0 = blk * BLOCK, p1 = p0 + BLOCK < count ? p0 + BLOCK : count;
-        if (obstacle_count > 0) collide_block(obstacles, obstacle_count, bone_count, near_muscles, x, p0, p1, vectors);
+        if (obstacle_count > 0)
+            collide_block(obstacles, obstacle_count, bone_count, near_muscles, x, p0, p1, vectors);
         for (size_t i = 3 * p0; i < 3 * p1; i++) v[i] = (x[i] - base[i]) * inv_h;
     }
 }

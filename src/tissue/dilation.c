@@ -28,7 +28,8 @@ static sk_result make_kernel(const sk__grid *g, double radius_mm, kernel *k, sk_
     int side = 2 * reach + 1, cap = side * side * side;
     k->step = malloc((size_t)cap * sizeof *k->step);
     k->w = malloc((size_t)cap * sizeof *k->w);
-    if (!k->step || !k->w) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the dilation");
+    if (!k->step || !k->w)
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the dilation");
     k->count = 0;
     k->reach = reach;
     double total = 0.0;
@@ -50,7 +51,8 @@ static sk_result make_kernel(const sk__grid *g, double radius_mm, kernel *k, sk_
  * the grid). */
 static void window_sums(const sk__grid *g, int axis, int reach, const uint16_t *src, uint16_t *dst)
 {
-    size_t stride = axis == 0 ? 1 : (axis == 1 ? (size_t)g->n[0] : (size_t)g->n[0] * (size_t)g->n[1]);
+    size_t stride =
+        axis == 0 ? 1 : (axis == 1 ? (size_t)g->n[0] : (size_t)g->n[0] * (size_t)g->n[1]);
     int n = g->n[axis], a = axis == 0 ? 1 : 0, b = axis == 2 ? 1 : 2;
     long lines = (long)g->n[a] * g->n[b];
 #pragma omp parallel for schedule(static)
@@ -70,16 +72,18 @@ static void window_sums(const sk__grid *g, int axis, int reach, const uint16_t *
     }
 }
 
-sk_result sk__dilate(const sk__grid *g, const uint8_t *seed, int passes, double radius_mm, float *value,
-                     sk_error *err)
+sk_result sk__dilate(const sk__grid *g, const uint8_t *seed, int passes, double radius_mm,
+                     float *value, sk_error *err)
 {
     kernel k = {0};
     uint16_t *a = malloc(g->count * sizeof *a), *b = malloc(g->count * sizeof *b);
     uint8_t *positive = malloc(g->count);
     sk_result r = make_kernel(g, radius_mm, &k, err);
-    if (r == SK_OK && (!a || !b || !positive)) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the dilation");
+    if (r == SK_OK && (!a || !b || !positive))
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the dilation");
     if (r == SK_OK && (2 * k.reach + 1) * (2 * k.reach + 1) * (2 * k.reach + 1) > 65535)
-        r = sk_fail(err, SK_ERROR_LIMIT, "skin.dilation_radius_mm reaches %d cells, more than 19", k.reach);
+        r = sk_fail(err, SK_ERROR_LIMIT, "skin.dilation_radius_mm reaches %d cells, more than 19",
+                    k.reach);
     if (r == SK_OK) {
         const unsigned full = (unsigned)((2 * k.reach + 1) * (2 * k.reach + 1) * (2 * k.reach + 1));
         const int R = k.reach;
@@ -102,14 +106,16 @@ sk_result sk__dilate(const sk__grid *g, const uint8_t *seed, int passes, double 
                         size_t i = sk__grid_index(g, x, y, z);
                         unsigned in_box = b[i];
                         if (in_box == 0) continue; /* no positive point in reach */
-                        bool inner = x >= R && y >= R && z >= R && x < g->n[0] - R && y < g->n[1] - R && z < g->n[2] - R;
+                        bool inner = x >= R && y >= R && z >= R && x < g->n[0] - R &&
+                                     y < g->n[1] - R && z < g->n[2] - R;
                         if (inner && in_box == full) { /* the whole kernel */
                             value[i] += 1.0f;
                             continue;
                         }
                         float sum = 0.0f;
                         if (inner) {
-                            for (int o = 0; o < k.count; o++) sum += positive[(ptrdiff_t)i + k.step[o]] ? k.w[o] : 0.0f;
+                            for (int o = 0; o < k.count; o++)
+                                sum += positive[(ptrdiff_t)i + k.step[o]] ? k.w[o] : 0.0f;
                         } else {
                             /* near the grid's edge (never reached by the tissue's dilation,
                                which the grid's margin keeps inside): offsets checked */
@@ -120,7 +126,8 @@ sk_result sk__dilate(const sk__grid *g, const uint8_t *seed, int passes, double 
                                         double rr = sqrt((double)(dx * dx + dy * dy + dz * dz));
                                         if (rr > radius_mm / g->spacing + 1e-9) continue;
                                         int qx = x + dx, qy = y + dy, qz = z + dz;
-                                        if (qx >= 0 && qy >= 0 && qz >= 0 && qx < g->n[0] && qy < g->n[1] && qz < g->n[2] &&
+                                        if (qx >= 0 && qy >= 0 && qz >= 0 && qx < g->n[0] &&
+                                            qy < g->n[1] && qz < g->n[2] &&
                                             positive[sk__grid_index(g, qx, qy, qz)])
                                             sum += k.w[o];
                                         o++;

@@ -58,7 +58,8 @@ static void pass(const int n[3], int axis, float *sq, double *scratch, int *vscr
             c[axis] = 0;
             c[a] = (int)(line % n[a]);
             c[b] = (int)(line / n[a]);
-            size_t base = ((size_t)c[2] * (size_t)n[1] + (size_t)c[1]) * (size_t)n[0] + (size_t)c[0];
+            size_t base =
+                ((size_t)c[2] * (size_t)n[1] + (size_t)c[1]) * (size_t)n[0] + (size_t)c[0];
             bool any = false;
             for (int q = 0; q < len; q++) {
                 f[q] = sq[base + (size_t)q * stride];
@@ -71,8 +72,8 @@ static void pass(const int n[3], int axis, float *sq, double *scratch, int *vscr
     }
 }
 
-sk_result sk__distance_to_tissue(const sk__grid *g, const sk__label *labels, const int lo[3], const int hi[3],
-                                 float *distance, sk_error *err)
+sk_result sk__distance_to_tissue(const sk__grid *g, const sk__label *labels, const int lo[3],
+                                 const int hi[3], float *distance, sk_error *err)
 {
     int n[3] = {hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1};
     int longest = n[0] > n[1] ? n[0] : n[1];
@@ -90,7 +91,8 @@ sk_result sk__distance_to_tissue(const sk__grid *g, const sk__label *labels, con
         for (int y = 0; y < n[1]; y++)
             for (int x = 0; x < n[0]; x++) {
                 sk__label l = labels[sk__grid_index(g, lo[0] + x, lo[1] + y, lo[2] + z)];
-                distance[((size_t)z * (size_t)n[1] + (size_t)y) * (size_t)n[0] + (size_t)x] = l != SK__LABEL_NONE ? 0.0f : (float)FAR;
+                distance[((size_t)z * (size_t)n[1] + (size_t)y) * (size_t)n[0] + (size_t)x] =
+                    l != SK__LABEL_NONE ? 0.0f : (float)FAR;
             }
     for (int axis = 0; axis < 3; axis++) pass(n, axis, distance, scratch, vscratch, longest);
     size_t count = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];

@@ -16,14 +16,16 @@ sk__view sk__jiggle_view(sk_vec3d lo, sk_vec3d hi, double *aspect)
     double w = 0.0, h = hi.y - lo.y;
     for (int c = 0; c < 8; c++) {
         sk_vec3d p = sk_v3d((c & 1) ? hi.x : lo.x, 0.0, (c & 4) ? hi.z : lo.z);
-        w = fmax(w, 2.0 * fabs(sk_v3d_dot(sk_v3d_sub(p, sk_v3d(0.5 * (lo.x + hi.x), 0, 0.5 * (lo.z + hi.z))), right)));
+        w = fmax(w, 2.0 * fabs(sk_v3d_dot(
+                              sk_v3d_sub(p, sk_v3d(0.5 * (lo.x + hi.x), 0, 0.5 * (lo.z + hi.z))),
+                              right)));
     }
     *aspect = sk_clampd(w / h, 0.5, 2.0);
     return sk__view_framing(lo, hi, dir, sk_v3d(0, 1, 0), 30.0, *aspect);
 }
 
-sk_result sk__render_skin(const sk_mesh *skin, const sk__view *view, int width, int height, const char *png_path,
-                          sk_error *err)
+sk_result sk__render_skin(const sk_mesh *skin, const sk__view *view, int width, int height,
+                          const char *png_path, sk_error *err)
 {
     sk__render_item item = {skin, {0.80f, 0.56f, 0.46f}, 0.08f};
     /* many frames: direct light only, two samples a pixel */

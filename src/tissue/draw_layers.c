@@ -9,9 +9,13 @@
 #include "shitsukan/io.h"
 #include "tissue/draw_internal.h"
 
-static const char *const class_file[SK_TISSUE_POINT_CLASS_COUNT] = {"skin.ply", "fat.ply", "muscle.ply", "bone.ply"};
+static const char *const class_file[SK_TISSUE_POINT_CLASS_COUNT] = {"skin.ply", "fat.ply",
+                                                                    "muscle.ply", "bone.ply"};
 
-static void join(char *out, size_t size, const char *dir, const char *name) { snprintf(out, size, "%s/%s", dir, name); }
+static void join(char *out, size_t size, const char *dir, const char *name)
+{
+    snprintf(out, size, "%s/%s", dir, name);
+}
 
 static sk_result write_files(const sk_tissue_model *m, const char *dir, sk_error *err)
 {
@@ -19,7 +23,8 @@ static sk_result write_files(const sk_tissue_model *m, const char *dir, sk_error
     sk_result r = SK_OK;
     for (int c = 0; c < SK_TISSUE_POINT_CLASS_COUNT && r == SK_OK; c++) {
         sk_mesh cloud;
-        if (sk_tissue_model_points(m, (sk_tissue_point_class)c, &cloud, NULL) != SK_OK) continue; /* none */
+        if (sk_tissue_model_points(m, (sk_tissue_point_class)c, &cloud, NULL) != SK_OK)
+            continue; /* none */
         join(path, sizeof path, dir, class_file[c]);
         r = sk_mesh_write_ply(&cloud, path, err);
         sk_mesh_free(&cloud);
@@ -45,7 +50,8 @@ static sk_result write_files(const sk_tissue_model *m, const char *dir, sk_error
 
 /* The fat points within two spacings behind the cut plane (so the cut shows a band of
  * fat, not the fat hidden under the skin). */
-static sk_result fat_slice(const sk_mesh *fat, sk_vec3d n, double offset, double depth, sk_mesh *out, sk_error *err)
+static sk_result fat_slice(const sk_mesh *fat, sk_vec3d n, double offset, double depth,
+                           sk_mesh *out, sk_error *err)
 {
     sk__wedge keep_out = {{n, n}, {offset, offset}};
     sk_mesh near = {0};
@@ -62,7 +68,8 @@ static sk_result fat_slice(const sk_mesh *fat, sk_vec3d n, double offset, double
     for (size_t i = 0; i < fat->vertex_count; i++) {
         const float *p = fat->positions + 3 * i;
         double d = p[0] * n.x + p[1] * n.y + p[2] * n.z;
-        if (d <= offset && d > offset - depth) memcpy(near.positions + 3 * k++, p, 3 * sizeof(float));
+        if (d <= offset && d > offset - depth)
+            memcpy(near.positions + 3 * k++, p, 3 * sizeof(float));
     }
     r = sk__beads(&near, 0.32 * depth / 2.0, &keep_out, out, err);
     sk_mesh_free(&near);
@@ -71,8 +78,8 @@ static sk_result fat_slice(const sk_mesh *fat, sk_vec3d n, double offset, double
 
 sk_result sk__draw_layers(const sk_tissue_model *m, const char *png_path, int width, sk_error *err)
 {
-    sk_mesh skin = {0}, bones = {0}, muscles = {0}, fat = {0}, skin_cut = {0}, bones_cut = {0}, muscles_cut = {0},
-            beads = {0};
+    sk_mesh skin = {0}, bones = {0}, muscles = {0}, fat = {0}, skin_cut = {0}, bones_cut = {0},
+            muscles_cut = {0}, beads = {0};
     sk_result r = sk_tissue_model_rest_skin(m, &skin, err);
     if (r != SK_OK) return r;
     sk_vec3f lo, hi;
@@ -87,7 +94,8 @@ sk_result sk__draw_layers(const sk_tissue_model *m, const char *png_path, int wi
     sk__wedge cut = {{n, n}, {offset, offset}};
     r = sk_tissue_model_ellipsoids(m, SK_TISSUE_POINT_BONE, 48, &bones, err);
     bool has_muscles = m->desc.muscle_count > 0;
-    if (r == SK_OK && has_muscles) r = sk_tissue_model_ellipsoids(m, SK_TISSUE_POINT_MUSCLE, 48, &muscles, err);
+    if (r == SK_OK && has_muscles)
+        r = sk_tissue_model_ellipsoids(m, SK_TISSUE_POINT_MUSCLE, 48, &muscles, err);
     if (r == SK_OK) r = sk_tissue_model_points(m, SK_TISSUE_POINT_FAT, &fat, err);
     if (r == SK_OK) r = sk__mesh_cut(&skin, &cut, &skin_cut, err);
     if (r == SK_OK) r = sk__mesh_cut(&bones, &cut, &bones_cut, err);
@@ -96,7 +104,8 @@ sk_result sk__draw_layers(const sk_tissue_model *m, const char *png_path, int wi
     if (r == SK_OK) {
         sk_vec3d up = limb ? sk_v3d(0, 0, 1) : sk_v3d(0, 1, 0);
         sk_vec3d dir = limb ? sk_v3d(1.0, 0.15, 0.3) : sk_v3d(0.3, 0.15, 1.0);
-        double across = limb ? h.y - l.y : h.x - l.x, along = limb ? h.z - l.z + 0.3 * (h.x - l.x) : h.y - l.y;
+        double across = limb ? h.y - l.y : h.x - l.x,
+               along = limb ? h.z - l.z + 0.3 * (h.x - l.x) : h.y - l.y;
         if (limb) up = sk_v3d(0, 0, 1); /* the limb lies across the picture */
         double aspect = sk_clampd(across / along, 0.5, 3.0);
         int height = (int)(width / aspect + 0.5);
@@ -107,7 +116,8 @@ sk_result sk__draw_layers(const sk_tissue_model *m, const char *png_path, int wi
             {&skin_cut, {0.80f, 0.55f, 0.45f}, 0.05f},
             {&muscles_cut, {0.62f, 0.10f, 0.09f}, 0.15f},
         };
-        r = sk__render_items(items, has_muscles ? 4 : 3, &view, width, height, 4, true, png_path, err);
+        r = sk__render_items(items, has_muscles ? 4 : 3, &view, width, height, 4, true, png_path,
+                             err);
     }
     sk_mesh_free(&skin);
     sk_mesh_free(&bones);

@@ -41,10 +41,12 @@ static void put3(float *dst, sk_vec3d v)
     dst[2] = (float)v.z;
 }
 
-sk_result sk__render_items(const sk__render_item *items, int count, const sk__view *view, int width, int height,
-                           int samples, bool occlusion, const char *png_path, sk_error *err)
+sk_result sk__render_items(const sk__render_item *items, int count, const sk__view *view, int width,
+                           int height, int samples, bool occlusion, const char *png_path,
+                           sk_error *err)
 {
-    if (count > SK_RENDER_MAX_MATERIALS) return sk_fail(err, SK_ERROR_LIMIT, "too many layers to render");
+    if (count > SK_RENDER_MAX_MATERIALS)
+        return sk_fail(err, SK_ERROR_LIMIT, "too many layers to render");
     sk_render_scene_desc *d = calloc(1, sizeof *d);
     if (!d) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a render");
     d->image.width = width;
@@ -66,7 +68,8 @@ sk_result sk__render_items(const sk__render_item *items, int count, const sk__vi
     /* key light from the camera's upper left, a weaker fill from the right */
     sk_vec3d to_target = sk_v3d_normalize(sk_v3d_sub(view->target, view->position));
     sk_vec3d right = sk_v3d_normalize(sk_v3d_cross(to_target, view->up));
-    sk_vec3d key = sk_v3d_normalize(sk_v3d_sub(sk_v3d_add(to_target, sk_v3d_scale(right, 0.6)), sk_v3d_scale(view->up, 0.8)));
+    sk_vec3d key = sk_v3d_normalize(
+        sk_v3d_sub(sk_v3d_add(to_target, sk_v3d_scale(right, 0.6)), sk_v3d_scale(view->up, 0.8)));
     sk_vec3d fill = sk_v3d_normalize(sk_v3d_sub(to_target, sk_v3d_scale(right, 0.9)));
     put3(d->lights[0].direction, key);
     d->lights[0].intensity = 1.9f;
@@ -116,28 +119,33 @@ sk_result sk__mesh_cut(const sk_mesh *in, const sk__wedge *w, sk_mesh *out, sk_e
     memset(out, 0, sizeof *out);
     size_t keep = 0;
     for (size_t t = 0; t < in->triangle_count; t++) keep += !cut_away(in, t, w);
-    sk_result r = sk_mesh_create(out, in->vertex_count, keep ? keep : 1, in->normals ? SK_MESH_NORMALS : 0, err);
+    sk_result r = sk_mesh_create(out, in->vertex_count, keep ? keep : 1,
+                                 in->normals ? SK_MESH_NORMALS : 0, err);
     if (r != SK_OK) return r;
     memcpy(out->positions, in->positions, in->vertex_count * 3 * sizeof(float));
     if (in->normals) memcpy(out->normals, in->normals, in->vertex_count * 3 * sizeof(float));
     size_t n = 0;
     for (size_t t = 0; t < in->triangle_count; t++)
-        if (!cut_away(in, t, w)) memcpy(out->indices + 3 * n++, in->indices + 3 * t, 3 * sizeof(uint32_t));
+        if (!cut_away(in, t, w))
+            memcpy(out->indices + 3 * n++, in->indices + 3 * t, 3 * sizeof(uint32_t));
     if (n == 0) memset(out->indices, 0, 3 * sizeof(uint32_t));
     out->triangle_count = n ? n : 1;
     return SK_OK;
 }
 
 /* A small octahedron at every point of a cloud (for drawing points as beads). */
-sk_result sk__beads(const sk_mesh *cloud, double radius, const sk__wedge *w, sk_mesh *out, sk_error *err)
+sk_result sk__beads(const sk_mesh *cloud, double radius, const sk__wedge *w, sk_mesh *out,
+                    sk_error *err)
 {
     memset(out, 0, sizeof *out);
     size_t keep = 0;
-    for (size_t i = 0; i < cloud->vertex_count; i++) keep += !sk__in_wedge(w, cloud->positions + 3 * i);
+    for (size_t i = 0; i < cloud->vertex_count; i++)
+        keep += !sk__in_wedge(w, cloud->positions + 3 * i);
     if (keep == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no points outside the cut");
     sk_result r = sk_mesh_create(out, keep * 6, keep * 8, 0, err);
     if (r != SK_OK) return r;
-    static const float dir[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const float dir[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     static const uint32_t face[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                         {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
     size_t n = 0;
@@ -145,9 +153,12 @@ sk_result sk__beads(const sk_mesh *cloud, double radius, const sk__wedge *w, sk_
         const float *p = cloud->positions + 3 * i;
         if (sk__in_wedge(w, p)) continue;
         for (int k = 0; k < 6; k++)
-            for (int c = 0; c < 3; c++) out->positions[3 * (6 * n + (size_t)k) + (size_t)c] = p[c] + (float)radius * dir[k][c];
+            for (int c = 0; c < 3; c++)
+                out->positions[3 * (6 * n + (size_t)k) + (size_t)c] =
+                    p[c] + (float)radius * dir[k][c];
         for (int f = 0; f < 8; f++)
-            for (int c = 0; c < 3; c++) out->indices[3 * (8 * n + (size_t)f) + (size_t)c] = (uint32_t)(6 * n) + face[f][c];
+            for (int c = 0; c < 3; c++)
+                out->indices[3 * (8 * n + (size_t)f) + (size_t)c] = (uint32_t)(6 * n) + face[f][c];
         n++;
     }
     return sk_mesh_compute_normals(out, err);

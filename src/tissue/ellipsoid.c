@@ -9,7 +9,8 @@ static sk_vec3d to_local(const sk__ellipsoid *e, sk_vec3d p)
 {
     sk_vec3d d = sk_v3d_sub(p, e->centre);
     const sk_mat3d *A = &e->axes;
-    return sk_v3d(A->m[0][0] * d.x + A->m[1][0] * d.y + A->m[2][0] * d.z, A->m[0][1] * d.x + A->m[1][1] * d.y + A->m[2][1] * d.z,
+    return sk_v3d(A->m[0][0] * d.x + A->m[1][0] * d.y + A->m[2][0] * d.z,
+                  A->m[0][1] * d.x + A->m[1][1] * d.y + A->m[2][1] * d.z,
                   A->m[0][2] * d.x + A->m[1][2] * d.y + A->m[2][2] * d.z);
 }
 
@@ -24,7 +25,8 @@ void sk__ellipsoid_bounds(const sk__ellipsoid *e, sk_vec3d *lo, sk_vec3d *hi)
 {
     double h[3];
     for (int i = 0; i < 3; i++) {
-        double x = e->axes.m[i][0] * e->radii.x, y = e->axes.m[i][1] * e->radii.y, z = e->axes.m[i][2] * e->radii.z;
+        double x = e->axes.m[i][0] * e->radii.x, y = e->axes.m[i][1] * e->radii.y,
+               z = e->axes.m[i][2] * e->radii.z;
         h[i] = sqrt(x * x + y * y + z * z);
     }
     *lo = sk_v3d(e->centre.x - h[0], e->centre.y - h[1], e->centre.z - h[2]);

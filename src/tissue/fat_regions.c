@@ -8,18 +8,19 @@
 #include "tissue/tissue_internal.h"
 
 typedef struct region {
-    sk_vec3d a, u;        /* axis start and unit direction (rest world) */
+    sk_vec3d a, u; /* axis start and unit direction (rest world) */
     double length;
-    double from, to;      /* along the axis, fractions */
+    double from, to; /* along the axis, fractions */
     double thickness;
-    sk_vec3d side;        /* unit direction of the side, or zero for all around */
-    bool side_across;     /* side measured across the axis (else from the region centre) */
+    sk_vec3d side;    /* unit direction of the side, or zero for all around */
+    bool side_across; /* side measured across the axis (else from the region centre) */
     double cos_spread;
-    sk_vec3d lo, hi;      /* bounds of the candidates */
+    sk_vec3d lo, hi; /* bounds of the candidates */
 } region;
 
-static void make_region(const sk_tissue_fat_desc *f, const sk_tissue_character_desc *d, const sk__skeleton *s,
-                        const sk__bone *bones, const sk__muscle *muscles, region *r)
+static void make_region(const sk_tissue_fat_desc *f, const sk_tissue_character_desc *d,
+                        const sk__skeleton *s, const sk__bone *bones, const sk__muscle *muscles,
+                        region *r)
 {
     sk_vec3d a, b;
     double reach;
@@ -60,15 +61,16 @@ static bool in_region(const region *r, sk_vec3d p)
     double t = along / r->length;
     if (t < r->from || t > r->to) return false;
     if (sk_v3d_length(r->side) == 0.0 || r->cos_spread <= -1.0) return true;
-    sk_vec3d v = r->side_across ? sk_v3d_sub(ap, sk_v3d_scale(r->u, along))
-                                : sk_v3d_sub(ap, sk_v3d_scale(r->u, 0.5 * (r->from + r->to) * r->length));
+    sk_vec3d v = r->side_across
+                     ? sk_v3d_sub(ap, sk_v3d_scale(r->u, along))
+                     : sk_v3d_sub(ap, sk_v3d_scale(r->u, 0.5 * (r->from + r->to) * r->length));
     double len = sk_v3d_length(v);
     return len > 0.0 && sk_v3d_dot(v, r->side) >= r->cos_spread * len;
 }
 
-sk_result sk__fat_regions_mark(const sk_tissue_character_desc *d, const sk__skeleton *s, const sk__bone *bones,
-                               const sk__muscle *muscles, const sk__grid *g, const sk__label *labels, uint8_t *fat,
-                               sk_error *err)
+sk_result sk__fat_regions_mark(const sk_tissue_character_desc *d, const sk__skeleton *s,
+                               const sk__bone *bones, const sk__muscle *muscles, const sk__grid *g,
+                               const sk__label *labels, uint8_t *fat, sk_error *err)
 {
     for (int k = 0; k < d->fat_count; k++) {
         region r;
@@ -101,8 +103,10 @@ sk_result sk__fat_regions_mark(const sk_tissue_character_desc *d, const sk__skel
             for (int y = lo[1]; y <= hi[1]; y++)
                 for (int x = lo[0]; x <= hi[0]; x++) {
                     size_t i = sk__grid_index(g, x, y, z);
-                    float dist = distance[((size_t)(z - blo[2]) * (size_t)bn[1] + (size_t)(y - blo[1])) * (size_t)bn[0] +
-                                          (size_t)(x - blo[0])];
+                    float dist =
+                        distance[((size_t)(z - blo[2]) * (size_t)bn[1] + (size_t)(y - blo[1])) *
+                                     (size_t)bn[0] +
+                                 (size_t)(x - blo[0])];
                     if (fat[i] || dist <= 0.0f || dist > r.thickness) continue;
                     if (in_region(&r, sk__grid_position(g, i))) fat[i] = 1;
                 }

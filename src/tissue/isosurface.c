@@ -49,7 +49,8 @@ static int components(int mask, int *label)
 
 static size_t cell_of(const sk__grid *g, int x, int y, int z) { return sk__grid_index(g, x, y, z); }
 
-sk_result sk__cell_rows_make(const sk__grid *g, const uint8_t *inside, sk__cell_rows *rows, sk_error *err)
+sk_result sk__cell_rows_make(const sk__grid *g, const uint8_t *inside, sk__cell_rows *rows,
+                             sk_error *err)
 {
     size_t n = (size_t)g->n[1] * (size_t)g->n[2];
     rows->lo = malloc(n * sizeof *rows->lo);
@@ -80,7 +81,8 @@ void sk__cell_rows_free(sk__cell_rows *rows)
     rows->lo = rows->hi = NULL;
 }
 
-bool sk__cell_rows_corners(const sk__grid *g, const sk__cell_rows *rows, int y, int z, int *lo, int *hi)
+bool sk__cell_rows_corners(const sk__grid *g, const sk__cell_rows *rows, int y, int z, int *lo,
+                           int *hi)
 {
     *lo = g->n[0];
     *hi = -1;
@@ -99,7 +101,8 @@ static int vertex_mask(const sk__grid *g, const uint8_t *inside, int x, int y, i
 {
     int m = 0;
     for (int b = 0; b < 8; b++)
-        if (inside[cell_of(g, x - 1 + (b & 1), y - 1 + (b >> 1 & 1), z - 1 + (b >> 2 & 1))]) m |= 1 << b;
+        if (inside[cell_of(g, x - 1 + (b & 1), y - 1 + (b >> 1 & 1), z - 1 + (b >> 2 & 1))])
+            m |= 1 << b;
     return m;
 }
 
@@ -135,7 +138,8 @@ static int fix_vertex(const sk__grid *g, const uint8_t *ok, uint8_t *inside, int
                     if (m >> (i ^ (1 << b)) & 1) remove |= 1 << (i ^ (1 << b));
     }
     for (int b = 0; b < 8; b++)
-        if (remove >> b & 1) inside[cell_of(g, x - 1 + (b & 1), y - 1 + (b >> 1 & 1), z - 1 + (b >> 2 & 1))] = 0;
+        if (remove >> b & 1)
+            inside[cell_of(g, x - 1 + (b & 1), y - 1 + (b >> 1 & 1), z - 1 + (b >> 2 & 1))] = 0;
     return remove;
 }
 
@@ -160,7 +164,8 @@ static bool push(worklist *w, size_t vertex)
 /* Removes cells until every vertex with all 8 cells in the grid is manifold: the vertices
  * found bad in one parallel scan are fixed in index order, and the corners of every
  * removed cell are checked again, so the result does not depend on the thread count. */
-static sk_result make_manifold(const sk__grid *g, const uint8_t *ok, uint8_t *inside, size_t *removed, sk_error *err)
+static sk_result make_manifold(const sk__grid *g, const uint8_t *ok, uint8_t *inside,
+                               size_t *removed, sk_error *err)
 {
     int nz = g->n[2];
     uint8_t *bad_slice = calloc((size_t)nz, 1);
@@ -187,7 +192,8 @@ static sk_result make_manifold(const sk__grid *g, const uint8_t *ok, uint8_t *in
     for (int z = 1; z < nz - 1 && fine; z++)
         for (int y = 1; bad_slice[z] && y < g->n[1] - 1 && fine; y++)
             for (int x = 1; x < g->n[0] - 1 && fine; x++)
-                if (!ok[vertex_mask(g, inside, x, y, z)]) fine = push(&w, sk__grid_index(g, x, y, z));
+                if (!ok[vertex_mask(g, inside, x, y, z)])
+                    fine = push(&w, sk__grid_index(g, x, y, z));
     sk__cell_rows_free(&rows);
     *removed = 0;
     while (fine && w.head < w.count) {
@@ -201,8 +207,11 @@ static sk_result make_manifold(const sk__grid *g, const uint8_t *ok, uint8_t *in
             int cx = c[0] - 1 + (b & 1), cy = c[1] - 1 + (b >> 1 & 1), cz = c[2] - 1 + (b >> 2 & 1);
             for (int k = 0; k < 8 && fine; k++) {
                 int vx = cx + (k & 1), vy = cy + (k >> 1 & 1), vz = cz + (k >> 2 & 1);
-                if (vx < 1 || vy < 1 || vz < 1 || vx > g->n[0] - 2 || vy > g->n[1] - 2 || vz > g->n[2] - 2) continue;
-                if (!ok[vertex_mask(g, inside, vx, vy, vz)]) fine = push(&w, sk__grid_index(g, vx, vy, vz));
+                if (vx < 1 || vy < 1 || vz < 1 || vx > g->n[0] - 2 || vy > g->n[1] - 2 ||
+                    vz > g->n[2] - 2)
+                    continue;
+                if (!ok[vertex_mask(g, inside, vx, vy, vz)])
+                    fine = push(&w, sk__grid_index(g, vx, vy, vz));
             }
         }
     }
@@ -213,7 +222,8 @@ static sk_result make_manifold(const sk__grid *g, const uint8_t *ok, uint8_t *in
 }
 
 /* Keeps the face-connected groups of inside cells that reach a tissue point. */
-static sk_result keep_tissue_components(const sk__grid *g, const sk__label *labels, uint8_t *inside, sk_error *err)
+static sk_result keep_tissue_components(const sk__grid *g, const sk__label *labels, uint8_t *inside,
+                                        sk_error *err)
 {
     size_t *queue = malloc(g->count * sizeof *queue);
     uint8_t *seen = calloc(g->count, 1);
@@ -223,14 +233,19 @@ static sk_result keep_tissue_components(const sk__grid *g, const sk__label *labe
         return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the skin cells");
     }
     size_t head = 0, tail = 0;
-    const ptrdiff_t step[6] = {1, -1, g->n[0], -(ptrdiff_t)g->n[0], (ptrdiff_t)g->n[0] * g->n[1],
+    const ptrdiff_t step[6] = {1,
+                               -1,
+                               g->n[0],
+                               -(ptrdiff_t)g->n[0],
+                               (ptrdiff_t)g->n[0] * g->n[1],
                                -(ptrdiff_t)g->n[0] * g->n[1]};
     for (size_t c = 0; c < g->count; c++) {
         if (!inside[c]) continue;
         bool tissue = false;
         for (int b = 0; b < 8 && !tissue; b++)
-            tissue = labels[c + (size_t)(b & 1) + (size_t)(b >> 1 & 1) * (size_t)g->n[0] +
-                            (size_t)(b >> 2 & 1) * (size_t)g->n[0] * (size_t)g->n[1]] != SK__LABEL_NONE;
+            tissue =
+                labels[c + (size_t)(b & 1) + (size_t)(b >> 1 & 1) * (size_t)g->n[0] +
+                       (size_t)(b >> 2 & 1) * (size_t)g->n[0] * (size_t)g->n[1]] != SK__LABEL_NONE;
         if (tissue) {
             seen[c] = 1;
             queue[tail++] = c;
@@ -251,8 +266,8 @@ static sk_result keep_tissue_components(const sk__grid *g, const sk__label *labe
     return SK_OK;
 }
 
-sk_result sk__skin_cells(const sk__grid *g, const uint8_t *is_point, const sk__label *labels, uint8_t *inside,
-                         size_t *removed, sk_error *err)
+sk_result sk__skin_cells(const sk__grid *g, const uint8_t *is_point, const sk__label *labels,
+                         uint8_t *inside, size_t *removed, sk_error *err)
 {
     uint8_t ok[256];
     make_table(ok);
@@ -318,8 +333,8 @@ static size_t cell_faces(const sk__grid *g, const uint8_t *inside, int x, int y,
     return n;
 }
 
-sk_result sk__skin_faces(const sk__grid *g, const uint8_t *inside, size_t **out_corners, size_t *out_triangles,
-                         sk_error *err)
+sk_result sk__skin_faces(const sk__grid *g, const uint8_t *inside, size_t **out_corners,
+                         size_t *out_triangles, sk_error *err)
 {
     int nz = g->n[2];
     size_t *start = calloc((size_t)nz + 1, sizeof *start);
@@ -335,7 +350,8 @@ sk_result sk__skin_faces(const sk__grid *g, const uint8_t *inside, size_t **out_
     for (int z = 0; z < nz; z++) {
         size_t n = 0;
         for (int y = 0; y < g->n[1]; y++)
-            for (int x = rows.lo[ROW(y, z)]; x <= rows.hi[ROW(y, z)]; x++) n += cell_faces(g, inside, x, y, z, NULL);
+            for (int x = rows.lo[ROW(y, z)]; x <= rows.hi[ROW(y, z)]; x++)
+                n += cell_faces(g, inside, x, y, z, NULL);
         start[z + 1] = n;
     }
     for (int z = 0; z < nz; z++) start[z + 1] += start[z];
@@ -350,7 +366,8 @@ sk_result sk__skin_faces(const sk__grid *g, const uint8_t *inside, size_t **out_
     for (int z = 0; z < nz; z++) {
         size_t n = start[z];
         for (int y = 0; y < g->n[1]; y++)
-            for (int x = rows.lo[ROW(y, z)]; x <= rows.hi[ROW(y, z)]; x++) n += cell_faces(g, inside, x, y, z, corners + 3 * n);
+            for (int x = rows.lo[ROW(y, z)]; x <= rows.hi[ROW(y, z)]; x++)
+                n += cell_faces(g, inside, x, y, z, corners + 3 * n);
     }
 #undef ROW
     sk__cell_rows_free(&rows);

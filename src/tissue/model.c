@@ -22,15 +22,19 @@ static void rest_shapes(const sk_tissue_model *m, sk__tissue_shapes *t)
         for (int k = 0; k < 3; k++)
             t->bone[b][k] = sk__ellipsoid_transform(&m->bones[b].part[k], sk_m3d_identity(),
                                                     m->skeleton.rest[m->bones[b].joint]);
-    for (int i = 0; i < t->muscle_count; i++) sk__muscle_shape(&m->muscles[i], &rest, &t->muscle[i]);
+    for (int i = 0; i < t->muscle_count; i++)
+        sk__muscle_shape(&m->muscles[i], &rest, &t->muscle[i]);
 }
 
-static sk_result make_grid(const sk_tissue_model *m, const sk__tissue_shapes *t, sk__grid *g, sk_error *err)
+static sk_result make_grid(const sk_tissue_model *m, const sk__tissue_shapes *t, sk__grid *g,
+                           sk_error *err)
 {
     const sk_tissue_skin_desc *s = &m->desc.skin;
-    sk_vec3d lo = sk_v3d(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi = sk_v3d(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
+    sk_vec3d lo = sk_v3d(HUGE_VAL, HUGE_VAL, HUGE_VAL),
+             hi = sk_v3d(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
     for (int i = 0; i < t->bone_count * 3 + t->muscle_count; i++) {
-        const sk__ellipsoid *e = i < t->bone_count * 3 ? &t->bone[i / 3][i % 3] : &t->muscle[i - t->bone_count * 3];
+        const sk__ellipsoid *e =
+            i < t->bone_count * 3 ? &t->bone[i / 3][i % 3] : &t->muscle[i - t->bone_count * 3];
         sk_vec3d a, b;
         sk__ellipsoid_bounds(e, &a, &b);
         lo = sk_v3d(fmin(lo.x, a.x), fmin(lo.y, a.y), fmin(lo.z, a.z));
@@ -46,12 +50,14 @@ static sk_result make_grid(const sk_tissue_model *m, const sk__tissue_shapes *t,
         double n = ceil(ext[k] / g->spacing) + 1;
         if (n > 1e6) n = 1e6;
         g->n[k] = (int)n;
-        count = count * (size_t)g->n[k] > MAX_GRID_POINTS ? MAX_GRID_POINTS + 1 : count * (size_t)g->n[k];
+        count = count * (size_t)g->n[k] > MAX_GRID_POINTS ? MAX_GRID_POINTS + 1
+                                                          : count * (size_t)g->n[k];
     }
     if (count > MAX_GRID_POINTS)
-        return sk_fail(err, SK_ERROR_LIMIT,
-                       "skin.spacing_mm = %g makes a grid of %d x %d x %d points, more than 2^28: raise it",
-                       s->spacing_mm, g->n[0], g->n[1], g->n[2]);
+        return sk_fail(
+            err, SK_ERROR_LIMIT,
+            "skin.spacing_mm = %g makes a grid of %d x %d x %d points, more than 2^28: raise it",
+            s->spacing_mm, g->n[0], g->n[1], g->n[2]);
     g->count = count;
     /* centre the tissue in the grid */
     g->origin = sk_v3d(0.5 * (lo.x + hi.x) - 0.5 * g->spacing * (g->n[0] - 1),
@@ -103,12 +109,15 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
         s.labels = malloc(g->count * sizeof *s.labels);
         s.seed = calloc(g->count, 1);
         s.value = malloc(g->count * sizeof *s.value);
-        if (!s.labels || !s.seed || !s.value) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a grid of %zu points", g->count);
+        if (!s.labels || !s.seed || !s.value)
+            r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for a grid of %zu points",
+                        g->count);
     }
     sk_progress_report(progress, 0.05);
     if (r == SK_OK) r = sk__voxelise(g, shapes, s.labels, err);
     m->stats.seconds_voxelise = lap(&t0);
-    if (r == SK_OK) r = sk__fat_regions_mark(d, &m->skeleton, m->bones, m->muscles, g, s.labels, s.seed, err);
+    if (r == SK_OK)
+        r = sk__fat_regions_mark(d, &m->skeleton, m->bones, m->muscles, g, s.labels, s.seed, err);
     m->stats.seconds_fat = lap(&t0);
     sk_progress_report(progress, 0.2);
     size_t tissue = 0;
@@ -134,7 +143,8 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
     }
     if (r == SK_OK) r = sk__skin_faces(g, s.inside, &s.corners, &triangles, err);
     if (r == SK_OK && triangles == 0)
-        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the character has no skin: every grid point is below skin.threshold");
+        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                    "the character has no skin: every grid point is below skin.threshold");
     m->stats.seconds_extract = lap(&t0);
     sk_progress_report(progress, 0.7);
     if (r == SK_OK) {
@@ -148,10 +158,13 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
         m->local = malloc(m->point_count * sizeof *m->local);
         m->carrier_muscle = malloc(m->point_count * sizeof *m->carrier_muscle);
         m->near_muscles = calloc(m->point_count, sizeof *m->near_muscles);
-        if (!m->rest || !m->mass || !m->owner || !m->local || !m->carrier_muscle || !m->near_muscles) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
+        if (!m->rest || !m->mass || !m->owner || !m->local || !m->carrier_muscle ||
+            !m->near_muscles)
+            r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     }
     if (r == SK_OK) {
-        for (size_t p = 0; p < m->point_count; p++) m->rest[p] = sk__grid_position(g, m->grid_of[p]);
+        for (size_t p = 0; p < m->point_count; p++)
+            m->rest[p] = sk__grid_position(g, m->grid_of[p]);
         r = sk__skin_smooth(m, shapes, d->skin.smooth_iterations, err);
     }
     m->stats.seconds_classify = lap(&t0);
@@ -184,8 +197,9 @@ static sk_result build(sk_tissue_model *m, const sk_progress *progress, sk_error
     return r;
 }
 
-sk_result sk_tissue_model_build(const sk_tissue_character_desc *desc, const sk_tissue_build_options *options,
-                                sk_tissue_model **out, sk_error *err)
+sk_result sk_tissue_model_build(const sk_tissue_character_desc *desc,
+                                const sk_tissue_build_options *options, sk_tissue_model **out,
+                                sk_error *err)
 {
     *out = NULL;
     if (!desc) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "character desc is NULL");
@@ -205,7 +219,8 @@ sk_result sk_tissue_model_build(const sk_tissue_character_desc *desc, const sk_t
     return SK_OK;
 }
 
-sk_result sk_tissue_model_memory(const sk_tissue_character_desc *desc, double *bytes, int grid[3], sk_error *err)
+sk_result sk_tissue_model_memory(const sk_tissue_character_desc *desc, double *bytes, int grid[3],
+                                 sk_error *err)
 {
     *bytes = 0;
     if (!desc) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "character desc is NULL");
@@ -271,18 +286,31 @@ sk_result sk_tissue_model_rest_skin(const sk_tissue_model *m, sk_mesh *out, sk_e
     return r;
 }
 
-sk_result sk_tissue_model_points(const sk_tissue_model *m, sk_tissue_point_class cls, sk_mesh *out, sk_error *err)
+sk_result sk_tissue_model_points(const sk_tissue_model *m, sk_tissue_point_class cls, sk_mesh *out,
+                                 sk_error *err)
 {
     memset(out, 0, sizeof *out);
     size_t first = 0, count = 0;
     switch (cls) {
-    case SK_TISSUE_POINT_SKIN: first = 0, count = m->skin_count; break;
-    case SK_TISSUE_POINT_FAT: first = m->skin_count, count = m->fat_count; break;
-    case SK_TISSUE_POINT_MUSCLE: first = m->skin_count + m->fat_count, count = m->muscle_count; break;
-    case SK_TISSUE_POINT_BONE: first = m->skin_count + m->fat_count + m->muscle_count, count = m->bone_count; break;
-    default: return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "point class %d is not one of 0..3", (int)cls);
+    case SK_TISSUE_POINT_SKIN:
+        first = 0, count = m->skin_count;
+        break;
+    case SK_TISSUE_POINT_FAT:
+        first = m->skin_count, count = m->fat_count;
+        break;
+    case SK_TISSUE_POINT_MUSCLE:
+        first = m->skin_count + m->fat_count, count = m->muscle_count;
+        break;
+    case SK_TISSUE_POINT_BONE:
+        first = m->skin_count + m->fat_count + m->muscle_count, count = m->bone_count;
+        break;
+    default:
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "point class %d is not one of 0..3",
+                       (int)cls);
     }
-    if (count == 0) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the model has no points of class %d", (int)cls);
+    if (count == 0)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the model has no points of class %d",
+                       (int)cls);
     sk_result r = sk_mesh_create(out, count, 0, 0, err);
     float *owner = NULL;
     if (r == SK_OK) r = sk_mesh_add_attribute(out, "owner", 1, &owner, err);
@@ -310,7 +338,8 @@ static void ellipsoid_mesh(const sk__ellipsoid *e, int segments, sk_mesh *out, s
         double th = SK_PI * i / rings;
         for (int j = 0; j < segments; j++) {
             double ph = 2.0 * SK_PI * j / segments;
-            sk_vec3d l = sk_v3d(e->radii.x * sin(th) * cos(ph), e->radii.y * sin(th) * sin(ph), e->radii.z * cos(th));
+            sk_vec3d l = sk_v3d(e->radii.x * sin(th) * cos(ph), e->radii.y * sin(th) * sin(ph),
+                                e->radii.z * cos(th));
             sk_vec3d p = sk_v3d_add(e->centre, sk_m3d_apply(e->axes, l));
             out->positions[3 * v] = (float)p.x;
             out->positions[3 * v + 1] = (float)p.y;
@@ -321,7 +350,8 @@ static void ellipsoid_mesh(const sk__ellipsoid *e, int segments, sk_mesh *out, s
     size_t t = t0;
     for (int i = 0; i < rings; i++)
         for (int j = 0; j < segments; j++) {
-            uint32_t a = (uint32_t)(v0 + (size_t)i * segments + j), b = (uint32_t)(v0 + (size_t)i * segments + (j + 1) % segments);
+            uint32_t a = (uint32_t)(v0 + (size_t)i * segments + j),
+                     b = (uint32_t)(v0 + (size_t)i * segments + (j + 1) % segments);
             uint32_t c = a + (uint32_t)segments, d = b + (uint32_t)segments;
             uint32_t tri[6] = {a, c, b, b, c, d};
             memcpy(out->indices + 3 * t, tri, sizeof tri);
@@ -329,14 +359,16 @@ static void ellipsoid_mesh(const sk__ellipsoid *e, int segments, sk_mesh *out, s
         }
 }
 
-sk_result sk_tissue_model_ellipsoids(const sk_tissue_model *m, sk_tissue_point_class cls, int segments, sk_mesh *out,
-                                     sk_error *err)
+sk_result sk_tissue_model_ellipsoids(const sk_tissue_model *m, sk_tissue_point_class cls,
+                                     int segments, sk_mesh *out, sk_error *err)
 {
     memset(out, 0, sizeof *out);
     if (cls != SK_TISSUE_POINT_BONE && cls != SK_TISSUE_POINT_MUSCLE)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "ellipsoids are drawn for bones and muscles only");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "ellipsoids are drawn for bones and muscles only");
     if (segments < 8 || segments > 256)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "segments = %d is out of range [8, 256]", segments);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "segments = %d is out of range [8, 256]",
+                       segments);
     segments &= ~1;
     sk__tissue_shapes *t = malloc(sizeof *t);
     if (!t) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
@@ -346,10 +378,12 @@ sk_result sk_tissue_model_ellipsoids(const sk_tissue_model *m, sk_tissue_point_c
         free(t);
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the character has no muscles");
     }
-    size_t per_v = (size_t)(segments / 2 + 1) * (size_t)segments, per_t = (size_t)(segments / 2) * (size_t)segments * 2;
+    size_t per_v = (size_t)(segments / 2 + 1) * (size_t)segments,
+           per_t = (size_t)(segments / 2) * (size_t)segments * 2;
     sk_result r = sk_mesh_create(out, per_v * (size_t)count, per_t * (size_t)count, 0, err);
     for (int i = 0; r == SK_OK && i < count; i++) {
-        const sk__ellipsoid *e = cls == SK_TISSUE_POINT_BONE ? &t->bone[i / 3][i % 3] : &t->muscle[i];
+        const sk__ellipsoid *e =
+            cls == SK_TISSUE_POINT_BONE ? &t->bone[i / 3][i % 3] : &t->muscle[i];
         ellipsoid_mesh(e, segments, out, per_v * (size_t)i, per_t * (size_t)i);
     }
     free(t);

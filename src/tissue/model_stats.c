@@ -11,27 +11,32 @@ typedef struct stat_key {
     size_t offset; /* of a size_t (counts) or a double (seconds) in sk_tissue_model_stats */
 } stat_key;
 
-#define STAT(k, field) {k, offsetof(sk_tissue_model_stats, field)}
+#define STAT(k, field)                                                                             \
+    {                                                                                              \
+        k, offsetof(sk_tissue_model_stats, field)                                                  \
+    }
 static const stat_key point_keys[] = {STAT("skin", skin_points), STAT("fat", fat_points),
                                       STAT("muscle", muscle_points), STAT("bone", bone_points),
                                       STAT("total", points)};
-static const stat_key spring_keys[] = {STAT("skin", skin_springs), STAT("skin_fat", skin_fat_springs),
-                                       STAT("fat", fat_springs), STAT("fat_tissue", anchor_springs),
-                                       STAT("total", springs)};
-static const stat_key second_keys[] = {STAT("voxelise", seconds_voxelise), STAT("fat_regions", seconds_fat),
-                                       STAT("dilate", seconds_dilate), STAT("extract", seconds_extract),
-                                       STAT("classify", seconds_classify), STAT("springs", seconds_springs),
-                                       STAT("total", seconds_total)};
+static const stat_key spring_keys[] = {STAT("skin", skin_springs),
+                                       STAT("skin_fat", skin_fat_springs), STAT("fat", fat_springs),
+                                       STAT("fat_tissue", anchor_springs), STAT("total", springs)};
+static const stat_key second_keys[] = {
+    STAT("voxelise", seconds_voxelise), STAT("fat_regions", seconds_fat),
+    STAT("dilate", seconds_dilate),     STAT("extract", seconds_extract),
+    STAT("classify", seconds_classify), STAT("springs", seconds_springs),
+    STAT("total", seconds_total)};
 #define COUNT_OF(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
-static void add_group(cJSON *o, const char *name, const sk_tissue_model_stats *s, const stat_key *keys, int n,
-                      bool counts)
+static void add_group(cJSON *o, const char *name, const sk_tissue_model_stats *s,
+                      const stat_key *keys, int n, bool counts)
 {
     cJSON *group = cJSON_AddObjectToObject(o, name);
     const unsigned char *base = (const unsigned char *)s;
     for (int i = 0; i < n; i++) {
         const void *v = base + keys[i].offset;
-        cJSON_AddNumberToObject(group, keys[i].key, counts ? (double)*(const size_t *)v : *(const double *)v);
+        cJSON_AddNumberToObject(group, keys[i].key,
+                                counts ? (double)*(const size_t *)v : *(const double *)v);
     }
 }
 

@@ -12,13 +12,13 @@
 
 struct sk_tissue_bvh_motion {
     const sk_tissue_model *model;
-    int joints;               /* character joints */
+    int joints;                      /* character joints */
     int bound[SK_TISSUE_MAX_JOINTS]; /* motion joint of each character joint, or -1 */
     int bound_count;
     int frames;
     double frame_time;
-    sk_quatd *world;          /* frames x joints: world rotation of bound joints */
-    sk_vec3d *root;           /* frames: root position, mm */
+    sk_quatd *world; /* frames x joints: world rotation of bound joints */
+    sk_vec3d *root;  /* frames: root position, mm */
     bool moves_root;
 };
 
@@ -44,14 +44,15 @@ static int bind_joint(const sk_tissue_character_desc *d, const sk_bvh *bvh, int 
     return -1;
 }
 
-sk_result sk_tissue_bvh_motion_create(const sk_tissue_model *model, const sk_bvh *bvh, double unit_mm,
-                                      sk_tissue_bvh_motion **out, sk_error *err)
+sk_result sk_tissue_bvh_motion_create(const sk_tissue_model *model, const sk_bvh *bvh,
+                                      double unit_mm, sk_tissue_bvh_motion **out, sk_error *err)
 {
     *out = NULL;
     if (!(unit_mm >= 0.0) || unit_mm > 1e4)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "motion unit %g mm is out of range [0, 1e4] (0 = the character's)",
-                       unit_mm);
-    if (bvh->frame_count < 1) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the motion has no frames");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "motion unit %g mm is out of range [0, 1e4] (0 = the character's)", unit_mm);
+    if (bvh->frame_count < 1)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "the motion has no frames");
     const sk_tissue_character_desc *d = &model->desc;
     double unit = unit_mm > 0 ? unit_mm : d->motion_unit_mm;
     sk_tissue_bvh_motion *m = calloc(1, sizeof *m);
@@ -65,7 +66,8 @@ sk_result sk_tissue_bvh_motion_create(const sk_tissue_model *model, const sk_bvh
     if (m->bound_count == 0) {
         free(m);
         return sk_fail(err, SK_ERROR_NOT_FOUND,
-                       "no joint of the motion drives the character \"%s\" (its root is \"%s\"; bind other names "
+                       "no joint of the motion drives the character \"%s\" (its root is \"%s\"; "
+                       "bind other names "
                        "with the character's joint_map)",
                        d->name, d->joints[model->skeleton.root].name);
     }
@@ -79,7 +81,8 @@ sk_result sk_tissue_bvh_motion_create(const sk_tissue_model *model, const sk_bvh
         free(rot);
         free(pos);
         sk_tissue_bvh_motion_destroy(m);
-        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d frames of motion", bvh->frame_count);
+        return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %d frames of motion",
+                       bvh->frame_count);
     }
     int root = model->skeleton.root, broot = m->bound[root];
     m->moves_root = broot >= 0;
@@ -88,7 +91,8 @@ sk_result sk_tissue_bvh_motion_create(const sk_tissue_model *model, const sk_bvh
         for (int j = 0; j < m->joints; j++) {
             sk_quatd q = m->bound[j] >= 0 ? sk_m3d_to_qd(rot[m->bound[j]]) : sk_qd_identity();
             /* the same hemisphere as the previous frame, so interpolation takes the short way */
-            if (f > 0 && sk_qd_dot(q, m->world[(size_t)(f - 1) * (size_t)m->joints + (size_t)j]) < 0.0)
+            if (f > 0 &&
+                sk_qd_dot(q, m->world[(size_t)(f - 1) * (size_t)m->joints + (size_t)j]) < 0.0)
                 q = sk_qd(-q.w, -q.x, -q.y, -q.z);
             m->world[(size_t)f * (size_t)m->joints + (size_t)j] = q;
         }
@@ -128,13 +132,16 @@ static void sample(void *user, double seconds, sk_quatd *local, sk_vec3d *root_m
         t = f - f0;
     }
     int f1 = f0 + 1 < m->frames ? f0 + 1 : f0;
-    const sk_quatd *a = m->world + (size_t)f0 * (size_t)m->joints, *b = m->world + (size_t)f1 * (size_t)m->joints;
+    const sk_quatd *a = m->world + (size_t)f0 * (size_t)m->joints,
+                   *b = m->world + (size_t)f1 * (size_t)m->joints;
     sk_quatd world[SK_TISSUE_MAX_JOINTS];
     /* unbound joints turn with their parent */
     for (int k = 0; k < s->count; k++) {
         int j = s->order[k], p = s->parent[j];
-        if (m->bound[j] >= 0) world[j] = t > 0.0 ? sk_qd_slerp(a[j], b[j], t) : a[j];
-        else world[j] = p >= 0 ? world[p] : sk_qd_identity();
+        if (m->bound[j] >= 0)
+            world[j] = t > 0.0 ? sk_qd_slerp(a[j], b[j], t) : a[j];
+        else
+            world[j] = p >= 0 ? world[p] : sk_qd_identity();
         local[j] = p >= 0 ? sk_qd_normalize(sk_qd_mul(sk_qd_conj(world[p]), world[j])) : world[j];
     }
     sk_vec3d r0 = m->root[f0], r1 = m->root[f1];

@@ -48,8 +48,8 @@ static int add(builder *bd, const char *name, int parent, double x, double y, do
 {
     int j = -1;
     if (bd->r == SK_OK)
-        bd->r = sk_bvh_add_joint(bd->b, name, parent, sk_v3d(x, y, z), end ? NULL : (parent < 0 ? "xyzZYX" : "ZYX"), end,
-                                 &j, bd->err);
+        bd->r = sk_bvh_add_joint(bd->b, name, parent, sk_v3d(x, y, z),
+                                 end ? NULL : (parent < 0 ? "xyzZYX" : "ZYX"), end, &j, bd->err);
     return j;
 }
 
@@ -98,8 +98,8 @@ static sk_result make_curl(sk_bvh *b, sk_error *err)
         double t = (double)f / FPS, a = curl_angle(t);
         /* the shoulder steadies the arm a little forward while it curls */
         set_root(b, f, arm, 0, 0, 0, rx(-0.08 * a));
-        set(b, f, fore, rx(-a));            /* flexion brings the forearm forward (+Z) */
-        set(b, f, hand, rx(-0.15 * a));     /* the wrist follows a little */
+        set(b, f, fore, rx(-a));        /* flexion brings the forearm forward (+Z) */
+        set(b, f, hand, rx(-0.15 * a)); /* the wrist follows a little */
     }
     return SK_OK;
 }
@@ -168,12 +168,12 @@ static sk_result make_body(sk_bvh *b, body_joints *j, sk_error *err)
 /* A body pose in anatomical angles (degrees): flexion positive forward for hips,
  * shoulders (arm swing from hanging) and the trunk; knees and elbows bend positive. */
 typedef struct body_pose {
-    double root[3];                 /* cm */
-    double trunk, neck;             /* lean forward */
+    double root[3];     /* cm */
+    double trunk, neck; /* lean forward */
     double hip[2], knee[2], ankle[2];
-    double arm_down[2];             /* from the T-pose towards hanging (90 = hanging) */
-    double swing[2], elbow[2];      /* arm swing forward, elbow flexion */
-    double pelvis_turn;             /* about Y */
+    double arm_down[2];        /* from the T-pose towards hanging (90 = hanging) */
+    double swing[2], elbow[2]; /* arm swing forward, elbow flexion */
+    double pelvis_turn;        /* about Y */
 } body_pose;
 
 static void set_body(sk_bvh *b, int f, const body_joints *j, const body_pose *p)
@@ -232,7 +232,8 @@ static void crouch(body_pose *p, double c, double arms_back)
     p->neck = -20 * c;
     /* a thigh of 42 cm and a shank of 40 cm bent this way lower the hips */
     double thigh = 42, shank = 40;
-    p->root[1] = 94 - (thigh + shank) + thigh * cos(hip * SK_DEG_TO_RAD) + shank * cos((knee - hip) * SK_DEG_TO_RAD);
+    p->root[1] = 94 - (thigh + shank) + thigh * cos(hip * SK_DEG_TO_RAD) +
+                 shank * cos((knee - hip) * SK_DEG_TO_RAD);
 }
 
 static sk_result make_jump(sk_bvh *b, sk_error *err)
@@ -243,7 +244,7 @@ static sk_result make_jump(sk_bvh *b, sk_error *err)
     if (r == SK_OK) r = sk_bvh_alloc_motion(b, frames, 1.0 / FPS, err);
     if (r != SK_OK) return r;
     const double g = 981.0, takeoff = 1.05, flight = 0.5; /* cm/s^2, s */
-    double v0 = 0.5 * g * flight;                        /* up at take-off, cm/s */
+    double v0 = 0.5 * g * flight;                         /* up at take-off, cm/s */
     for (int f = 0; f < frames; f++) {
         double t = (double)f / FPS;
         body_pose p = standing();
@@ -291,7 +292,8 @@ static sk_result make_walk(sk_bvh *b, sk_error *err)
         double t = (double)f / FPS;
         body_pose p = standing();
         double tw = t < walk_end ? t : walk_end;
-        double amp = ramp(t, 0.0, 0.4) * (1.0 - ramp(t, walk_end - 0.3, walk_end)); /* start and stop */
+        double amp =
+            ramp(t, 0.0, 0.4) * (1.0 - ramp(t, walk_end - 0.3, walk_end)); /* start and stop */
         double ph = 2.0 * SK_PI * tw / cycle;
         for (int s = 0; s < 2; s++) {
             double q = ph + (s == 0 ? 0.0 : SK_PI);
@@ -323,10 +325,18 @@ sk_result sk_tissue_make_motion(sk_tissue_motion_kind kind, sk_bvh *out, sk_erro
     sk_bvh_init(out);
     sk_result r;
     switch (kind) {
-    case SK_TISSUE_MOTION_CURL: r = make_curl(out, err); break;
-    case SK_TISSUE_MOTION_JUMP: r = make_jump(out, err); break;
-    case SK_TISSUE_MOTION_WALK: r = make_walk(out, err); break;
-    default: return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "motion kind %d is not curl, jump or walk", (int)kind);
+    case SK_TISSUE_MOTION_CURL:
+        r = make_curl(out, err);
+        break;
+    case SK_TISSUE_MOTION_JUMP:
+        r = make_jump(out, err);
+        break;
+    case SK_TISSUE_MOTION_WALK:
+        r = make_walk(out, err);
+        break;
+    default:
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "motion kind %d is not curl, jump or walk",
+                       (int)kind);
     }
     if (r != SK_OK) sk_bvh_free(out);
     return r;

@@ -6,8 +6,8 @@
 
 #include "tissue/tissue_internal.h"
 
-void sk_tissue_muscle_axes(double a0, double b0, double c0, double rest_length, double length, double *a, double *b,
-                           double *c)
+void sk_tissue_muscle_axes(double a0, double b0, double c0, double rest_length, double length,
+                           double *a, double *b, double *c)
 {
     /* a b c = a0 b0 c0 (volume 4/3 pi a b c) and a / b = a0 / b0 */
     double stretch = fmax(length / rest_length, 1e-6);
@@ -19,8 +19,8 @@ void sk_tissue_muscle_axes(double a0, double b0, double c0, double rest_length, 
 
 static sk_vec3d vec3(const float v[3]) { return sk_v3d(v[0], v[1], v[2]); }
 
-sk_result sk__muscles_build(const sk_tissue_character_desc *d, const sk__skeleton *s, const sk__bone *bones,
-                            sk__muscle *muscles, sk_error *err)
+sk_result sk__muscles_build(const sk_tissue_character_desc *d, const sk__skeleton *s,
+                            const sk__bone *bones, sk__muscle *muscles, sk_error *err)
 {
     for (int i = 0; i < d->muscle_count; i++) {
         const sk_tissue_muscle_desc *md = &d->muscles[i];
@@ -37,8 +37,8 @@ sk_result sk__muscles_build(const sk_tissue_character_desc *d, const sk__skeleto
         sk_vec3d z = sk_v3d_sub(in, o);
         m->rest_length = sk_v3d_length(z);
         if (!(m->rest_length > 1e-3))
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "muscles[%d] (\"%s\"): origin and insertion coincide", i,
-                           md->name);
+            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                           "muscles[%d] (\"%s\"): origin and insertion coincide", i, md->name);
         m->a0 = 0.5 * md->thickness_mm;
         m->b0 = m->a0 * md->width_ratio;
         m->c0 = 0.5 * md->belly_fraction * m->rest_length;
@@ -46,9 +46,11 @@ sk_result sk__muscles_build(const sk_tissue_character_desc *d, const sk__skeleto
         if (sk_v3d_length(hint) == 0.0) {
             /* away from the origin bone's axis, through the belly's centre */
             sk_vec3d mid = sk_v3d_scale(sk_v3d_add(o, in), 0.5);
-            sk_vec3d a0 = sk_v3d_add(s->rest[ob->joint], ob->start), a1 = sk_v3d_add(s->rest[ob->joint], ob->end);
+            sk_vec3d a0 = sk_v3d_add(s->rest[ob->joint], ob->start),
+                     a1 = sk_v3d_add(s->rest[ob->joint], ob->end);
             sk_vec3d axis = sk_v3d_normalize(sk_v3d_sub(a1, a0));
-            sk_vec3d foot = sk_v3d_add(a0, sk_v3d_scale(axis, sk_v3d_dot(sk_v3d_sub(mid, a0), axis)));
+            sk_vec3d foot =
+                sk_v3d_add(a0, sk_v3d_scale(axis, sk_v3d_dot(sk_v3d_sub(mid, a0), axis)));
             hint = sk_v3d_sub(mid, foot);
         }
         sk_mat3d f = sk__frame_from_z(z, hint);
@@ -62,7 +64,8 @@ sk_result sk__muscles_build(const sk_tissue_character_desc *d, const sk__skeleto
 static sk_quatd swing(sk_vec3d a, sk_vec3d b)
 {
     double d = sk_v3d_dot(a, b);
-    if (d < -0.999999) return sk_qd_axis_angle(sk__axis_across(a), SK_PI); /* opposite: any axis across */
+    if (d < -0.999999)
+        return sk_qd_axis_angle(sk__axis_across(a), SK_PI); /* opposite: any axis across */
     sk_vec3d c = sk_v3d_cross(a, b);
     return sk_qd_normalize(sk_qd(1.0 + d, c.x, c.y, c.z));
 }
@@ -80,6 +83,7 @@ void sk__muscle_shape(const sk__muscle *m, const sk_tissue_pose *pose, sk__ellip
     sk_vec3d zn = length > 0 ? sk_v3d_scale(z, 1.0 / length) : z_carried;
     sk_vec3d x = sk_qd_rotate(swing(z_carried, zn), sk_qd_rotate(carried, m->x_rest));
     out->axes = sk__frame_from_z(zn, x);
-    sk_tissue_muscle_axes(m->a0, m->b0, m->c0, m->rest_length, length, &out->radii.x, &out->radii.y, &out->radii.z);
+    sk_tissue_muscle_axes(m->a0, m->b0, m->c0, m->rest_length, length, &out->radii.x, &out->radii.y,
+                          &out->radii.z);
     out->centre = sk_v3d_scale(sk_v3d_add(o, in), 0.5);
 }

@@ -10,26 +10,32 @@
 
 sk_result sk__plot_tracked(const sk__tracked_series *t, const char *png_path, sk_error *err)
 {
-    if (t->count < 1 || t->samples < 2) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "nothing tracked to plot");
+    if (t->count < 1 || t->samples < 2)
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "nothing tracked to plot");
     int n = t->count;
-    sk_plot_series *height = calloc((size_t)(2 * n), sizeof *height), *jiggle = calloc((size_t)n, sizeof *jiggle);
+    sk_plot_series *height = calloc((size_t)(2 * n), sizeof *height),
+                   *jiggle = calloc((size_t)n, sizeof *jiggle);
     float *diff = malloc((size_t)n * (size_t)t->samples * sizeof *diff);
-    char (*labels)[96] = calloc((size_t)(3 * n), sizeof *labels);
+    char(*labels)[96] = calloc((size_t)(3 * n), sizeof *labels);
     sk_image plots[2] = {{0}}, sheet = {0};
     sk_result r = SK_OK;
-    if (!height || !jiggle || !diff || !labels) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the plot");
+    if (!height || !jiggle || !diff || !labels)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the plot");
     for (int k = 0; r == SK_OK && k < n; k++) {
         const float *with = t->with_fat + (size_t)k * (size_t)t->samples;
         const float *without = t->without_fat + (size_t)k * (size_t)t->samples;
-        for (int i = 0; i < t->samples; i++) diff[(size_t)k * (size_t)t->samples + (size_t)i] = with[i] - without[i];
+        for (int i = 0; i < t->samples; i++)
+            diff[(size_t)k * (size_t)t->samples + (size_t)i] = with[i] - without[i];
         snprintf(labels[3 * k], sizeof labels[0], "%s, with fat", t->name[k]);
         snprintf(labels[3 * k + 1], sizeof labels[0], "%s, without fat", t->name[k]);
         snprintf(labels[3 * k + 2], sizeof labels[0], "%s", t->name[k]);
         sk_color c = sk_palette(k);
         height[2 * k] = (sk_plot_series){labels[3 * k], t->time, with, t->samples, c, 2.0f};
         sk_color light = sk_rgba(c.r, c.g, c.b, 0.45f);
-        height[2 * k + 1] = (sk_plot_series){labels[3 * k + 1], t->time, without, t->samples, light, 4.0f};
-        jiggle[k] = (sk_plot_series){labels[3 * k + 2], t->time, diff + (size_t)k * (size_t)t->samples, t->samples, c, 2.0f};
+        height[2 * k + 1] =
+            (sk_plot_series){labels[3 * k + 1], t->time, without, t->samples, light, 4.0f};
+        jiggle[k] = (sk_plot_series){
+            labels[3 * k + 2], t->time, diff + (size_t)k * (size_t)t->samples, t->samples, c, 2.0f};
     }
     if (r == SK_OK) {
         sk_plot_desc d = {0};

@@ -18,7 +18,9 @@ static bool in_volume(const sk__grid *g, const uint8_t *inside, int x, int y, in
 {
     for (int b = 0; b < 8; b++) {
         int cx = x - (b & 1), cy = y - (b >> 1 & 1), cz = z - (b >> 2 & 1);
-        if (cx < 0 || cy < 0 || cz < 0 || cx >= g->n[0] - 1 || cy >= g->n[1] - 1 || cz >= g->n[2] - 1) continue;
+        if (cx < 0 || cy < 0 || cz < 0 || cx >= g->n[0] - 1 || cy >= g->n[1] - 1 ||
+            cz >= g->n[2] - 1)
+            continue;
         if (inside[sk__grid_index(g, cx, cy, cz)]) return true;
     }
     return false;
@@ -28,7 +30,10 @@ static bool in_volume(const sk__grid *g, const uint8_t *inside, int x, int y, in
 enum { C_OUT = 0, C_SKIN, C_FAT, C_MUSCLE_CANDIDATE, C_BONE_CANDIDATE, C_MUSCLE, C_BONE };
 
 /* The fat, muscle and bone point classes in point order (-1: not one of them). */
-static int interior_class(uint8_t c) { return c == C_FAT ? 0 : c == C_MUSCLE ? 1 : c == C_BONE ? 2 : -1; }
+static int interior_class(uint8_t c)
+{
+    return c == C_FAT ? 0 : c == C_MUSCLE ? 1 : c == C_BONE ? 2 : -1;
+}
 
 /* What the classification holds while it runs. */
 typedef struct classify {
@@ -52,7 +57,10 @@ static void classify_free(classify *c)
     free(c->counts);
 }
 
-static sk_result out_of_memory(sk_error *err) { return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the points"); }
+static sk_result out_of_memory(sk_error *err)
+{
+    return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the points");
+}
 
 /* Skin points: the distinct triangle corners, in grid order. */
 static sk_result mark_skin(classify *c, sk_error *err)
@@ -72,10 +80,11 @@ static sk_result mark_skin(classify *c, sk_error *err)
     for (size_t i = 0; i < ns; i++)
         if (c->b->labels[c->skin[i]] != SK__LABEL_NONE) {
             sk_vec3d p = sk__grid_position(c->g, c->skin[i]);
-            return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                           "the skin cuts into the tissue at (%.1f, %.1f, %.1f) mm: raise skin.dilations or "
-                           "skin.dilation_radius_mm, or lower skin.threshold",
-                           p.x, p.y, p.z);
+            return sk_fail(
+                err, SK_ERROR_INVALID_ARGUMENT,
+                "the skin cuts into the tissue at (%.1f, %.1f, %.1f) mm: raise skin.dilations or "
+                "skin.dilation_radius_mm, or lower skin.threshold",
+                p.x, p.y, p.z);
         }
     return SK_OK;
 }
@@ -94,7 +103,9 @@ static void mark_interior(classify *c)
                 size_t i = sk__grid_index(g, x, y, z);
                 if (c->cls[i] == C_SKIN || !in_volume(g, b->inside, x, y, z)) continue;
                 sk__label l = b->labels[i];
-                c->cls[i] = l == SK__LABEL_NONE ? C_FAT : (l >= SK__LABEL_MUSCLE0 ? C_MUSCLE_CANDIDATE : C_BONE_CANDIDATE);
+                c->cls[i] = l == SK__LABEL_NONE
+                                ? C_FAT
+                                : (l >= SK__LABEL_MUSCLE0 ? C_MUSCLE_CANDIDATE : C_BONE_CANDIDATE);
             }
         }
 }
@@ -108,7 +119,8 @@ static sk_result mark_touching(classify *c, int neighbourhood, sk_error *err)
     int dirs[13][3], all[13][3];
     int nd = sk__lattice_directions(neighbourhood, dirs), na = sk__lattice_directions(26, all);
     bool near[13];
-    for (int k = 0; k < na; k++) near[k] = neighbourhood == 26 || sk__lattice_direction_index(dirs, nd, all[k]) >= 0;
+    for (int k = 0; k < na; k++)
+        near[k] = neighbourhood == 26 || sk__lattice_direction_index(dirs, nd, all[k]) >= 0;
     c->touch = calloc(g->count, 1);
     c->on_tissue = calloc(g->count, 1);
     if (!c->touch || !c->on_tissue) return out_of_memory(err);
@@ -120,7 +132,8 @@ static sk_result mark_touching(classify *c, int neighbourhood, sk_error *err)
         bool fat = false;
         for (int k = 0; k < na && !fat; k++)
             for (int sgn = -1; sgn <= 1 && !fat; sgn += 2)
-                fat = cls[sk__grid_index(g, q[0] + sgn * all[k][0], q[1] + sgn * all[k][1], q[2] + sgn * all[k][2])] == C_FAT;
+                fat = cls[sk__grid_index(g, q[0] + sgn * all[k][0], q[1] + sgn * all[k][1],
+                                         q[2] + sgn * all[k][2])] == C_FAT;
         c->on_tissue[c->skin[i]] = !fat;
     }
 #pragma omp parallel for schedule(dynamic, 4)
@@ -134,7 +147,8 @@ static sk_result mark_touching(classify *c, int neighbourhood, sk_error *err)
                 bool touches = false;
                 for (int k = 0; k < na && !touches; k++)
                     for (int sgn = -1; sgn <= 1 && !touches; sgn += 2) {
-                        size_t q = sk__grid_index(g, x + sgn * all[k][0], y + sgn * all[k][1], z + sgn * all[k][2]);
+                        size_t q = sk__grid_index(g, x + sgn * all[k][0], y + sgn * all[k][1],
+                                                  z + sgn * all[k][2]);
                         touches = (near[k] && cls[q] == C_FAT) || c->on_tissue[q];
                     }
                 if (touches) c->touch[i] = 1;
@@ -164,7 +178,8 @@ static sk_result count_classes(classify *c, sk_error *err)
             }
         }
     for (int z = 0; z < nz; z++)
-        for (int k = 0; k < 3; k++) c->counts[3 * ((size_t)z + 1) + (size_t)k] += c->counts[3 * (size_t)z + (size_t)k];
+        for (int k = 0; k < 3; k++)
+            c->counts[3 * ((size_t)z + 1) + (size_t)k] += c->counts[3 * (size_t)z + (size_t)k];
     return SK_OK;
 }
 
@@ -205,7 +220,8 @@ static sk_result make_points(sk_tissue_model *m, const classify *c, sk_error *er
     for (size_t i = 0; i < g->count; i++) m->grid_point[i] = -1;
     for (size_t p = 0; p < m->point_count; p++) m->grid_point[m->grid_of[p]] = (int32_t)p;
     m->triangle_count = c->b->triangles;
-    for (size_t i = 0; i < 3 * c->b->triangles; i++) m->triangles[i] = (uint32_t)m->grid_point[c->b->corners[i]];
+    for (size_t i = 0; i < 3 * c->b->triangles; i++)
+        m->triangles[i] = (uint32_t)m->grid_point[c->b->corners[i]];
     return SK_OK;
 }
 

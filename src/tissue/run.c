@@ -53,8 +53,8 @@ static void path_in(char *out, size_t size, const char *dir, const char *name)
 }
 
 /* Bounds of the skin over the frames, carried by the bones (for a fixed camera). */
-static void motion_bounds(const sk_tissue_model *m, const sk_tissue_motion *motion, int first, int last, int fps,
-                          sk_vec3d *lo, sk_vec3d *hi)
+static void motion_bounds(const sk_tissue_model *m, const sk_tissue_motion *motion, int first,
+                          int last, int fps, sk_vec3d *lo, sk_vec3d *hi)
 {
     *lo = sk_v3d(DBL_MAX, DBL_MAX, DBL_MAX);
     *hi = sk_v3d(-DBL_MAX, -DBL_MAX, -DBL_MAX);
@@ -74,7 +74,8 @@ static void motion_bounds(const sk_tissue_model *m, const sk_tissue_motion *moti
     }
 }
 
-static sk_result write_stats(const sk_tissue_model *m, const sk_tissue_run_stats *st, const char *path, sk_error *err)
+static sk_result write_stats(const sk_tissue_model *m, const sk_tissue_run_stats *st,
+                             const char *path, sk_error *err)
 {
     cJSON *root = cJSON_CreateObject();
     if (!root) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
@@ -99,27 +100,31 @@ static sk_result write_stats(const sk_tissue_model *m, const sk_tissue_run_stats
     return sk__json_write_file(root, path, err);
 }
 
-static sk_result check_desc(const sk_tissue_run_desc *d, double duration, int *fps, int *first, int *last,
-                            sk_error *err)
+static sk_result check_desc(const sk_tissue_run_desc *d, double duration, int *fps, int *first,
+                            int *last, sk_error *err)
 {
-    if (!d || !d->output_dir || !d->output_dir[0]) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no output folder");
+    if (!d || !d->output_dir || !d->output_dir[0])
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no output folder");
     *fps = d->fps ? d->fps : 30;
     sk_result r = sk_check_range_i(err, "fps", *fps, 1, 1000);
     if (r != SK_OK) return r;
     *first = d->first_frame;
     *last = d->last_frame ? d->last_frame : (int)floor(duration * *fps + 1e-6);
     if (*first < 0 || *last < *first)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "frames %d:%d: the first must be from 0 and not after the last",
-                       *first, *last);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "frames %d:%d: the first must be from 0 and not after the last", *first,
+                       *last);
     if (*last - *first + 1 > MAX_FRAMES)
-        return sk_fail(err, SK_ERROR_LIMIT, "frames %d:%d are more than %d frames", *first, *last, MAX_FRAMES);
+        return sk_fail(err, SK_ERROR_LIMIT, "frames %d:%d are more than %d frames", *first, *last,
+                       MAX_FRAMES);
     if (d->render_width && (d->render_width < 64 || d->render_width > 4096))
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "render width %d is out of range [64, 4096]", d->render_width);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "render width %d is out of range [64, 4096]",
+                       d->render_width);
     return SK_OK;
 }
 
-sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion, const sk_tissue_run_desc *d,
-                        sk_tissue_run_stats *out_stats, sk_error *err)
+sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion,
+                        const sk_tissue_run_desc *d, sk_tissue_run_stats *out_stats, sk_error *err)
 {
     int fps = 30, first = 0, last = 0;
     sk_result r = check_desc(d, motion ? motion->duration : 0.0, &fps, &first, &last, err);
@@ -151,7 +156,8 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
         b.ref = malloc(3 * ns * sizeof *b.ref);
         b.track_time = malloc(plot_cap * sizeof *b.track_time);
         b.track_with = malloc(plot_cap * (size_t)(tracked ? tracked : 1) * sizeof *b.track_with);
-        b.track_without = malloc(plot_cap * (size_t)(tracked ? tracked : 1) * sizeof *b.track_without);
+        b.track_without =
+            malloc(plot_cap * (size_t)(tracked ? tracked : 1) * sizeof *b.track_without);
         if (!b.xyz || !b.ref || !b.track_time || !b.track_with || !b.track_without)
             r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu skin points", ns);
     }
@@ -161,7 +167,8 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
     if (r == SK_OK && glb) {
         b.glb_positions = malloc((size_t)frames * 3 * ns * sizeof *b.glb_positions);
         b.glb_normals = malloc((size_t)frames * 3 * ns * sizeof *b.glb_normals);
-        if (!b.glb_positions || !b.glb_normals) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin.glb");
+        if (!b.glb_positions || !b.glb_normals)
+            r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for skin.glb");
     }
     st.glb = glb;
     if (r == SK_OK) {
@@ -173,8 +180,9 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
     if (r == SK_OK && d->resume_state) {
         r = sk_tissue_sim_load_state_file(sim, d->resume_state, err);
         if (r == SK_OK && sk_tissue_sim_time(sim) > (double)first / fps + 1e-9)
-            r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s: the state is at %.4f s, after frame %d (%.4f s)",
-                        d->resume_state, sk_tissue_sim_time(sim), first, (double)first / fps);
+            r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                        "%s: the state is at %.4f s, after frame %d (%.4f s)", d->resume_state,
+                        sk_tissue_sim_time(sim), first, (double)first / fps);
     }
     sk_pc2_writer pc2 = {0};
     if (r == SK_OK && !d->no_pc2) {
@@ -197,7 +205,8 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
         double t = (double)f / fps, t0 = sk_time_seconds();
         /* the plot's samples up to this frame (the simulation does not depend on how its
            time is split into calls) */
-        while (tracked > 0 && samples < plot_cap && (double)first / fps + (double)samples / PLOT_HZ <= t + 1e-9) {
+        while (tracked > 0 && samples < plot_cap &&
+               (double)first / fps + (double)samples / PLOT_HZ <= t + 1e-9) {
             double ts = (double)first / fps + (double)samples / PLOT_HZ;
             r = sk_tissue_sim_advance(sim, ts, err);
             if (r != SK_OK) break;
@@ -217,12 +226,15 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
         sk_tissue_sim_skin_reference(sim, b.ref);
         int i = f - first;
         for (size_t p = 0; p < ns; p++) {
-            float dx = b.xyz[3 * p] - b.ref[3 * p], dy = b.xyz[3 * p + 1] - b.ref[3 * p + 1], dz = b.xyz[3 * p + 2] - b.ref[3 * p + 2];
-            st.max_displacement_mm = fmax(st.max_displacement_mm, sqrt(dx * dx + dy * dy + dz * dz));
+            float dx = b.xyz[3 * p] - b.ref[3 * p], dy = b.xyz[3 * p + 1] - b.ref[3 * p + 1],
+                  dz = b.xyz[3 * p + 2] - b.ref[3 * p + 2];
+            st.max_displacement_mm =
+                fmax(st.max_displacement_mm, sqrt(dx * dx + dy * dy + dz * dz));
         }
         for (int k = 0; k < m->desc.tracked_count; k++) {
             size_t p = (size_t)m->tracked_point[k];
-            float dx = b.xyz[3 * p] - b.ref[3 * p], dy = b.xyz[3 * p + 1] - b.ref[3 * p + 1], dz = b.xyz[3 * p + 2] - b.ref[3 * p + 2];
+            float dx = b.xyz[3 * p] - b.ref[3 * p], dy = b.xyz[3 * p + 1] - b.ref[3 * p + 1],
+                  dz = b.xyz[3 * p + 2] - b.ref[3 * p + 2];
             st.tracked_max_mm[k] = fmax(st.tracked_max_mm[k], sqrt(dx * dx + dy * dy + dz * dz));
         }
         if (!d->no_pc2) r = sk_pc2_append(&pc2, b.xyz, err);
@@ -252,20 +264,26 @@ sk_result sk_tissue_run(const sk_tissue_model *m, const sk_tissue_motion *motion
         sk_progress_report(&d->progress, (double)(i + 1) / frames);
     }
     double t3 = sk_time_seconds();
-    if (r == SK_OK && !d->no_pc2) r = sk_pc2_close(&pc2, err);
-    else sk_pc2_abort(&pc2);
+    if (r == SK_OK && !d->no_pc2)
+        r = sk_pc2_close(&pc2, err);
+    else
+        sk_pc2_abort(&pc2);
     if (r == SK_OK && glb) {
         path_in(path, sizeof path, d->output_dir, "skin.glb");
-        r = sk__write_skin_glb(&b.rest, b.glb_positions, b.glb_normals, frames, first, fps, path, err);
+        r = sk__write_skin_glb(&b.rest, b.glb_positions, b.glb_normals, frames, first, fps, path,
+                               err);
     }
     if (r == SK_OK && d->save_state) r = sk_tissue_sim_save_state_file(sim, d->save_state, err);
     if (r == SK_OK && d->plot && tracked > 0 && samples >= 2) {
         /* the series are point-major with plot_cap samples each: pack them to `samples` */
         for (int k = 1; k < tracked; k++) {
-            memmove(b.track_with + (size_t)k * samples, b.track_with + (size_t)k * plot_cap, samples * sizeof(float));
-            memmove(b.track_without + (size_t)k * samples, b.track_without + (size_t)k * plot_cap, samples * sizeof(float));
+            memmove(b.track_with + (size_t)k * samples, b.track_with + (size_t)k * plot_cap,
+                    samples * sizeof(float));
+            memmove(b.track_without + (size_t)k * samples, b.track_without + (size_t)k * plot_cap,
+                    samples * sizeof(float));
         }
-        sk__tracked_series ts = {tracked, (int)samples, {0}, b.track_time, b.track_with, b.track_without};
+        sk__tracked_series ts = {tracked,      (int)samples, {0},
+                                 b.track_time, b.track_with, b.track_without};
         for (int k = 0; k < tracked; k++) ts.name[k] = m->desc.tracked[k].name;
         r = sk__plot_tracked(&ts, d->plot, err);
     }

@@ -38,25 +38,30 @@ void sk__sim_pose_at(const sk_tissue_sim *s, int64_t k, sk_tissue_pose *pose)
     sk__skeleton_pose(sk, local, root, pose);
 }
 
-void sk__sim_shape_muscles(const sk_tissue_sim *s, const sk_tissue_pose *pose, sk__muscle_state *muscle)
+void sk__sim_shape_muscles(const sk_tissue_sim *s, const sk_tissue_pose *pose,
+                           sk__muscle_state *muscle)
 {
-    for (int i = 0; i < s->m->desc.muscle_count; i++) sk__muscle_shape(&s->m->muscles[i], pose, &muscle[i].body);
+    for (int i = 0; i < s->m->desc.muscle_count; i++)
+        sk__muscle_shape(&s->m->muscles[i], pose, &muscle[i].body);
 }
 
 /* Muscle or bone point p where a pose (and the muscles' shapes at it) puts it. */
-static sk_vec3d anchor_at(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle, size_t p)
+static sk_vec3d anchor_at(const sk_tissue_sim *s, const sk_tissue_pose *pose,
+                          const sk__muscle_state *muscle, size_t p)
 {
     const sk_tissue_model *m = s->m;
     if (p < s->nfree + m->muscle_count) {
         const sk__ellipsoid *e = &muscle[m->owner[p]].body;
         sk_vec3d u = m->local[p];
-        return sk_v3d_add(e->centre, sk_m3d_apply(e->axes, sk_v3d(u.x * e->radii.x, u.y * e->radii.y, u.z * e->radii.z)));
+        return sk_v3d_add(
+            e->centre,
+            sk_m3d_apply(e->axes, sk_v3d(u.x * e->radii.x, u.y * e->radii.y, u.z * e->radii.z)));
     }
     return sk__pose_apply(pose, m->bones[m->owner[p]].joint, m->local[p]);
 }
 
-void sk__sim_place_anchors(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
-                           double *x)
+void sk__sim_place_anchors(const sk_tissue_sim *s, const sk_tissue_pose *pose,
+                           const sk__muscle_state *muscle, double *x)
 {
 #pragma omp for schedule(static)
     for (size_t p = s->nfree; p < s->n; p++) {
@@ -77,8 +82,9 @@ static uint64_t fingerprint(const sk_tissue_model *m, int step_hz)
         h = sk_hash(h, bits[0] ^ (bits[3] << 1), bits[1], bits[2]);
     }
     const sk_tissue_material_desc *mat = &m->desc.material;
-    float params[8] = {mat->fat_stiffness, mat->anchor_stiffness, mat->skin_stiffness, mat->fat_density,
-                       mat->skin_density, mat->skin_thickness_mm, mat->damping_ratio, mat->tether_stiffness};
+    float params[8] = {mat->fat_stiffness, mat->anchor_stiffness, mat->skin_stiffness,
+                       mat->fat_density,   mat->skin_density,     mat->skin_thickness_mm,
+                       mat->damping_ratio, mat->tether_stiffness};
     uint32_t bits[8];
     memcpy(bits, params, sizeof bits);
     for (int i = 0; i < 8; i++) h = sk_hash(h, bits[i], (uint64_t)i, m->desc.simulation.no_fat);
@@ -93,13 +99,18 @@ static void carry_all(sk_tissue_sim *s)
     for (size_t p = 0; p < s->nfree; p++) {
         sk_vec3d q = sk__sim_carried(s, &s->pose, s->muscle, p);
         double v[3] = {q.x, q.y, q.z};
-        for (int c = 0; c < 3; c++) s->x[3 * p + (size_t)c] = s->target[3 * p + (size_t)c] = s->target_base[3 * p + (size_t)c] = v[c];
+        for (int c = 0; c < 3; c++)
+            s->x[3 * p + (size_t)c] = s->target[3 * p + (size_t)c] =
+                s->target_base[3 * p + (size_t)c] = v[c];
     }
 }
 
 /* Threads for a model's loops: one below the size where waking others costs more than it
  * saves (the solver synchronises a few times per step). */
-static int threads_for(const sk_tissue_sim *s) { return s->nfree >= s->parallel_points ? omp_get_max_threads() : 1; }
+static int threads_for(const sk_tissue_sim *s)
+{
+    return s->nfree >= s->parallel_points ? omp_get_max_threads() : 1;
+}
 
 /* The flesh relaxed at the start pose (no inertia): every thread of a region calls it.
  * The largest move of a step is a max over the threads' maxima, the same for any count. */
@@ -109,8 +120,8 @@ static void settle(sk_tissue_sim *s)
 #pragma omp for schedule(static)
         for (size_t k = 0; k < 3 * s->n; k++) s->base[k] = s->x[k];
         s->ops->step(s->solver, s->x, s->base, s->target, s->target);
-        sk__collide(s->obstacles, s->obstacle_count, s->m->desc.bone_count, s->m->near_muscles, s->x, s->nfree,
-                    s->vectors);
+        sk__collide(s->obstacles, s->obstacle_count, s->m->desc.bone_count, s->m->near_muscles,
+                    s->x, s->nfree, s->vectors);
 #pragma omp single
         s->settle_move = 0.0;
         double move = 0.0; /* this thread's largest (a max is the same in any order) */
@@ -127,12 +138,13 @@ static void settle(sk_tissue_sim *s)
     }
 }
 
-sk_result sk_tissue_sim_create(const sk_tissue_model *m, const sk_tissue_motion *motion, sk_tissue_sim **out,
-                               sk_error *err)
+sk_result sk_tissue_sim_create(const sk_tissue_model *m, const sk_tissue_motion *motion,
+                               sk_tissue_sim **out, sk_error *err)
 {
     *out = NULL;
     if (!m || !motion || !motion->sample)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "a simulation needs a model and a motion with a sample function");
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "a simulation needs a model and a motion with a sample function");
     sk_tissue_sim *s = calloc(1, sizeof *s);
     if (!s) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     s->m = m;
@@ -149,7 +161,8 @@ sk_result sk_tissue_sim_create(const sk_tissue_model *m, const sk_tissue_motion 
     s->target = malloc(3 * (s->nfree ? s->nfree : 1) * sizeof *s->target);
     s->target_base = malloc(3 * (s->nfree ? s->nfree : 1) * sizeof *s->target_base);
     sk_result r = SK_OK;
-    if (!s->x || !s->prev || !s->base || !s->v || !s->target || !s->target_base) r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu points", s->n);
+    if (!s->x || !s->prev || !s->base || !s->v || !s->target || !s->target_base)
+        r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for %zu points", s->n);
     if (r == SK_OK && !m->desc.simulation.no_fat) r = s->ops->create(m, s->h, &s->solver, err);
     if (r != SK_OK) {
         sk_tissue_sim_destroy(s);
@@ -190,13 +203,15 @@ void sk_tissue_sim_destroy(sk_tissue_sim *s)
 }
 
 /* The largest distance a bone's ends moved between two poses. */
-static double bone_jump(const sk_tissue_model *m, int b, const sk_tissue_pose *from, const sk_tissue_pose *to)
+static double bone_jump(const sk_tissue_model *m, int b, const sk_tissue_pose *from,
+                        const sk_tissue_pose *to)
 {
     const sk__bone *bone = &m->bones[b];
     double worst = 0.0;
     const sk_vec3d ends[2] = {bone->start, bone->end};
     for (int e = 0; e < 2; e++) {
-        sk_vec3d a = sk__pose_apply(from, bone->joint, ends[e]), c = sk__pose_apply(to, bone->joint, ends[e]);
+        sk_vec3d a = sk__pose_apply(from, bone->joint, ends[e]),
+                 c = sk__pose_apply(to, bone->joint, ends[e]);
         worst = fmax(worst, sk_v3d_length(sk_v3d_sub(c, a)));
     }
     return worst;
@@ -214,7 +229,8 @@ static void prepare_step(sk_tissue_sim *s)
         s->carry[b] = bone_jump(m, b, &s->pose, &s->next) > limit;
         s->any_carry |= s->carry[b];
         int j = m->bones[b].joint;
-        s->turn[b] = sk_qd_normalize(sk_qd_mul(s->next.rotation[j], sk_qd_conj(s->pose.rotation[j])));
+        s->turn[b] =
+            sk_qd_normalize(sk_qd_mul(s->next.rotation[j], sk_qd_conj(s->pose.rotation[j])));
     }
     sk__sim_shape_muscles(s, &s->next, s->muscle_next);
     s->obstacle_count = sk__obstacles(m, &s->next, s->muscle_next, s->obstacles);
@@ -264,14 +280,16 @@ static void step_parallel(sk_tissue_sim *s)
     bool no_fat = m->desc.simulation.no_fat;
 #pragma omp for schedule(static)
     for (size_t p = 0; p < s->nfree; p++) {
-        double *x = s->x + 3 * p, *prev = s->prev + 3 * p, *base = s->base + 3 * p, *v = s->v + 3 * p;
+        double *x = s->x + 3 * p, *prev = s->prev + 3 * p, *base = s->base + 3 * p,
+               *v = s->v + 3 * p;
         double *target = s->target + 3 * p, *target_base = s->target_base + 3 * p;
         for (int c = 0; c < 3; c++) prev[c] = x[c];
         sk_vec3d q = sk_v3d(x[0], x[1], x[2]), vel = sk_v3d(v[0], v[1], v[2]);
         sk_vec3d r = sk__sim_carried(s, &s->next, s->muscle_next, p);
         int b = m->owner[p];
         /* the tether's end moves with the tissue; a jump is not a pull */
-        for (int c = 0; c < 3; c++) target_base[c] = s->carry[b] ? (c == 0 ? r.x : c == 1 ? r.y : r.z) : target[c];
+        for (int c = 0; c < 3; c++)
+            target_base[c] = s->carry[b] ? (c == 0 ? r.x : c == 1 ? r.y : r.z) : target[c];
         target[0] = r.x;
         target[1] = r.y;
         target[2] = r.z;
@@ -280,7 +298,8 @@ static void step_parallel(sk_tissue_sim *s)
             vel = sk_v3d(0, 0, 0);
         } else if (s->carry[b]) {
             int j = m->bones[b].joint;
-            q = sk_v3d_add(s->next.position[j], sk_qd_rotate(s->turn[b], sk_v3d_sub(q, s->pose.position[j])));
+            q = sk_v3d_add(s->next.position[j],
+                           sk_qd_rotate(s->turn[b], sk_v3d_sub(q, s->pose.position[j])));
             vel = sk_qd_rotate(s->turn[b], vel);
         }
         base[0] = q.x;
@@ -292,8 +311,8 @@ static void step_parallel(sk_tissue_sim *s)
     }
     if (!no_fat) s->ops->step(s->solver, s->x, s->base, s->target, s->target_base);
     /* out of the bones and muscles, then the velocities, block by block */
-    sk__collide_finish(s->obstacles, no_fat ? 0 : s->obstacle_count, s->m->desc.bone_count, s->m->near_muscles, s->x,
-                       s->base, s->v, 1.0 / s->h, s->nfree, s->vectors);
+    sk__collide_finish(s->obstacles, no_fat ? 0 : s->obstacle_count, s->m->desc.bone_count,
+                       s->m->near_muscles, s->x, s->base, s->v, 1.0 / s->h, s->nfree, s->vectors);
 }
 
 /* Steps on `threads` threads until step `end`. */
@@ -324,8 +343,8 @@ static double timed_steps(sk_tissue_sim *s, int64_t end, int threads)
 sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
 {
     if (!isfinite(seconds) || seconds > SK__SIM_MAX_SECONDS)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "time %g s is not a finite time up to %g s", seconds,
-                       SK__SIM_MAX_SECONDS);
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "time %g s is not a finite time up to %g s",
+                       seconds, SK__SIM_MAX_SECONDS);
     double k = seconds * s->step_hz;
     int64_t target = (int64_t)ceil(k - 1e-6);
     int most = threads_for(s);
@@ -341,7 +360,8 @@ sk_result sk_tissue_sim_advance(sk_tissue_sim *s, double seconds, sk_error *err)
                (the machine may be shared; the result is the same either way) */
             int p = s->probe_phase - 1;
             int64_t a0 = s->step, left = PROBE_STEPS - s->probe_steps[p];
-            s->probe_s[p] += timed_steps(s, a0 + left < target ? a0 + left : target, p == 0 ? 1 : most);
+            s->probe_s[p] +=
+                timed_steps(s, a0 + left < target ? a0 + left : target, p == 0 ? 1 : most);
             s->probe_steps[p] += s->step - a0;
             if (s->probe_steps[p] < PROBE_STEPS) continue;
             if (p == 0) {
@@ -390,7 +410,8 @@ sk_result sk_tissue_sim_skin(sk_tissue_sim *s, double seconds, float *xyz, sk_er
     if (hi < 0) hi = 0, frac = 1.0;
     if (hi > s->step || hi < s->step - 1 || (!exact && hi < s->step))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "time %g s is before the last two steps kept (now at %.6f s)", seconds, sk_tissue_sim_time(s));
+                       "time %g s is before the last two steps kept (now at %.6f s)", seconds,
+                       sk_tissue_sim_time(s));
     const double *a = s->prev, *b = hi == s->step ? s->x : s->prev;
     size_t n = s->m->skin_count;
     if (exact) { /* a step's own state, not a blend */
@@ -423,7 +444,8 @@ void sk_tissue_sim_energy(const sk_tissue_sim *s, double *potential_j, double *k
     double pe[CHUNKS] = {0}, ke[CHUNKS] = {0};
 #pragma omp parallel for schedule(static)
     for (int c = 0; c < CHUNKS; c++) {
-        size_t k0 = m->spring_count * (size_t)c / CHUNKS, k1 = m->spring_count * (size_t)(c + 1) / CHUNKS;
+        size_t k0 = m->spring_count * (size_t)c / CHUNKS,
+               k1 = m->spring_count * (size_t)(c + 1) / CHUNKS;
         for (size_t k = k0; k < k1; k++) {
             const double *a = s->x + 3 * m->spring_i[k], *b = s->x + 3 * m->spring_j[k];
             double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];

@@ -18,23 +18,24 @@ typedef struct sk__obstacle {
     sk_vec3d lo, hi;
 } sk__obstacle;
 #define SK__MAX_OBSTACLES (SK_TISSUE_MAX_BONES + SK_TISSUE_MAX_MUSCLES)
-#define SK__SIM_MAX_SECONDS 1e7 /* the latest time a simulation advances to (and a state may hold) */
+#define SK__SIM_MAX_SECONDS                                                                        \
+    1e7 /* the latest time a simulation advances to (and a state may hold) */
 
 /* The bones (then the muscles, given their shapes) at a pose; returns how many. */
-int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
-                  sk__obstacle *out);
+int sk__obstacles(const sk_tissue_model *m, const sk_tissue_pose *pose,
+                  const sk__muscle_state *muscle, sk__obstacle *out);
 /* Moves the first `count` points of x (3 doubles each) out of the obstacles: every bone,
  * and the muscles whose bit is set in the point's `near_muscles` mask (muscle i is
  * obstacle bone_count + i). Shares its work with an orphaned loop (call it from every
  * thread of a parallel region, or from one). `vectors`: the points that may be inside
  * found four at a time (AVX2; the same result, simd.h). */
-void sk__collide(const sk__obstacle *obstacles, int count_obstacles, int bone_count, const uint64_t *near_muscles,
-                 double *x, size_t count, bool vectors);
+void sk__collide(const sk__obstacle *obstacles, int count_obstacles, int bone_count,
+                 const uint64_t *near_muscles, double *x, size_t count, bool vectors);
 /* The same, each block's velocities then set from its moves: v = (x - base) inv_h (one
  * loop, one synchronisation). */
 void sk__collide_finish(const sk__obstacle *obstacles, int obstacle_count, int bone_count,
-                        const uint64_t *near_muscles, double *x, const double *base, double *v, double inv_h,
-                        size_t count, bool vectors);
+                        const uint64_t *near_muscles, double *x, const double *base, double *v,
+                        double inv_h, size_t count, bool vectors);
 
 struct sk_tissue_sim {
     const sk_tissue_model *m;
@@ -42,13 +43,13 @@ struct sk_tissue_sim {
     const sk__solver_ops *ops;
     sk__solver *solver;
     int step_hz;
-    double h;                 /* seconds per step */
-    int64_t step;             /* steps taken */
+    double h;     /* seconds per step */
+    int64_t step; /* steps taken */
     size_t n, nfree;
-    double *x;                /* every point at the current step (3 each) */
-    double *prev;             /* every point at the step before */
-    double *base;             /* the step's start as the springs' damping sees it */
-    double *v;                /* free points' velocities, mm/s */
+    double *x;                    /* every point at the current step (3 each) */
+    double *prev;                 /* every point at the step before */
+    double *base;                 /* the step's start as the springs' damping sees it */
+    double *v;                    /* free points' velocities, mm/s */
     double *target, *target_base; /* where the tissue carries the free points at the step's
                                      end and start (the tethers' other ends) */
     sk_tissue_pose pose, pose_prev;
@@ -61,10 +62,10 @@ struct sk_tissue_sim {
     sk__muscle_state muscle_next[SK_TISSUE_MAX_MUSCLES]; /* at `next` */
     sk__obstacle obstacles[SK__MAX_OBSTACLES];
     int obstacle_count;
-    uint64_t fingerprint;     /* of the model, for saved states */
-    size_t parallel_points;   /* below this many free points one thread runs the steps */
-    double settle_move;       /* the largest move of the last settling step */
-    int threads;              /* threads the steps run on (chosen by timing, see sim.c) */
+    uint64_t fingerprint;   /* of the model, for saved states */
+    size_t parallel_points; /* below this many free points one thread runs the steps */
+    double settle_move;     /* the largest move of the last settling step */
+    int threads;            /* threads the steps run on (chosen by timing, see sim.c) */
     /* the choice of threads (sim.c), timed over as many calls as it takes */
     int64_t next_probe;       /* step at which the thread count is chosen again */
     int probe_phase;          /* 0 none; 1, 2: timing steps on one thread, then on all */
@@ -81,11 +82,12 @@ void sk__sim_use_vectors(sk_tissue_sim *s, bool on);
 /* The pose of the motion at step k. */
 void sk__sim_pose_at(const sk_tissue_sim *s, int64_t k, sk_tissue_pose *pose);
 /* The muscles' shapes at a pose. */
-void sk__sim_shape_muscles(const sk_tissue_sim *s, const sk_tissue_pose *pose, sk__muscle_state *muscle);
+void sk__sim_shape_muscles(const sk_tissue_sim *s, const sk_tissue_pose *pose,
+                           sk__muscle_state *muscle);
 /* Muscle and bone points where a pose puts them (into x), given the muscles' shapes at
  * that pose. An orphaned loop, like sk__collide. */
-void sk__sim_place_anchors(const sk_tissue_sim *s, const sk_tissue_pose *pose, const sk__muscle_state *muscle,
-                           double *x);
+void sk__sim_place_anchors(const sk_tissue_sim *s, const sk_tissue_pose *pose,
+                           const sk__muscle_state *muscle, double *x);
 /* Where the tissue alone (the pose's bones, the muscles' shapes at it) carries free point
  * p's rest position (inline: the step calls it for every free point). */
 static inline sk_vec3d sk__sim_carried(const sk_tissue_sim *s, const sk_tissue_pose *pose,
@@ -97,7 +99,9 @@ static inline sk_vec3d sk__sim_carried(const sk_tissue_sim *s, const sk_tissue_p
         /* the muscle's deformation, extended beyond its surface */
         const sk__ellipsoid *e = &muscle[mu].body;
         sk_vec3d u = m->local[p];
-        return sk_v3d_add(e->centre, sk_m3d_apply(e->axes, sk_v3d(u.x * e->radii.x, u.y * e->radii.y, u.z * e->radii.z)));
+        return sk_v3d_add(
+            e->centre,
+            sk_m3d_apply(e->axes, sk_v3d(u.x * e->radii.x, u.y * e->radii.y, u.z * e->radii.z)));
     }
     return sk__pose_apply(pose, m->bones[m->owner[p]].joint, m->local[p]);
 }

@@ -18,7 +18,10 @@ typedef struct near_list {
     const sk__ellipsoid *e[MAX_NEAR];
 } near_list;
 
-static double widest(const sk__ellipsoid *e) { return fmax(e->radii.x, fmax(e->radii.y, e->radii.z)); }
+static double widest(const sk__ellipsoid *e)
+{
+    return fmax(e->radii.x, fmax(e->radii.y, e->radii.z));
+}
 
 static bool outside_tissue(const near_list *n, sk_vec3d p)
 {
@@ -27,7 +30,8 @@ static bool outside_tissue(const near_list *n, sk_vec3d p)
     return true;
 }
 
-sk_result sk__skin_smooth(sk_tissue_model *m, const sk__tissue_shapes *t, int iterations, sk_error *err)
+sk_result sk__skin_smooth(sk_tissue_model *m, const sk__tissue_shapes *t, int iterations,
+                          sk_error *err)
 {
     size_t n = m->skin_count;
     if (iterations <= 0 || n == 0) return SK_OK;
@@ -36,7 +40,8 @@ sk_result sk__skin_smooth(sk_tissue_model *m, const sk__tissue_shapes *t, int it
        which weighs every neighbour alike) */
     size_t *start = calloc(n + 1, sizeof *start);
     uint32_t *adj = malloc(m->triangle_count * 6 * sizeof *adj);
-    sk_vec3d *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b), *home = malloc(n * sizeof *home);
+    sk_vec3d *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b),
+             *home = malloc(n * sizeof *home);
     near_list *near = malloc(n * sizeof *near);
     if (!start || !adj || !a || !b || !home || !near) {
         r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the skin smoothing");
@@ -68,12 +73,14 @@ sk_result sk__skin_smooth(sk_tissue_model *m, const sk__tissue_shapes *t, int it
         for (int bo = 0; bo < t->bone_count; bo++)
             for (int k = 0; k < 3; k++) {
                 const sk__ellipsoid *e = &t->bone[bo][k];
-                if (sk_v3d_length(sk_v3d_sub(a[v], e->centre)) < widest(e) + reach && near[v].count < MAX_NEAR)
+                if (sk_v3d_length(sk_v3d_sub(a[v], e->centre)) < widest(e) + reach &&
+                    near[v].count < MAX_NEAR)
                     near[v].e[near[v].count++] = e;
             }
         for (int mu = 0; mu < t->muscle_count; mu++) {
             const sk__ellipsoid *e = &t->muscle[mu];
-            if (sk_v3d_length(sk_v3d_sub(a[v], e->centre)) < widest(e) + reach && near[v].count < MAX_NEAR)
+            if (sk_v3d_length(sk_v3d_sub(a[v], e->centre)) < widest(e) + reach &&
+                near[v].count < MAX_NEAR)
                 near[v].e[near[v].count++] = e;
         }
     }
@@ -92,7 +99,8 @@ sk_result sk__skin_smooth(sk_tissue_model *m, const sk__tissue_shapes *t, int it
             /* at most one spacing from the grid point, and never into the tissue */
             sk_vec3d off = sk_v3d_sub(p, home[v]);
             double len = sk_v3d_length(off);
-            if (len > m->grid.spacing) p = sk_v3d_add(home[v], sk_v3d_scale(off, m->grid.spacing / len));
+            if (len > m->grid.spacing)
+                p = sk_v3d_add(home[v], sk_v3d_scale(off, m->grid.spacing / len));
             b[v] = outside_tissue(&near[v], p) ? p : a[v];
         }
         sk_vec3d *s = a;

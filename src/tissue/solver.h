@@ -18,9 +18,11 @@ typedef struct sk__solver sk__solver;
 
 typedef struct sk__solver_ops {
     const char *name;
-    sk_result (*create)(const sk_tissue_model *m, double step_seconds, sk__solver **out, sk_error *err);
+    sk_result (*create)(const sk_tissue_model *m, double step_seconds, sk__solver **out,
+                        sk_error *err);
     void (*destroy)(sk__solver *s);
-    void (*step)(sk__solver *s, double *x, const double *base, const double *target, const double *target_base);
+    void (*step)(sk__solver *s, double *x, const double *base, const double *target,
+                 const double *target_base);
 } sk__solver_ops;
 
 /* XPBD with one iteration per substep (Macklin et al. 2016, 2019). */

@@ -60,21 +60,21 @@ typedef struct spring_arrays {
 
 struct sk__solver {
     size_t count;
-    int slabs, half;  /* slabs, and slabs of parity 0 (those of parity 1: slabs - half) */
-    int colours;      /* colours of the model (1 if it has none) */
-    bool paired;      /* the springs of one run share no point (the model has colours) */
-    bool wide;        /* four springs at once (AVX2), on the packed points */
+    int slabs, half; /* slabs, and slabs of parity 0 (those of parity 1: slabs - half) */
+    int colours;     /* colours of the model (1 if it has none) */
+    bool paired;     /* the springs of one run share no point (the model has colours) */
+    bool wide;       /* four springs at once (AVX2), on the packed points */
     spring_arrays sp;
-    size_t *cell;     /* first spring of (parity, colour, slab / 2), in that order, then count */
+    size_t *cell; /* first spring of (parity, colour, slab / 2), in that order, then count */
     size_t parity_before[MAX_SLABS]; /* springs in the slabs of the same parity before s */
     size_t slab_count[MAX_SLABS];
     size_t parity_total[2];
     size_t point_count;
-    double *packed;   /* wide: per point x, y, z, 0, then its step start, 0 (64-byte aligned) */
-    double *w; /* inverse mass of every point */
+    double *packed; /* wide: per point x, y, z, 0, then its step start, 0 (64-byte aligned) */
+    double *w;      /* inverse mass of every point */
     size_t free_count;
-    double *tether_coef, *tether_gamma, *tether_ca; /* per free point: w / ((1 + gamma) w + alpha / h^2),
-                                                       gamma, (alpha / h^2) / the same */
+    double *tether_coef, *tether_gamma, *tether_ca; /* per free point: w / ((1 + gamma) w + alpha /
+                                                       h^2), gamma, (alpha / h^2) / the same */
     int iterations;
     /* with more than one iteration: alpha lambda of every spring and tether axis (lambda
        accumulates over a step's iterations, eq. 18) */
@@ -86,8 +86,9 @@ void sk__spring_constants(const sk_tissue_model *m, size_t s, double *stiffness,
 {
     const sk_tissue_material_desc *mat = &m->desc.material;
     int cls = m->spring_class[s];
-    double k = cls == SK__SPRING_SKIN ? mat->skin_stiffness : cls == SK__SPRING_ANCHOR ? mat->anchor_stiffness
-                                                                                       : mat->fat_stiffness;
+    double k = cls == SK__SPRING_SKIN     ? mat->skin_stiffness
+               : cls == SK__SPRING_ANCHOR ? mat->anchor_stiffness
+                                          : mat->fat_stiffness;
     double mi = m->mass[m->spring_i[s]], mj = m->mass[m->spring_j[s]];
     double mu = mi > 0 && mj > 0 ? mi * mj / (mi + mj) : (mi > 0 ? mi : mj);
     *stiffness = k;
@@ -161,14 +162,16 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
     s->colours = s->paired ? m->colour_count : 1;
 #if defined(SK__HAVE_AVX2_PATH)
     s->wide = s->paired && s->iterations == 1 && sk__have_avx2();
-    if (s->wide) s->packed = aligned_alloc(64, (m->point_count ? m->point_count : 1) * 8 * sizeof(double));
+    if (s->wide)
+        s->packed = aligned_alloc(64, (m->point_count ? m->point_count : 1) * 8 * sizeof(double));
 #endif
     size_t cell_count = 2 * (size_t)s->colours * (size_t)s->half;
     s->cell = calloc(cell_count + 1, sizeof *s->cell);
     size_t *fill = malloc((cell_count ? cell_count : 1) * sizeof *fill);
-    if (!s->sp.i || !s->sp.j || !s->sp.rest || !s->sp.ci || !s->sp.cj || !s->sp.gamma || !s->sp.ca || !s->w ||
-        !place || !s->cell || !fill || (s->wide && !s->packed) || !s->tether_coef || !s->tether_gamma ||
-        !s->tether_ca || (s->iterations > 1 && (!s->mu || !s->tether_mu))) {
+    if (!s->sp.i || !s->sp.j || !s->sp.rest || !s->sp.ci || !s->sp.cj || !s->sp.gamma ||
+        !s->sp.ca || !s->w || !place || !s->cell || !fill || (s->wide && !s->packed) ||
+        !s->tether_coef || !s->tether_gamma || !s->tether_ca ||
+        (s->iterations > 1 && (!s->mu || !s->tether_mu))) {
         free(place);
         free(fill);
         destroy(s);
@@ -178,14 +181,16 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
     /* every spring's cell (parity, colour, slab / 2), counted */
     int colour = 0;
     for (size_t k = 0; k < n; k++) {
-        while (s->paired && colour + 1 < m->colour_count && k >= m->colour_start[colour + 1]) colour++;
+        while (s->paired && colour + 1 < m->colour_count && k >= m->colour_start[colour + 1])
+            colour++;
         int a[3], b[3];
         sk__grid_coords(g, m->grid_of[m->spring_i[k]], a);
         sk__grid_coords(g, m->grid_of[m->spring_j[k]], b);
         int low = a[axis] < b[axis] ? a[axis] : b[axis];
         int slab = (int)((long)low * s->slabs / cells);
         s->slab_count[slab]++;
-        place[k] = ((size_t)(slab & 1) * (size_t)s->colours + (size_t)colour) * (size_t)s->half + (size_t)(slab / 2);
+        place[k] = ((size_t)(slab & 1) * (size_t)s->colours + (size_t)colour) * (size_t)s->half +
+                   (size_t)(slab / 2);
         s->cell[place[k] + 1]++;
     }
     for (size_t c = 0; c < cell_count; c++) s->cell[c + 1] += s->cell[c];
@@ -202,7 +207,7 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
         double stiffness, damping;
         sk__spring_constants(m, k, &stiffness, &damping);
         double wsum = s->w[m->spring_i[k]] + s->w[m->spring_j[k]]; /* 1 / mu */
-        double alpha = 1.0 / stiffness;                             /* compliance, 1 / (N/m) */
+        double alpha = 1.0 / stiffness;                            /* compliance, 1 / (N/m) */
         double gamma = damping_gamma(zeta, sqrt(stiffness * wsum) * h);
         double inv_denom = 1.0 / ((1.0 + gamma) * wsum + alpha / (h * h));
         size_t q = place[k];
@@ -236,8 +241,9 @@ static sk_result create(const sk_tissue_model *m, double h, sk__solver **out, sk
  * spring, n . ((x_a - b_a) - (x_b - b_b)), is taken as d . (d - (b_a - b_b)) / |d|
  * (exactly 0 when nothing moved). `mu`: alpha lambda of the spring when the step
  * iterates, NULL for one iteration. */
-static inline double spring_factor(const spring_arrays *sp, size_t k, const double *xa, const double *ba,
-                                   const double *xb, const double *bb, float *mu, double d[3])
+static inline double spring_factor(const spring_arrays *sp, size_t k, const double *xa,
+                                   const double *ba, const double *xb, const double *bb, float *mu,
+                                   double d[3])
 {
     double dx = xa[0] - xb[0], dy = xa[1] - xb[1], dz = xa[2] - xb[2];
     double mx = dx - (ba[0] - bb[0]), my = dy - (ba[1] - bb[1]), mz = dz - (ba[2] - bb[2]);
@@ -255,10 +261,12 @@ static inline double spring_factor(const spring_arrays *sp, size_t k, const doub
 }
 
 /* Spring k solved on x. */
-static inline void solve_one(const spring_arrays *sp, size_t k, double *x, const double *base, float *mu)
+static inline void solve_one(const spring_arrays *sp, size_t k, double *x, const double *base,
+                             float *mu)
 {
     double *xa = x + 3 * (size_t)sp->i[k], *xb = x + 3 * (size_t)sp->j[k], d[3];
-    double f = spring_factor(sp, k, xa, base + 3 * (size_t)sp->i[k], xb, base + 3 * (size_t)sp->j[k], mu, d);
+    double f = spring_factor(sp, k, xa, base + 3 * (size_t)sp->i[k], xb,
+                             base + 3 * (size_t)sp->j[k], mu, d);
     double ga = -sp->ci[k] * f, gb = -sp->cj[k] * f;
     for (int c = 0; c < 3; c++) {
         xa[c] += ga * d[c];
@@ -286,7 +294,10 @@ static inline void store_pair(double *p0, double *p1, __m128d x, __m128d y, __m1
 }
 
 /* Two floats of an array as doubles. */
-static inline __m128d load_two_floats(const float *f) { return _mm_cvtps_pd(_mm_setr_ps(f[0], f[1], 0.0f, 0.0f)); }
+static inline __m128d load_two_floats(const float *f)
+{
+    return _mm_cvtps_pd(_mm_setr_ps(f[0], f[1], 0.0f, 0.0f));
+}
 
 /* Springs k and k + 1 of one run (they share no point) in the two lanes: solve_one's
  * operations. */
@@ -302,13 +313,16 @@ static inline void solve_two(const spring_arrays *sp, size_t k, double *x, const
     __m128d dx = _mm_sub_pd(ax, bx), dy = _mm_sub_pd(ay, by), dz = _mm_sub_pd(az, bz);
     __m128d mx = _mm_sub_pd(dx, _mm_sub_pd(bax, bbx)), my = _mm_sub_pd(dy, _mm_sub_pd(bay, bby)),
             mz = _mm_sub_pd(dz, _mm_sub_pd(baz, bbz));
-    __m128d len = _mm_sqrt_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)));
+    __m128d len = _mm_sqrt_pd(
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz)));
     __m128d has_direction = _mm_cmpgt_pd(len, _mm_set1_pd(SHORTEST));
     __m128d one = _mm_set1_pd(1.0), sign = _mm_set1_pd(-0.0);
     __m128d safe = _mm_or_pd(_mm_and_pd(has_direction, len), _mm_andnot_pd(has_direction, one));
     __m128d inv = _mm_div_pd(one, safe);
-    __m128d rel = _mm_mul_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, mx), _mm_mul_pd(dy, my)), _mm_mul_pd(dz, mz)), inv);
-    __m128d force = _mm_add_pd(_mm_sub_pd(len, _mm_loadu_pd(sp->rest + k)), _mm_mul_pd(load_two_floats(sp->gamma + k), rel));
+    __m128d rel = _mm_mul_pd(
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, mx), _mm_mul_pd(dy, my)), _mm_mul_pd(dz, mz)), inv);
+    __m128d force = _mm_add_pd(_mm_sub_pd(len, _mm_loadu_pd(sp->rest + k)),
+                               _mm_mul_pd(load_two_floats(sp->gamma + k), rel));
     __m128d f = _mm_and_pd(has_direction, _mm_mul_pd(force, inv));
     __m128d ga = _mm_mul_pd(_mm_xor_pd(load_two_floats(sp->ci + k), sign), f);
     __m128d gb = _mm_mul_pd(_mm_xor_pd(load_two_floats(sp->cj + k), sign), f);
@@ -325,7 +339,8 @@ static inline void solve_two(const spring_arrays *sp, size_t k, double *x, const
 static inline SK__AVX2 __m256d sum_xyz(__m256d a, __m256d b, __m256d c, __m256d d)
 {
     __m256d ab = _mm256_hadd_pd(a, b), cd = _mm256_hadd_pd(c, d);
-    return _mm256_add_pd(_mm256_permute2f128_pd(ab, cd, 0x20), _mm256_permute2f128_pd(ab, cd, 0x31));
+    return _mm256_add_pd(_mm256_permute2f128_pd(ab, cd, 0x20),
+                         _mm256_permute2f128_pd(ab, cd, 0x31));
 }
 
 /* The factors w_i dlambda / |d| (ga) and w_j dlambda / |d| (gb, both negated) of springs
@@ -333,8 +348,8 @@ static inline SK__AVX2 __m256d sum_xyz(__m256d a, __m256d b, __m256d c, __m256d 
  * start the next: solve_one's operations, lane by lane. The sums of three products are
  * (x + y) + (z + 0), which is (x + y) + z exactly (z + 0 is z, or +0 for z = -0, which
  * leaves the force as it is: the damping term then is a zero added to len - rest). */
-static inline SK__AVX2 void factors_four(const spring_arrays *sp, size_t k, const double *packed, double *ga_out,
-                                         double *gb_out)
+static inline SK__AVX2 void factors_four(const spring_arrays *sp, size_t k, const double *packed,
+                                         double *ga_out, double *gb_out)
 {
     __m256d dd[4], dm[4];
     const uint32_t *ends_i = sp->i + k, *ends_j = sp->j + k;
@@ -354,13 +369,15 @@ static inline SK__AVX2 void factors_four(const spring_arrays *sp, size_t k, cons
     __m256d force = _mm256_add_pd(_mm256_sub_pd(len, _mm256_loadu_pd(sp->rest + k)),
                                   _mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(sp->gamma + k)), rel));
     __m256d f = _mm256_and_pd(has_direction, _mm256_mul_pd(force, inv));
-    _mm256_storeu_pd(ga_out, _mm256_mul_pd(_mm256_xor_pd(_mm256_cvtps_pd(_mm_loadu_ps(sp->ci + k)), sign), f));
-    _mm256_storeu_pd(gb_out, _mm256_mul_pd(_mm256_xor_pd(_mm256_cvtps_pd(_mm_loadu_ps(sp->cj + k)), sign), f));
+    _mm256_storeu_pd(
+        ga_out, _mm256_mul_pd(_mm256_xor_pd(_mm256_cvtps_pd(_mm_loadu_ps(sp->ci + k)), sign), f));
+    _mm256_storeu_pd(
+        gb_out, _mm256_mul_pd(_mm256_xor_pd(_mm256_cvtps_pd(_mm_loadu_ps(sp->cj + k)), sign), f));
 }
 
 /* The same for one spring (spring_factor on the records). */
-static inline SK__AVX2 void factors_one(const spring_arrays *sp, size_t k, const double *packed, double *ga,
-                                        double *gb)
+static inline SK__AVX2 void factors_one(const spring_arrays *sp, size_t k, const double *packed,
+                                        double *ga, double *gb)
 {
     const double *a = packed + 8 * (size_t)sp->i[k], *b = packed + 8 * (size_t)sp->j[k];
     double d[3], f = spring_factor(sp, k, a, a + 4, b, b + 4, NULL, d);
@@ -374,7 +391,8 @@ static inline SK__AVX2 void factors_one(const spring_arrays *sp, size_t k, const
  * every spring's factors (reads only, so the processor overlaps the springs' square roots
  * and divisions), then the moves x_a += ga d, x_b -= gb d (d = x_a - x_b again: the ends
  * have not moved in between). */
-static SK__AVX2 void solve_run_wide(const spring_arrays *sp, size_t first, size_t end, double *packed)
+static SK__AVX2 void solve_run_wide(const spring_arrays *sp, size_t first, size_t end,
+                                    double *packed)
 {
     double ga[CHUNK], gb[CHUNK];
     for (size_t k0 = first; k0 < end; k0 += CHUNK) {
@@ -394,7 +412,8 @@ static SK__AVX2 void solve_run_wide(const spring_arrays *sp, size_t first, size_
 
 /* Springs first..end - 1 in order on x; `mu` (alpha lambda per spring) when the step
  * iterates, NULL for a single iteration (lambda starts at 0 each step). */
-static void solve_run(const sk__solver *s, size_t first, size_t end, double *x, const double *base, float *mu)
+static void solve_run(const sk__solver *s, size_t first, size_t end, double *x, const double *base,
+                      float *mu)
 {
     size_t k = first;
     if (mu || !s->paired) {
@@ -449,8 +468,8 @@ static void sweep(sk__solver *s, double *x, const double *base, float *mu)
 }
 
 /* The tethers of free point p (after the springs). */
-static inline void tether(const sk__solver *s, size_t p, double *x, const double *base, const double *target,
-                          const double *target_base, bool iterate)
+static inline void tether(const sk__solver *s, size_t p, double *x, const double *base,
+                          const double *target, const double *target_base, bool iterate)
 {
     double a = s->tether_coef[p], g = s->tether_gamma[p], ca = s->tether_ca[p];
     for (int c = 0; c < 3; c++) {
@@ -465,7 +484,8 @@ static inline void tether(const sk__solver *s, size_t p, double *x, const double
     }
 }
 
-static void step(sk__solver *s, double *x, const double *base, const double *target, const double *target_base)
+static void step(sk__solver *s, double *x, const double *base, const double *target,
+                 const double *target_base)
 {
     bool iterate = s->iterations > 1;
     if (s->wide) {
@@ -494,7 +514,8 @@ static void step(sk__solver *s, double *x, const double *base, const double *tar
     for (int it = 0; it < s->iterations; it++) {
         sweep(s, x, base, iterate ? s->mu : NULL);
 #pragma omp for schedule(static)
-        for (size_t p = 0; p < s->free_count; p++) tether(s, p, x, base, target, target_base, iterate);
+        for (size_t p = 0; p < s->free_count; p++)
+            tether(s, p, x, base, target, target_base, iterate);
     }
 }
 

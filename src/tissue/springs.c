@@ -44,11 +44,12 @@ static bool is_skin(const sk_tissue_model *m, size_t p) { return p < m->skin_cou
 /* Class of the spring between points p and q, grid neighbours along a direction that is
  * (`near`) or is not in the character's neighbourhood; -1 for none. `on_tissue[p]` marks
  * skin points with no fat point among their 26 neighbours. */
-static int spring_class(const sk_tissue_model *m, const uint8_t *on_tissue, size_t p, size_t q, bool near)
+static int spring_class(const sk_tissue_model *m, const uint8_t *on_tissue, size_t p, size_t q,
+                        bool near)
 {
     bool fp = is_free(m, p), fq = is_free(m, q), sp = is_skin(m, p), sq = is_skin(m, q);
-    if (!fp && !fq) return -1;     /* both driven */
-    if (sp && sq) return -1;       /* skin springs follow the triangles */
+    if (!fp && !fq) return -1; /* both driven */
+    if (sp && sq) return -1;   /* skin springs follow the triangles */
     if (sp || sq) {
         if (fp && fq) return SK__SPRING_SKIN_FAT;
         return on_tissue[sp ? p : q] ? SK__SPRING_ANCHOR : -1;
@@ -106,10 +107,13 @@ sk_result sk__model_springs(sk_tissue_model *m, sk_error *err)
         bool fat = false;
         for (int k = 0; k < nd && !fat; k++)
             for (int sgn = -1; sgn <= 1 && !fat; sgn += 2) {
-                int x = c[0] + sgn * dirs[k][0], y = c[1] + sgn * dirs[k][1], z = c[2] + sgn * dirs[k][2];
-                if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2]) continue;
+                int x = c[0] + sgn * dirs[k][0], y = c[1] + sgn * dirs[k][1],
+                    z = c[2] + sgn * dirs[k][2];
+                if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2])
+                    continue;
                 int32_t q = m->grid_point[sk__grid_index(g, x, y, z)];
-                fat = q >= 0 && (size_t)q >= m->skin_count && (size_t)q < m->skin_count + m->fat_count;
+                fat = q >= 0 && (size_t)q >= m->skin_count &&
+                      (size_t)q < m->skin_count + m->fat_count;
             }
         on_tissue[p] = !fat;
     }
@@ -134,7 +138,8 @@ sk_result sk__model_springs(sk_tissue_model *m, sk_error *err)
     size_t ne = 0;
     for (size_t t = 0; t < m->triangle_count; t++)
         for (int k = 0; k < 3; k++) {
-            uint32_t a = m->triangles[3 * t + (size_t)k], b = m->triangles[3 * t + (size_t)(k + 1) % 3];
+            uint32_t a = m->triangles[3 * t + (size_t)k],
+                     b = m->triangles[3 * t + (size_t)(k + 1) % 3];
             edges[2 * ne] = a < b ? a : b;
             edges[2 * ne + 1] = a < b ? b : a;
             ne++;
@@ -176,10 +181,12 @@ sk_result sk__model_springs(sk_tissue_model *m, sk_error *err)
             }
         }
         for (size_t e = 0; e < unique; e++) {
-            size_t n = lattice + e, gi = m->grid_of[edges[2 * e]], gj = m->grid_of[edges[2 * e + 1]];
+            size_t n = lattice + e, gi = m->grid_of[edges[2 * e]],
+                   gj = m->grid_of[edges[2 * e + 1]];
             int c = colour_of(g, dirs, nd, &gi, &gj);
             if (c < 0) {
-                r = sk_fail(err, SK_ERROR_NUMERIC, "a skin edge joins points that are not grid neighbours");
+                r = sk_fail(err, SK_ERROR_NUMERIC,
+                            "a skin edge joins points that are not grid neighbours");
                 break;
             }
             si[n] = (uint32_t)m->grid_point[gi];
@@ -194,7 +201,8 @@ sk_result sk__model_springs(sk_tissue_model *m, sk_error *err)
         size_t count[27] = {0};
         for (size_t s = 0; s < total; s++) count[col[s]]++;
         m->colour_start[0] = 0;
-        for (int c = 0; c < m->colour_count; c++) m->colour_start[c + 1] = m->colour_start[c] + count[c];
+        for (int c = 0; c < m->colour_count; c++)
+            m->colour_start[c + 1] = m->colour_start[c] + count[c];
         size_t fill[27];
         memcpy(fill, m->colour_start, sizeof fill);
         for (size_t s = 0; s < total; s++) {

@@ -46,8 +46,8 @@ static void index_range(const sk__grid *g, int k, double a, double b, int *lo, i
 
 /* Labels the points of one slice inside one ellipsoid, keeping the lowest level per
  * kind; `level` holds the current best level of the slice's points. */
-static void stamp(const sk__grid *g, int z, const sk__ellipsoid *e, sk__label label, bool bone, sk__label *labels,
-                  float *level)
+static void stamp(const sk__grid *g, int z, const sk__ellipsoid *e, sk__label label, bool bone,
+                  sk__label *labels, float *level)
 {
     sk_vec3d lo, hi;
     sk__ellipsoid_bounds(e, &lo, &hi);
@@ -73,7 +73,8 @@ static void stamp(const sk__grid *g, int z, const sk__ellipsoid *e, sk__label la
     }
 }
 
-sk_result sk__voxelise(const sk__grid *g, const sk__tissue_shapes *t, sk__label *labels, sk_error *err)
+sk_result sk__voxelise(const sk__grid *g, const sk__tissue_shapes *t, sk__label *labels,
+                       sk_error *err)
 {
     size_t slice = (size_t)g->n[0] * (size_t)g->n[1];
     int threads = omp_get_max_threads();
@@ -90,12 +91,14 @@ sk_result sk__voxelise(const sk__grid *g, const sk__tissue_shapes *t, sk__label 
                 for (int k = 0; k < 3; k++) {
                     sk_vec3d lo, hi;
                     sk__ellipsoid_bounds(&t->bone[b][k], &lo, &hi);
-                    if (pz >= lo.z && pz <= hi.z) stamp(g, z, &t->bone[b][k], label_of_bone(b), true, labels, level);
+                    if (pz >= lo.z && pz <= hi.z)
+                        stamp(g, z, &t->bone[b][k], label_of_bone(b), true, labels, level);
                 }
             for (int m = 0; m < t->muscle_count; m++) {
                 sk_vec3d lo, hi;
                 sk__ellipsoid_bounds(&t->muscle[m], &lo, &hi);
-                if (pz >= lo.z && pz <= hi.z) stamp(g, z, &t->muscle[m], label_of_muscle(m), false, labels, level);
+                if (pz >= lo.z && pz <= hi.z)
+                    stamp(g, z, &t->muscle[m], label_of_muscle(m), false, labels, level);
             }
         }
     }

@@ -10,13 +10,15 @@
 #include "shitsukan/gltf.h"
 #include "tissue/tissue_internal.h"
 
-sk_result sk__write_skin_glb(const sk_mesh *rest, const float *positions, const float *normals, int frames,
-                             int first_frame, int fps, const char *path, sk_error *err)
+sk_result sk__write_skin_glb(const sk_mesh *rest, const float *positions, const float *normals,
+                             int frames, int first_frame, int fps, const char *path, sk_error *err)
 {
     size_t n = rest->vertex_count, per = 3 * n;
-    float *dp = malloc((size_t)frames * per * sizeof *dp), *dn = malloc((size_t)frames * per * sizeof *dn);
-    float *times = malloc((size_t)frames * sizeof *times), *weights = calloc((size_t)frames * (size_t)frames, sizeof *weights);
-    char (*names)[24] = malloc((size_t)frames * sizeof *names);
+    float *dp = malloc((size_t)frames * per * sizeof *dp),
+          *dn = malloc((size_t)frames * per * sizeof *dn);
+    float *times = malloc((size_t)frames * sizeof *times),
+          *weights = calloc((size_t)frames * (size_t)frames, sizeof *weights);
+    char(*names)[24] = malloc((size_t)frames * sizeof *names);
     const char **name_ptr = malloc((size_t)frames * sizeof *name_ptr);
     sk_gltf *g = NULL;
     sk_result r = SK_OK;
@@ -71,8 +73,8 @@ sk_result sk__write_skin_glb(const sk_mesh *rest, const float *positions, const 
     }
     if (r == SK_OK && frames > 1) r = sk_gltf_add_animation(g, "jiggle", &animation, err);
     if (r == SK_OK && frames > 1)
-        r = sk_gltf_add_channel(g, animation, node, SK_GLTF_PATH_WEIGHTS, SK_GLTF_INTERPOLATION_LINEAR, times, frames,
-                                weights, err);
+        r = sk_gltf_add_channel(g, animation, node, SK_GLTF_PATH_WEIGHTS,
+                                SK_GLTF_INTERPOLATION_LINEAR, times, frames, weights, err);
     if (r == SK_OK) r = sk_gltf_write_glb(g, path, NULL, err);
     sk_gltf_destroy(g);
     free(dp);

@@ -62,10 +62,12 @@ static inline double sk__attributes_weight(const sk__attributes *a, double u)
 static inline double sk__attributes_integral(const sk__attributes *a, double t)
 {
     double whole = sk__floor_d(t), u = t - whole, v;
-    if (u < a->early_end) v = 0.0;
+    if (u < a->early_end)
+        v = 0.0;
     else if (u < a->late_start)
         v = 0.5 * (u - a->early_end) * (u - a->early_end) / (a->late_start - a->early_end);
-    else v = 0.5 * (a->late_start - a->early_end) + (u - a->late_start);
+    else
+        v = 0.5 * (a->late_start - a->early_end) + (u - a->late_start);
     return whole * a->per_year + v;
 }
 

@@ -14,10 +14,10 @@
 typedef struct sk__wood_batch {
     float albedo[3][SK__WOOD_BATCH]; /* linear R, G, B */
     float vessel[SK__WOOD_BATCH];
-    float fibre[3][SK__WOOD_BATCH];  /* unit fibre direction, scene frame */
-    float dive[SK__WOOD_BATCH];      /* 0 without SK__WOOD_EVAL_DIVE */
+    float fibre[3][SK__WOOD_BATCH]; /* unit fibre direction, scene frame */
+    float dive[SK__WOOD_BATCH];     /* 0 without SK__WOOD_EVAL_DIVE */
     float t[SK__WOOD_BATCH], latewood[SK__WOOD_BATCH], phase[SK__WOOD_BATCH];
-    sk_vec3f up;                     /* the same for every point (one normal) */
+    sk_vec3f up; /* the same for every point (one normal) */
 } sk__wood_batch;
 
 #endif

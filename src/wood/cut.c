@@ -19,8 +19,8 @@
 static sk_vec3f tilt_towards(sk_vec3f n, sk_vec3f up, sk_vec3f side, double incidence,
                              double azimuth)
 {
-    sk_vec3f dir = sk_v3f_add(sk_v3f_scale(up, (float)cos(azimuth)),
-                              sk_v3f_scale(side, (float)sin(azimuth)));
+    sk_vec3f dir =
+        sk_v3f_add(sk_v3f_scale(up, (float)cos(azimuth)), sk_v3f_scale(side, (float)sin(azimuth)));
     return sk_v3f_normalize(sk_v3f_add(sk_v3f_scale(n, (float)cos(incidence)),
                                        sk_v3f_scale(dir, (float)sin(incidence))));
 }
@@ -71,8 +71,8 @@ typedef struct cut_context {
     int pixel_of[SK__WOOD_BATCH];   /* sample j of a span: its pixel */
     double pixel_x[SK__WOOD_BATCH]; /* that pixel's column in the span, and the sample's */
     double sub_x[SK__WOOD_BATCH];   /* offset inside the pixel */
-    float footprint, inv;          /* sample footprint (mm); 1 / samples per pixel */
-    bool figure, lit;              /* eq. (4) shading; light above the surface */
+    float footprint, inv;           /* sample footprint (mm); 1 / samples per pixel */
+    bool figure, lit;               /* eq. (4) shading; light above the surface */
     sk__figure_light fl;
     unsigned flags;
     /* the cross-section stage of every sub-pixel column of the region (rw S entries,
@@ -272,8 +272,8 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
     }
     if (rx < 0 || ry < 0 || rw < 1 || rh < 1 || rx > desc->width - rw || ry > desc->height - rh)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
-                       "cut region %d,%d,%d,%d does not lie inside the %dx%d image", rx, ry, rw,
-                       rh, desc->width, desc->height);
+                       "cut region %d,%d,%d,%d does not lie inside the %dx%d image", rx, ry, rw, rh,
+                       desc->width, desc->height);
     float nlen = sk_v3f_length(desc->normal);
     if (!(nlen > 1e-12f)) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "cut normal is zero");
     sk_vec3f n = sk_v3f_scale(desc->normal, 1.0f / nlen);
@@ -329,9 +329,10 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
         column_store = malloc(SK__WOOD_SECTION_FIELDS * count * sizeof(double));
         if (column_store) {
             double **fields[SK__WOOD_SECTION_FIELDS] = {
-                &columns.r, &columns.cos_t, &columns.sin_t, &columns.theta, &columns.t,
-                &columns.width, &columns.dR, &columns.half, &columns.late};
-            for (int f = 0; f < SK__WOOD_SECTION_FIELDS; f++) *fields[f] = column_store + (size_t)f * count;
+                &columns.r,     &columns.cos_t, &columns.sin_t, &columns.theta, &columns.t,
+                &columns.width, &columns.dR,    &columns.half,  &columns.late};
+            for (int f = 0; f < SK__WOOD_SECTION_FIELDS; f++)
+                *fields[f] = column_store + (size_t)f * count;
             c.columns = &columns;
             int blocks = (int)((count + SK__WOOD_BATCH - 1) / SK__WOOD_BATCH);
 #pragma omp parallel for schedule(static) if (sk__parallel_worth(count, 60.0))
@@ -342,7 +343,9 @@ sk_result sk_wood_cut(const sk_wood *wood, const sk_wood_cut_desc *desc, sk_erro
                 for (int j = 0; j < m; j++) {
                     size_t k = k0 + (size_t)j;
                     /* render_span's sample position, the row's part being 0 in x and z */
-                    double fx = ((double)(rx + (int)(k / (size_t)S)) + c.sub[k % (size_t)S]) * c.inv_W - 0.5;
+                    double fx =
+                        ((double)(rx + (int)(k / (size_t)S)) + c.sub[k % (size_t)S]) * c.inv_W -
+                        0.5;
                     float sx = (float)(fx * c.width_mm);
                     px[j] = desc->point.x + a.x * sx;
                     pz[j] = desc->point.z + a.z * sx;

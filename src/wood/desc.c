@@ -79,10 +79,10 @@ sk_wood_desc sk_wood_desc_resolved(const sk_wood_desc *desc)
 }
 
 /* Range checks that stop at the first failure. */
-#define CHECK(call)                                                                            \
-    do {                                                                                       \
-        sk_result check_result_ = (call);                                                      \
-        if (check_result_ != SK_OK) return check_result_;                                      \
+#define CHECK(call)                                                                                \
+    do {                                                                                           \
+        sk_result check_result_ = (call);                                                          \
+        if (check_result_ != SK_OK) return check_result_;                                          \
     } while (0)
 
 static sk_result check_color(sk_error *err, const char *key, const float c[3])
@@ -179,7 +179,8 @@ sk_result sk_wood_desc_validate(const sk_wood_desc *desc_in, sk_error *err)
                            k, g->table[k].y_mm, k - 1, g->table[k - 1].y_mm);
     }
     CHECK(sk_check_range_f(err, "grain.fluctuation", g->fluctuation, 0.0, 1.0));
-    CHECK(sk_check_range_f(err, "grain.fluctuation_scale_mm", g->fluctuation_scale_mm, 1.0, 10000.0));
+    CHECK(
+        sk_check_range_f(err, "grain.fluctuation_scale_mm", g->fluctuation_scale_mm, 1.0, 10000.0));
     CHECK(sk_check_range_f(err, "grain.fluctuation_years", g->fluctuation_years, 0.25, 1000.0));
 
     const sk_wood_vessels_desc *v = &d.vessels;
@@ -203,10 +204,12 @@ sk_result sk_wood_desc_validate(const sk_wood_desc *desc_in, sk_error *err)
     CHECK(sk_check_range_f(err, "fibre.brightness_shift", d.fibre.brightness_shift, 0.0, 1.0));
     CHECK(sk_check_range_f(err, "fibre.cell_mm", d.fibre.cell_mm, 0.005, 10.0));
     CHECK(sk_check_range_f(err, "fibre.length_mm", d.fibre.length_mm, 0.0, 10000.0));
-    CHECK(sk_check_range_i(err, "fibre.shift_mode", d.fibre.shift_mode, 0, SK_WOOD_SHIFT_COUNT - 1));
+    CHECK(
+        sk_check_range_i(err, "fibre.shift_mode", d.fibre.shift_mode, 0, SK_WOOD_SHIFT_COUNT - 1));
 
     const sk_wood_rays_desc *ry = &d.rays;
-    if (ry->spacing_mm != 0.0f) CHECK(sk_check_range_f(err, "rays.spacing_mm", ry->spacing_mm, 0.2, 100.0));
+    if (ry->spacing_mm != 0.0f)
+        CHECK(sk_check_range_f(err, "rays.spacing_mm", ry->spacing_mm, 0.2, 100.0));
     CHECK(sk_check_range_f(err, "rays.width_mm", ry->width_mm, 0.01, 5.0));
     CHECK(sk_check_range_f(err, "rays.height_mm", ry->height_mm, 0.1, 1000.0));
     CHECK(sk_check_range_f(err, "rays.length_mm", ry->length_mm, 1.0, 5000.0));

@@ -39,8 +39,9 @@ static inline bool same_bits(double a, double b)
  * cells run along d covering that share of the point), renormalised. */
 static void blend_fibre(sk__wood_batch *out, int i, double m, sk_vec3d d)
 {
-    sk_vec3d f = sk_v3d((1.0 - m) * out->fibre[0][i] + m * d.x, (1.0 - m) * out->fibre[1][i] + m * d.y,
-                        (1.0 - m) * out->fibre[2][i] + m * d.z);
+    sk_vec3d f =
+        sk_v3d((1.0 - m) * out->fibre[0][i] + m * d.x, (1.0 - m) * out->fibre[1][i] + m * d.y,
+               (1.0 - m) * out->fibre[2][i] + m * d.z);
     double len = sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
     if (len > 1e-9) {
         out->fibre[0][i] = (float)(f.x / len);
@@ -109,7 +110,8 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
             sin_k[i] = sin_t[i];
             late_k[i] = late[i];
             sk__knot_hit *h = &hit[hits];
-            if (!sk__knots_hit(&w->knots, rg, r[i], theta[i], y[i], t[i], footprint_mm, h)) continue;
+            if (!sk__knots_hit(&w->knots, rg, r[i], theta[i], y[i], t[i], footprint_mm, h))
+                continue;
             hit_of[i] = hits++;
             double s, c;
             sk__sincos(h->theta_shift, &s, &c);
@@ -211,8 +213,8 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
             x0[i] = r0[i] * dir_x[i];
             z0[i] = r0[i] * dir_z[i];
         }
-        sk__vessels_coverage_batch(&w->vessels, rg, count, at0, x0, z0, r0, theta0, t,
-                                   footprint_mm, vessel);
+        sk__vessels_coverage_batch(&w->vessels, rg, count, at0, x0, z0, r0, theta0, t, footprint_mm,
+                                   vessel);
     } else {
         for (int i = 0; i < count; i++) vessel[i] = 0.0;
     }
@@ -226,9 +228,9 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
             /* the footprint along the ray's directions that lie in the surface */
             double er = cos_t[i] * nt.x + sin_t[i] * nt.z, et = -sin_t[i] * nt.x + cos_t[i] * nt.z;
             double in_r = 1.0 - er * er, in_t = 1.0 - et * et, in_y = 1.0 - (double)nt.y * nt.y;
-            ray[i] = sk__rays_coverage(&w->rays, rg, t[i], theta0[i], r0[i], y[i],
-                                       fw * sqrt(in_t > 0.0 ? in_t : 0.0), fw * sqrt(in_y > 0.0 ? in_y : 0.0),
-                                       fw * sqrt(in_r > 0.0 ? in_r : 0.0));
+            ray[i] = sk__rays_coverage(
+                &w->rays, rg, t[i], theta0[i], r0[i], y[i], fw * sqrt(in_t > 0.0 ? in_t : 0.0),
+                fw * sqrt(in_y > 0.0 ? in_y : 0.0), fw * sqrt(in_r > 0.0 ? in_r : 0.0));
             vessel[i] *= 1.0 - ray[i];
         }
     }
@@ -302,15 +304,14 @@ void sk__wood_eval_section_batch(const sk_wood *w, int count, const sk__wood_sec
     /* its dive under the surface (sec. 7.1) */
     for (int i = 0; i < count; i++)
         out->dive[i] = (flags & SK__WOOD_EVAL_DIVE)
-                           ? (float)sk__fibre_dive(sk_v3f(out->fibre[0][i], out->fibre[1][i],
-                                                          out->fibre[2][i]),
-                                                   n)
+                           ? (float)sk__fibre_dive(
+                                 sk_v3f(out->fibre[0][i], out->fibre[1][i], out->fibre[2][i]), n)
                            : 0.0f;
     out->up = sk__wood_surface_up(w, n);
 }
 
-void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[3],
-                         sk_vec3f normal, float footprint_mm, unsigned flags, sk__wood_batch *out)
+void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[3], sk_vec3f normal,
+                         float footprint_mm, unsigned flags, sk__wood_batch *out)
 {
     if (count <= 0) return;
     /* into the tree frame (sk__wood_frame_point_to_tree) */
@@ -325,7 +326,8 @@ void sk__wood_eval_batch(const sk_wood *w, int count, const float *const points[
         }
     } else {
         const sk__wood_frame *f = &w->frame;
-        sk_vec3f o = f->origin, m0 = sk_v3f(f->to_tree.m[0][0], f->to_tree.m[0][1], f->to_tree.m[0][2]);
+        sk_vec3f o = f->origin,
+                 m0 = sk_v3f(f->to_tree.m[0][0], f->to_tree.m[0][1], f->to_tree.m[0][2]);
         sk_vec3f m1 = sk_v3f(f->to_tree.m[1][0], f->to_tree.m[1][1], f->to_tree.m[1][2]);
         sk_vec3f m2 = sk_v3f(f->to_tree.m[2][0], f->to_tree.m[2][1], f->to_tree.m[2][2]);
 #pragma omp simd

@@ -12,8 +12,7 @@
 /* Unit tangent, oriented up the tree, of the fibre through tree-frame point (r, theta) on
  * a ring surface whose radius changes by dR/dtheta around the ring, for the slope
  * G = r dtheta/dy: proportional to e_y + G e_theta + (G / r) dR/dtheta e_r. */
-static inline sk_vec3d sk__fibre_direction(double G, double dR_dtheta, double r, double c,
-                                           double s)
+static inline sk_vec3d sk__fibre_direction(double G, double dR_dtheta, double r, double c, double s)
 {
     double radial = G * dR_dtheta / (r > 1e-6 ? r : 1.0); /* selects: loops vectorize */
     radial = r > 1e-6 ? radial : 0.0;

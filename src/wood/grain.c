@@ -53,7 +53,10 @@ double sk__grain_table_slope(const sk__grain *g, double y)
     int lo = 0, hi = n - 1;
     while (hi - lo > 1) {
         int mid = (lo + hi) / 2;
-        if (g->table_y[mid] <= y) lo = mid; else hi = mid;
+        if (g->table_y[mid] <= y)
+            lo = mid;
+        else
+            hi = mid;
     }
     double u = (y - g->table_y[lo]) / (g->table_y[hi] - g->table_y[lo]);
     return g->table_g[lo] + u * (g->table_g[hi] - g->table_g[lo]);
@@ -74,7 +77,10 @@ double sk__grain_table_integral(const sk__grain *g, double y)
         int lo = 0, hi = n - 1;
         while (hi - lo > 1) {
             int mid = (lo + hi) / 2;
-            if (g->table_y[mid] <= y) lo = mid; else hi = mid;
+            if (g->table_y[mid] <= y)
+                lo = mid;
+            else
+                hi = mid;
         }
         double h = g->table_y[hi] - g->table_y[lo], s = y - g->table_y[lo];
         v = g->table_cum[lo] + g->table_g[lo] * s +
@@ -125,8 +131,9 @@ sk_result sk__grain_build(sk__grain *g, const sk_wood_desc *desc, double t_max, 
     sk_fbm_desc fbm = {4, 2.0f, 0.5f};
     const int big = 1 << 20; /* t is not periodic: a period far beyond any table */
     double peak = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : peak) \
-    if (sk__parallel_worth((double)g->nt * g->ny, 80.0))
+#pragma omp parallel for schedule(static)                                                          \
+    reduction(max                                                                                  \
+              : peak) if (sk__parallel_worth((double)g->nt * g->ny, 80.0))
     for (int i = 0; i < g->nt; i++) {
         float *r = g->dg + (size_t)i * row;
         double mean = 0.0;

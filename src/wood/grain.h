@@ -44,8 +44,8 @@ bool sk__phase_build(sk__grain *grain);
 /* The terms of Phi(t, y) and G'(t, y) that depend on y alone (a planar cut along the
  * rings has one y per row, so they are found once for many points). */
 typedef struct sk__phase_y {
-    double P, G;    /* spiral, wavy and tabulated terms */
-    int j;          /* dg grid column of y and the weight u of column j + 1 */
+    double P, G; /* spiral, wavy and tabulated terms */
+    int j;       /* dg grid column of y and the weight u of column j + 1 */
     double u;
     double dy_u, half_u; /* dy u and u / 2, the factors of the quadratic in between */
 } sk__phase_y;
@@ -86,8 +86,8 @@ static inline sk__phase_y sk__phase_at_y(const sk__grain *g, double y)
  * between samples along y, so the table holds the exact integral at the samples and the
  * lookup adds the exact quadratic in between: dPhi/dy is the interpolated dg, consistent
  * with the fibre. */
-static inline double sk__phase_eval_y(const sk__grain *g, const sk__phase_y *py, double t,
-                                      double y, double *slope)
+static inline double sk__phase_eval_y(const sk__grain *g, const sk__phase_y *py, double t, double y,
+                                      double *slope)
 {
     double P = py->P, G = py->G;
     if (g->inter_slope != 0.0) {

@@ -72,7 +72,9 @@ static branch make_branch(const sk__knots *k, double y_whorl, double rotation, i
     uint64_t h = sk__wood_hash(k->seed, whorl, i + 1, 1);
     branch b;
     b.y0 = y_whorl;
-    b.theta = rotation + 2.0 * SK_PI * (i + k->azimuth_jitter * (2.0 * sk__hash_unit16(h, 0) - 1.0)) / k->per_whorl;
+    b.theta = rotation + 2.0 * SK_PI *
+                             (i + k->azimuth_jitter * (2.0 * sk__hash_unit16(h, 0) - 1.0)) /
+                             k->per_whorl;
     double rise = clamp_rise(k->rise + k->rise_jitter * (2.0 * sk__hash_unit16(h, 1) - 1.0));
     b.cos_b = cos(rise);
     b.sin_b = sin(rise);
@@ -165,13 +167,16 @@ bool sk__knots_hit(const sk__knots *k, const sk__rings *rings, double r, double 
     double cos_min = 1.0 / sqrt(1.0 + fmax(k->tan_lo * k->tan_lo, k->tan_hi * k->tan_hi));
     double ext = k->reach * w_max * t_max / cos_min;
     /* whorls whose branches can cross this ring surface near y */
-    double y_lo = y - r * k->tan_hi - ext - k->y_jitter, y_hi = y - r * k->tan_lo + ext + k->y_jitter;
-    int64_t first = -sk__floor_i64(-(y_lo * k->inv_spacing - k->phase)), last = sk__floor_i64(y_hi * k->inv_spacing - k->phase);
+    double y_lo = y - r * k->tan_hi - ext - k->y_jitter,
+           y_hi = y - r * k->tan_lo + ext + k->y_jitter;
+    int64_t first = -sk__floor_i64(-(y_lo * k->inv_spacing - k->phase)),
+            last = sk__floor_i64(y_hi * k->inv_spacing - k->phase);
     double best = INFINITY;
     bool found = false;
     for (int64_t whorl = first; whorl <= last; whorl++) {
         uint64_t h = sk__wood_hash(k->seed, whorl, 0, 0);
-        double y_whorl = (whorl + k->phase) * k->spacing + k->y_jitter * (2.0 * sk__hash_unit16(h, 0) - 1.0);
+        double y_whorl =
+            (whorl + k->phase) * k->spacing + k->y_jitter * (2.0 * sk__hash_unit16(h, 0) - 1.0);
         double dy = y - y_whorl;
         if (dy - r * k->tan_hi > ext || dy - r * k->tan_lo < -ext) continue;
         double rotation = 2.0 * SK_PI * sk__hash_unit16(h, 1);

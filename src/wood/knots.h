@@ -17,14 +17,14 @@ typedef struct sk__knots {
     double spacing, inv_spacing, phase; /* whorl k sits at (k + phase) spacing, jittered */
     double y_jitter;                    /* largest shift of a whorl along the axis */
     int per_whorl;
-    double rise, rise_jitter;           /* radians */
-    double tan_lo, tan_hi;              /* tangents of the smallest and largest rise */
-    double growth;                      /* a branch's ring width (mm a year) */
-    double size_jitter;                 /* relative, either way */
-    double dead;                        /* years a branch lives, 0 = alive throughout */
+    double rise, rise_jitter; /* radians */
+    double tan_lo, tan_hi;    /* tangents of the smallest and largest rise */
+    double growth;            /* a branch's ring width (mm a year) */
+    double size_jitter;       /* relative, either way */
+    double dead;              /* years a branch lives, 0 = alive throughout */
     double stub, darkening, bark, collar, reach;
-    double azimuth_jitter;              /* fraction of the spacing between branches */
-    sk_vec3f bark_color;                /* linear */
+    double azimuth_jitter; /* fraction of the spacing between branches */
+    sk_vec3f bark_color;   /* linear */
 } sk__knots;
 
 /* What a knot does at a point: where the stem's texture is looked up instead (the grain
@@ -46,7 +46,7 @@ void sk__knots_init(sk__knots *knots, const sk_wood_desc *desc);
 
 /* The knot nearest the tree-frame point (r, theta, y) of stem formation time t_stem, if
  * one is in reach: its effect in *hit. `footprint` (mm, >= 0) softens the knot's edge. */
-bool sk__knots_hit(const sk__knots *knots, const sk__rings *rings, double r, double theta,
-                   double y, double t_stem, double footprint, sk__knot_hit *hit);
+bool sk__knots_hit(const sk__knots *knots, const sk__rings *rings, double r, double theta, double y,
+                   double t_stem, double footprint, sk__knot_hit *hit);
 
 #endif

@@ -36,12 +36,14 @@ static double column_coverage(const sk__rays *r, int set, int64_t band, int64_t 
 {
     int64_t cw = ((c % columns) + columns) % columns;
     uint64_t hc = sk__wood_hash(r->seed, set, band, cw);
-    double offset = sk__hash_unit16(hc, 0) * r->row; /* the column's rows start at their own height */
+    double offset =
+        sk__hash_unit16(hc, 0) * r->row; /* the column's rows start at their own height */
     int64_t row = sk__floor_i64((y + offset) / r->row);
     uint64_t h = sk_mix64(hc ^ ((uint64_t)row * 0x9e3779b97f4a7c15ULL));
     double j = r->jitter;
     /* the ray's place: its angle in the column, height in the row, radial extent */
-    double centre = 2.0 * SK_PI * ((double)c + 0.5 + 0.6 * j * (sk__hash_unit16(h, 0) - 0.5)) / (double)columns;
+    double centre =
+        2.0 * SK_PI * ((double)c + 0.5 + 0.6 * j * (sk__hash_unit16(h, 0) - 0.5)) / (double)columns;
     double yc = ((double)row + 0.5 + 0.3 * j * (sk__hash_unit16(h, 1) - 0.5)) * r->row - offset;
     double height = r->height * (1.0 + j * (sk__hash_unit16(h, 2) - 0.5));
     double width = r->width * (1.0 + j * (sk__hash_unit16(h, 3) - 0.5));
@@ -75,14 +77,17 @@ double sk__rays_coverage(const sk__rays *r, const sk__rings *rings, double t, do
     for (int set = 0; set < 2; set++) {
         int64_t band = sk__floor_i64(t / r->band_years - 0.5 * set);
         double mid = ((double)band + 0.5 + 0.5 * set) * r->band_years;
-        int64_t columns = (int64_t)(2.0 * SK_PI * sk__rings_mean(rings, mid > 0.0 ? mid : 0.0) / r->spacing + 0.5);
+        int64_t columns =
+            (int64_t)(2.0 * SK_PI * sk__rings_mean(rings, mid > 0.0 ? mid : 0.0) / r->spacing +
+                      0.5);
         if (columns < 1) columns = 1;
         double x = theta0 * (double)columns / (2.0 * SK_PI);
         int64_t c = sk__floor_i64(x);
         int64_t other = x - (double)c > 0.5 ? c + 1 : c - 1; /* a ray may lean over the edge */
-        double a = column_coverage(r, set, band, columns, c, t, theta0, r0, y, fw_across, fw_along, fw_radial);
-        double b = columns > 1 ? column_coverage(r, set, band, columns, other, t, theta0, r0, y, fw_across,
-                                                 fw_along, fw_radial)
+        double a = column_coverage(r, set, band, columns, c, t, theta0, r0, y, fw_across, fw_along,
+                                   fw_radial);
+        double b = columns > 1 ? column_coverage(r, set, band, columns, other, t, theta0, r0, y,
+                                                 fw_across, fw_along, fw_radial)
                                : 0.0;
         best = fmax(best, fmax(a, b));
     }

@@ -13,11 +13,11 @@
 typedef struct sk__rays {
     bool on;
     uint64_t seed;
-    double spacing;      /* between the rays of one of the two staggered sets (mm) */
+    double spacing; /* between the rays of one of the two staggered sets (mm) */
     double width, height, jitter;
-    double band_years;   /* a ray's radial length in years of mean growth */
-    double row;          /* distance between ray rows along the fibre (mm) */
-    sk_vec3f color;      /* linear */
+    double band_years; /* a ray's radial length in years of mean growth */
+    double row;        /* distance between ray rows along the fibre (mm) */
+    sk_vec3f color;    /* linear */
 } sk__rays;
 
 /* From a resolved, validated desc. */

@@ -74,8 +74,7 @@ static bool build_tables(sk__rings *rg, const sk_wood_desc *desc, int years, con
     rg->lipschitz = malloc(((size_t)years + 1) * sizeof(float));
     rg->year_min = malloc(((size_t)years + 1) * sizeof(float));
     rg->year_max = malloc(((size_t)years + 1) * sizeof(float));
-    if (!rg->R || !rg->end_slope || !rg->mean || !rg->lipschitz || !rg->year_min ||
-        !rg->year_max)
+    if (!rg->R || !rg->end_slope || !rg->mean || !rg->lipschitz || !rg->year_min || !rg->year_max)
         return false;
 
     /* The noise n(t, theta) varies over fluctuation_years; sample it on a coarser t grid
@@ -88,7 +87,8 @@ static bool build_tables(sk__rings *rg, const sk_wood_desc *desc, int years, con
     sk_fbm_desc fbm = {4, 2.0f, 0.5f};
     bool ok = true;
 
-#pragma omp parallel if (sk__parallel_worth((double)ntheta, (a > 0.0 ? 100.0 * nn : 0.0) + 10.0 * rg->nt))
+#pragma omp parallel if (sk__parallel_worth((double)ntheta,                                        \
+                                            (a > 0.0 ? 100.0 * nn : 0.0) + 10.0 * rg->nt))
     {
         double *noise = a > 0.0 ? malloc((size_t)nn * sizeof(double)) : NULL;
         if (a > 0.0 && !noise) {
@@ -125,7 +125,8 @@ static bool build_tables(sk__rings *rg, const sk_wood_desc *desc, int years, con
                 R += 0.5 * rg->dt * (w[0] + w[1]);
                 col[i] = (float)R;
             }
-            rg->end_slope[j] = (float)(((double)col[rg->nt - 1] - (double)col[rg->nt - 2]) / rg->dt);
+            rg->end_slope[j] =
+                (float)(((double)col[rg->nt - 1] - (double)col[rg->nt - 2]) / rg->dt);
         }
         free(noise);
     }
@@ -179,7 +180,8 @@ static bool build_guess(sk__rings *rg)
     rg->nguess = (int)ceil(rmax / rg->guess_step) + 1;
     rg->guess = malloc((size_t)rg->ntheta * (size_t)rg->nguess * sizeof(uint16_t));
     if (!rg->guess) return false;
-#pragma omp parallel for schedule(static) if (sk__parallel_worth((double)rg->ntheta * rg->nguess, 3.0))
+#pragma omp parallel for schedule(                                                                 \
+    static) if (sk__parallel_worth((double)rg->ntheta * rg->nguess, 3.0))
     for (int j = 0; j < rg->ntheta; j++) {
         const float *c0 = rg->R + (size_t)j * nt, *c1 = c0 + nt;
         uint16_t *g = rg->guess + (size_t)j * (size_t)rg->nguess;

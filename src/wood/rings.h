@@ -10,8 +10,8 @@
 #include "wood/numeric.h"
 
 typedef struct sk__rings {
-    double width;       /* d: mean growth per year (mm) */
-    double dt;          /* t step of the table in years (1 / dt is an integer) */
+    double width; /* d: mean growth per year (mm) */
+    double dt;    /* t step of the table in years (1 / dt is an integer) */
     double inv_dt;
     int per_year;       /* knots per year, 1 / dt */
     double inside;      /* smallest R at the last knot: every r below is inside the table */
@@ -104,7 +104,8 @@ static inline double sk__rings_R_at(const sk__rings *rg, const sk__rings_at *at,
     double u = t * rg->inv_dt;
     if (u >= (double)(rg->nt - 1)) {
         double last = sk__rings_col_value(at->c0, at->c1, at->f, rg->nt - 1);
-        double slope = rg->end_slope[at->j] + at->f * (rg->end_slope[at->j + 1] - rg->end_slope[at->j]);
+        double slope =
+            rg->end_slope[at->j] + at->f * (rg->end_slope[at->j + 1] - rg->end_slope[at->j]);
         return last + (t - rg->t_max) * slope;
     }
     int i = (int)u;
@@ -147,7 +148,8 @@ static inline double sk__rings_T_at(const sk__rings *rg, const sk__rings_at *at,
         double t = rg->t_max + (r - r_last) / slope;
         if (width) *width = slope;
         if (dR_dtheta)
-            *dR_dtheta = (((double)c1[last] - c0[last]) + (t - rg->t_max) * (s1 - s0)) * rg->theta_scale;
+            *dR_dtheta =
+                (((double)c1[last] - c0[last]) + (t - rg->t_max) * (s1 - s0)) * rg->theta_scale;
         return t;
     }
     if (r < 0.0) r = 0.0;
@@ -184,7 +186,8 @@ static inline double sk__rings_mean(const sk__rings *rg, double t)
 {
     if (t <= 0.0) return 0.0;
     double u = t * rg->inv_dt;
-    if (u >= (double)(rg->nt - 1)) return rg->mean[rg->nt - 1] + (t - rg->t_max) * rg->mean_end_slope;
+    if (u >= (double)(rg->nt - 1))
+        return rg->mean[rg->nt - 1] + (t - rg->t_max) * rg->mean_end_slope;
     int i = (int)u;
     double a = u - i;
     return rg->mean[i] + a * ((double)rg->mean[i + 1] - rg->mean[i]);

@@ -10,25 +10,38 @@ const char *const sk_wood_shading_model_names[] = {"default", "figure", "fibre",
 const char *const sk_wood_plane_names[] = {"default", "end", "flat", "quarter", NULL};
 const char *const sk_wood_shift_mode_names[] = {"default", "add", "multiply", NULL};
 
-#define FLOAT_FIELD(T, member, k, lo, hi, text)                                             \
-    {.key = k, .type = SK_FIELD_FLOAT, .offset = offsetof(T, member), .min = lo, .max = hi, \
-     .doc = text}
-#define DEG_FIELD(T, member, k, lo, hi, text)                                               \
-    {.key = k, .type = SK_FIELD_FLOAT, .offset = offsetof(T, member), .min = lo, .max = hi, \
-     .scale = SK_DEG_TO_RAD, .doc = text}
-#define FLOATS_FIELD(T, member, k, n, lo, hi, text)                                         \
-    {.key = k, .type = SK_FIELD_FLOATS, .offset = offsetof(T, member), .min = lo, .max = hi, \
-     .count = n, .count_offset = SK_FIELD_FIXED, .doc = text}
-#define OBJECT_FIELD(T, member, k, sub, text)                                               \
-    {.key = k, .type = SK_FIELD_OBJECT, .offset = offsetof(T, member), .schema = &sub,      \
-     .doc = text}
+#define FLOAT_FIELD(T, member, k, lo, hi, text)                                                    \
+    {                                                                                              \
+        .key = k, .type = SK_FIELD_FLOAT, .offset = offsetof(T, member), .min = lo, .max = hi,     \
+        .doc = text                                                                                \
+    }
+#define DEG_FIELD(T, member, k, lo, hi, text)                                                      \
+    {                                                                                              \
+        .key = k, .type = SK_FIELD_FLOAT, .offset = offsetof(T, member), .min = lo, .max = hi,     \
+        .scale = SK_DEG_TO_RAD, .doc = text                                                        \
+    }
+#define FLOATS_FIELD(T, member, k, n, lo, hi, text)                                                \
+    {                                                                                              \
+        .key = k, .type = SK_FIELD_FLOATS, .offset = offsetof(T, member), .min = lo, .max = hi,    \
+        .count = n, .count_offset = SK_FIELD_FIXED, .doc = text                                    \
+    }
+#define OBJECT_FIELD(T, member, k, sub, text)                                                      \
+    {                                                                                              \
+        .key = k, .type = SK_FIELD_OBJECT, .offset = offsetof(T, member), .schema = &sub,          \
+        .doc = text                                                                                \
+    }
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
 static const sk_schema_field transform_fields[] = {
     FLOATS_FIELD(sk_wood_transform, translate_mm, "translate_mm", 3, -1e6, 1e6,
                  "scene position of the pith at tree y = 0 (mm); default [0, 0, 0]"),
-    {.key = "rotate_deg", .type = SK_FIELD_FLOATS, .offset = offsetof(sk_wood_transform, rotate),
-     .min = -360, .max = 360, .scale = SK_DEG_TO_RAD, .count = 3,
+    {.key = "rotate_deg",
+     .type = SK_FIELD_FLOATS,
+     .offset = offsetof(sk_wood_transform, rotate),
+     .min = -360,
+     .max = 360,
+     .scale = SK_DEG_TO_RAD,
+     .count = 3,
      .count_offset = SK_FIELD_FIXED,
      .doc = "Euler angles X, Y, Z placing the tree (degrees); default [0, 0, 0] (axis = +y)"},
 };
@@ -65,8 +78,14 @@ static const sk_schema_field rings_fields[] = {
 static const sk_schema rings_schema = {"rings", rings_fields, COUNT(rings_fields)};
 
 static const sk_schema_field grain_point_fields[] = {
-    {.key = NULL, .type = SK_FIELD_FLOATS, .offset = 0, .min = -1e6, .max = 1e6, .count = 2,
-     .count_offset = SK_FIELD_FIXED, .doc = "[y_mm, slope]: height (mm) and g there"},
+    {.key = NULL,
+     .type = SK_FIELD_FLOATS,
+     .offset = 0,
+     .min = -1e6,
+     .max = 1e6,
+     .count = 2,
+     .count_offset = SK_FIELD_FIXED,
+     .doc = "[y_mm, slope]: height (mm) and g there"},
 };
 static const sk_schema grain_point_schema = {"grain point", grain_point_fields,
                                              COUNT(grain_point_fields)};
@@ -82,10 +101,14 @@ static const sk_schema_field grain_fields[] = {
                 "s of interlocked grain g = s sin(2 pi t / P); default 0"),
     FLOAT_FIELD(sk_wood_grain_desc, interlocked_period_years, "interlocked_period_years", 0, 1000,
                 "P, years per reversal cycle; required when s != 0"),
-    {.key = "table", .type = SK_FIELD_ARRAY, .offset = offsetof(sk_wood_grain_desc, table),
-     .count = SK_WOOD_MAX_GRAIN_POINTS, .min_count = 0,
+    {.key = "table",
+     .type = SK_FIELD_ARRAY,
+     .offset = offsetof(sk_wood_grain_desc, table),
+     .count = SK_WOOD_MAX_GRAIN_POINTS,
+     .min_count = 0,
      .count_offset = offsetof(sk_wood_grain_desc, table_count),
-     .elem_size = sizeof(sk_wood_grain_point), .schema = &grain_point_schema,
+     .elem_size = sizeof(sk_wood_grain_point),
+     .schema = &grain_point_schema,
      .doc = "user g(y): [[y_mm, slope], ...], heights ascending, linear between; default none"},
     FLOAT_FIELD(sk_wood_grain_desc, fluctuation, "fluctuation", 0, 1,
                 "largest |dg| of the fractal fluctuation; default 0"),
@@ -113,13 +136,16 @@ static const sk_schema_field ring_vessel_fields[] = {
                 "mean vessel radius (mm); 0 = 0.12; [0.002, 2]"),
     FLOAT_FIELD(sk_wood_ring_vessels, radius_sd_mm, "radius_sd_mm", 0, 1,
                 "standard deviation of the radius (mm); default 0"),
-    {.key = "rows", .type = SK_FIELD_INT, .offset = offsetof(sk_wood_ring_vessels, rows),
-     .min = 0, .max = 8, .doc = "rows of vessels in the earlywood band; 0 = 1; [1, 8]"},
+    {.key = "rows",
+     .type = SK_FIELD_INT,
+     .offset = offsetof(sk_wood_ring_vessels, rows),
+     .min = 0,
+     .max = 8,
+     .doc = "rows of vessels in the earlywood band; 0 = 1; [1, 8]"},
     FLOAT_FIELD(sk_wood_ring_vessels, jitter, "jitter", 0, 1,
                 "random displacement as a fraction of the spacing; default 0"),
 };
-static const sk_schema ring_vessel_schema = {"ring", ring_vessel_fields,
-                                             COUNT(ring_vessel_fields)};
+static const sk_schema ring_vessel_schema = {"ring", ring_vessel_fields, COUNT(ring_vessel_fields)};
 
 static const sk_schema_field vessels_fields[] = {
     OBJECT_FIELD(sk_wood_vessels_desc, diffuse, "diffuse", diffuse_schema,
@@ -134,7 +160,9 @@ static const sk_schema vessels_schema = {"vessels", vessels_fields, COUNT(vessel
 static const sk_schema_field fibre_fields[] = {
     FLOAT_FIELD(sk_wood_fibre_desc, brightness_shift, "brightness_shift", 0, 1,
                 "spread of the cells' brightness shifts (Fig. 7: 0.4 = 40 %); default 0"),
-    {.key = "shift_mode", .type = SK_FIELD_ENUM, .offset = offsetof(sk_wood_fibre_desc, shift_mode),
+    {.key = "shift_mode",
+     .type = SK_FIELD_ENUM,
+     .offset = offsetof(sk_wood_fibre_desc, shift_mode),
      .names = sk_wood_shift_mode_names,
      .doc = "\"add\" (the paper: brightness + a shift in [-s/2, s/2]) or \"multiply\" "
             "(colour x (1 - s u), darker only); default add"},
@@ -165,8 +193,12 @@ static const sk_schema rays_schema = {"rays", rays_fields, COUNT(rays_fields)};
 static const sk_schema_field knots_fields[] = {
     FLOAT_FIELD(sk_wood_knots_desc, whorl_spacing_mm, "whorl_spacing_mm", 0, 100000,
                 "distance between whorls of branches along the axis (mm); default 0 (no knots)"),
-    {.key = "per_whorl", .type = SK_FIELD_INT, .offset = offsetof(sk_wood_knots_desc, per_whorl),
-     .min = 0, .max = 12, .doc = "branches per whorl; 0 = 4; [1, 12]"},
+    {.key = "per_whorl",
+     .type = SK_FIELD_INT,
+     .offset = offsetof(sk_wood_knots_desc, per_whorl),
+     .min = 0,
+     .max = 12,
+     .doc = "branches per whorl; 0 = 4; [1, 12]"},
     DEG_FIELD(sk_wood_knots_desc, rise, "rise_deg", -10, 80,
               "a branch's angle above the horizontal (degrees); default 0"),
     FLOAT_FIELD(sk_wood_knots_desc, growth, "growth", 0, 1,
@@ -191,7 +223,9 @@ static const sk_schema_field knots_fields[] = {
 static const sk_schema knots_schema = {"knots", knots_fields, COUNT(knots_fields)};
 
 static const sk_schema_field shading_fields[] = {
-    {.key = "model", .type = SK_FIELD_ENUM, .offset = offsetof(sk_wood_shading_desc, model),
+    {.key = "model",
+     .type = SK_FIELD_ENUM,
+     .offset = offsetof(sk_wood_shading_desc, model),
      .names = sk_wood_shading_model_names,
      .doc = "\"figure\" (eq. 4) or \"fibre\" (3D fibre highlight); default figure"},
     FLOAT_FIELD(sk_wood_shading_desc, specular, "specular", 0, 1,
@@ -213,8 +247,11 @@ static const sk_schema_field shading_fields[] = {
 static const sk_schema shading_schema = {"shading", shading_fields, COUNT(shading_fields)};
 
 static const sk_schema_field view_fields[] = {
-    {.key = "plane", .type = SK_FIELD_ENUM, .offset = offsetof(sk_wood_view_desc, plane),
-     .names = sk_wood_plane_names, .doc = "\"end\", \"flat\" or \"quarter\"; default flat"},
+    {.key = "plane",
+     .type = SK_FIELD_ENUM,
+     .offset = offsetof(sk_wood_view_desc, plane),
+     .names = sk_wood_plane_names,
+     .doc = "\"end\", \"flat\" or \"quarter\"; default flat"},
     FLOAT_FIELD(sk_wood_view_desc, distance_mm, "distance_mm", 0, 10000,
                 "distance of the cut (flat) or view centre (quarter, end) from the pith (mm); "
                 "0 = half the log radius (flat, quarter)"),
@@ -234,8 +271,12 @@ static const sk_schema_field view_fields[] = {
 static const sk_schema view_schema = {"view", view_fields, COUNT(view_fields)};
 
 static const sk_schema_field wood_fields[] = {
-    {.key = "seed", .type = SK_FIELD_SEED, .offset = offsetof(sk_wood_desc, seed), .min = 0,
-     .max = 9007199254740992.0, .doc = "random seed; default 0"},
+    {.key = "seed",
+     .type = SK_FIELD_SEED,
+     .offset = offsetof(sk_wood_desc, seed),
+     .min = 0,
+     .max = 9007199254740992.0,
+     .doc = "random seed; default 0"},
     OBJECT_FIELD(sk_wood_desc, transform, "transform", transform_schema,
                  "placement of the tree in the scene"),
     OBJECT_FIELD(sk_wood_desc, log, "log", log_schema, "extent of the precomputed tables"),

@@ -81,7 +81,8 @@ sk_vec3f sk__shade_fibre(const sk__shading *s, const sk_wood_sample *sample, sk_
     double surface = sk__fresnel_dielectric(sk_v3d_dot(l, h), eta) * (s->finish_exponent + 8.0) /
                      (8.0 * SK_PI) * pow(nh, s->finish_exponent);
     /* through the finish */
-    double trans = (1.0 - sk__fresnel_dielectric(cos_i, eta)) * (1.0 - sk__fresnel_dielectric(cos_o, eta));
+    double trans =
+        (1.0 - sk__fresnel_dielectric(cos_i, eta)) * (1.0 - sk__fresnel_dielectric(cos_o, eta));
     sk_vec3d li = refract_out(l, n, eta), vi = refract_out(v, n, eta);
     sk_vec3d u = sk_v3f_to_d(sample->fibre);
     double psi_i = asin(sk_clampd(sk_v3d_dot(li, u), -1.0, 1.0));

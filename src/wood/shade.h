@@ -22,15 +22,15 @@ typedef struct sk__shading {
 void sk__shading_init(sk__shading *shading, const sk_wood_desc *desc);
 
 /* Marschner et al. 2005 fibre model, see sk_wood_shade. */
-sk_vec3f sk__shade_fibre(const sk__shading *shading, const sk_wood_sample *sample,
-                         sk_vec3f normal, sk_vec3f light, sk_vec3f view);
+sk_vec3f sk__shade_fibre(const sk__shading *shading, const sk_wood_sample *sample, sk_vec3f normal,
+                         sk_vec3f light, sk_vec3f view);
 
 /* The parts of eq. (4) that depend only on the light, the normal and the direction `up`
  * towards the tree top (one set for a whole planar cut). */
 typedef struct sk__figure_light {
-    double cos_i; /* l . n: cos(delta) seen in the surface's up-normal plane */
-    double l_up;  /* l . up */
-    double h;     /* length of (l . n, l . up) */
+    double cos_i;  /* l . n: cos(delta) seen in the surface's up-normal plane */
+    double l_up;   /* l . up */
+    double h;      /* length of (l . n, l . up) */
     float diffuse; /* kd cos_i */
 } sk__figure_light;
 
@@ -81,8 +81,8 @@ static inline sk_vec3f sk__shade_figure_lit(const sk__shading *s, const sk__figu
 }
 
 /* eq. (4), see sk_wood_shade. */
-static inline sk_vec3f sk__shade_figure(const sk__shading *s, const sk_wood_sample *sample, sk_vec3f n,
-                          sk_vec3f l)
+static inline sk_vec3f sk__shade_figure(const sk__shading *s, const sk_wood_sample *sample,
+                                        sk_vec3f n, sk_vec3f l)
 {
     sk__figure_light fl = sk__figure_light_make(s, n, sample->up, l);
     if (fl.cos_i <= 0.0) return sk_v3f(0, 0, 0);

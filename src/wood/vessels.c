@@ -50,7 +50,8 @@ static inline double draw_radius(const sk__vessels *v, const sk__vessel_size *s,
     double x = u * SK__NORMAL_TABLE;
     int i = (int)x;
     if (i >= SK__NORMAL_TABLE) i = SK__NORMAL_TABLE - 1;
-    double z = v->normal_quantile[i] + (x - i) * (v->normal_quantile[i + 1] - v->normal_quantile[i]);
+    double z =
+        v->normal_quantile[i] + (x - i) * (v->normal_quantile[i + 1] - v->normal_quantile[i]);
     double r = s->mean + s->sd * z;
     return r > s->lo ? r : s->lo;
 }
@@ -112,8 +113,8 @@ bool sk__diffuse_cell_vessel(const sk__vessels *v, int64_t cx, int64_t cz, sk__v
 }
 
 /* Coverage contribution of the vessel of cell (cx, cz) at (x0, z0). */
-static inline double cell_cover(const sk__vessels *v, int64_t cx, int64_t cz, double x0,
-                                double z0, double reach2, double fw)
+static inline double cell_cover(const sk__vessels *v, int64_t cx, int64_t cz, double x0, double z0,
+                                double reach2, double fw)
 {
     double x, z;
     uint64_t h;
@@ -225,8 +226,8 @@ void sk__ring_vessel(const sk__vessels *v, const sk__rings *rings, int j, int ro
 /* Bounds on R(j, theta) for |theta - theta0| <= window: the Lipschitz bound around
  * R(j, theta0) (`at0` the table columns of theta0), never wider than the ring's own
  * extent. */
-static inline void ring_reach(const sk__rings *rings, const sk__rings_at *at0, int j,
-                              double window, double *lo, double *hi)
+static inline void ring_reach(const sk__rings *rings, const sk__rings_at *at0, int j, double window,
+                              double *lo, double *hi)
 {
     double Rj = sk__rings_R_year_at(rings, at0, j);
     double slack = sk__rings_lipschitz(rings, j) * window, ymin, ymax;
@@ -250,9 +251,9 @@ typedef struct ring_stream {
     const sk__vessels *v;
     const sk__rings *rings;
     const double *x0, *z0, *r0, *theta0;
-    const double *window;       /* per point: the angles around theta0 a vessel can reach from */
+    const double *window; /* per point: the angles around theta0 a vessel can reach from */
     double reach, reach2, fw;
-    double *cover;              /* per point: the largest coverage so far */
+    double *cover; /* per point: the largest coverage so far */
     ring_candidates *cand;
 } ring_stream;
 
@@ -352,9 +353,18 @@ static void ring_porous_batch(const sk__vessels *v, const sk__rings *rings, int 
     double window[SK__WOOD_BATCH], reach = sk__vessel_reach(ri->size.hi, fw);
     ring_candidates cand;
     cand.count = 0;
-    ring_stream s = {.v = v, .rings = rings, .x0 = x0, .z0 = z0, .r0 = r0, .theta0 = theta0,
-                     .window = window, .reach = reach, .reach2 = reach * reach, .fw = fw,
-                     .cover = cover, .cand = &cand};
+    ring_stream s = {.v = v,
+                     .rings = rings,
+                     .x0 = x0,
+                     .z0 = z0,
+                     .r0 = r0,
+                     .theta0 = theta0,
+                     .window = window,
+                     .reach = reach,
+                     .reach2 = reach * reach,
+                     .fw = fw,
+                     .cover = cover,
+                     .cand = &cand};
     for (int i = 0; i < count; i++) {
         cover[i] = 0.0;
         /* every point within `reach` of p0 lies within asin(reach / r0) of its angle; for
@@ -367,9 +377,11 @@ static void ring_porous_batch(const sk__vessels *v, const sk__rings *rings, int 
            below would stop at once, as the same bounds without the clamp to the rings'
            extent tell (ring_reach's hi <= R + slack and lo >= R - slack). */
         if (sk__rings_R_year_at(rings, &at0[i], j0) + sk__rings_lipschitz(rings, j0) * window[i] +
-                    ri->offset_max < r0[i] - reach &&
+                    ri->offset_max <
+                r0[i] - reach &&
             sk__rings_R_year_at(rings, &at0[i], j0 + 1) -
-                    sk__rings_lipschitz(rings, j0 + 1) * window[i] + ri->offset_min > r0[i] + reach)
+                    sk__rings_lipschitz(rings, j0 + 1) * window[i] + ri->offset_min >
+                r0[i] + reach)
             continue;
         for (int j = j0; j >= 1; j--) {
             double lo, hi;
@@ -424,14 +436,17 @@ static void diffuse_block_batch(const sk__vessels *v, int count, const double *x
         for (int i = 0; i < count; i++) {
             uint64_t kh = di->seed + (uint64_t)(int64_t)cx[0][i] * SK__WOOD_HASH_A;
             uint64_t lh = (uint64_t)(int64_t)cz[0][i] * SK__WOOD_HASH_B;
-            double best = cell_cover_key(v, kh + lh, cx[0][i], cz[0][i], x0[i], z0[i], reach2, fw, 0.0);
+            double best =
+                cell_cover_key(v, kh + lh, cx[0][i], cz[0][i], x0[i], z0[i], reach2, fw, 0.0);
             if (ex[i] < reach || ez[i] < reach) {
                 uint64_t kn = di->seed + (uint64_t)(int64_t)cx[1][i] * SK__WOOD_HASH_A;
                 uint64_t ln = (uint64_t)(int64_t)cz[1][i] * SK__WOOD_HASH_B;
                 if (ex[i] < reach)
-                    best = cell_cover_key(v, kn + lh, cx[1][i], cz[0][i], x0[i], z0[i], reach2, fw, best);
+                    best = cell_cover_key(v, kn + lh, cx[1][i], cz[0][i], x0[i], z0[i], reach2, fw,
+                                          best);
                 if (ez[i] < reach) {
-                    best = cell_cover_key(v, kh + ln, cx[0][i], cz[1][i], x0[i], z0[i], reach2, fw, best);
+                    best = cell_cover_key(v, kh + ln, cx[0][i], cz[1][i], x0[i], z0[i], reach2, fw,
+                                          best);
                     if (ex[i] < reach && ex[i] * ex[i] + ez[i] * ez[i] < reach2)
                         best = cell_cover_key(v, kn + ln, cx[1][i], cz[1][i], x0[i], z0[i], reach2,
                                               fw, best);
@@ -479,8 +494,8 @@ static void diffuse_block_batch(const sk__vessels *v, int count, const double *x
         double e2 = d2[2][i] = (x - x0[i]) * (x - x0[i]) + (z - z0[i]) * (z - z0[i]);
         x = (xn + uh[3][i]) * cell, z = (zn + ul[3][i]) * cell;
         double e3 = d2[3][i] = (x - x0[i]) * (x - x0[i]) + (z - z0[i]) * (z - z0[i]);
-        in[i] = (e0 < reach2 ? 1.0 : 0.0) + (e1 < reach2 ? 1.0 : 0.0) +
-                (e2 < reach2 ? 1.0 : 0.0) + (e3 < reach2 ? 1.0 : 0.0);
+        in[i] = (e0 < reach2 ? 1.0 : 0.0) + (e1 < reach2 ? 1.0 : 0.0) + (e2 < reach2 ? 1.0 : 0.0) +
+                (e3 < reach2 ? 1.0 : 0.0);
         double dm = e0, km = 0.0;
         km = e1 < dm ? 1.0 : km;
         dm = e1 < dm ? e1 : dm;
@@ -508,8 +523,8 @@ static void diffuse_block_batch(const sk__vessels *v, int count, const double *x
 
 void sk__vessels_coverage_batch(const sk__vessels *v, const sk__rings *rings, int count,
                                 const sk__rings_at *at0, const double *x0, const double *z0,
-                                const double *r0, const double *theta0, const double *t,
-                                double fw, double *cover)
+                                const double *r0, const double *theta0, const double *t, double fw,
+                                double *cover)
 {
     if (v->ring.on) {
         ring_porous_batch(v, rings, count, at0, x0, z0, r0, theta0, t, fw, cover);

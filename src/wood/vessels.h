@@ -36,9 +36,9 @@ typedef struct sk__ring_index {
     bool on;
     uint64_t seed;
     sk__vessel_size size;
-    double density;            /* P */
+    double density; /* P */
     double jitter;
-    double pitch;              /* radial distance between rows (mm) */
+    double pitch;                  /* radial distance between rows (mm) */
     double offset_min, offset_max; /* range of a centre's distance past its ring boundary */
     int rows;
 } sk__ring_index;

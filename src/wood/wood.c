@@ -50,4 +50,3 @@ sk_result sk_wood_create(const sk_wood_desc *desc, sk_wood **out, sk_error *err)
     *out = w;
     return SK_OK;
 }
-

@@ -23,7 +23,7 @@ struct sk_wood {
     sk__knots knots;
     sk__rays rays;
     sk__shading shading;
-    sk_vec3f axis;     /* the tree's +y in the scene */
+    sk_vec3f axis; /* the tree's +y in the scene */
     sk_wood_stats stats;
 };
 

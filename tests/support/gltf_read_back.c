@@ -21,7 +21,8 @@ sk_gltf_doc *sk_test_gltf_read_back(const sk_gltf *g, uint8_t **bytes, size_t *s
     return doc;
 }
 
-float *sk_test_gltf_accessor(const sk_gltf_doc *doc, int index, size_t want_count, int want_components)
+float *sk_test_gltf_accessor(const sk_gltf_doc *doc, int index, size_t want_count,
+                             int want_components)
 {
     float *v = NULL;
     size_t count = 0;

@@ -13,6 +13,7 @@
 sk_gltf_doc *sk_test_gltf_read_back(const sk_gltf *g, uint8_t **bytes, size_t *size);
 /* Accessor `index` of `doc` as floats (free them); the test fails unless it has
  * want_count elements of want_components. */
-float *sk_test_gltf_accessor(const sk_gltf_doc *doc, int index, size_t want_count, int want_components);
+float *sk_test_gltf_accessor(const sk_gltf_doc *doc, int index, size_t want_count,
+                             int want_components);
 
 #endif

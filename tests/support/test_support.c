@@ -113,8 +113,8 @@ bool sk_test_same_file(const char *a, const char *b)
 {
     char *da = NULL, *db = NULL;
     size_t na = 0, nb = 0;
-    bool same = sk_read_file(a, 0, &da, &na, NULL) == SK_OK && sk_read_file(b, 0, &db, &nb, NULL) == SK_OK &&
-                na == nb && memcmp(da, db, na) == 0;
+    bool same = sk_read_file(a, 0, &da, &na, NULL) == SK_OK &&
+                sk_read_file(b, 0, &db, &nb, NULL) == SK_OK && na == nb && memcmp(da, db, na) == 0;
     free(da);
     free(db);
     return same;

@@ -97,21 +97,25 @@ static void sample(void *user, double t, sk_quatd *local, sk_vec3d *root)
         root->x = m->speed * (u < ease ? u * u / (2 * ease) : u - 0.5 * ease);
         break;
     }
-    case SK_TEST_MOTION_UNIFORM: root->x = m->speed * t; break;
+    case SK_TEST_MOTION_UNIFORM:
+        root->x = m->speed * t;
+        break;
     case SK_TEST_MOTION_BEND: {
         double a = m->angle * fmin(t / m->until, 1.0);
         local[1] = sk_qd_axis_angle(sk_v3d(1, 0, 0), -a);
         break;
     }
     case SK_TEST_MOTION_RANDOM:
-        *root = sk_v3d(60 * wobble(m->seed, 0, t), 40 * wobble(m->seed, 1, t), 60 * wobble(m->seed, 2, t));
+        *root = sk_v3d(60 * wobble(m->seed, 0, t), 40 * wobble(m->seed, 1, t),
+                       60 * wobble(m->seed, 2, t));
         local[0] = sk_qd_axis_angle(sk_v3d(0, 0, 1), 0.6 * wobble(m->seed, 3, t));
         local[1] = sk_qd_axis_angle(sk_v3d(1, 0, 0), -1.0 - wobble(m->seed, 4, t));
         break;
     case SK_TEST_MOTION_TELEPORT:
         if (t >= m->until) root->x = m->speed;
         break;
-    default: break;
+    default:
+        break;
     }
 }
 

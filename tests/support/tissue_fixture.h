@@ -12,12 +12,13 @@ sk_tissue_character_desc *sk_test_rod_desc(double spacing_mm);
 sk_tissue_model *sk_test_rod_model(double spacing_mm);
 
 typedef enum sk_test_motion_kind {
-    SK_TEST_MOTION_REST = 0,   /* the rest pose for ever */
-    SK_TEST_MOTION_STOP,       /* along +x, eased in to `speed` mm/s over 0.2 s, until `until` s, then still */
-    SK_TEST_MOTION_BEND,       /* the hinge bends to `angle` rad by `until` s, then holds */
-    SK_TEST_MOTION_RANDOM,     /* smooth random translation and bending (seeded) */
-    SK_TEST_MOTION_TELEPORT,   /* still, then at `until` s the root jumps by `speed` mm */
-    SK_TEST_MOTION_UNIFORM     /* along +x at `speed` mm/s for ever */
+    SK_TEST_MOTION_REST = 0, /* the rest pose for ever */
+    SK_TEST_MOTION_STOP,     /* along +x, eased in to `speed` mm/s over 0.2 s, until `until` s, then
+                                still */
+    SK_TEST_MOTION_BEND,     /* the hinge bends to `angle` rad by `until` s, then holds */
+    SK_TEST_MOTION_RANDOM,   /* smooth random translation and bending (seeded) */
+    SK_TEST_MOTION_TELEPORT, /* still, then at `until` s the root jumps by `speed` mm */
+    SK_TEST_MOTION_UNIFORM   /* along +x at `speed` mm/s for ever */
 } sk_test_motion_kind;
 
 typedef struct sk_test_motion {

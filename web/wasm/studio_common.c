@@ -74,7 +74,8 @@ STUDIO_API void studio_rgba8(const float *samples, int pixels, int channels, int
     sk_image_codes8(samples, (size_t)pixels, channels,
                     srgb ? SK_PNG_ENCODING_SRGB : SK_PNG_ENCODING_LINEAR, scratch);
     for (int i = 0; i < pixels; i++) {
-        for (int c = 0; c < 3; c++) rgba[4 * i + c] = scratch[i * channels + (channels == 3 ? c : 0)];
+        for (int c = 0; c < 3; c++)
+            rgba[4 * i + c] = scratch[i * channels + (channels == 3 ? c : 0)];
         rgba[4 * i + 3] = 255;
     }
 }

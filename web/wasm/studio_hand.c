@@ -57,7 +57,8 @@ STUDIO_API studio_hand *studio_hand_create(int side, sk_error *err)
     sk_hand_skeleton_desc d = {0};
     d.side = side == 2 ? SK_HAND_SIDE_LEFT : SK_HAND_SIDE_RIGHT;
     if (sk_hand_skeleton_init(&h->skeleton, &d, err) != SK_OK ||
-        sk_hand_solver_create(&h->solver, &h->skeleton, &h->constraints, NULL, 0, NULL, err) != SK_OK) {
+        sk_hand_solver_create(&h->solver, &h->skeleton, &h->constraints, NULL, 0, NULL, err) !=
+            SK_OK) {
         studio_hand_destroy(h);
         return NULL;
     }
@@ -69,7 +70,8 @@ STUDIO_API studio_hand *studio_hand_create(int side, sk_error *err)
 /* The set in use from its JSON text: a constraint file (natural.json, Table 3.2, `hand
  * calibrate` rows) or a calibrated potential (`hand calibrate --potential`); NULL or ""
  * = none (springs only: coupling off). On error the previous set stays. */
-STUDIO_API int studio_hand_use_set(studio_hand *h, const char *json, const char *name, sk_error *err)
+STUDIO_API int studio_hand_use_set(studio_hand *h, const char *json, const char *name,
+                                   sk_error *err)
 {
     sk_hand_constraints *c = calloc(1, sizeof *c);
     if (!c) return (int)sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
@@ -87,8 +89,10 @@ STUDIO_API int studio_hand_use_set(studio_hand *h, const char *json, const char 
     }
     sk_hand_solver *solver = NULL;
     sk_hand_potential_solver *ps = NULL;
-    if (r == SK_OK && is_potential) r = sk_hand_potential_solver_create(&ps, &h->skeleton, &pot, NULL, err);
-    if (r == SK_OK && !is_potential) r = sk_hand_solver_create(&solver, &h->skeleton, c, NULL, 0, NULL, err);
+    if (r == SK_OK && is_potential)
+        r = sk_hand_potential_solver_create(&ps, &h->skeleton, &pot, NULL, err);
+    if (r == SK_OK && !is_potential)
+        r = sk_hand_solver_create(&solver, &h->skeleton, c, NULL, 0, NULL, err);
     if (r != SK_OK) {
         sk_hand_potential_free(&pot);
         free(c);
@@ -124,7 +128,8 @@ STUDIO_API void studio_hand_torque(studio_hand *h, int dof, double torque)
 
 static sk_result solve_input(studio_hand *h, const sk_hand_input *in, double *dofs, sk_error *err)
 {
-    if (h->potential_solver) return sk_hand_potential_solve(h->potential_solver, in, dofs, &h->info, NULL, err);
+    if (h->potential_solver)
+        return sk_hand_potential_solve(h->potential_solver, in, dofs, &h->info, NULL, err);
     return sk_hand_solve(h->solver, in, dofs, &h->info, err);
 }
 
@@ -155,7 +160,8 @@ STUDIO_API void studio_hand_pose_geometry(const studio_hand *h, float *points, f
         points[3 * i + 2] = (float)h->frames.point[i].z;
     }
     for (int l = 0; l < SK_HAND_LINK_COUNT; l++)
-        for (int k = 0; k < 9; k++) rotations[9 * l + k] = (float)h->frames.rotation[l].m[k / 3][k % 3];
+        for (int k = 0; k < 9; k++)
+            rotations[9 * l + k] = (float)h->frames.rotation[l].m[k / 3][k % 3];
 }
 
 /* [residual, converged, clamped DOFs, pins clamped] of the last solve. */
@@ -261,10 +267,11 @@ STUDIO_API const double *studio_hand_animation_frames(const studio_hand *h) { re
  * flexion (thumb: CMC flexion and abduction, MCP flexion). */
 static void reach_dofs(int finger, int dof[3])
 {
-    static const char *const names[5][3] = {
-        {"T.CMC.flex", "T.CMC.abd", "T.MCP.flex"}, {"I.MCP.flex", "I.MCP.abd", "I.PIP.flex"},
-        {"M.MCP.flex", "M.MCP.abd", "M.PIP.flex"}, {"R.MCP.flex", "R.MCP.abd", "R.PIP.flex"},
-        {"L.MCP.flex", "L.MCP.abd", "L.PIP.flex"}};
+    static const char *const names[5][3] = {{"T.CMC.flex", "T.CMC.abd", "T.MCP.flex"},
+                                            {"I.MCP.flex", "I.MCP.abd", "I.PIP.flex"},
+                                            {"M.MCP.flex", "M.MCP.abd", "M.PIP.flex"},
+                                            {"R.MCP.flex", "R.MCP.abd", "R.PIP.flex"},
+                                            {"L.MCP.flex", "L.MCP.abd", "L.PIP.flex"}};
     for (int k = 0; k < 3; k++) dof[k] = sk_hand_dof_find(names[finger][k]);
 }
 

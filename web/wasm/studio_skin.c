@@ -107,7 +107,15 @@ STUDIO_API void studio_skin_scale_maps(int count, float *height_mm, float *norma
 
 /* The live maps of the skin panel, in the order of the bits of `maps`; LIVE_RESHADE asks
  * for the preview shaded from the normals held (after a shading edit). */
-enum { LIVE_PREVIEW, LIVE_HEIGHT, LIVE_NORMAL, LIVE_FURROW, LIVE_CELLS, LIVE_COUNT, LIVE_RESHADE = LIVE_COUNT };
+enum {
+    LIVE_PREVIEW,
+    LIVE_HEIGHT,
+    LIVE_NORMAL,
+    LIVE_FURROW,
+    LIVE_CELLS,
+    LIVE_COUNT,
+    LIVE_RESHADE = LIVE_COUNT
+};
 
 /* Rows [y0, y0 + rows) of the live maps of a width x height render as canvas pixels,
  * each map that bit (1 << k) of `maps` asks for into rgba[k] (width x rows x 4 bytes):
@@ -135,23 +143,27 @@ STUDIO_API int studio_skin_live_rgba(const sk_skin *skin, int width, int height,
     /* the normals: kept for the caller, or for the normal map; a render of only the
        furrow and cells maps evaluates no relief (sk_skin_render) */
     bool relief = want[LIVE_PREVIEW] || want[LIVE_HEIGHT] || want[LIVE_NORMAL];
-    float *normal = normals && relief ? normals : want[LIVE_NORMAL] ? malloc(3 * n * sizeof(float)) : NULL;
+    float *normal = normals && relief   ? normals
+                    : want[LIVE_NORMAL] ? malloc(3 * n * sizeof(float))
+                                        : NULL;
     float *colour = malloc(3 * n * sizeof(float)); /* preview, then the normal scaled, the cells */
     uint32_t *cells = want[LIVE_CELLS] ? malloc(n * sizeof(uint32_t)) : NULL;
     uint8_t *scratch = malloc(3 * n);
     int r = 0;
-    if ((want[LIVE_HEIGHT] && !height_mm) || (want[LIVE_FURROW] && !furrow) || (want[LIVE_NORMAL] && !normal) ||
-        !colour || (want[LIVE_CELLS] && !cells) || !scratch)
+    if ((want[LIVE_HEIGHT] && !height_mm) || (want[LIVE_FURROW] && !furrow) ||
+        (want[LIVE_NORMAL] && !normal) || !colour || (want[LIVE_CELLS] && !cells) || !scratch)
         r = (int)sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the live maps");
     else if (reshade)
         for (size_t i = 0; i < n; i++) {
-            sk_vec3f c = sk_skin_shade(skin, (sk_vec3f){normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]});
+            sk_vec3f c = sk_skin_shade(
+                skin, (sk_vec3f){normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]});
             colour[3 * i] = c.x, colour[3 * i + 1] = c.y, colour[3 * i + 2] = c.z;
         }
     else
         r = studio_skin_render(skin, width, height, y0, rows, height_mm, normal, furrow, cells,
                                want[LIVE_PREVIEW] ? colour : NULL, 1, 1, err);
-    if (r == 0 && want[LIVE_PREVIEW]) studio_rgba8(colour, (int)n, 3, 1, scratch, rgba[LIVE_PREVIEW]);
+    if (r == 0 && want[LIVE_PREVIEW])
+        studio_rgba8(colour, (int)n, 3, 1, scratch, rgba[LIVE_PREVIEW]);
     if (r == 0 && (want[LIVE_HEIGHT] || want[LIVE_NORMAL] || want[LIVE_FURROW])) {
         float lo, hi;
         sk_skin_height_range(skin, &lo, &hi);

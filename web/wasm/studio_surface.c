@@ -13,7 +13,8 @@
 
 #ifdef SK_STUDIO_HAND_SURFACE
 
-STUDIO_API sk_hand_surface *studio_surface_create(const studio_hand *h, int triangles, sk_error *err)
+STUDIO_API sk_hand_surface *studio_surface_create(const studio_hand *h, int triangles,
+                                                  sk_error *err)
 {
     sk_hand_surface_desc d = {0};
     d.triangles = triangles;
@@ -23,14 +24,23 @@ STUDIO_API sk_hand_surface *studio_surface_create(const studio_hand *h, int tria
 }
 
 STUDIO_API void studio_surface_destroy(sk_hand_surface *s) { sk_hand_surface_destroy(s); }
-STUDIO_API int studio_surface_vertex_count(const sk_hand_surface *s) { return (int)sk_hand_surface_mesh(s)->vertex_count; }
-STUDIO_API int studio_surface_triangle_count(const sk_hand_surface *s) { return (int)sk_hand_surface_mesh(s)->triangle_count; }
-STUDIO_API const uint32_t *studio_surface_indices(const sk_hand_surface *s) { return sk_hand_surface_mesh(s)->indices; }
+STUDIO_API int studio_surface_vertex_count(const sk_hand_surface *s)
+{
+    return (int)sk_hand_surface_mesh(s)->vertex_count;
+}
+STUDIO_API int studio_surface_triangle_count(const sk_hand_surface *s)
+{
+    return (int)sk_hand_surface_mesh(s)->triangle_count;
+}
+STUDIO_API const uint32_t *studio_surface_indices(const sk_hand_surface *s)
+{
+    return sk_hand_surface_mesh(s)->indices;
+}
 
 /* Positions and normals (vertex count x 3 each, mm) of the surface on the hand's last
  * pose; method 1 rigid, 2 linear blend, 3 dual quaternion (0 = the library's default). */
-STUDIO_API void studio_surface_deform(const sk_hand_surface *s, const studio_hand *h, int method, float *positions,
-                                      float *normals)
+STUDIO_API void studio_surface_deform(const sk_hand_surface *s, const studio_hand *h, int method,
+                                      float *positions, float *normals)
 {
     sk_hand_surface_deform(s, studio_hand_frames(h), (sk_hand_skinning)method, positions, normals);
 }
@@ -63,7 +73,10 @@ STUDIO_API void studio_mesh_destroy(sk_mesh *m)
     free(m);
 }
 
-STUDIO_API const uint32_t *studio_surface_export_map(const sk_hand_surface *s) { return sk_hand_surface_export_map(s, NULL); }
+STUDIO_API const uint32_t *studio_surface_export_map(const sk_hand_surface *s)
+{
+    return sk_hand_surface_export_map(s, NULL);
+}
 
 static sk_result skin_of(const char *json, sk_skin **out, sk_error *err)
 {
@@ -79,8 +92,9 @@ static sk_result skin_of(const char *json, sk_skin **out, sk_error *err)
  * RGB) and the normal map (0.5 n + 0.5) into `albedo` and `normal` (size x size x 3
  * floats each, top row first), with the microrelief of the skin presets `back_json` on
  * the back and `palm_json` on the palm (NULL or "" for none). */
-STUDIO_API int studio_surface_texture(const sk_hand_surface *s, int size, const char *back_json, const char *palm_json,
-                                      float *albedo, float *normal, sk_error *err)
+STUDIO_API int studio_surface_texture(const sk_hand_surface *s, int size, const char *back_json,
+                                      const char *palm_json, float *albedo, float *normal,
+                                      sk_error *err)
 {
     sk_skin *back, *palm = NULL;
     sk_result r = skin_of(back_json, &back, err);

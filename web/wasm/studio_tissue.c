@@ -73,7 +73,8 @@ STUDIO_API studio_tissue *studio_tissue_create(const char *json, sk_error *err)
     free(desc);
     if (r == SK_OK) r = sk_tissue_model_rest_skin(t->model, &t->rest, err);
     size_t floats = 3 * (t->rest.vertex_count ? t->rest.vertex_count : 1);
-    if (r == SK_OK && (!(t->xyz = malloc(floats * sizeof(float))) || !(t->ref = calloc(floats, sizeof(float)))))
+    if (r == SK_OK &&
+        (!(t->xyz = malloc(floats * sizeof(float))) || !(t->ref = calloc(floats, sizeof(float)))))
         r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory");
     if (r != SK_OK) {
         studio_tissue_destroy(t);
@@ -82,10 +83,19 @@ STUDIO_API studio_tissue *studio_tissue_create(const char *json, sk_error *err)
     return t;
 }
 
-STUDIO_API int studio_tissue_vertex_count(const studio_tissue *t) { return (int)t->rest.vertex_count; }
-STUDIO_API int studio_tissue_triangle_count(const studio_tissue *t) { return (int)t->rest.triangle_count; }
+STUDIO_API int studio_tissue_vertex_count(const studio_tissue *t)
+{
+    return (int)t->rest.vertex_count;
+}
+STUDIO_API int studio_tissue_triangle_count(const studio_tissue *t)
+{
+    return (int)t->rest.triangle_count;
+}
 STUDIO_API const uint32_t *studio_tissue_indices(const studio_tissue *t) { return t->rest.indices; }
-STUDIO_API const float *studio_tissue_rest_positions(const studio_tissue *t) { return t->rest.positions; }
+STUDIO_API const float *studio_tissue_rest_positions(const studio_tissue *t)
+{
+    return t->rest.positions;
+}
 
 /* [skin, fat, muscle, bone points, springs, skin triangles, build seconds, step_hz,
  * spacing mm] of the built character. */
@@ -152,7 +162,10 @@ STUDIO_API const float *studio_tissue_skin(studio_tissue *t, double seconds, sk_
 }
 
 /* Internal steps simulated so far. */
-STUDIO_API double studio_tissue_steps(const studio_tissue *t) { return t->sim ? (double)sk_tissue_sim_steps(t->sim) : 0.0; }
+STUDIO_API double studio_tissue_steps(const studio_tissue *t)
+{
+    return t->sim ? (double)sk_tissue_sim_steps(t->sim) : 0.0;
+}
 
 /* Where the bones and muscles alone carry each skin point at the current step (the skin
  * without the fat layer's secondary motion), 3 floats each. */

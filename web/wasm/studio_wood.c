@@ -58,13 +58,27 @@ STUDIO_API int studio_wood_board_face(const sk_wood *wood, int face, double aspe
     sk_vec3f fn, fa;
     float fw, fh, off;
     switch (face) {
-    case 0: fn = n, fa = a, fw = w, fh = b, off = 0.5f * t; break;
-    case 1: fn = sk_v3f_neg(n), fa = a, fw = w, fh = b, off = 0.5f * t; break;
-    case 2: fn = sk_v3f_neg(u), fa = a, fw = w, fh = t, off = 0.5f * b; break;
-    case 3: fn = u, fa = sk_v3f_neg(a), fw = w, fh = t, off = 0.5f * b; break;
-    case 4: fn = sk_v3f_neg(a), fa = sk_v3f_neg(u), fw = b, fh = t, off = 0.5f * w; break;
-    case 5: fn = a, fa = u, fw = b, fh = t, off = 0.5f * w; break;
-    default: return (int)sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "face = %d is out of range [0, 5]", face);
+    case 0:
+        fn = n, fa = a, fw = w, fh = b, off = 0.5f * t;
+        break;
+    case 1:
+        fn = sk_v3f_neg(n), fa = a, fw = w, fh = b, off = 0.5f * t;
+        break;
+    case 2:
+        fn = sk_v3f_neg(u), fa = a, fw = w, fh = t, off = 0.5f * b;
+        break;
+    case 3:
+        fn = u, fa = sk_v3f_neg(a), fw = w, fh = t, off = 0.5f * b;
+        break;
+    case 4:
+        fn = sk_v3f_neg(a), fa = sk_v3f_neg(u), fw = b, fh = t, off = 0.5f * w;
+        break;
+    case 5:
+        fn = a, fa = u, fw = b, fh = t, off = 0.5f * w;
+        break;
+    default:
+        return (int)sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "face = %d is out of range [0, 5]",
+                            face);
     }
     sk_vec3f fu = sk_v3f_cross(fn, fa);
     sk_wood_cut_desc cut = top;
@@ -85,6 +99,7 @@ STUDIO_API int studio_wood_board_face(const sk_wood *wood, int face, double aspe
     sk_vec3f tr = v_add(tl, fa, fw);
     sk_vec3f bl = v_add(tl, fu, -fw * height / width);
     const sk_vec3f pts[3] = {tl, tr, bl};
-    for (int i = 0; i < 3; i++) corners[3 * i] = pts[i].x, corners[3 * i + 1] = pts[i].y, corners[3 * i + 2] = pts[i].z;
+    for (int i = 0; i < 3; i++)
+        corners[3 * i] = pts[i].x, corners[3 * i + 1] = pts[i].y, corners[3 * i + 2] = pts[i].z;
     return (int)sk_wood_cut(wood, &cut, err);
 }
