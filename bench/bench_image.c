@@ -14,8 +14,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "io/image_internal.h"
-#include "io/png_quantize.h"
+#include "base/image_internal.h"
+#include "base/png_quantize.h"
 #include "shitsukan/image.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/skin.h"

@@ -106,45 +106,50 @@ static int step_rates(const sk_showcase_desc *base, const sk_hand_surface *surfa
     return 0;
 }
 
-int main(void)
+/* What the showcase plays and shows, from the presets. */
+typedef struct inputs {
+    sk_melody melody;
+    sk_render_scene_desc *stage;
+    sk_hand_constraints *constraints;
+    sk_skin *back, *palm;
+    sk_tissue_character_desc *forearm;
+} inputs;
+
+/* The piece, the stage, the hand's natural constraints, the two skins and the forearm. */
+static int load_inputs(inputs *in)
 {
     char path[512];
     sk_error err = {0};
-    sk_melody melody;
     snprintf(path, sizeof path, "%s/showcase/twinkle.txt", SK_BENCH_PRESET_DIR);
-    if (sk_melody_load(path, &melody, &err) != SK_OK)
+    if (sk_melody_load(path, &in->melody, &err) != SK_OK)
         return fprintf(stderr, "%s\n", err.message), 1;
     sk_render_scene_desc *stage = calloc(1, sizeof *stage);
+    in->stage = stage;
     snprintf(path, sizeof path, "%s/showcase/stage.json", SK_BENCH_PRESET_DIR);
     if (sk_render_scene_desc_load(path, stage, &err) != SK_OK)
         return fprintf(stderr, "%s\n", err.message), 1;
     sk_hand_skeleton skeleton;
     sk_hand_skeleton_init(&skeleton, NULL, &err);
     sk_hand_constraints *constraints = calloc(1, sizeof *constraints);
+    in->constraints = constraints;
     snprintf(path, sizeof path, "%s/hand/natural.json", SK_BENCH_PRESET_DIR);
     if (sk_hand_constraints_load_file(path, &skeleton, constraints, &err) != SK_OK)
         return fprintf(stderr, "%s\n", err.message), 1;
-    sk_skin *back = load_skin("back-of-hand"), *palm = load_skin("palm");
+    in->back = load_skin("back-of-hand"), in->palm = load_skin("palm");
     sk_tissue_character_desc *forearm = calloc(1, sizeof *forearm);
+    in->forearm = forearm;
     snprintf(path, sizeof path, "%s/showcase/forearm.json", SK_BENCH_PRESET_DIR);
     if (sk_tissue_character_load(path, forearm, &err) != SK_OK)
         return fprintf(stderr, "%s\n", err.message), 1;
-    double t0 = sk_time_seconds();
-    sk_showcase_desc d = {0};
-    d.melody = &melody, d.stage = stage, d.constraints = constraints;
-    d.back_skin = back, d.palm_skin = palm;
-    d.forearm = forearm;
-    sk_showcase *full = NULL;
-    if (sk_showcase_create(&d, &full, &err) != SK_OK)
-        return fprintf(stderr, "%s\n", err.message), 1;
-    double setup = sk_time_seconds() - t0;
-    printf("setup (fingering, playing posture, hand surface 8000 triangles, texture 1024 with "
-           "microrelief, wood, "
-           "forearm of %zu skin points): %.2f s\n",
-           sk_showcase_forearm_points(full), setup);
+    return 0;
+}
+
+/* the stages alone over the whole piece: no rendering; best of three, wall and CPU */
+static void bench_pose(sk_showcase *full)
+{
+    sk_error err = {0};
     int frames = sk_showcase_frame_count(full);
     double fps = sk_showcase_fps(full);
-    /* the stages alone over the whole piece: no rendering; best of three, wall and CPU */
     sk_showcase_pose pose;
     double pose_wall = 1e30, pose_cpu = 1e30;
     int solves = 0;
@@ -162,10 +167,16 @@ int main(void)
            "(%.1f posture "
            "solves a frame; best of 3)\n",
            frames, 1e3 * pose_wall / frames, 1e3 * pose_cpu / frames, (double)solves / frames);
-    /* the forearm's simulation over the whole piece, frame after frame (asking frame 0
-       again restarts it), on one thread and on all; best of three, wall and CPU */
-    size_t points = sk_showcase_forearm_points(full);
-    float *skin = malloc(3 * points * sizeof *skin);
+}
+
+/* the forearm's simulation over the whole piece, frame after frame (asking frame 0
+   again restarts it), on one thread and on all; best of three, wall and CPU (skin: room
+   for the skin points) */
+static int bench_forearm(sk_showcase *full, float *skin)
+{
+    sk_error err = {0};
+    int frames = sk_showcase_frame_count(full);
+    double fps = sk_showcase_fps(full);
     double steps = 240 / fps;
     for (int threads = 1; threads >= 0; threads--) {
         sk_threads_set(threads);
@@ -187,8 +198,18 @@ int main(void)
                1e3 * cpu / frames, 1e3 * cpu / (frames * steps), load);
     }
     sk_threads_set(0);
-    /* how far the flesh moves from where its bones carry it: over the piece, and while
-       the wrist holds still (the strikes alone) */
+    return 0;
+}
+
+/* how far the flesh moves from where its bones carry it: over the piece, and while
+   the wrist holds still (the strikes alone) */
+static int bench_flesh(sk_showcase *full, float *skin)
+{
+    sk_error err = {0};
+    int frames = sk_showcase_frame_count(full);
+    double fps = sk_showcase_fps(full);
+    size_t points = sk_showcase_forearm_points(full);
+    sk_showcase_pose pose;
     float *carried = malloc(3 * points * sizeof *carried);
     double largest = 0, largest_still = 0;
     sk_vec3d before = {0, 0, 0};
@@ -213,9 +234,13 @@ int main(void)
            "the wrist holds still\n",
            largest, largest_still);
     free(carried);
-    free(skin);
-    if (step_rates(&d, sk_showcase_surface(full)) != 0) return 1;
-    /* full size: a few frames through the renderer */
+    return 0;
+}
+
+/* full size: a few frames through the renderer */
+static int bench_full_size(sk_showcase *full)
+{
+    sk_error err = {0};
     sk_showcase_stats st = {0};
     if (sk_showcase_forearm_at(full, 35, NULL, NULL, &err) != SK_OK)
         return fprintf(stderr, "%s\n", err.message), 1;
@@ -227,21 +252,26 @@ int main(void)
         sk_image_free(&img);
     }
     report("1280x720, 16 samples", &st, sk_time_seconds() - tw);
-    sk_showcase_destroy(full);
-    /* preview: 24 frames, three times; each stage's best of the three (the machine is
-       shared: a run's stage times include what others took of the processor) */
+    return 0;
+}
+
+/* preview: 24 frames, three times; each stage's best of the three (the machine is
+   shared: a run's stage times include what others took of the processor) */
+static int bench_preview(sk_showcase_desc d)
+{
+    sk_error err = {0};
     d.width = 320, d.height = 180, d.samples = 4, d.texture_size = 512;
     sk_showcase *preview = NULL;
     if (sk_showcase_create(&d, &preview, &err) != SK_OK)
         return fprintf(stderr, "%s\n", err.message), 1;
-    sk_showcase_stats best = {0};
+    sk_showcase_stats st, best = {0};
     double best_wall = 1e30;
     for (int run = 0; run < 3; run++) {
         memset(&st, 0, sizeof st);
         /* frame 29 first (the forearm's simulation restarts and runs up to it) */
         if (sk_showcase_forearm_at(preview, 29, NULL, NULL, &err) != SK_OK)
             return fprintf(stderr, "%s\n", err.message), 1;
-        tw = sk_time_seconds();
+        double tw = sk_time_seconds();
         for (int f = 30; f < 54; f++) {
             sk_image img;
             if (sk_showcase_render_frame(preview, f, &img, &st, &err) != SK_OK)
@@ -259,7 +289,12 @@ int main(void)
     }
     report("320x180, 4 samples (each stage the best of 3 runs)", &best, best_wall);
     sk_showcase_destroy(preview);
-    /* the command as a user runs it: 12 preview frames with their PNG files and the WAV */
+    return 0;
+}
+
+/* the command as a user runs it: 12 preview frames with their PNG files and the WAV */
+static int bench_command(void)
+{
     char dir[] = "/tmp/bench_showcase_XXXXXX", cmd[1024];
     if (!mkdtemp(dir)) return fprintf(stderr, "bench_showcase: no temporary folder\n"), 1;
     snprintf(cmd, sizeof cmd,
@@ -267,14 +302,44 @@ int main(void)
              "--texture-size 512 -q "
              "-o %s/out",
              SK_BENCH_CLI, SK_BENCH_PRESET_DIR, dir);
-    tw = sk_time_seconds();
+    double tw = sk_time_seconds();
     int rc = system(cmd);
     printf("command (setup + 12 frames at 320x180 + WAV + PNGs): %.2f s wall (exit %d)\n",
            sk_time_seconds() - tw, rc);
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     if (system(cmd) != 0) fprintf(stderr, "bench_showcase: %s left behind\n", dir);
-    sk_skin_destroy(back), sk_skin_destroy(palm);
-    free(stage), free(constraints), free(forearm);
-    sk_melody_free(&melody);
+    return 0;
+}
+
+int main(void)
+{
+    sk_error err = {0};
+    inputs in = {0};
+    if (load_inputs(&in) != 0) return 1;
+    double t0 = sk_time_seconds();
+    sk_showcase_desc d = {0};
+    d.melody = &in.melody, d.stage = in.stage, d.constraints = in.constraints;
+    d.back_skin = in.back, d.palm_skin = in.palm;
+    d.forearm = in.forearm;
+    sk_showcase *full = NULL;
+    if (sk_showcase_create(&d, &full, &err) != SK_OK)
+        return fprintf(stderr, "%s\n", err.message), 1;
+    double setup = sk_time_seconds() - t0;
+    printf("setup (fingering, playing posture, hand surface 8000 triangles, texture 1024 with "
+           "microrelief, wood, "
+           "forearm of %zu skin points): %.2f s\n",
+           sk_showcase_forearm_points(full), setup);
+    bench_pose(full);
+    size_t points = sk_showcase_forearm_points(full);
+    float *skin = malloc(3 * points * sizeof *skin);
+    if (bench_forearm(full, skin) != 0 || bench_flesh(full, skin) != 0) return 1;
+    free(skin);
+    if (step_rates(&d, sk_showcase_surface(full)) != 0) return 1;
+    if (bench_full_size(full) != 0) return 1;
+    sk_showcase_destroy(full);
+    if (bench_preview(d) != 0 || bench_command() != 0) return 1;
+    sk_skin_destroy(in.back), sk_skin_destroy(in.palm);
+    free(in.stage), free(in.constraints), free(in.forearm);
+    sk_melody_free(&in.melody);
     return 0;
 }

@@ -19,7 +19,7 @@
 
 #include "bench_load.h"
 #include "shitsukan/preset.h"
-#include "tissue/sim_internal.h"
+#include "models/tissue/sim_internal.h"
 #ifdef SK_BENCH_CHOLMOD
 #include <suitesparse/cholmod.h>
 #endif

@@ -1,5 +1,5 @@
 /* Fuzz harness: hand pose files (the "dofs" object of sk_hand_pose_write_json,
- * src/hand/pose_read.c). */
+ * src/formats/hand/pose_read.c). */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>

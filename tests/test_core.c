@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/loop_progress.h"
+#include "base/loop_progress.h"
 #include "shitsukan/core.h"
 #include "test_support.h"
 

@@ -9,7 +9,7 @@
 
 #include "test_support.h"
 
-#include "draw/draw_internal.h"
+#include "products/draw/draw_internal.h"
 #include "shitsukan/draw.h"
 
 /* ------------------------------------------------------------------ helpers */

@@ -159,7 +159,7 @@ static void test_static_roundtrip(void **state)
     (void)state;
     sk_mesh grid;
     make_grid(&grid);
-    SK_ASSERT_OK(sk_render_compute_tangents(&grid, &e_));
+    SK_ASSERT_OK(sk_mesh_compute_tangents(&grid, &e_));
     sk_image colour, normal;
     SK_ASSERT_OK(sk_image_create(&colour, 4, 4, 4, &e_));
     SK_ASSERT_OK(sk_image_create(&normal, 4, 4, 3, &e_));
@@ -545,70 +545,91 @@ static sk_result add_grid_mesh(sk_gltf *g, sk_mesh *m, const uint16_t *j, const 
     return sk_gltf_add_mesh(g, &d, &index, err);
 }
 
-static void test_writer_refuses_bad_input(void **state)
-{
-    (void)state;
+/* What the writer's refusals build on, one step after another: the document, the grid
+   (and a copy without uvs), its joints and weights, a texture, and the nodes the
+   animations refer to. */
+typedef struct refusals {
     sk_gltf *g;
-    SK_ASSERT_OK(sk_gltf_create(&g, &e_));
-    sk_mesh m;
-    make_grid(&m);
+    sk_mesh m, bare;
+    uint16_t j[36];
+    float w[36];
+    sk_image tex;
+    int root, skinned_node, node_plain;
+} refusals;
+
+/* Meshes: bad indices, NaN, colours and normals; weights and joints; morph targets. */
+static void refuse_bad_meshes(refusals *t)
+{
+    sk_gltf *g = t->g;
+    sk_mesh *m = &t->m;
+    uint16_t *j = t->j;
+    float *w = t->w;
     sk_error err = {0};
     int index = 0;
 
-    m.indices[4] = 9; /* bad index */
-    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+    m->indices[4] = 9; /* bad index */
+    sk_test_expect_failure(add_grid_mesh(g, m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
                            "meshes[0]");
-    m.indices[4] = 3;
-    m.positions[7] = NAN;
-    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+    m->indices[4] = 3;
+    m->positions[7] = NAN;
+    sk_test_expect_failure(add_grid_mesh(g, m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
                            "meshes[0]");
-    m.positions[7] = 0.0f;
-    m.colors[5] = 1.5f;
-    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+    m->positions[7] = 0.0f;
+    m->colors[5] = 1.5f;
+    sk_test_expect_failure(add_grid_mesh(g, m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
                            "colors[1]");
-    m.colors[5] = 0.5f;
-    m.normals[4] = 0.0f; /* a zero normal */
-    sk_test_expect_failure(add_grid_mesh(g, &m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+    m->colors[5] = 0.5f;
+    m->normals[4] = 0.0f; /* a zero normal */
+    sk_test_expect_failure(add_grid_mesh(g, m, NULL, NULL, &err), &err, SK_ERROR_INVALID_ARGUMENT,
                            "normals[1]");
-    m.normals[4] = 1.0f;
+    m->normals[4] = 1.0f;
 
-    uint16_t j[36] = {0};
-    float w[36] = {0};
+    memset(t->j, 0, sizeof t->j);
+    memset(t->w, 0, sizeof t->w);
     for (int v = 0; v < 9; v++)
         j[4 * v] = 0, j[4 * v + 1] = 1, w[4 * v] = 0.5f, w[4 * v + 1] = 0.5f;
     w[4 * 3 + 1] = 0.4f; /* sums to 0.9 */
-    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+    sk_test_expect_failure(add_grid_mesh(g, m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
                            "weights[3] sum to 0.9");
     w[4 * 3 + 1] = 0.5f;
     w[4 * 2 + 2] = -0.1f;
-    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+    sk_test_expect_failure(add_grid_mesh(g, m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
                            "weights[2][2]");
     w[4 * 2 + 2] = 0.0f;
     j[4 * 6 + 1] = 0; /* joint 0 twice with weight */
-    sk_test_expect_failure(add_grid_mesh(g, &m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
+    sk_test_expect_failure(add_grid_mesh(g, m, j, w, &err), &err, SK_ERROR_INVALID_ARGUMENT,
                            "joints[6]");
     j[4 * 6 + 1] = 1;
-    sk_gltf_mesh_desc half = {.mesh = &m, .material = SK_GLTF_NONE, .joints = j};
+    sk_gltf_mesh_desc half = {.mesh = m, .material = SK_GLTF_NONE, .joints = j};
     sk_test_expect_failure(sk_gltf_add_mesh(g, &half, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "together");
     float tp[27] = {0};
     sk_gltf_mesh_desc morph = {
-        .mesh = &m, .material = SK_GLTF_NONE, .target_count = 1, .target_positions = tp};
+        .mesh = m, .material = SK_GLTF_NONE, .target_count = 1, .target_positions = tp};
     tp[5] = INFINITY;
     sk_test_expect_failure(sk_gltf_add_mesh(g, &morph, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "target_positions[5]");
     tp[5] = 0;
     const char *dup[2] = {"a", "a"};
     float tp2[54] = {0};
-    sk_gltf_mesh_desc morph2 = {.mesh = &m,
+    sk_gltf_mesh_desc morph2 = {.mesh = m,
                                 .material = SK_GLTF_NONE,
                                 .target_count = 2,
                                 .target_positions = tp2,
                                 .target_names = dup};
     sk_test_expect_failure(sk_gltf_add_mesh(g, &morph2, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "target_names[1]");
+}
 
-    /* materials and textures */
+/* materials and textures, and the meshes that use them */
+static void refuse_bad_materials(refusals *t)
+{
+    sk_gltf *g = t->g;
+    sk_mesh *m = &t->m, *bare = &t->bare;
+    sk_image *tex = &t->tex;
+    sk_error err = {0};
+    int index = 0;
+
     sk_gltf_material_desc md = {.roughness = 1.5f};
     sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "roughness");
@@ -617,29 +638,27 @@ static void test_writer_refuses_bad_input(void **state)
     sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "base_color[1]");
     md.base_color[1] = 0.0f;
-    sk_image tex;
-    SK_ASSERT_OK(sk_image_create(&tex, 2, 2, 3, &e_));
-    tex.data[4] = 2.0f;
-    md.base_color_texture = &tex;
+    SK_ASSERT_OK(sk_image_create(tex, 2, 2, 3, &e_));
+    tex->data[4] = 2.0f;
+    md.base_color_texture = tex;
     sk_test_expect_failure(sk_gltf_add_material(g, &md, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "base_color_texture: pixel (1, 0)");
-    tex.data[4] = 0.5f;
+    tex->data[4] = 0.5f;
     int textured;
     SK_ASSERT_OK(sk_gltf_add_material(g, &md, &textured, &e_));
-    sk_mesh bare;
-    make_grid(&bare);
-    free(bare.uvs);
-    bare.uvs = NULL;
-    sk_gltf_mesh_desc needs_uv = {.mesh = &bare, .material = textured};
+    make_grid(bare);
+    free(bare->uvs);
+    bare->uvs = NULL;
+    sk_gltf_mesh_desc needs_uv = {.mesh = bare, .material = textured};
     sk_test_expect_failure(sk_gltf_add_mesh(g, &needs_uv, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "needs uvs");
-    sk_gltf_material_desc nd = {.normal_texture = &tex};
+    sk_gltf_material_desc nd = {.normal_texture = tex};
     int normal_mat;
     SK_ASSERT_OK(sk_gltf_add_material(g, &nd, &normal_mat, &e_));
-    sk_gltf_mesh_desc needs_tangents = {.mesh = &m, .material = normal_mat};
+    sk_gltf_mesh_desc needs_tangents = {.mesh = m, .material = normal_mat};
     sk_test_expect_failure(sk_gltf_add_mesh(g, &needs_tangents, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "tangent");
-    sk_gltf_material_desc glow = {.emissive_texture = &tex};
+    sk_gltf_material_desc glow = {.emissive_texture = tex};
     sk_test_expect_failure(sk_gltf_add_material(g, &glow, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT,
                            "emissive_texture without an emissive factor");
@@ -649,14 +668,24 @@ static void test_writer_refuses_bad_input(void **state)
     glow.emissive[2] = 0.5f;
     int glow_mat;
     SK_ASSERT_OK(sk_gltf_add_material(g, &glow, &glow_mat, &e_));
-    sk_gltf_mesh_desc glow_needs_uv = {.mesh = &bare, .material = glow_mat};
+    sk_gltf_mesh_desc glow_needs_uv = {.mesh = bare, .material = glow_mat};
     sk_test_expect_failure(sk_gltf_add_mesh(g, &glow_needs_uv, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "needs uvs");
-    sk_gltf_mesh_desc no_material = {.mesh = &m, .material = 7};
+    sk_gltf_mesh_desc no_material = {.mesh = m, .material = 7};
     sk_test_expect_failure(sk_gltf_add_mesh(g, &no_material, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "material = 7");
+}
 
-    /* nodes */
+/* nodes and skins: parents, transforms, skinned meshes and their joints */
+static void refuse_bad_nodes(refusals *t)
+{
+    sk_gltf *g = t->g;
+    sk_mesh *m = &t->m;
+    const uint16_t *j = t->j;
+    const float *w = t->w;
+    sk_error err = {0};
+    int index = 0;
+
     sk_gltf_node_desc n = sk_gltf_node_desc_default();
     n.parent = 0;
     sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
@@ -672,9 +701,9 @@ static void test_writer_refuses_bad_input(void **state)
     n.translation[2] = 0;
     int root, plain_mesh, skinned_mesh, node_plain;
     SK_ASSERT_OK(sk_gltf_add_node(g, &n, &root, &e_));
-    sk_gltf_mesh_desc pd = {.mesh = &m, .material = SK_GLTF_NONE};
+    sk_gltf_mesh_desc pd = {.mesh = m, .material = SK_GLTF_NONE};
     SK_ASSERT_OK(sk_gltf_add_mesh(g, &pd, &plain_mesh, &e_));
-    sk_gltf_mesh_desc sd = {.mesh = &m, .material = SK_GLTF_NONE, .joints = j, .weights = w};
+    sk_gltf_mesh_desc sd = {.mesh = m, .material = SK_GLTF_NONE, .joints = j, .weights = w};
     SK_ASSERT_OK(sk_gltf_add_mesh(g, &sd, &skinned_mesh, &e_));
     n.mesh = skinned_mesh;
     sk_test_expect_failure(sk_gltf_add_node(g, &n, &index, &err), &err, SK_ERROR_INVALID_ARGUMENT,
@@ -713,8 +742,16 @@ static void test_writer_refuses_bad_input(void **state)
     float ibm_bad[16] = {1, 0, 0, 0.5f, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     sk_test_expect_failure(sk_gltf_add_skin(g, NULL, &root, 1, ibm_bad, &index, &err), &err,
                            SK_ERROR_INVALID_ARGUMENT, "inverse_bind[0][3]");
+    t->root = root, t->skinned_node = skinned_node, t->node_plain = node_plain;
+}
 
-    /* animations */
+/* animations: no channels, times, keys, values, targets, paths, repeats */
+static void refuse_bad_animations(refusals *t)
+{
+    sk_gltf *g = t->g;
+    int root = t->root, skinned_node = t->skinned_node, node_plain = t->node_plain;
+    sk_error err = {0};
+
     int anim;
     SK_ASSERT_OK(sk_gltf_add_animation(g, NULL, &anim, &e_));
     uint8_t *data = (uint8_t *)1;
@@ -763,7 +800,16 @@ static void test_writer_refuses_bad_input(void **state)
     sk_test_expect_failure(
         sk_gltf_add_channel(g, 5, root, SK_GLTF_PATH_SCALE, 0, times, 3, values, &err), &err,
         SK_ERROR_INVALID_ARGUMENT, "animation = 5");
-    /* nothing a refused call tried to add was kept: the document still validates */
+}
+
+/* nothing a refused call tried to add was kept: the document still validates; and a file
+   below a plain file is refused */
+static void check_nothing_kept(refusals *t)
+{
+    sk_gltf *g = t->g;
+    sk_error err = {0};
+    uint8_t *data;
+    size_t size;
     SK_ASSERT_OK(sk_gltf_write_glb_memory(g, NULL, &data, &size, &e_));
     sk_gltf_doc *doc;
     SK_ASSERT_OK(sk_gltf_read_glb_memory(&doc, data, size, NULL, &e_));
@@ -777,10 +823,23 @@ static void test_writer_refuses_bad_input(void **state)
     char below[1100];
     snprintf(below, sizeof below, "%s/x.glb", not_a_folder);
     sk_test_expect_failure(sk_gltf_write_glb(g, below, NULL, &err), &err, SK_ERROR_IO, "x.glb");
-    sk_image_free(&tex);
-    sk_mesh_free(&bare);
-    sk_mesh_free(&m);
-    sk_gltf_destroy(g);
+}
+
+static void test_writer_refuses_bad_input(void **state)
+{
+    (void)state;
+    refusals t;
+    SK_ASSERT_OK(sk_gltf_create(&t.g, &e_));
+    make_grid(&t.m);
+    refuse_bad_meshes(&t);
+    refuse_bad_materials(&t);
+    refuse_bad_nodes(&t);
+    refuse_bad_animations(&t);
+    check_nothing_kept(&t);
+    sk_image_free(&t.tex);
+    sk_mesh_free(&t.bare);
+    sk_mesh_free(&t.m);
+    sk_gltf_destroy(t.g);
 }
 
 /* ------------------------------------------------------------------ reader errors */

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "hand/dense_private.h"
+#include "models/hand/dense_internal.h"
 #include "shitsukan/core.h"
 #include "test_support.h"
 
@@ -39,8 +39,8 @@ static void test_cholesky_and_solve_match_lapack(void **state)
         random_spd(11, n, a);
         memcpy(la, a, sizeof a);
         memcpy(pa, a, sizeof a);
-        assert_int_equal(sk_hand__cholesky_at(la, n), 0);
-        assert_int_equal(sk_hand__portable_cholesky(pa, n), 0);
+        assert_int_equal(sk__hand_cholesky_at(la, n), 0);
+        assert_int_equal(sk__hand_portable_cholesky(pa, n), 0);
         double scale = max_abs(la, n * n);
         for (int j = 0; j < n; j++)
             for (int i = j; i < n; i++)
@@ -48,8 +48,8 @@ static void test_cholesky_and_solve_match_lapack(void **state)
         double lb[3 * MAXN], pb[3 * MAXN];
         sk_rng rng = sk_rng_make(5, (uint64_t)n, 0, 0);
         for (int i = 0; i < 3 * n; i++) lb[i] = pb[i] = sk_rng_range(&rng, -2.0, 2.0);
-        sk_hand__cholesky_solve(la, n, lb, 3);
-        sk_hand__portable_cholesky_solve(pa, n, pb, 3);
+        sk__hand_cholesky_solve(la, n, lb, 3);
+        sk__hand_portable_cholesky_solve(pa, n, pb, 3);
         double xs = max_abs(lb, 3 * n);
         for (int i = 0; i < 3 * n; i++) assert_true(fabs(lb[i] - pb[i]) <= 1e-12 * xs);
         /* and it is the solution: A x = b */
@@ -75,10 +75,10 @@ static void test_failure_column_matches_lapack(void **state)
         double la[MAXN * MAXN], pa[MAXN * MAXN];
         memcpy(la, a, sizeof a);
         memcpy(pa, a, sizeof a);
-        int li = sk_hand__cholesky_at(la, n), pi = sk_hand__portable_cholesky(pa, n);
+        int li = sk__hand_cholesky_at(la, n), pi = sk__hand_portable_cholesky(pa, n);
         assert_true(li > 0);
         assert_int_equal(li, pi);
-        assert_false(sk_hand__cholesky(la, n));
+        assert_false(sk__hand_cholesky(la, n));
     }
 }
 
@@ -90,8 +90,8 @@ static void test_inverse_matches_lapack(void **state)
         random_spd(21, n, a);
         memcpy(la, a, sizeof a);
         memcpy(pa, a, sizeof a);
-        assert_true(sk_hand__spd_inverse(la, n));
-        assert_true(sk_hand__portable_spd_inverse(pa, n));
+        assert_true(sk__hand_spd_inverse(la, n));
+        assert_true(sk__hand_portable_spd_inverse(pa, n));
         double scale = max_abs(la, n * n);
         for (int i = 0; i < n * n; i++) assert_true(fabs(la[i] - pa[i]) <= 1e-12 * scale);
         /* A A^-1 = I */
@@ -103,7 +103,7 @@ static void test_inverse_matches_lapack(void **state)
             }
     }
     double z[4] = {1, 0, 0, -1};
-    assert_false(sk_hand__portable_spd_inverse(z, 2));
+    assert_false(sk__hand_portable_spd_inverse(z, 2));
 }
 
 static void test_eigen_matches_lapack(void **state)
@@ -116,8 +116,8 @@ static void test_eigen_matches_lapack(void **state)
         for (int i = 0; i < n; i++) a[i * n + i] -= 0.75 * n;
         memcpy(la, a, sizeof a);
         memcpy(pa, a, sizeof a);
-        assert_true(sk_hand__sym_eigen(la, n, lv, true));
-        assert_true(sk_hand__portable_sym_eigen(pa, n, pv, true));
+        assert_true(sk__hand_sym_eigen(la, n, lv, true));
+        assert_true(sk__hand_portable_sym_eigen(pa, n, pv, true));
         double scale = fmax(fabs(lv[0]), fabs(lv[n - 1]));
         for (int i = 0; i < n; i++) {
             assert_true(fabs(lv[i] - pv[i]) <= 1e-12 * scale);
@@ -137,7 +137,7 @@ static void test_eigen_matches_lapack(void **state)
         }
         double values_only[MAXN];
         memcpy(pa, a, sizeof a);
-        assert_true(sk_hand__portable_sym_eigen(pa, n, values_only, false));
+        assert_true(sk__hand_portable_sym_eigen(pa, n, values_only, false));
         for (int i = 0; i < n; i++) assert_true(fabs(values_only[i] - pv[i]) <= 1e-12 * scale);
     }
 }

@@ -15,7 +15,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "io/image_internal.h"
+#include "base/image_internal.h"
 #include "shitsukan/image.h"
 #include "shitsukan/io.h"
 

@@ -13,9 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/deflate_join.h"
-#include "io/image_internal.h"
-#include "io/png_quantize.h"
+#include "formats/images/deflate_join.h"
+#include "base/image_internal.h"
+#include "base/png_quantize.h"
 #include "shitsukan/image.h"
 #include "shitsukan/io.h"
 

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/polygon_triangulate.h"
+#include "base/polygon_triangulate.h"
 #include "shitsukan/image.h"
 #include "shitsukan/io.h"
 #include "shitsukan/mesh.h"

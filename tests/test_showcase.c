@@ -353,6 +353,68 @@ static void test_frames_for_any_split_and_threads(void **state)
     assert_true(sk_test_same_file(wa, wb));
 }
 
+/* The library makes no video itself: it hands a finished run to the caller's encoder,
+   once, with the frame pattern, the rate and the WAV; a split run calls it only when the
+   folder holds every frame; without an encoder it notes that there is no MP4. */
+typedef struct encoder_calls {
+    int count;
+    char pattern[600], wav[600], path[600];
+    double fps;
+} encoder_calls;
+
+static sk_result fake_encoder(void *user, const char *frames_pattern, double fps, const char *wav,
+                              const char *path, char *note, size_t note_size, bool *written,
+                              sk_error *err)
+{
+    encoder_calls *c = user;
+    c->count++;
+    snprintf(c->pattern, sizeof c->pattern, "%s", frames_pattern);
+    snprintf(c->wav, sizeof c->wav, "%s", wav);
+    snprintf(c->path, sizeof c->path, "%s", path);
+    c->fps = fps;
+    *written = true;
+    return SK_OK;
+}
+
+static void test_video_through_the_callers_encoder(void **state)
+{
+    (void)state;
+    sk_error err = {0};
+    char dir[512];
+    snprintf(dir, sizeof dir, "%s", sk_test_path("frames-video"));
+    sk_showcase *sc = make_short_forearm_showcase(&fx.short_melody);
+    int n = sk_showcase_frame_count(sc);
+    encoder_calls calls = {0};
+    sk_showcase_stats stats;
+    sk_showcase_run_desc rd = {.output_dir = dir,
+                               .last_frame = n / 2 - 1,
+                               .encode_video = fake_encoder,
+                               .encode_video_user = &calls};
+    assert_int_equal(sk_showcase_run(sc, &rd, &stats, &err), SK_OK);
+    assert_int_equal(calls.count, 0); /* half the frames: no video yet */
+    assert_false(stats.video_written);
+    assert_non_null(strstr(stats.video_note, "all"));
+    rd.first_frame = n / 2;
+    rd.last_frame = -1;
+    assert_int_equal(sk_showcase_run(sc, &rd, &stats, &err), SK_OK);
+    assert_int_equal(calls.count, 1);
+    assert_true(stats.video_written);
+    char want[600];
+    snprintf(want, sizeof want, "%s/frames/frame_%%04d.png", dir);
+    assert_string_equal(calls.pattern, want);
+    snprintf(want, sizeof want, "%s/showcase.wav", dir);
+    assert_string_equal(calls.wav, want);
+    snprintf(want, sizeof want, "%s/showcase.mp4", dir);
+    assert_string_equal(calls.path, want);
+    assert_true(calls.fps > 0);
+    /* no encoder: a note, no error */
+    sk_showcase_run_desc none = {.output_dir = dir, .join_only = true};
+    assert_int_equal(sk_showcase_run(sc, &none, &stats, &err), SK_OK);
+    assert_false(stats.video_written);
+    assert_non_null(strstr(stats.video_note, "no video encoder"));
+    sk_showcase_destroy(sc);
+}
+
 /* ------------------------------------------------------------ the forearm */
 
 /* Largest distance of a forearm skin point from where its bones carry it (the flesh's
@@ -651,6 +713,7 @@ int main(void)
         cmocka_unit_test(test_forearm_swings_and_settles),
         cmocka_unit_test(test_forearm_any_start),
         cmocka_unit_test(test_sound),
+        cmocka_unit_test(test_video_through_the_callers_encoder),
         cmocka_unit_test(test_piano_keys),
         cmocka_unit_test(test_command),
     };

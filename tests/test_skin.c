@@ -10,7 +10,7 @@
 #include "shitsukan/image.h"
 #include "shitsukan/preset.h"
 #include "shitsukan/skin.h"
-#include "skin/skin_internal.h"
+#include "models/skin/skin_internal.h"
 #include "test_support.h"
 
 static bool sanitized(void) { return getenv("SK_TEST_SANITIZED") != NULL; }

@@ -11,7 +11,7 @@
 #include "shitsukan/preset.h"
 #include "test_result.h"
 #include "test_support.h"
-#include "tissue/tissue_internal.h"
+#include "models/tissue/tissue_internal.h"
 #include "tissue_fixture.h"
 
 /* ------------------------------------------------------------ muscles */

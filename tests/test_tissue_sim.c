@@ -14,7 +14,7 @@
 #include "shitsukan/pointcache.h"
 #include "test_result.h"
 #include "test_support.h"
-#include "tissue/sim_internal.h"
+#include "models/tissue/sim_internal.h"
 #include "tissue_fixture.h"
 
 static bool sanitized(void) { return getenv("SK_TEST_SANITIZED") != NULL; }

@@ -14,7 +14,7 @@
 #include "shitsukan/io.h"
 #include "shitsukan/wood.h"
 #include "test_support.h"
-#include "wood/wood_internal.h"
+#include "models/wood/wood_internal.h"
 
 static bool sanitized(void) { return getenv("SK_TEST_SANITIZED") != NULL; }
 

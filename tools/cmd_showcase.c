@@ -11,6 +11,7 @@
 #include "cmd_hand_surface.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/showcase.h"
+#include "video_ffmpeg.h"
 
 static const cli_option k_options[] = {
     {"melody", 0, "FILE", "the melody: text (docs/showcase.md) or a Standard MIDI File (.mid)",
@@ -201,9 +202,17 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     run_desc.output_dir = args->common.output;
     run_desc.join_only = cli_has(command, args, "join");
     run_desc.no_video = cli_has(command, args, "no-video");
-    run_desc.ffmpeg = cli_get(command, args, "ffmpeg");
+    const char *ffmpeg = cli_get(command, args, "ffmpeg");
+    run_desc.encode_video = video_ffmpeg_encode;
+    run_desc.encode_video_user = (void *)ffmpeg;
     sk_error err = {0};
     if (sk_showcase_check_output(&run_desc, &err) != SK_OK) return cli_fail_error(&err);
+    /* a named ffmpeg must run (the default one may be absent: the run then notes it) */
+    if (ffmpeg && !run_desc.no_video && !video_ffmpeg_available(ffmpeg))
+        return cli_fail(
+            CLI_EXIT_USAGE,
+            "ffmpeg '%s' does not run ('%s -version' failed): give a working ffmpeg or --no-video",
+            ffmpeg, ffmpeg);
     if ((status = load_melody(melody_path, duration, &s->melody))) return status;
     s->stage = calloc(1, sizeof *s->stage);
     s->constraints = calloc(1, sizeof *s->constraints);

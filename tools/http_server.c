@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "http.h"
+#include "shitsukan/io.h"
 
 #define HTTP_MAX_CLIENTS 32
 #define HTTP_IDLE_SECONDS 10
@@ -78,15 +79,11 @@ static int open_file(const char *root_real, const char *path, int *fd_out, off_t
     /* symbolic links inside the root must not lead out of it */
     size_t rl = strlen(root_real);
     if (strncmp(resolved, root_real, rl) != 0 || resolved[rl] != '/') return 404;
-    int fd = open(resolved, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return 404;
-    struct stat st;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        close(fd);
-        return 404;
-    }
+    int fd;
+    long long file_size;
+    if (sk_open_regular_fd(resolved, &fd, &file_size, NULL) != SK_OK) return 404;
     *fd_out = fd;
-    *size = st.st_size;
+    *size = file_size;
     snprintf(real, real_size, "%s", resolved);
     return 200;
 }

@@ -209,6 +209,11 @@ float sk_fbm2_periodic(uint64_t seed, float x, float y, int period_x, int period
  * sets OpenMP's own setting; 0 restores the OpenMP default). */
 void sk_threads_set(int count);
 int sk_threads_max(void);
+/* Inside a parallel loop: this thread's index in its team (0 .. team size - 1) and the
+ * team's size; outside one (and in builds without threads): 0 and 1. Per-thread scratch
+ * is indexed by these, so the library never calls the thread runtime directly. */
+int sk_thread_index(void);
+int sk_thread_team_size(void);
 /* Lets the idle threads of the last parallel loops go now, so they do not spin beside
  * serial work that follows (e.g. one thread writing a file): on a loaded machine they
  * would take its core. Call between parallel phases, not inside a parallel loop. */

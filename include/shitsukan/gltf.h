@@ -53,7 +53,7 @@ typedef struct sk_gltf_material_desc {
        in [0, 1] (written sRGB as glTF requires); normal: tangent-space, components in
        [-1, 1] (written as 0.5 n + 0.5, linear), 3 channels; a mesh with this material
        needs uvs, normals and a 4-component "tangent" attribute (glTF's TANGENT, e.g. from
-       sk_render_compute_tangents). Textures are encoded as PNG when the material is added
+       sk_mesh_compute_tangents). Textures are encoded as PNG when the material is added
        (the caller's image may be freed after the call). */
     const sk_image *base_color_texture;
     const sk_image *normal_texture;

@@ -85,6 +85,15 @@ sk_result sk_output_set_commit(sk_output_set *set, sk_error *err);
 /* Removes every staged output and the folders the set created (safe on NULL). */
 void sk_output_set_abort(sk_output_set *set);
 
+/* Opens `path` for reading when it names a regular file (through symbolic links): a
+ * folder, device, FIFO or socket fails with SK_ERROR_INVALID_ARGUMENT ("not a regular
+ * file"), a missing file with SK_ERROR_NOT_FOUND. The descriptor is close-on-exec;
+ * `out_size` (may be NULL) receives the file's size in bytes. Every reader opens its
+ * file through one of these. */
+sk_result sk_open_regular_fd(const char *path, int *out_fd, long long *out_size, sk_error *err);
+/* The same as a stdio stream (binary mode). */
+sk_result sk_open_regular_file(const char *path, FILE **out, long long *out_size, sk_error *err);
+
 /* Reads a whole file into a NUL-terminated buffer (free with free()). Files larger than
  * max_bytes (0 = 256 MiB) fail with SK_ERROR_LIMIT before anything is allocated. */
 sk_result sk_read_file(const char *path, size_t max_bytes, char **out_data, size_t *out_size,

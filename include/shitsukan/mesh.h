@@ -65,6 +65,13 @@ sk_result sk_mesh_validate(const sk_mesh *mesh, sk_error *err);
  * adds its cross product (twice its area times its unit normal) to its corners. Vertices
  * on no triangle of non-zero area (e.g. all of a point cloud) get (0, 0, 1). */
 sk_result sk_mesh_compute_normals(sk_mesh *mesh, sk_error *err);
+/* Adds a 4-component "tangent" attribute (xyz a unit tangent along +u, w = +-1 the
+ * handedness: the bitangent is w * normal x tangent, as glTF's TANGENT) computed from
+ * positions, normals and UVs: each triangle's dP/du and dP/dv summed per vertex with the
+ * triangle's area as weight, then orthogonalised against the normal. A mesh without UVs
+ * or normals gets an arbitrary tangent frame; one that has a 4-component "tangent"
+ * attribute keeps it. */
+sk_result sk_mesh_compute_tangents(sk_mesh *mesh, sk_error *err);
 /* Axis-aligned bounds of the positions; false for an empty mesh. */
 bool sk_mesh_bounds(const sk_mesh *mesh, sk_vec3f *lo, sk_vec3f *hi);
 

@@ -496,9 +496,8 @@ double sk_render_scene_export_memory(const sk_render_scene *scene,
 sk_result sk_render_make_primitive(const sk_render_object_desc *object, sk_mesh *mesh,
                                    sk_error *err);
 
-/* Adds a "tangent" attribute (as above) computed from positions, normals and UVs
- * (per-triangle UV derivatives summed per vertex, orthogonalised against the normal). A
- * mesh without UVs or normals gets an arbitrary tangent frame. */
+/* Deprecated (kept for one release; docs/architecture.md): the old name of
+ * sk_mesh_compute_tangents, which include/shitsukan/mesh.h declares with the normals. */
 sk_result sk_render_compute_tangents(sk_mesh *mesh, sk_error *err);
 
 /* Names of the enums as used in scene files. */

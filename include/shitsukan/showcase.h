@@ -368,7 +368,7 @@ typedef struct sk_showcase_stats {
     double seconds_render; /* ray tracing */
     double seconds_write;  /* PNG files */
     double seconds_audio;  /* synthesis and WAV */
-    double seconds_video;  /* ffmpeg */
+    double seconds_video;  /* the video encoder */
     bool video_written;
     char video_note[256]; /* why there is no MP4, if there is none */
 } sk_showcase_stats;
@@ -380,6 +380,15 @@ typedef struct sk_showcase_stats {
 sk_result sk_showcase_render_frame(sk_showcase *showcase, int frame, sk_image *image,
                                    sk_showcase_stats *stats, sk_error *err);
 
+/* Makes the video of a finished run: the frames (a printf pattern of PNG paths, one
+ * %0Nd), their rate, the WAV, and the path of the video to write (atomically). It sets
+ * *written, or leaves it false and says why in `note` (an encoder that is not there is
+ * a note, not an error). The library runs no program itself: the shitsukan command's
+ * encoder runs ffmpeg (tools/video_ffmpeg.c). */
+typedef sk_result (*sk_showcase_video_fn)(void *user, const char *frames_pattern, double fps,
+                                          const char *wav, const char *path, char *note,
+                                          size_t note_size, bool *written, sk_error *err);
+
 typedef struct sk_showcase_run_desc {
     const char *output_dir; /* required; created. Writes frames/frame_NNNN.png,
                                showcase.wav, fingering.txt and showcase.mp4 */
@@ -387,20 +396,23 @@ typedef struct sk_showcase_run_desc {
     int last_frame;         /* inclusive; -1 = the last frame */
     bool join_only;         /* render nothing: make the MP4 from the frames in the folder */
     bool no_video;          /* leave out the MP4 */
-    const char *ffmpeg;     /* the ffmpeg program; NULL = "ffmpeg" on the PATH */
-    sk_progress progress;   /* fraction of the frames done */
+    const char *ffmpeg;     /* deprecated (kept for one release; docs/architecture.md): read
+                               by the command's encoder only, the library ignores it */
+    sk_showcase_video_fn encode_video; /* makes showcase.mp4 once every frame is there;
+                                          NULL: no video (stats->video_note says so) */
+    void *encode_video_user;
+    sk_progress progress; /* fraction of the frames done */
 } sk_showcase_run_desc;
 
-/* Checks a run's outputs before any work: the output folder, if it exists, is a folder,
- * and an ffmpeg named in desc->ffmpeg runs (unless no_video). The default ffmpeg on the
- * PATH may be absent (the run then notes that it made no MP4). sk_showcase_run calls it. */
+/* Checks a run's outputs before any work: the output folder, if it exists, is a folder.
+ * sk_showcase_run calls it. */
 sk_result sk_showcase_check_output(const sk_showcase_run_desc *desc, sk_error *err);
 
 /* Renders the frames first_frame..last_frame into the folder, writes the WAV and the
  * fingering, and once every frame of the piece is in the folder (from this run or earlier
- * ones, e.g. split with first/last_frame), encodes the MP4 (H.264 yuv420p, odd sizes
- * padded to even, the WAV as AAC) if ffmpeg runs; without ffmpeg stats->video_note says
- * so and the rest is kept. A frame is the same whichever runs render it. */
+ * ones, e.g. split with first/last_frame), has desc->encode_video make showcase.mp4
+ * (unless no_video); stats->video_note says why there is none. A frame is the same
+ * whichever runs render it. */
 sk_result sk_showcase_run(sk_showcase *showcase, const sk_showcase_run_desc *desc,
                           sk_showcase_stats *stats, sk_error *err);
 

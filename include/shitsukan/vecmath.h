@@ -113,6 +113,8 @@ static inline sk_vec3f sk_v3f(float x, float y, float z)
     sk_vec3f v = {x, y, z};
     return v;
 }
+/* The vector of three consecutive floats (a mesh's positions, normals). */
+static inline sk_vec3f sk_v3f_load(const float a[3]) { return sk_v3f(a[0], a[1], a[2]); }
 static inline sk_vec3f sk_v3f_add(sk_vec3f a, sk_vec3f b)
 {
     return sk_v3f(a.x + b.x, a.y + b.y, a.z + b.z);
@@ -269,6 +271,20 @@ static inline double sk_m3d_det(sk_mat3d a)
     return a.m[0][0] * (a.m[1][1] * a.m[2][2] - a.m[1][2] * a.m[2][1]) -
            a.m[0][1] * (a.m[1][0] * a.m[2][2] - a.m[1][2] * a.m[2][0]) +
            a.m[0][2] * (a.m[1][0] * a.m[2][1] - a.m[1][1] * a.m[2][0]);
+}
+/* The solution x of a x = b by Cramer's rule, given det = sk_m3d_det(a) (non-zero): the
+ * library's one 3x3 solve (each x[c] is the determinant of a with column c replaced by
+ * b, over det). */
+static inline sk_vec3d sk_m3d_solve_cramer(sk_mat3d a, sk_vec3d b, double det)
+{
+    double x[3], rhs[3] = {b.x, b.y, b.z};
+    for (int col = 0; col < 3; col++) {
+        sk_mat3d m = a;
+        for (int row = 0; row < 3; row++) m.m[row][col] = rhs[row];
+        x[col] = sk_m3d_det(m) / det;
+    }
+    sk_vec3d r = {x[0], x[1], x[2]};
+    return r;
 }
 static inline sk_mat3f sk_m3d_to_f(sk_mat3d a)
 {

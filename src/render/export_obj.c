@@ -62,6 +62,12 @@ static void texture_names(const char *obj_path, const char *material, char *path
     snprintf(path, path_size, "%.*s%s", (int)(base - obj_path), obj_path, name);
 }
 
+/* The names the OBJ and its materials file are written with (one per material, texture
+ * and object). */
+typedef char export_name[SK__EXPORT_NAME_SIZE];
+typedef char texture_file[64 + SK__EXPORT_NAME_SIZE];
+typedef char group_name[SK_RENDER_NAME_SIZE + 16];
+
 sk_result sk__export_write_obj(const sk_render_scene *scene, const sk__export *e,
                                const sk__export_files *files, sk_error *err)
 {
@@ -81,14 +87,13 @@ sk_result sk__export_write_obj(const sk_render_scene *scene, const sk__export *e
     int flags = (normals ? SK_MESH_NORMALS : 0) | (uvs ? SK_MESH_UVS : 0);
     sk_result r = sk_mesh_create(&world, nv, nt, flags, err);
     if (r != SK_OK) return r;
-    sk_obj_material *materials = calloc((size_t)e->material_count + 1, sizeof *materials);
-    sk_obj_group *groups = calloc((size_t)e->object_count + 1, sizeof *groups);
-    char(*material_names)[SK__EXPORT_NAME_SIZE] =
-        calloc((size_t)e->material_count + 1, sizeof *material_names);
-    char(*texture_files)[64 + SK__EXPORT_NAME_SIZE] =
-        calloc((size_t)e->material_count + 1, sizeof *texture_files);
-    char(*group_names)[SK_RENDER_NAME_SIZE + 16] =
-        calloc((size_t)e->object_count + 1, sizeof *group_names);
+    size_t material_slots = (size_t)e->material_count + 1;
+    size_t object_slots = (size_t)e->object_count + 1;
+    sk_obj_material *materials = calloc(material_slots, sizeof *materials);
+    sk_obj_group *groups = calloc(object_slots, sizeof *groups);
+    export_name *material_names = calloc(material_slots, sizeof *material_names);
+    texture_file *texture_files = calloc(material_slots, sizeof *texture_files);
+    group_name *group_names = calloc(object_slots, sizeof *group_names);
     if (!materials || !groups || !material_names || !texture_files || !group_names)
         r = sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the export");
     size_t v0 = 0, t0 = 0;

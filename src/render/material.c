@@ -49,8 +49,8 @@ sk_result sk__materials_build(sk_render_scene *scene, sk_error *err)
 {
     const sk_render_scene_desc *d = &scene->desc;
     int max_textures = 2 * d->material_count;
-    scene->textures =
-        calloc((size_t)(max_textures > 0 ? max_textures : 1), sizeof *scene->textures);
+    size_t texture_slots = (size_t)(max_textures > 0 ? max_textures : 1);
+    scene->textures = calloc(texture_slots, sizeof *scene->textures);
     if (!scene->textures) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for textures");
     sk_result r = SK_OK;
     for (int i = 0; i < d->material_count && r == SK_OK; i++) {

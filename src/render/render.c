@@ -7,7 +7,7 @@
 #include <xmmintrin.h>
 #endif
 
-#include "core/loop_progress.h"
+#include "base/loop_progress.h"
 #include "render/integrator.h"
 
 #define TILE 16

@@ -199,7 +199,7 @@ bool sk__light_sample(const sk__light *l, sk_vec3f p, sk_vec2f u, sk_vec3f *wi, 
                       sk_vec3f *weight);
 
 /* ---- small helpers */
-static inline sk_vec3f sk__v3f_from(const float a[3]) { return sk_v3f(a[0], a[1], a[2]); }
+static inline sk_vec3f sk__v3f_from(const float a[3]) { return sk_v3f_load(a); }
 static inline bool sk__v3f_is_zero(const float a[3]) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 /* Fills a material desc's zero defaults in place. */
 void sk__material_desc_resolve(sk_render_material_desc *m);

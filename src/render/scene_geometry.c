@@ -84,7 +84,7 @@ static sk_result object_mesh(const sk_render_scene *scene, int i, sk_mesh *mesh,
         return sk_fail(err, SK_ERROR_LIMIT, "objects[%d]: %zu vertices exceed 2^32", i,
                        mesh->vertex_count);
     }
-    if ((r = sk_render_compute_tangents(mesh, err)) != SK_OK) {
+    if ((r = sk_mesh_compute_tangents(mesh, err)) != SK_OK) {
         sk_mesh_free(mesh);
         return sk_error_prefix(err, r, "objects[%d]", i);
     }
@@ -188,8 +188,8 @@ sk_result sk__geometry_build(sk_render_scene *scene, sk_error *err)
         return sk_fail(err, SK_ERROR_UNSUPPORTED, "Embree device: error %d",
                        (int)rtcGetDeviceError(NULL));
     rtcSetDeviceErrorFunction(scene->device, rtc_error_handler, scene);
-    scene->meshes =
-        calloc((size_t)(d->object_count > 0 ? d->object_count : 1), sizeof *scene->meshes);
+    size_t mesh_slots = (size_t)(d->object_count > 0 ? d->object_count : 1);
+    scene->meshes = calloc(mesh_slots, sizeof *scene->meshes);
     if (!scene->meshes) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for meshes");
     int mesh_of[SK_RENDER_MAX_OBJECTS];
     for (int i = 0; i < d->object_count; i++) {

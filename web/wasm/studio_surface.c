@@ -2,16 +2,13 @@
  * skeleton): built once on the panel's skeleton, then deformed with the solved link
  * frames at every pose (rigid as the thesis, linear blend or dual quaternion skinning).
  * Its atlas (the UVs of the exported mesh, whose vertices along the seam are split) and
- * the baked skin texture put the skin module's microrelief on the hand.
- * Built only when the library has the hand surface (SK_STUDIO_HAND_SURFACE). */
+ * the baked skin texture put the skin module's microrelief on the hand. */
 #include <stdlib.h>
 #include <string.h>
 
 #include "shitsukan/hand.h"
 #include "shitsukan/skin.h"
 #include "studio.h"
-
-#ifdef SK_STUDIO_HAND_SURFACE
 
 STUDIO_API sk_hand_surface *studio_surface_create(const studio_hand *h, int triangles,
                                                   sk_error *err)
@@ -115,5 +112,3 @@ STUDIO_API int studio_surface_texture(const sk_hand_surface *s, int size, const 
     sk_skin_destroy(palm);
     return (int)r;
 }
-
-#endif
