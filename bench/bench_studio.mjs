@@ -29,22 +29,27 @@ function time(fn, runs) {
 }
 
 console.log(`wasm ${fs.statSync(path.resolve(www, 'wasm/studio.wasm')).size} bytes; load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')}`);
-// The skin panel's live maps (the five maps as canvas pixels, studio_skin_live_rgba), in
-// strips of 16 rows dealt to the workers in turn as the page does: after a preset change
-// (each worker builds the skin and makes every map), a profile edit (each re-profiles the
-// skin it holds, sk_skin_reprofile, and renders the preview, height and normal maps) and
-// a shading edit (each shades its held normals again). The slowest worker's CPU time is
-// the preview's time on idle cores.
-const ALL = 31, RELIEF = 7, CELLS_FURROW = 24, RESHADE = 1 | 32, STRIP = 16;
-function liveRgba(skin, n, strips, out, normals, flags) {
-  const ptrs = m._malloc(20);
-  let done = 0;
-  for (const [y0, rows] of strips) {
-    for (let i = 0; i < 5; i++) m.HEAPU32[(ptrs >> 2) + i] = out + i * n * STRIP * 4;
-    if (m._studio_skin_live_rgba(skin, n, n, y0, rows, flags, ptrs, normals ? normals + n * done * 12 : 0, err) !== 0) throw new Error('render');
-    done += rows;
+// The skin panel's live maps (the five maps as canvas pixels from a map set per strip,
+// studio_skin_maps_*), in strips of 16 rows dealt to the workers in turn as the page does:
+// after a preset change (each worker builds the skin and makes every map), a profile edit
+// (each re-profiles the skin it holds, sk_skin_reprofile, and renders the preview, height
+// and normal maps) and a shading edit (each shades its sets' normals again). The slowest
+// worker's CPU time is the preview's time on idle cores.
+const STRIP = 16;
+const layout = JSON.parse(m.UTF8ToString(m._studio_maps_layout(str('skin')))).maps;
+const mapOf = (name) => layout.find((x) => x.name === name).map;
+const bitsOf = (names) => names.reduce((b, k) => b | (1 << mapOf(k)), 0);
+const ALL = ['preview', 'height', 'normal', 'furrow', 'cells'], RELIEF = ['preview', 'height', 'normal'];
+const CELLS_FURROW = ['furrow', 'cells'];
+const setsOf = (skin, n, strips) => strips.map(([y0, rows]) => m._studio_skin_maps_create(skin, n, n, y0, rows, err));
+const dropSets = (sets) => sets.forEach((x) => m._studio_skin_maps_destroy(x));
+// Renders the maps `names` into each strip's set (unless `render` is false) and reads
+// them as canvas pixels into `out`.
+function liveRgba(sets, names, render, out) {
+  for (const set of sets) {
+    if (render && m._studio_skin_maps_render(set, bitsOf(names), err) !== 0) throw new Error('render');
+    for (const k of names) if (m._studio_skin_maps_rgba(set, mapOf(k), out, err) !== 0) throw new Error('rgba');
   }
-  m._free(ptrs);
 }
 function stripsOf(n, workers) {
   const s = Array.from({ length: workers }, () => []);
@@ -62,11 +67,12 @@ const flag = m._malloc(4);
 for (const [preset, n] of [['back-of-hand', 512], ['back-of-hand', 256], ['fig13a', 512]]) {
   const text = fs.readFileSync(path.resolve(www, `presets/skin/${preset}.json`), 'utf8');
   const json = str(text), tree = JSON.parse(text);
-  const buf = m._malloc(n * n * 12), out = m._malloc(5 * n * STRIP * 4), normals = m._malloc(n * n * 12);
+  const out = m._malloc(n * n * 4);
   const build = time(() => { const s = m._studio_skin_create(json, err); m._studio_skin_destroy(s); }, 5);
   const whole = time(() => {
-    const s = m._studio_skin_create(json, err);
-    if (m._studio_skin_render(s, n, n, 0, n, 0, 0, 0, 0, buf, 1, 1, err) !== 0) throw new Error('render');
+    const s = m._studio_skin_create(json, err), sets = setsOf(s, n, [[0, n]]);
+    liveRgba(sets, ['preview'], true, out);
+    dropSets(sets);
     m._studio_skin_destroy(s);
   }, 5);
   console.log(`skin preview ${n}x${n} (${preset}): ${whole.wall.toFixed(1)} ms wall, ${whole.cpu.toFixed(1)} ms CPU (of which the cell build ${build.cpu.toFixed(1)} ms CPU)`);
@@ -78,37 +84,35 @@ for (const [preset, n] of [['back-of-hand', 512], ['back-of-hand', 256], ['fig13
     if (!held || m.HEAPU32[flag >> 2] & 1) throw new Error('reprofile');
   };
   const reprofile = time(() => update('profile'), 5);
-  const one = stripsOf(n, 1)[0];
-  const live = time(() => liveRgba(held, n, one, out, normals, ALL), 3);
+  const one = setsOf(held, n, stripsOf(n, 1)[0]);
+  const live = time(() => liveRgba(one, ALL, true, out), 3);
+  dropSets(one);
   console.log(`  live maps (five, as canvas pixels) on one thread: ${live.cpu.toFixed(1)} ms CPU; re-profiling the built skin ${reprofile.cpu.toFixed(2)} ms CPU`);
   for (const workers of [2, 4]) {
     const shares = stripsOf(n, workers), list = (v) => v.map((b) => b.toFixed(1)).join(', ');
+    const heldSets = shares.map((share) => setsOf(held, n, share));
+    heldSets.forEach((sets) => liveRgba(sets, ALL, true, out));
     // a preset change as the page makes it: the build and the relief maps (the first
     // answer: preview, height, normal), then the furrow and cells maps
-    const first = shares.map((share) => time(() => {
-      const s = m._studio_skin_create(json, err);
-      liveRgba(s, n, share, out, normals, RELIEF);
+    const change = (share, names) => time(() => {
+      const s = m._studio_skin_create(json, err), sets = setsOf(s, n, share);
+      liveRgba(sets, names, true, out);
+      dropSets(sets);
       m._studio_skin_destroy(s);
-    }, 3).cpu);
-    const rest = shares.map((share) => time(() => liveRgba(held, n, share, out, 0, CELLS_FURROW), 3).cpu);
+    }, 3).cpu;
     const figures = {
-      'preset change to the first answer (build + preview, height, normal)': first,
-      'then the furrow and cells maps': rest,
-      'preset change in one pass (build + every map)': shares.map((share) => time(() => {
-        const s = m._studio_skin_create(json, err);
-        liveRgba(s, n, share, out, normals, ALL);
-        m._studio_skin_destroy(s);
-      }, 3).cpu),
-      'profile edit (re-profile + preview, height, normal)': shares.map((share) => time(() => { update('profile'); liveRgba(held, n, share, out, normals, RELIEF); }, 3).cpu),
-      'shading edit (re-profile + preview shaded from the held normals)': shares.map((share) => time(() => { update('shading'); liveRgba(held, n, share, out, normals, RESHADE); }, 3).cpu),
+      'preset change to the first answer (build + preview, height, normal)': shares.map((share) => change(share, RELIEF)),
+      'then the furrow and cells maps': heldSets.map((sets) => time(() => liveRgba(sets, CELLS_FURROW, true, out), 3).cpu),
+      'preset change in one pass (build + every map)': shares.map((share) => change(share, ALL)),
+      'profile edit (re-profile + preview, height, normal)': heldSets.map((sets) => time(() => { update('profile'); liveRgba(sets, RELIEF, true, out); }, 3).cpu),
+      'shading edit (re-profile + preview shaded from the held normals)': heldSets.map((sets) => time(() => { update('shading'); liveRgba(sets, ['preview'], false, out); }, 3).cpu),
     };
+    heldSets.forEach(dropSets);
     console.log(`  in ${workers} workers, CPU of the slowest worker: ${Object.entries(figures).map(([what, v]) => `${what} ${Math.max(...v).toFixed(1)} ms (${list(v)})`).join('; ')}`);
   }
   m._studio_skin_destroy(held);
   for (const e of [...edits.profile, ...edits.shading]) m._free(e);
-  m._free(buf);
   m._free(out);
-  m._free(normals);
   m._free(json);
 }
 const hand = m._studio_hand_create(1, err);

@@ -16,7 +16,8 @@
 #   formats   files (atomic writes, output sets), images (PNG, EXR), formats (meshes,
 #             motion, JSON, presets, glTF), hand-formats, tissue-formats
 #   render    the ray tracer
-#   products  draw (plots, contact sheets), hand-products, tissue-products, showcase
+#   products  draw (plots, contact sheets), maps (the map sets of skin and wood: layout,
+#             store, encodings), hand-products, tissue-products, showcase
 set(SK_MODULES "")
 macro(sk_module name)
   cmake_parse_arguments(SKM "" "DIR" "MODULES;PACKAGES" ${ARGN})
@@ -43,6 +44,7 @@ sk_module(hand-formats DIR formats/hand MODULES formats images files hand-scan h
 sk_module(tissue-formats DIR formats/tissue MODULES formats images files tissue base PACKAGES cjson)
 sk_module(render DIR render MODULES formats images files skin wood base PACKAGES embree)
 sk_module(draw DIR products/draw MODULES formats images files base)
+sk_module(maps DIR products/maps MODULES skin base)
 sk_module(hand-products DIR products/hand
           MODULES draw hand-formats formats images files skin hand-scan hand-surface hand base)
 sk_module(tissue-products DIR products/tissue

@@ -1,6 +1,7 @@
 /* Tests of the hand module (thesis ch. 3): forward kinematics against hand-computed
  * positions, the equilibrium (3.17), coupling ratios, limits, mirroring, lookup-table
- * potentials, calibration (3.18), keyframes, BVH round trip, file errors. */
+ * potentials, calibration (3.18), fingertip reaches through the equilibrium, keyframes,
+ * BVH round trip, file errors. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -350,6 +351,164 @@ static void test_driving_one_dof_moves_coupled_dofs(void **state)
     assert_true(q[ldip] - s.dof[ldip].relaxed < q[lpip] - s.dof[lpip].relaxed);
     sk_hand_solver_destroy(solver);
     free(c);
+}
+
+/* The natural set's solver, for the fingertip reaches. */
+static sk_hand_solver *natural_solver(const sk_hand_skeleton *s)
+{
+    sk_hand_constraints *c = malloc(sizeof *c);
+    load_constraints("natural", s, c);
+    sk_hand_solver *solver;
+    sk_error err = {0};
+    assert_int_equal(sk_hand_solver_create(&solver, s, c, NULL, 0, NULL, &err), SK_OK);
+    free(c);
+    return solver;
+}
+
+/* The tip of `finger` at the equilibrium of `in`. */
+static sk_vec3d tip_of(const sk_hand_skeleton *s, sk_hand_solver *solver, const sk_hand_input *in,
+                       sk_hand_finger finger, double q[SK_HAND_DOF_COUNT])
+{
+    sk_error err = {0};
+    assert_int_equal(sk_hand_solve(solver, in, q, NULL, &err), SK_OK);
+    sk_hand_frames fr;
+    sk_hand_forward(s, q, &fr);
+    return fr.point[sk_hand_fingertip_point(finger)];
+}
+
+static double distance(sk_vec3d a, sk_vec3d b)
+{
+    return sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+/* A target the finger can reach (its tip at a pose of pinned reach DOFs) is reached
+ * within the tolerance from the relaxed hand, with the coupling of the natural set; the
+ * pose returned is the equilibrium of the inputs returned. */
+static void test_reach_puts_the_fingertip_on_a_reachable_target(void **state)
+{
+    (void)state;
+    sk_hand_skeleton s = make_skeleton(SK_HAND_SIDE_RIGHT);
+    sk_hand_solver *solver = natural_solver(&s);
+    assert_int_equal(sk_hand_fingertip_point(SK_HAND_THUMB), sk_hand_link_end_point(3));
+    assert_string_equal(sk_hand_point_name(sk_hand_fingertip_point(SK_HAND_INDEX)), "I.tip");
+    assert_string_equal(sk_hand_point_name(sk_hand_fingertip_point(SK_HAND_LITTLE)), "L.tip");
+    const sk_hand_finger fingers[2] = {SK_HAND_INDEX, SK_HAND_THUMB};
+    const double pose[2][3] = {{40 * DEG, 5 * DEG, 30 * DEG}, {20 * DEG, 10 * DEG, 15 * DEG}};
+    for (int f = 0; f < 2; f++) {
+        int dof[3];
+        sk_hand_reach_dofs(fingers[f], dof);
+        sk_hand_input aim = {0};
+        for (int k = 0; k < 3; k++) {
+            assert_true(dof[k] >= 0);
+            aim.pinned[dof[k]] = true;
+            aim.pin_value[dof[k]] = s.dof[dof[k]].relaxed + pose[f][k];
+        }
+        double q[SK_HAND_DOF_COUNT];
+        sk_vec3d target = tip_of(&s, solver, &aim, fingers[f], q);
+        sk_hand_input in = {0};
+        double dofs[SK_HAND_DOF_COUNT], left = -1;
+        sk_hand_relaxed(&s, dofs);
+        sk_vec3d start = tip_of(&s, solver, &in, fingers[f], q);
+        assert_true(distance(start, target) > 5.0); /* a real move */
+        sk_hand_reach_desc d = {.finger = fingers[f], .target = target, .solver = solver};
+        sk_hand_solve_info info;
+        sk_error err = {0};
+        assert_int_equal(sk_hand_reach(&s, &d, &in, dofs, &info, &left, &err), SK_OK);
+        assert_true(left >= 0.0 && left < 0.05);
+        sk_hand_frames fr;
+        sk_hand_forward(&s, dofs, &fr);
+        assert_true(fabs(distance(fr.point[sk_hand_fingertip_point(fingers[f])], target) - left) <
+                    1e-12);
+        for (int k = 0; k < 3; k++) {
+            assert_true(in.pinned[dof[k]]);
+            assert_true(in.pin_value[dof[k]] >= s.dof[dof[k]].min &&
+                        in.pin_value[dof[k]] <= s.dof[dof[k]].max);
+        }
+        assert_true(info.converged);
+        tip_of(&s, solver, &in, fingers[f], q);
+        assert_memory_equal(q, dofs, sizeof q);
+    }
+    sk_hand_solver_destroy(solver);
+}
+
+/* A target beyond the finger's reach ends at the nearest reach: no pose of the reach DOFs
+ * on a grid over their limits puts the tip nearer (beyond a small margin), and the steps
+ * never leave the tip farther than it started. */
+static void test_reach_ends_nearest_an_unreachable_target(void **state)
+{
+    (void)state;
+    sk_hand_skeleton s = make_skeleton(SK_HAND_SIDE_RIGHT);
+    sk_hand_solver *solver = natural_solver(&s);
+    int dof[3];
+    sk_hand_reach_dofs(SK_HAND_INDEX, dof);
+    sk_hand_input none = {0};
+    double q[SK_HAND_DOF_COUNT];
+    sk_vec3d start = tip_of(&s, solver, &none, SK_HAND_INDEX, q);
+    /* 300 mm out from the palm: far beyond a finger */
+    sk_vec3d target = {start.x + 40.0, start.y + 120.0, start.z + 270.0};
+    sk_hand_input in = {0};
+    double dofs[SK_HAND_DOF_COUNT], left;
+    sk_hand_relaxed(&s, dofs);
+    sk_hand_reach_desc d = {
+        .finger = SK_HAND_INDEX, .target = target, .solver = solver, .max_iterations = 200};
+    sk_error err = {0};
+    assert_int_equal(sk_hand_reach(&s, &d, &in, dofs, NULL, &left, &err), SK_OK);
+    assert_true(left > 100.0);
+    assert_true(left <= distance(start, target));
+    double best = INFINITY;
+    const int steps = 8;
+    sk_hand_input grid = {0};
+    for (int k = 0; k < 3; k++) grid.pinned[dof[k]] = true;
+    for (int a = 0; a <= steps; a++)
+        for (int b = 0; b <= steps; b++)
+            for (int c = 0; c <= steps; c++) {
+                const int at[3] = {a, b, c};
+                for (int k = 0; k < 3; k++) {
+                    const sk_hand_dof_data *dd = &s.dof[dof[k]];
+                    grid.pin_value[dof[k]] = dd->min + (dd->max - dd->min) * at[k] / steps;
+                }
+                double g = distance(tip_of(&s, solver, &grid, SK_HAND_INDEX, q), target);
+                if (g < best) best = g;
+            }
+    assert_true(left <= best + 0.5);
+    sk_hand_solver_destroy(solver);
+}
+
+/* Bad reaches are refused and change nothing. */
+static void test_reach_rejects_bad_targets(void **state)
+{
+    (void)state;
+    sk_hand_skeleton s = make_skeleton(SK_HAND_SIDE_RIGHT);
+    sk_hand_solver *solver = natural_solver(&s);
+    sk_hand_input in = {0}, before;
+    double dofs[SK_HAND_DOF_COUNT], kept[SK_HAND_DOF_COUNT], left = 7.0;
+    sk_hand_relaxed(&s, dofs);
+    memcpy(kept, dofs, sizeof kept);
+    before = in;
+    sk_error err = {0};
+    sk_hand_reach_desc d = {.finger = SK_HAND_MIDDLE, .target = {NAN, 0, 0}, .solver = solver};
+    assert_int_equal(sk_hand_reach(&s, &d, &in, dofs, NULL, &left, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(err.message, "target.x"));
+    d.target = (sk_vec3d){0, INFINITY, 0};
+    assert_int_equal(sk_hand_reach(&s, &d, &in, dofs, NULL, &left, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
+    d.target = (sk_vec3d){0, 100, 0};
+    d.finger = SK_HAND_FINGER_COUNT;
+    assert_int_equal(sk_hand_reach(&s, &d, &in, dofs, NULL, &left, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
+    d.finger = SK_HAND_MIDDLE;
+    d.solver = NULL;
+    assert_int_equal(sk_hand_reach(&s, &d, &in, dofs, NULL, &left, &err),
+                     SK_ERROR_INVALID_ARGUMENT);
+    assert_memory_equal(dofs, kept, sizeof kept);
+    assert_memory_equal(&in, &before, sizeof in);
+    assert_true(left == 7.0);
+    int none[3];
+    sk_hand_reach_dofs(SK_HAND_FINGER_COUNT, none);
+    assert_true(none[0] == -1 && none[1] == -1 && none[2] == -1);
+    assert_int_equal(sk_hand_fingertip_point(SK_HAND_FINGER_COUNT), -1);
+    sk_hand_solver_destroy(solver);
 }
 
 static void test_limits_never_exceeded(void **state)
@@ -1206,6 +1365,9 @@ int main(void)
         cmocka_unit_test(test_no_constraints_is_spring_law),
         cmocka_unit_test(test_driving_one_dof_moves_coupled_dofs),
         cmocka_unit_test(test_limits_never_exceeded),
+        cmocka_unit_test(test_reach_puts_the_fingertip_on_a_reachable_target),
+        cmocka_unit_test(test_reach_ends_nearest_an_unreachable_target),
+        cmocka_unit_test(test_reach_rejects_bad_targets),
         cmocka_unit_test(test_lut_gradients_match_finite_differences),
         cmocka_unit_test(test_lut_solve_converges_without_energy_increase),
         cmocka_unit_test(test_calibration_recovers_line_and_weight),

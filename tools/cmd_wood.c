@@ -10,6 +10,7 @@
 
 #include "cli.h"
 #include "shitsukan/io.h"
+#include "shitsukan/maps.h"
 #include "shitsukan/wood.h"
 
 /* Options shared by both commands: the cut plane, its framing and the image. */
@@ -216,32 +217,25 @@ static sk_result write_color(const sk_image *image, const char *path, const sk_i
     return sk_image_write_png(image, path, &png, err);
 }
 
-static sk_result write_linear_png(const sk_image *image, const char *path, int bits,
-                                  const sk_image_metadata *meta, sk_error *err)
+/* The maps of `--maps` (sk_wood_map_info: their files and codes), one after another. */
+static sk_result write_maps(const wood_job *job, const char *dir, const sk_image *maps,
+                            sk_error *err)
 {
-    sk_png_write_desc png = {
-        .bit_depth = bits, .encoding = SK_PNG_ENCODING_LINEAR, .metadata = meta};
-    return sk_image_write_png(image, path, &png, err);
-}
-
-static sk_result write_maps(const wood_job *job, const char *dir, const sk_image *albedo,
-                            const sk_image *fibre, const sk_image *pores, sk_error *err)
-{
-    sk_result r;
-    char path[PATH_MAX];
-    sk_image_metadata meta = {0};
-    describe(job, "wood cut", &meta);
-    snprintf(path, sizeof path, "%s/albedo.png", dir);
-    if ((r = write_color(albedo, path, &meta, err)) != SK_OK) return r;
-    sk_image_metadata_set(&meta, "shitsukan:encoding",
-                          "rgb = 0.5 + 0.5 f, f = unit fibre direction up the tree in the image "
-                          "frame (x right, y up, z towards the viewer); linear",
-                          NULL);
-    snprintf(path, sizeof path, "%s/fibre.png", dir);
-    if ((r = write_linear_png(fibre, path, 16, &meta, err)) != SK_OK) return r;
-    sk_image_metadata_set(&meta, "shitsukan:encoding", "vessel (pore) coverage 0-1; linear", NULL);
-    snprintf(path, sizeof path, "%s/pores.png", dir);
-    return write_linear_png(pores, path, 8, &meta, err);
+    for (int k = 0; k < SK_WOOD_MAP_COUNT; k++) {
+        const sk_map_info *info = sk_wood_map_info((sk_wood_map)k);
+        char path[PATH_MAX];
+        snprintf(path, sizeof path, "%s/%s", dir, info->file);
+        sk_image_metadata meta = {0};
+        describe(job, "wood cut", &meta);
+        sk_result r = sk_wood_maps_metadata((sk_wood_map)k, &meta, err);
+        sk_png_write_desc png = {.bit_depth = info->bit_depth,
+                                 .encoding =
+                                     info->srgb ? SK_PNG_ENCODING_SRGB : SK_PNG_ENCODING_LINEAR,
+                                 .metadata = &meta};
+        if (r == SK_OK) r = sk_image_write_png(&maps[k], path, &png, err);
+        if (r != SK_OK) return r;
+    }
+    return SK_OK;
 }
 
 static int run_cut(const cli_command *command, const cli_args *args)
@@ -259,7 +253,7 @@ static int run_cut(const cli_command *command, const cli_args *args)
         sk_wood_destroy(job.wood);
         return status;
     }
-    sk_image shaded = {0}, albedo = {0}, fibre = {0}, pores = {0};
+    sk_image shaded = {0}, images[SK_WOOD_MAP_COUNT] = {{0}};
     sk_error err = {0};
     int w = job.region[2], h = job.region[3];
     /* the picture and the maps folder appear together at the end, or neither */
@@ -270,14 +264,12 @@ static int run_cut(const cli_command *command, const cli_args *args)
     if (r == SK_OK && maps) r = sk_output_set_folder(outputs, maps, &staged_maps, &err);
     if (r == SK_OK) r = sk_output_set_file(outputs, output, &staged_output, &err);
     if (r == SK_OK) r = sk_image_create(&shaded, w, h, 3, &err);
-    if (r == SK_OK && maps) r = sk_image_create(&albedo, w, h, 3, &err);
-    if (r == SK_OK && maps) r = sk_image_create(&fibre, w, h, 3, &err);
-    if (r == SK_OK && maps) r = sk_image_create(&pores, w, h, 1, &err);
+    for (int k = 0; k < SK_WOOD_MAP_COUNT && maps && r == SK_OK; k++) {
+        r = sk_image_create(&images[k], w, h, sk_wood_map_info((sk_wood_map)k)->channels, &err);
+        if (r == SK_OK) *sk_wood_maps_cut_output(&job.cut, (sk_wood_map)k) = images[k].data;
+    }
     if (r == SK_OK) {
         job.cut.shaded = shaded.data;
-        job.cut.albedo = albedo.data;
-        job.cut.fibre = fibre.data;
-        job.cut.vessel = pores.data;
         sk_progress_bar bar;
         sk_progress_bar_begin(&bar, "wood cut", !args->common.quiet);
         job.cut.progress = sk_progress_bar_sink(&bar);
@@ -289,15 +281,13 @@ static int run_cut(const cli_command *command, const cli_args *args)
         describe(&job, "wood cut", &meta);
         r = write_color(&shaded, staged_output, &meta, &err);
     }
-    if (r == SK_OK && maps) r = write_maps(&job, staged_maps, &albedo, &fibre, &pores, &err);
+    if (r == SK_OK && maps) r = write_maps(&job, staged_maps, images, &err);
     if (r == SK_OK)
         r = sk_output_set_commit(outputs, &err);
     else
         sk_output_set_abort(outputs);
     sk_image_free(&shaded);
-    sk_image_free(&albedo);
-    sk_image_free(&fibre);
-    sk_image_free(&pores);
+    for (int k = 0; k < SK_WOOD_MAP_COUNT; k++) sk_image_free(&images[k]);
     sk_wood_destroy(job.wood);
     return r == SK_OK ? CLI_EXIT_OK : cli_fail_error(&err);
 }

@@ -496,6 +496,47 @@ sk_result sk_hand_potential_solve(sk_hand_potential_solver *solver, const sk_han
                                   double dofs[SK_HAND_DOF_COUNT], sk_hand_solve_info *info,
                                   double *responsibility, sk_error *err);
 
+/* ------------------------------------------------ fingertip inverse kinematics */
+/* A fingertip brought to a point through the equilibrium (beyond the thesis, whose GUI,
+ * sec. 4.2.1, gives one joint an input at a time; the studio's fingertip drag): the
+ * finger's three reach DOFs are pinned at the values whose equilibrium pose (eq. 3.17,
+ * with the coupling of the set in use) puts the tip nearest the target. The pins are found
+ * by damped Gauss-Newton (Levenberg-Marquardt) steps (J'J + lambda diag(J'J + 1)) dx = J'e
+ * on the solved poses, e the target less the tip and J the tip's Jacobian in the three
+ * pins by forward differences of whole solves; lambda = 0.01 after a step that brought
+ * the tip nearer, ten times more after each that did not (that step taken back), so the
+ * distance never grows. A step changes a pin by at most 0.2 rad, and the pins stay within
+ * their DOFs' limits. The steps stop nearer than the tolerance, after the iterations (one
+ * solve of the error each, three more for the Jacobian of a step kept), or where they no
+ * longer move the pins; a target out of reach ends where the steps stop, nearest it.
+ * Deterministic; allocation-free. */
+typedef struct sk_hand_reach_desc {
+    sk_hand_finger finger;
+    sk_vec3d target;                            /* world frame, mm; finite */
+    sk_hand_solver *solver;                     /* the equilibrium of the constraint set in
+                                                   use, or: */
+    sk_hand_potential_solver *potential_solver; /* a calibrated potential's (used when not
+                                                   NULL) */
+    int max_iterations;                         /* Gauss-Newton steps; 0 = 12; [0, 1000] */
+    double tolerance_mm;                        /* 0 = 0.05; [0, 100] */
+} sk_hand_reach_desc;
+
+/* The DOFs that move a fingertip: its finger's first flexion, abduction and second
+ * flexion (thumb: CMC flexion and abduction, MCP flexion); -1 each for a bad finger. */
+void sk_hand_reach_dofs(sk_hand_finger finger, int dofs[3]);
+/* The point of a finger's tip ("T.tip", "I.tip", ...), -1 for a bad finger. */
+int sk_hand_fingertip_point(sk_hand_finger finger);
+/* Reaches for desc->target from the inputs in use: `input` in (pins and torques), out
+ * with the finger's reach DOFs pinned at the values found (the steps start from their
+ * pins, or from `dofs` where they are not pinned); `dofs` out: the equilibrium of the
+ * new inputs. `info` (may be NULL) gets that last solve's, `distance_mm` (may be NULL)
+ * the distance left from the tip to the target. Errors, with `input` and `dofs`
+ * unchanged: a finger out of range, a non-finite target, no solver, iterations or
+ * tolerance out of range (SK_ERROR_INVALID_ARGUMENT), a failed solve. */
+sk_result sk_hand_reach(const sk_hand_skeleton *skeleton, const sk_hand_reach_desc *desc,
+                        sk_hand_input *input, double dofs[SK_HAND_DOF_COUNT],
+                        sk_hand_solve_info *info, double *distance_mm, sk_error *err);
+
 /* ------------------------------------------------------------- evaluation */
 /* Held-out prediction of joint angles from pinned ones: per fold, the model is calibrated
  * on the other samples; every held-out sample's pins are set to its measured values and

@@ -5,29 +5,18 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/keyed_index.h"
 #include "base/triangle_bvh.h"
 
 #define LEAF_SIZE 4
 #define STACK_SIZE 96
-
-typedef struct keyed {
-    double key;
-    uint32_t index;
-} keyed;
-
-static int compare_keyed(const void *a, const void *b)
-{
-    const keyed *x = a, *y = b;
-    if (x->key != y->key) return x->key < y->key ? -1 : 1;
-    return x->index < y->index ? -1 : (x->index > y->index);
-}
 
 typedef struct builder {
     sk__triangle_bvh *bvh;
     const sk_vec3d (*tri)[3];
     sk_vec3d *centroid;
     uint32_t *order;
-    keyed *scratch;
+    sk__keyed_index *scratch;
 } builder;
 
 static void grow(double lo[3], double hi[3], sk_vec3d p)
@@ -58,13 +47,13 @@ static uint32_t build_node(builder *b, uint32_t first, uint32_t count)
     int axis = 0;
     for (int k = 1; k < 3; k++)
         if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
-    keyed *s = b->scratch + first;
+    sk__keyed_index *s = b->scratch + first;
     for (uint32_t i = 0; i < count; i++) {
         sk_vec3d c = b->centroid[b->order[first + i]];
         s[i].key = axis == 0 ? c.x : axis == 1 ? c.y : c.z;
         s[i].index = b->order[first + i];
     }
-    qsort(s, count, sizeof *s, compare_keyed);
+    qsort(s, count, sizeof *s, sk__keyed_index_compare);
     for (uint32_t i = 0; i < count; i++) b->order[first + i] = s[i].index;
     uint32_t half = count / 2;
     node->count = 0;
@@ -84,7 +73,7 @@ sk_result sk__triangle_bvh_build(sk__triangle_bvh *bvh, const sk_vec3d (*triangl
     /* a median-split tree of n >= 1 triangles has fewer than 2n / LEAF_SIZE * 2 + 1 nodes */
     uint32_t max_nodes = 2 * count + 1;
     builder b = {bvh, triangles, malloc(sizeof(sk_vec3d) * count), malloc(sizeof(uint32_t) * count),
-                 malloc(sizeof(keyed) * count)};
+                 malloc(sizeof(sk__keyed_index) * count)};
     bvh->nodes = malloc(sizeof *bvh->nodes * max_nodes);
     bvh->tri = malloc(sizeof *bvh->tri * count);
     bvh->original = malloc(sizeof *bvh->original * count);

@@ -28,6 +28,10 @@ sk_result studio_bind_json(const char *json, const struct sk_schema *schema, voi
  * (studio_tissue.c); NULL with the error on a bad file. */
 char *studio_tissue_resolved(const char *json, sk_error *err);
 
+/* An image's metadata as a JSON object of its keys in order (studio_maps.c). */
+struct sk_image_metadata;
+char *studio_metadata_json(const struct sk_image_metadata *meta);
+
 /* RGBA 8-bit for a canvas from 1- or 3-channel floats with the PNG writer's codes
  * (studio_common.c). */
 void studio_rgba8(const float *samples, int pixels, int channels, int srgb, uint8_t *scratch,

@@ -1,8 +1,8 @@
 /* The hand panel's calls (thesis ch. 3 and sec. 4.2): a skeleton, the constraint set in
  * use (natural, Table 3.2, a user's constraint file or calibrated potential, or none =
  * coupling off), pins and torques, the equilibrium solve with forward kinematics, a
- * keyframe animation solved frame by frame, and a fingertip dragged to a point. */
-#include <math.h>
+ * keyframe animation solved frame by frame, and a fingertip dragged to a point
+ * (sk_hand_reach). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -263,101 +263,22 @@ STUDIO_API int studio_hand_animate(studio_hand *h, const char *json, double *fps
 
 STUDIO_API const double *studio_hand_animation_frames(const studio_hand *h) { return h->animation; }
 
-/* The DOFs that move a fingertip: its finger's first flexion, abduction and second
- * flexion (thumb: CMC flexion and abduction, MCP flexion). */
-static void reach_dofs(int finger, int dof[3])
-{
-    static const char *const names[5][3] = {{"T.CMC.flex", "T.CMC.abd", "T.MCP.flex"},
-                                            {"I.MCP.flex", "I.MCP.abd", "I.PIP.flex"},
-                                            {"M.MCP.flex", "M.MCP.abd", "M.PIP.flex"},
-                                            {"R.MCP.flex", "R.MCP.abd", "R.PIP.flex"},
-                                            {"L.MCP.flex", "L.MCP.abd", "L.PIP.flex"}};
-    for (int k = 0; k < 3; k++) dof[k] = sk_hand_dof_find(names[finger][k]);
-}
-
-static int tip_point(int finger) { return finger == 0 ? 4 : 4 + 5 * finger; }
-
 /* Drags a fingertip toward `target` (mm): pins its finger's three reach DOFs at the
  * values whose equilibrium (with the coupling of the set in use) brings the tip nearest
- * the target, by damped Gauss-Newton steps on the solved pose. Returns the distance left. */
+ * the target (sk_hand_reach), then poses the hand there. Returns the distance left, or -1
+ * with the error. */
 STUDIO_API double studio_hand_reach(studio_hand *h, int finger, double tx, double ty, double tz,
                                     sk_error *err)
 {
-    if (finger < 0 || finger >= SK_HAND_FINGER_COUNT) {
-        sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "finger = %d is out of range [0, 4]", finger);
+    sk_hand_reach_desc d = {.finger = (sk_hand_finger)finger,
+                            .target = {tx, ty, tz},
+                            .solver = h->solver,
+                            .potential_solver = h->potential_solver};
+    double distance;
+    if (sk_hand_reach(&h->skeleton, &d, &h->input, h->dofs, &h->info, &distance, err) != SK_OK)
         return -1;
-    }
-    int dof[3];
-    reach_dofs(finger, dof);
-    int tip = tip_point(finger);
-    sk_hand_input in = h->input;
-    double x[3];
-    for (int k = 0; k < 3; k++) {
-        in.pinned[dof[k]] = true;
-        x[k] = h->input.pinned[dof[k]] ? h->input.pin_value[dof[k]] : h->dofs[dof[k]];
-    }
-    double q[SK_HAND_DOF_COUNT];
-    sk_hand_frames fr;
-    const sk_vec3d target = {tx, ty, tz};
-    double lambda = 1e-2, dist = 0;
-    for (int it = 0; it < 12; it++) {
-        double e[3], jac[3][3];
-        sk_vec3d p0;
-        for (int c = -1; c < 3; c++) {
-            for (int k = 0; k < 3; k++) in.pin_value[dof[k]] = x[k] + (c == k ? 1e-4 : 0.0);
-            if (solve_input(h, &in, q, err) != SK_OK) return -1;
-            sk_hand_forward(&h->skeleton, q, &fr);
-            sk_vec3d p = fr.point[tip];
-            if (c < 0) {
-                p0 = p;
-                e[0] = target.x - p.x, e[1] = target.y - p.y, e[2] = target.z - p.z;
-            } else {
-                jac[0][c] = (p.x - p0.x) / 1e-4;
-                jac[1][c] = (p.y - p0.y) / 1e-4;
-                jac[2][c] = (p.z - p0.z) / 1e-4;
-            }
-        }
-        dist = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-        if (dist < 0.05) break;
-        /* (J'J + lambda diag) dx = J'e, by Cramer's rule on the 3 x 3 system */
-        double a[3][3], b[3];
-        for (int i = 0; i < 3; i++) {
-            b[i] = 0;
-            for (int r = 0; r < 3; r++) b[i] += jac[r][i] * e[r];
-            for (int j = 0; j < 3; j++) {
-                a[i][j] = 0;
-                for (int r = 0; r < 3; r++) a[i][j] += jac[r][i] * jac[r][j];
-            }
-            a[i][i] += lambda * (a[i][i] + 1.0);
-        }
-        double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                     a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                     a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-        if (!(fabs(det) > 1e-300)) break;
-        for (int k = 0; k < 3; k++) {
-            double m[3][3];
-            memcpy(m, a, sizeof m);
-            for (int r = 0; r < 3; r++) m[r][k] = b[r];
-            double dk = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                        m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                        m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-            double step = dk / det;
-            if (step > 0.2) step = 0.2;
-            if (step < -0.2) step = -0.2;
-            x[k] += step;
-        }
-        for (int k = 0; k < 3; k++) {
-            const sk_hand_dof_data *dd = &h->skeleton.dof[dof[k]];
-            x[k] = x[k] < dd->min ? dd->min : x[k] > dd->max ? dd->max : x[k];
-        }
-    }
-    for (int k = 0; k < 3; k++) {
-        h->input.pinned[dof[k]] = true;
-        h->input.pin_value[dof[k]] = x[k];
-    }
-    if (studio_hand_solve(h, err) != SK_OK) return -1;
-    sk_vec3d p = h->frames.point[tip];
-    return sqrt((p.x - tx) * (p.x - tx) + (p.y - ty) * (p.y - ty) + (p.z - tz) * (p.z - tz));
+    sk_hand_forward(&h->skeleton, h->dofs, &h->frames);
+    return distance;
 }
 
 /* The pinned DOFs: mask (1 per DOF) and values. */

@@ -1,10 +1,11 @@
 /* The skin panel's calls: a skin from preset JSON (built, or re-profiled when an edit
- * leaves its cells), its maps rendered into buffers, and the live maps as canvas pixels.
- * The map set is the one `shitsukan skin maps` writes, computed by the same library
- * calls. */
+ * leaves its cells) and its map sets (sk_skin_maps: the maps `shitsukan skin maps`
+ * writes, by the same library calls): rendered by parts, read as canvas pixels, 16-bit
+ * codes, samples and the files' metadata. */
 #include <stdlib.h>
 #include <string.h>
 
+#include "shitsukan/maps.h"
 #include "shitsukan/skin.h"
 #include "studio.h"
 
@@ -45,28 +46,8 @@ STUDIO_API sk_skin *studio_skin_update(sk_skin *skin, const char *json, unsigned
 
 STUDIO_API void studio_skin_destroy(sk_skin *skin) { sk_skin_destroy(skin); }
 
-/* Renders rows [y0, y0 + rows) of a width x height map; each output NULL or
- * width x rows (x3 for normal and preview) floats, cells 32-bit ids. */
-STUDIO_API int studio_skin_render(const sk_skin *skin, int width, int height, int y0, int rows,
-                                  float *height_mm, float *normal, float *furrow, uint32_t *cells,
-                                  float *preview, int furrow_level, int id_level, sk_error *err)
-{
-    sk_skin_render_desc rd = {
-        .width = width,
-        .height = height,
-        .region = {0, y0, width, rows},
-        .height_mm = height_mm,
-        .normal = normal,
-        .furrow = furrow,
-        .cell_id = cells,
-        .preview = preview,
-        .furrow_level = furrow_level,
-        .id_level = id_level,
-    };
-    return (int)sk_skin_render(skin, &rd, err);
-}
-
-/* [height min, height max, tile width, tile height, furrow map span of `level`] in mm. */
+/* [height min, height max, tile width, tile height, furrow span of `level` (furrow.png's
+ * codes, sk_skin_maps_furrow_span), level count] in mm. */
 STUDIO_API void studio_skin_info(const sk_skin *skin, int level, double *out)
 {
     float lo, hi;
@@ -79,106 +60,83 @@ STUDIO_API void studio_skin_info(const sk_skin *skin, int level, double *out)
     out[1] = hi;
     out[2] = tw;
     out[3] = th;
-    out[4] = 0.5 * d->levels[level - 1].spacing_mm;
+    out[4] = sk_skin_maps_furrow_span(skin, level);
     out[5] = d->level_count;
 }
 
-/* The cells map's colours (linear RGB) of `count` cell ids. */
-STUDIO_API void studio_skin_cell_colors(const uint32_t *ids, int count, float *rgb)
+/* A map set (sk_skin_maps) of rows [y0, y0 + rows) of a width x height map: the default
+ * maps (every file of `shitsukan skin maps` but edges.png), furrow and cell level 1, one
+ * sample, OpenGL normals, as the command makes them by default. It reads `skin` as it is
+ * when rendered and read (a re-profiled skin too); NULL with the error. */
+STUDIO_API sk_skin_maps *studio_skin_maps_create(const sk_skin *skin, int width, int height, int y0,
+                                                 int rows, sk_error *err)
 {
-    for (int i = 0; i < count; i++) sk_skin_cell_color(ids[i], rgb + 3 * i);
+    sk_skin_maps_desc d = {.width = width, .height = height, .region = {0, y0, width, rows}};
+    sk_skin_maps *maps = NULL;
+    if (sk_skin_maps_create(&maps, skin, &d, err) != SK_OK) return NULL;
+    return maps;
 }
 
-/* The maps of `count` pixels scaled in place to [0, 1] as the map files encode them:
- * the height over the height range [lo, hi] mm, the normal as 0.5 n + 0.5, the furrow
- * distance over `furrow_span` mm (clamped at 1); each NULL or skipped. */
-STUDIO_API void studio_skin_scale_maps(int count, float *height_mm, float *normal, float *furrow,
-                                       double lo, double hi, double furrow_span)
+STUDIO_API void studio_skin_maps_destroy(sk_skin_maps *maps) { sk_skin_maps_destroy(maps); }
+
+/* Renders what the maps `which` are made from (bit k: sk_skin_map k; 0 = every map). */
+STUDIO_API int studio_skin_maps_render(sk_skin_maps *maps, unsigned which, sk_error *err)
 {
-    size_t n = count > 0 ? (size_t)count : 0;
-    for (size_t i = 0; height_mm && i < n; i++)
-        height_mm[i] = (float)((height_mm[i] - lo) / (hi - lo));
-    for (size_t i = 0; normal && i < 3 * n; i++) normal[i] = (float)(0.5 * normal[i] + 0.5);
-    for (size_t i = 0; furrow && i < n; i++) {
-        double v = furrow[i] / furrow_span;
-        furrow[i] = (float)(v < 1.0 ? v : 1.0);
-    }
+    return (int)sk_skin_maps_render(maps, which, err);
 }
 
-/* The live maps of the skin panel, in the order of the bits of `maps`; LIVE_RESHADE asks
- * for the preview shaded from the normals held (after a shading edit). */
-enum {
-    LIVE_PREVIEW,
-    LIVE_HEIGHT,
-    LIVE_NORMAL,
-    LIVE_FURROW,
-    LIVE_CELLS,
-    LIVE_COUNT,
-    LIVE_RESHADE = LIVE_COUNT
-};
-
-/* Rows [y0, y0 + rows) of the live maps of a width x height render as canvas pixels,
- * each map that bit (1 << k) of `maps` asks for into rgba[k] (width x rows x 4 bytes):
- * 0 the shaded preview (sRGB codes), 1 the height, 2 the normal, 3 the furrow distance
- * (each scaled by studio_skin_scale_maps), 4 the cells' colours; the others in linear
- * codes, as the map files encode them. `normals` (NULL or width x rows x 3 floats)
- * receives the float normals the render finds when it makes the preview, height or normal
- * map (asked for only the furrow and cells maps, the render evaluates no relief and leaves
- * them as they were); with bit LIVE_RESHADE the preview alone is
- * shaded from the normals it holds, with no render (sk_skin_shade: the bytes the render's
- * preview has, as the shading is all a shading edit changes). Returns 0, or an sk_result
- * with the error. */
-STUDIO_API int studio_skin_live_rgba(const sk_skin *skin, int width, int height, int y0, int rows,
-                                     unsigned maps, uint8_t **rgba, float *normals, sk_error *err)
+/* Whether the set holds map `map` (its file is part of an export). */
+STUDIO_API int studio_skin_maps_holds(const sk_skin_maps *maps, int map)
 {
-    size_t n = (size_t)width * (size_t)rows;
-    bool reshade = maps >> LIVE_RESHADE & 1u;
-    if (reshade && !normals)
-        return (int)sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no normals to shade the preview from");
-    bool want[LIVE_COUNT];
-    for (int k = 0; k < LIVE_COUNT; k++) want[k] = (maps >> k & 1u) && rgba[k] && !reshade;
-    want[LIVE_PREVIEW] = (maps & 1u) && rgba[LIVE_PREVIEW];
-    float *height_mm = want[LIVE_HEIGHT] ? malloc(n * sizeof(float)) : NULL;
-    float *furrow = want[LIVE_FURROW] ? malloc(n * sizeof(float)) : NULL;
-    /* the normals: kept for the caller, or for the normal map; a render of only the
-       furrow and cells maps evaluates no relief (sk_skin_render) */
-    bool relief = want[LIVE_PREVIEW] || want[LIVE_HEIGHT] || want[LIVE_NORMAL];
-    float *normal = normals && relief   ? normals
-                    : want[LIVE_NORMAL] ? malloc(3 * n * sizeof(float))
-                                        : NULL;
-    float *colour = malloc(3 * n * sizeof(float)); /* preview, then the normal scaled, the cells */
-    uint32_t *cells = want[LIVE_CELLS] ? malloc(n * sizeof(uint32_t)) : NULL;
-    uint8_t *scratch = malloc(3 * n);
-    int r = 0;
-    if ((want[LIVE_HEIGHT] && !height_mm) || (want[LIVE_FURROW] && !furrow) ||
-        (want[LIVE_NORMAL] && !normal) || !colour || (want[LIVE_CELLS] && !cells) || !scratch)
-        r = (int)sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the live maps");
-    else if (reshade)
-        for (size_t i = 0; i < n; i++) {
-            sk_vec3f c = sk_skin_shade(
-                skin, (sk_vec3f){normal[3 * i], normal[3 * i + 1], normal[3 * i + 2]});
-            colour[3 * i] = c.x, colour[3 * i + 1] = c.y, colour[3 * i + 2] = c.z;
-        }
-    else
-        r = studio_skin_render(skin, width, height, y0, rows, height_mm, normal, furrow, cells,
-                               want[LIVE_PREVIEW] ? colour : NULL, 1, 1, err);
-    if (r == 0 && want[LIVE_PREVIEW])
-        studio_rgba8(colour, (int)n, 3, 1, scratch, rgba[LIVE_PREVIEW]);
-    if (r == 0 && (want[LIVE_HEIGHT] || want[LIVE_NORMAL] || want[LIVE_FURROW])) {
-        float lo, hi;
-        sk_skin_height_range(skin, &lo, &hi);
-        if (want[LIVE_NORMAL]) memcpy(colour, normal, 3 * n * sizeof(float));
-        studio_skin_scale_maps((int)n, height_mm, want[LIVE_NORMAL] ? colour : NULL, furrow, lo, hi,
-                               0.5 * sk_skin_get_desc(skin)->levels[0].spacing_mm);
-        if (want[LIVE_HEIGHT]) studio_rgba8(height_mm, (int)n, 1, 0, scratch, rgba[LIVE_HEIGHT]);
-        if (want[LIVE_NORMAL]) studio_rgba8(colour, (int)n, 3, 0, scratch, rgba[LIVE_NORMAL]);
-        if (want[LIVE_FURROW]) studio_rgba8(furrow, (int)n, 1, 0, scratch, rgba[LIVE_FURROW]);
+    return sk_skin_maps_holds(maps, (sk_skin_map)map);
+}
+
+/* Every row of a map as canvas pixels (rows x width x 4 bytes, alpha 255): its 8-bit
+ * codes (sk_skin_maps_codes8: the file's own for the 8-bit maps). Returns 0 or an
+ * sk_result with the error. */
+STUDIO_API int studio_skin_maps_rgba(const sk_skin_maps *maps, int map, uint8_t *rgba,
+                                     sk_error *err)
+{
+    const sk_skin_maps_desc *d = sk_skin_maps_get_desc(maps);
+    const sk_map_info *info = sk_skin_map_info((sk_skin_map)map);
+    if (!d || !info) return (int)sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no such map set or map");
+    size_t n = (size_t)d->region[2] * (size_t)d->region[3];
+    uint8_t *codes = malloc(n * (size_t)info->channels);
+    if (!codes) return (int)sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the codes");
+    sk_result r = sk_skin_maps_codes8(maps, (sk_skin_map)map, 0, d->region[3], codes, err);
+    for (size_t i = 0; r == SK_OK && i < n; i++) {
+        for (int c = 0; c < 3; c++)
+            rgba[4 * i + c] = codes[i * info->channels + (info->channels == 3 ? c : 0)];
+        rgba[4 * i + 3] = 255;
     }
-    if (r == 0 && want[LIVE_CELLS]) {
-        for (size_t i = 0; i < n; i++) sk_skin_cell_color(cells[i], colour + 3 * i);
-        studio_rgba8(colour, (int)n, 3, 0, scratch, rgba[LIVE_CELLS]);
-    }
-    free(height_mm), free(furrow), free(colour), free(cells), free(scratch);
-    if (normal != normals) free(normal);
-    return r;
+    free(codes);
+    return (int)r;
+}
+
+/* Every row of a 16-bit map as its file's codes (rows x width x channels). */
+STUDIO_API int studio_skin_maps_codes16(const sk_skin_maps *maps, int map, uint16_t *codes,
+                                        sk_error *err)
+{
+    const sk_skin_maps_desc *d = sk_skin_maps_get_desc(maps);
+    if (!d) return (int)sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no map set");
+    return (int)sk_skin_maps_codes16(maps, (sk_skin_map)map, 0, d->region[3], codes, err);
+}
+
+/* Every row of a map as the samples its file codes (height.exr: mm). */
+STUDIO_API int studio_skin_maps_samples(const sk_skin_maps *maps, int map, float *samples,
+                                        sk_error *err)
+{
+    const sk_skin_maps_desc *d = sk_skin_maps_get_desc(maps);
+    if (!d) return (int)sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "no map set");
+    return (int)sk_skin_maps_rows(maps, (sk_skin_map)map, 0, d->region[3], samples, err);
+}
+
+/* The metadata of a map's file (sk_skin_maps_metadata, Software = `software`) as a JSON
+ * object of its keys in order; NULL with the error. */
+STUDIO_API char *studio_skin_maps_metadata(const sk_skin_maps *maps, int map, const char *software,
+                                           sk_error *err)
+{
+    sk_image_metadata meta = {0};
+    if (sk_skin_maps_metadata(maps, (sk_skin_map)map, software, &meta, err) != SK_OK) return NULL;
+    return studio_metadata_json(&meta);
 }

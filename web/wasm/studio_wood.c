@@ -1,9 +1,10 @@
 /* The wood panel's calls: a tree from preset JSON, the preset's view cut into buffers
- * (the maps of `shitsukan wood cut --maps`), and the faces of a board around that cut
- * (the material on a board), all by sk_wood_cut. */
+ * (with the maps of `shitsukan wood cut --maps`, sk_wood_map), and the faces of a board
+ * around that cut (the material on a board), all by sk_wood_cut. */
 #include <math.h>
 #include <string.h>
 
+#include "shitsukan/maps.h"
 #include "shitsukan/wood.h"
 #include "studio.h"
 
@@ -32,6 +33,24 @@ STUDIO_API int studio_wood_view(const sk_wood *wood, int width, int height, int 
     cut.region[0] = 0, cut.region[1] = y0, cut.region[2] = width, cut.region[3] = rows;
     cut.samples = samples;
     cut.shaded = shaded, cut.albedo = albedo, cut.fibre = fibre, cut.vessel = vessel;
+    return (int)sk_wood_cut(wood, &cut, err);
+}
+
+/* The preset's view cut at width x height with the maps of `wood cut --maps`: maps[k]
+ * NULL or the buffer of sk_wood_map k (width x height x its channels floats, the cut
+ * output sk_wood_maps_cut_output names), `shaded` NULL or the shaded picture. */
+STUDIO_API int studio_wood_view_maps(const sk_wood *wood, int width, int height, int samples,
+                                     float *shaded, float **maps, sk_error *err)
+{
+    sk_wood_cut_desc cut;
+    memset(&cut, 0, sizeof cut);
+    sk_wood_view_cut(wood, &sk_wood_get_desc(wood)->view, &cut);
+    cut.width = width;
+    cut.height = height;
+    cut.samples = samples;
+    cut.shaded = shaded;
+    for (int k = 0; k < SK_WOOD_MAP_COUNT; k++)
+        *sk_wood_maps_cut_output(&cut, (sk_wood_map)k) = maps[k];
     return (int)sk_wood_cut(wood, &cut, err);
 }
 

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "models/hand_surface/surface_internal.h"
+#include "base/keyed_index.h"
 
 #define MAX_RING 64
 
@@ -31,18 +32,6 @@ typedef struct simplifier {
     double length_weight;
     bool oom;
 } simplifier;
-
-typedef struct sort_key {
-    double cost;
-    uint32_t index;
-} sort_key;
-
-static int key_cmp(const void *x, const void *y)
-{
-    const sort_key *a = x, *b = y;
-    if (a->cost != b->cost) return a->cost < b->cost ? -1 : 1;
-    return a->index < b->index ? -1 : (a->index > b->index);
-}
 
 static const double *P(const simplifier *s, uint32_t v) { return s->m->pos + 3 * (size_t)v; }
 
@@ -379,7 +368,7 @@ sk_result sk__hand_simplify(sk__hand_trimesh *m, size_t target, sk_error *err)
     size_t alive = T;
     bool *touched = calloc(V, sizeof *touched);
     s.heap = malloc(3 * T * sizeof *s.heap);
-    sort_key *keys = malloc(3 * T * sizeof *keys);
+    sk__keyed_index *keys = malloc(3 * T * sizeof *keys);
     uint32_t *live = malloc(T * sizeof *live);
     size_t live_n = T;
     for (size_t t = 0; t < T; t++) live[t] = (uint32_t)t;
@@ -403,11 +392,11 @@ sk_result sk__hand_simplify(sk__hand_trimesh *m, size_t target, sk_error *err)
 #pragma omp parallel for schedule(static) if (n > 20000)
         for (size_t i = 0; i < n; i++) {
             edge_cost(&s, s.heap[i].a, s.heap[i].b, &s.heap[i]);
-            keys[i].cost = s.heap[i].cost;
+            keys[i].key = s.heap[i].cost;
             keys[i].index = (uint32_t)i;
         }
         live_n = nl;
-        qsort(keys, n, sizeof *keys, key_cmp);
+        qsort(keys, n, sizeof *keys, sk__keyed_index_compare);
         memset(touched, 0, V * sizeof *touched);
         size_t done_here = 0;
         for (size_t i = 0; i < n && alive > target && !s.oom; i++) {

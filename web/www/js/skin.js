@@ -1,10 +1,10 @@
 // Skin panel (Ishii et al. 1991): every key of the skin preset schema as a control, the
 // map set rendered live by the library at preview resolution (in strips of rows over
-// Web Workers, one per core, each holding the skin: an edit of the profiles re-profiles
-// it and renders the maps it changes, a shading edit shades the held normals again, only
-// a key that moves the cells builds it again),
-// the material on a board, and the full-resolution map set of `shitsukan skin maps`
-// exported as files.
+// Web Workers, one per core, each holding the skin and a map set per strip: an edit of
+// the profiles re-profiles it and renders the maps it changes, a shading edit shades the
+// held normals again, only a key that moves the cells builds it again), the material on
+// a board, and the full-resolution map set of `shitsukan skin maps` exported as files,
+// each file as the library's layout of the set (maps.h) says.
 import * as THREE from 'three';
 import { PresetPanel, el } from './preset_panel.js';
 import { download, canvasPng, png16, exrFloat } from './files.js';
@@ -53,66 +53,59 @@ export class SkinPanel extends PresetPanel {
     this.update();
   }
 
-  // Builds the skin from the tree and renders the maps at w x h in bands; returns the
-  // float maps (the caller frees nothing: buffers are freed here).
-  renderMaps(w, h, wanted) {
+  // Builds the skin from the tree and calls fn(set) with its map set at w x h
+  // (studio_skin_maps_create: the files of `shitsukan skin maps`) rendered for the maps
+  // `wanted` (their names in the library's layout; every map when omitted); both are
+  // freed when fn returns.
+  withMaps(w, h, wanted, fn) {
     const lib = this.lib, m = lib.m;
     const skin = lib.withStrings([JSON.stringify(this.tree)], (p) => m._studio_skin_create(p, lib.err));
     if (!skin) throw new Error(lib.errorMessage());
-    const info = lib.alloc(6 * 8);
-    m._studio_skin_info(skin, 1, info);
-    const [lo, hi, tw, th, furrowMax] = lib.f64(info, 6);
-    lib.free(info);
-    const band = Math.max(1, Math.min(h, Math.floor((1 << 22) / w)));
-    const ch = { height: 1, normal: 3, furrow: 1, cells: 1, preview: 3 };
-    const out = {};
-    for (const k of wanted) out[k] = k === 'cells' ? new Uint32Array(w * h) : new Float32Array(w * h * ch[k]);
-    const ptr = {};
-    for (const k of wanted) ptr[k] = lib.alloc(w * band * ch[k] * 4);
+    let set = 0;
     try {
-      for (let y0 = 0; y0 < h; y0 += band) {
-        const rows = Math.min(band, h - y0);
-        const r = m._studio_skin_render(skin, w, h, y0, rows, ptr.height || 0, ptr.normal || 0, ptr.furrow || 0,
-          ptr.cells || 0, ptr.preview || 0, 1, 1, lib.err);
-        if (r !== 0) throw new Error(lib.errorMessage());
-        for (const k of wanted) {
-          const n = w * rows * ch[k];
-          const view = k === 'cells' ? lib.u32(ptr[k], n) : lib.f32(ptr[k], n);
-          out[k].set(view, w * y0 * ch[k]);
-        }
-      }
+      set = m._studio_skin_maps_create(skin, w, h, 0, h, lib.err);
+      if (!set) throw new Error(lib.errorMessage());
+      const which = (wanted || []).reduce((b, k) => b | (1 << this.mapInfo(k).map), 0);
+      if (m._studio_skin_maps_render(set, which, lib.err) !== 0) throw new Error(lib.errorMessage());
+      return fn(set);
     } finally {
-      for (const k of wanted) lib.free(ptr[k]);
+      if (set) m._studio_skin_maps_destroy(set);
       m._studio_skin_destroy(skin);
     }
-    return { maps: out, lo, hi, tw, th, furrowMax };
   }
 
-  // The maps as the files encode them (linear floats in [0, 1] per channel).
-  // (the library's scaling, studio_skin_scale_maps, as the live maps have it).
-  encoded(r, w, h) {
-    const n = w * h, e = {}, lib = this.lib;
-    if (r.maps.preview) e.preview = r.maps.preview;
-    const scaled = ['height', 'normal', 'furrow'].map((k) => {
-      if (!r.maps[k]) return 0;
-      const p = lib.alloc(r.maps[k].length * 4);
-      lib.f32(p, r.maps[k].length).set(r.maps[k]);
-      return p;
-    });
-    lib.m._studio_skin_scale_maps(n, ...scaled, r.lo, r.hi, r.furrowMax);
-    ['height', 'normal', 'furrow'].forEach((k, i) => {
-      if (scaled[i]) e[k] = new Float32Array(lib.f32(scaled[i], r.maps[k].length));
-      lib.free(scaled[i]);
-    });
-    if (r.maps.cells) {
-      const ids = this.lib.alloc(n * 4), rgb = this.lib.alloc(n * 12);
-      this.lib.u32(ids, n).set(r.maps.cells);
-      this.lib.m._studio_skin_cell_colors(ids, n, rgb);
-      e.cells = new Float32Array(this.lib.f32(rgb, n * 3));
-      this.lib.free(ids);
-      this.lib.free(rgb);
+  // The library's layout of the skin map set (studio_maps_layout): each file with its
+  // sk_skin_map, name, channels, bits and codes; mapInfo: one by its name.
+  mapsLayout() {
+    this.layout ||= JSON.parse(this.lib.takeString(this.lib.withStrings(['skin'], (p) => this.lib.m._studio_maps_layout(p)))).maps;
+    return this.layout;
+  }
+
+  mapInfo(name) { return this.mapsLayout().find((x) => x.name === name); }
+
+  // A map of a set as a file (a Blob, or its promise): 8-bit PNG through the canvas from
+  // its codes, 16-bit PNG and float EXR written here, each with the library's metadata
+  // where the format takes it. The set is read before this returns.
+  mapFile(set, info, w, h) {
+    const lib = this.lib, m = lib.m, n = w * h;
+    const meta = JSON.parse(lib.takeString(lib.withStrings(['shitsukan studio'], (s) => m._studio_skin_maps_metadata(set, info.map, s, lib.err))) || 'null');
+    if (!meta) throw new Error(lib.errorMessage());
+    const bytes = info.bit_depth === 32 ? 4 * info.channels : info.bit_depth === 16 ? 2 * info.channels : 4;
+    const p = lib.alloc(n * bytes);
+    try {
+      if (info.bit_depth === 32) {
+        if (m._studio_skin_maps_samples(set, info.map, p, lib.err) !== 0) throw new Error(lib.errorMessage());
+        return exrFloat([new Float32Array(lib.f32(p, n))], ['Y'], w, h, meta);
+      }
+      if (info.bit_depth === 16) {
+        if (m._studio_skin_maps_codes16(set, info.map, p, lib.err) !== 0) throw new Error(lib.errorMessage());
+        return png16(new Uint16Array(lib.u16(p, n * info.channels)), w, h, info.channels, meta);
+      }
+      if (m._studio_skin_maps_rgba(set, info.map, p, lib.err) !== 0) throw new Error(lib.errorMessage());
+      return canvasPng(new Uint8ClampedArray(lib.u8(p, n * 4)), w, h);
+    } finally {
+      lib.free(p);
     }
-    return e;
   }
 
   // Renders the live maps (the workers) and shows them. Edits that come while a render
@@ -201,27 +194,28 @@ export class SkinPanel extends PresetPanel {
   // Only the shaded preview at n x n, built and rendered on the page's own thread (one
   // instance), for the speed figures.
   timePreviewOneThread(n) {
-    const t0 = performance.now();
-    this.renderMaps(n, n, ['preview']);
+    const t0 = performance.now(), lib = this.lib, preview = this.mapInfo('preview');
+    const out = lib.alloc(n * n * 4);
+    try {
+      this.withMaps(n, n, ['preview'], (set) => {
+        if (lib.m._studio_skin_maps_rgba(set, preview.map, out, lib.err) !== 0) throw new Error(lib.errorMessage());
+      });
+    } finally { lib.free(out); }
     return performance.now() - t0;
   }
 
-  // The map set of `shitsukan skin maps` at full resolution, as files.
+  // The map set of `shitsukan skin maps` at full resolution, as files: each file the set
+  // holds (the library's layout), named as the command names it.
   async exportMaps(size) {
-    const w = size, h = size;
-    const r = this.renderMaps(w, h, ['preview', 'height', 'normal', 'furrow', 'cells']);
-    const e = this.encoded(r, w, h);
-    const base = this.name || 'skin';
-    const meta = { 'shitsukan:tile_mm': `${r.tw} x ${r.th}`, 'shitsukan:mm_per_px': `${r.tw / w}`, Software: 'shitsukan studio' };
-    const files = {};
-    files['preview.png'] = await canvasPng(this.rgbaOf(e.preview, 3, true, w * h), w, h);
-    files['normal.png'] = await canvasPng(this.rgbaOf(e.normal, 3, false, w * h), w, h);
-    files['cells.png'] = await canvasPng(this.rgbaOf(e.cells, 3, false, w * h), w, h);
-    files['height.png'] = await png16(this.codes16Of(e.height), w, h, 1, { ...meta, 'shitsukan:decode': `height_mm = ${r.lo} + value * ${r.hi - r.lo} (value = code / 65535)` });
-    files['furrow.png'] = await png16(this.codes16Of(e.furrow), w, h, 1, { ...meta, 'shitsukan:decode': `distance_mm = value * ${r.furrowMax} (clamped there)` });
-    files['height.exr'] = exrFloat([r.maps.height], ['Y'], w, h, { ...meta, 'shitsukan:units': 'mm' });
-    for (const [name, blob] of Object.entries(files)) download(`${base}-${name}`, blob);
-    return Object.keys(files);
+    const w = size, h = size, base = this.name || 'skin';
+    const files = this.withMaps(w, h, null, (set) => this.mapsLayout()
+      .filter((info) => this.lib.m._studio_skin_maps_holds(set, info.map))
+      .map((info) => [info.file, this.mapFile(set, info, w, h)]));
+    // every file made first, then downloaded together (a page's downloads spread over time
+    // are dropped by the browser after the first few)
+    const blobs = await Promise.all(files.map(([, blob]) => blob));
+    files.forEach(([name], i) => download(`${base}-${name}`, blobs[i]));
+    return files.map(([name]) => name);
   }
 
   activate(view) {

@@ -26,19 +26,14 @@ export class WoodPanel extends PresetPanel {
     try { return fn(wood); } finally { m._studio_wood_destroy(wood); }
   }
 
-  // The view cut's maps at w x h (all in one call; bands are not needed at these sizes).
-  viewMaps(wood, w, h, samples, wanted) {
-    const m = this.lib.m, n = w * h, ch = { shaded: 3, albedo: 3, fibre: 3, vessel: 1 };
-    const ptr = {};
-    for (const k of wanted) ptr[k] = this.lib.alloc(n * ch[k] * 4);
+  // The view cut's shaded picture at w x h (in one call; bands are not needed at these sizes).
+  viewShaded(wood, w, h, samples) {
+    const m = this.lib.m, n = w * h, p = this.lib.alloc(n * 12);
     try {
-      if (m._studio_wood_view(wood, w, h, 0, h, samples, ptr.shaded || 0, ptr.albedo || 0, ptr.fibre || 0, ptr.vessel || 0, this.lib.err) !== 0)
-        throw new Error(this.lib.errorMessage());
-      const out = {};
-      for (const k of wanted) out[k] = new Float32Array(this.lib.f32(ptr[k], n * ch[k]));
-      return out;
+      if (m._studio_wood_view(wood, w, h, 0, h, samples, p, 0, 0, 0, this.lib.err) !== 0) throw new Error(this.lib.errorMessage());
+      return new Float32Array(this.lib.f32(p, n * 3));
     } finally {
-      for (const k of wanted) this.lib.free(ptr[k]);
+      this.lib.free(p);
     }
   }
 
@@ -47,10 +42,10 @@ export class WoodPanel extends PresetPanel {
     try {
       this.withWood((wood) => {
         const w = this.size, h = this.size;
-        const maps = this.viewMaps(wood, w, h, 1, ['shaded']);
+        const shaded = this.viewShaded(wood, w, h, 1);
         this.canvas.width = w;
         this.canvas.height = h;
-        this.canvas.getContext('2d').putImageData(new ImageData(this.rgbaOf(maps.shaded, 3, true, w * h), w, h), 0, 0);
+        this.canvas.getContext('2d').putImageData(new ImageData(this.rgbaOf(shaded, 3, true, w * h), w, h), 0, 0);
         this.buildBoard(wood);
       });
     } catch (e) {
@@ -106,19 +101,43 @@ export class WoodPanel extends PresetPanel {
     this.group.position.copy(centre.multiplyScalar(-0.01));
   }
 
+  // The shaded view and the maps of `wood cut --maps` at w x h: each map of the library's
+  // layout (studio_maps_layout: its file, channels, bits and codes), as floats.
+  viewWithMaps(wood, w, h, samples) {
+    const m = this.lib.m, n = w * h, layout = this.mapsLayout();
+    const shaded = this.lib.alloc(n * 12), ptrs = this.lib.alloc(4 * layout.length);
+    const bufs = layout.map((info) => this.lib.alloc(n * info.channels * 4));
+    try {
+      this.lib.u32(ptrs, layout.length).set(bufs);
+      if (m._studio_wood_view_maps(wood, w, h, samples, shaded, ptrs, this.lib.err) !== 0) throw new Error(this.lib.errorMessage());
+      return { shaded: new Float32Array(this.lib.f32(shaded, n * 3)), maps: bufs.map((p, k) => new Float32Array(this.lib.f32(p, n * layout[k].channels))) };
+    } finally {
+      for (const p of [shaded, ptrs, ...bufs]) this.lib.free(p);
+    }
+  }
+
+  mapsLayout() {
+    this.layout ||= JSON.parse(this.lib.takeString(this.lib.withStrings(['wood'], (p) => this.lib.m._studio_maps_layout(p)))).maps;
+    return this.layout;
+  }
+
   async exportMaps(size) {
     const w = size, h = size, n = w * h;
-    const maps = this.withWood((wood) => this.viewMaps(wood, w, h, 2, ['shaded', 'albedo', 'fibre', 'vessel']));
+    const { shaded, maps } = this.withWood((wood) => this.viewWithMaps(wood, w, h, 2));
     const base = this.name || 'wood';
     const files = {};
-    files['cut.png'] = await canvasPng(this.rgbaOf(maps.shaded, 3, true, n), w, h);
-    files['albedo.png'] = await canvasPng(this.rgbaOf(maps.albedo, 3, true, n), w, h);
-    files['pores.png'] = await canvasPng(this.rgbaOf(maps.vessel, 1, false, n), w, h);
-    const planes = [0, 1, 2].map((c) => { const p = new Float32Array(n); for (let i = 0; i < n; i++) p[i] = maps.shaded[3 * i + c]; return p; });
+    files['cut.png'] = canvasPng(this.rgbaOf(shaded, 3, true, n), w, h);
+    const planes = [0, 1, 2].map((c) => { const p = new Float32Array(n); for (let i = 0; i < n; i++) p[i] = shaded[3 * i + c]; return p; });
     files['cut.exr'] = exrFloat(planes, ['R', 'G', 'B'], w, h, { 'shitsukan:command': 'wood cut (studio)' });
-    files['fibre.png'] = await png16(this.codes16Of(maps.fibre), w, h, 3, { 'shitsukan:encoding': 'rgb = 0.5 + 0.5 f, f = unit fibre direction up the tree in the image frame (x right, y up, z towards the viewer); linear' });
-    for (const [name, blob] of Object.entries(files)) download(`${base}-${name}`, blob);
-    return Object.keys(files);
+    this.mapsLayout().forEach((info, k) => {
+      files[info.file] = info.bit_depth === 16
+        ? png16(this.codes16Of(maps[k]), w, h, info.channels, info.metadata)
+        : canvasPng(this.rgbaOf(maps[k], info.channels, info.srgb, n), w, h);
+    });
+    // every file made first, then downloaded together (as the skin panel does)
+    const names = Object.keys(files), blobs = await Promise.all(Object.values(files));
+    names.forEach((name, i) => download(`${base}-${name}`, blobs[i]));
+    return names;
   }
 
   activate(view) {

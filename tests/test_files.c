@@ -1,6 +1,6 @@
 /* Tests of the file helpers of io.h: atomic writing (temporary file beside the target,
  * renamed on commit, removed on abort), capped whole-file reading, folder creation. The
- * image and mesh formats have their own tests (test_image.c, test_mesh.c). */
+ * image and mesh formats have their own tests (test_images.c, test_formats_mesh.c). */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
