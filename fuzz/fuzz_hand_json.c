@@ -1,4 +1,4 @@
-/* Fuzz harness: the hand's strict JSON helpers (src/formats/hand/json_read.c) that every hand
+/* Fuzz harness: the hand's strict JSON helpers (src/formats/hand/hand_json.c) that every hand
  * reader goes through: the parse, key checks, ranged numbers, strings, DOF names and
  * finger letters, on whatever object the input holds. */
 #include <stddef.h>

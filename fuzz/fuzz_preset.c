@@ -26,7 +26,7 @@ static const sk_schema_field k_elem_fields[] = {
      .count = 2,
      .count_offset = SK_FIELD_FIXED},
 };
-static const sk_schema k_elem = {"elem", k_elem_fields, 1};
+static const sk_schema k_elem = {"elem", k_elem_fields, 1, NULL};
 static const char *const k_modes[] = {"default", "x", "y", NULL};
 static const sk_schema_field k_fields[] = {
     {.key = "a", .type = SK_FIELD_FLOAT, .offset = offsetof(f_desc, a), .min = 0, .max = 1},
@@ -42,7 +42,7 @@ static const sk_schema_field k_fields[] = {
     {.key = "mode", .type = SK_FIELD_ENUM, .offset = offsetof(f_desc, mode), .names = k_modes},
     {.key = "name", .type = SK_FIELD_STRING, .offset = offsetof(f_desc, name), .count = 8},
 };
-static const sk_schema k_schema = {"fuzz", k_fields, 5};
+static const sk_schema k_schema = {"fuzz", k_fields, 5, NULL};
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

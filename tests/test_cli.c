@@ -354,7 +354,8 @@ static const bad_case k_bad_cases[] = {
     {"studio --root DIR/file", "--root", "must be a folder"},
     {"studio --root DIR", "--root", "no index.html"},
     /* hand calibrate */
-    {"hand calibrate DIR/s.csv --method x -o OUT.json", "--method", "mixture, gaussian or pairs"},
+    /* the choices of an option that sets a key are its schema's names, in their order */
+    {"hand calibrate DIR/s.csv --method x -o OUT.json", "--method", "gaussian, mixture or pairs"},
     /* hand evaluate, hand synthesize */
     {"hand evaluate DIR/s.csv --pins L.MCP.flex --folds 0", "--folds", "[2, 1000]"},
     {"hand evaluate DIR/s.csv --pins L.MCP.flex --units furlongs", "--units", "rad or deg"},
@@ -496,6 +497,58 @@ static void expand(const char *text, const char *out, const char *dir, char *buf
         }
     }
     buf[used < size ? used : size - 1] = '\0';
+}
+
+/* The hand commands' and the showcase's options are other names for preset keys: an
+ * option, its key by --set and the key in a preset file give the same output; a --set
+ * after the option wins; --help-keys lists the keys. */
+static void test_options_are_preset_keys(void **state)
+{
+    (void)state;
+    const char *a = fresh_path("keys-a.csv"), *b = fresh_path("keys-b.csv");
+    const char *c = fresh_path("keys-c.csv"), *d = fresh_path("keys-d.csv");
+    const char *preset = fresh_path("keys.json");
+    static const char text[] = "{\"synthetic\": {\"people\": 2, \"trials\": 1, \"frames\": 5}}";
+    sk_test_write_file(preset, text, sizeof text - 1);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "hand synthesize --people 2 --trials 1 --frames 5 "
+                                 "--noise 0 --seed 3 -o '%s'",
+                                 a),
+                     0);
+    assert_int_equal(
+        sk_test_cli(&g_run,
+                    "hand synthesize --set synthetic.people=2 --set synthetic.trials=1 "
+                    "--set synthetic.frames=5 --set synthetic.noise_deg=-1 --set "
+                    "synthetic.seed=3 -o '%s'",
+                    b),
+        0);
+    assert_int_equal(
+        sk_test_cli(&g_run, "hand synthesize --preset '%s' --noise 0 --seed 3 -o '%s'", preset, c),
+        0);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "hand synthesize --people 4 --trials 1 --frames 5 --noise 0 "
+                                 "--seed 3 --set synthetic.people=2 -o '%s'",
+                                 d),
+                     0);
+    assert_true(sk_test_same_file(a, b));
+    assert_true(sk_test_same_file(a, c));
+    assert_true(sk_test_same_file(a, d));
+    const char *p1 = fresh_path("keys-pose1.json"), *p2 = fresh_path("keys-pose2.json");
+    assert_int_equal(sk_test_cli(&g_run, "hand pose --side left --hand-length 170 -o '%s'", p1), 0);
+    assert_int_equal(sk_test_cli(&g_run,
+                                 "hand pose --set hand.side=left --set hand.hand_length_mm=170 "
+                                 "-o '%s'",
+                                 p2),
+                     0);
+    assert_true(sk_test_same_file(p1, p2));
+    sk_test_cli(&g_run, "hand pose --set hand.sid=left");
+    assert_one_line_error(&g_run, 2);
+    assert_non_null(strstr(g_run.err, "hand.sid: unknown key (did you mean 'side'?)"));
+    assert_int_equal(sk_test_cli(&g_run, "hand scan --help-keys"), 0);
+    assert_non_null(strstr(g_run.out, "scan.scanner.lines"));
+    assert_int_equal(sk_test_cli(&g_run, "showcase --help-keys"), 0);
+    assert_non_null(strstr(g_run.out, "showcase.fps"));
+    assert_non_null(strstr(g_run.out, "camera.fov_deg"));
 }
 
 /* Every command: a bad value of each kind of option exits 2 with one line naming the
@@ -731,6 +784,7 @@ int main(void)
         cmocka_unit_test(test_groups_have_help),
         cmocka_unit_test(test_region_cannot_overflow),
         cmocka_unit_test(test_hand_inputs_are_checked),
+        cmocka_unit_test(test_options_are_preset_keys),
         cmocka_unit_test(test_every_command_refuses_bad_input),
         cmocka_unit_test(test_outputs_are_all_or_nothing),
         cmocka_unit_test(test_stopped_command_leaves_nothing),

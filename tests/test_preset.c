@@ -49,7 +49,7 @@ static const sk_schema_field k_point_fields[] = {
      .count_offset = SK_FIELD_FIXED,
      .doc = "control point (x, z)"},
 };
-static const sk_schema k_point_schema = {"point", k_point_fields, 1};
+static const sk_schema k_point_schema = {"point", k_point_fields, 1, NULL};
 
 static const sk_schema_field k_segment_fields[] = {
     {.key = "points",
@@ -62,7 +62,7 @@ static const sk_schema_field k_segment_fields[] = {
      .schema = &k_point_schema,
      .doc = "4 Bezier control points"},
 };
-static const sk_schema k_segment_schema = {"segment", k_segment_fields, 1};
+static const sk_schema k_segment_schema = {"segment", k_segment_fields, 1, NULL};
 
 static const char *const k_layouts[] = {"default", "triangular", "square", "random", NULL};
 static const sk_schema_field k_level_fields[] = {
@@ -90,7 +90,7 @@ static const sk_schema_field k_level_fields[] = {
      .elem_size = sizeof(t_segment),
      .schema = &k_segment_schema},
 };
-static const sk_schema k_level_schema = {"level", k_level_fields, 4};
+static const sk_schema k_level_schema = {"level", k_level_fields, 4, NULL};
 
 static const sk_schema_field k_noise_fields[] = {
     {.key = "octaves",
@@ -100,7 +100,7 @@ static const sk_schema_field k_noise_fields[] = {
      .max = 16},
     {.key = "gain", .type = SK_FIELD_DOUBLE, .offset = offsetof(t_noise, gain), .min = 0, .max = 1},
 };
-static const sk_schema k_noise_schema = {"noise", k_noise_fields, 2};
+static const sk_schema k_noise_schema = {"noise", k_noise_fields, 2, NULL};
 
 static const sk_schema_field k_desc_fields[] = {
     {.key = "seed", .type = SK_FIELD_SEED, .offset = offsetof(t_desc, seed)},
@@ -126,7 +126,7 @@ static const sk_schema_field k_desc_fields[] = {
      .elem_size = sizeof(t_level),
      .schema = &k_level_schema},
 };
-static const sk_schema k_desc_schema = {"test", k_desc_fields, 6};
+static const sk_schema k_desc_schema = {"test", k_desc_fields, 6, NULL};
 
 static const char *k_good =
     "{\n"

@@ -145,7 +145,16 @@ void cli_print_help(const cli_command *command, FILE *out)
         fprintf(out, "options:\n");
         for (int i = 0; i < command->option_count; i++) {
             const cli_option *o = &command->options[i];
-            print_option_line(out, o->short_name, o->name, o->arg_name, o->help);
+            char help[512];
+            snprintf(help, sizeof help, "%s", o->help);
+            for (int k = 0; k < command->key_option_count; k++) {
+                const cli_key_option *ko = &command->key_options[k];
+                if (strcmp(ko->option, o->name) != 0) continue;
+                size_t used = strlen(help);
+                snprintf(help + used, sizeof help - used, " (key %s%s%s)", ko->key,
+                         ko->value ? "=" : "", ko->value ? ko->value : "");
+            }
+            print_option_line(out, o->short_name, o->name, o->arg_name, help);
         }
         fprintf(out, "\n");
     }
@@ -156,7 +165,8 @@ void cli_print_help(const cli_command *command, FILE *out)
                               k_common[i].help);
     print_option_line(out, 'h', "help", NULL, "show this help and exit");
     if (command->schema)
-        print_option_line(out, 0, "help-keys", NULL, "list every preset key with its range");
+        print_option_line(out, 0, "help-keys[=markdown]", NULL,
+                          "list every preset key with its range and default (as a table)");
     if (command->examples) fprintf(out, "\nexamples:\n%s\n", command->examples);
     /* a command that also names a group (e.g. "skin" and "skin maps") lists the group */
     if (!strchr(command->name, ' ') && cli_is_group(command->name)) {
@@ -282,8 +292,16 @@ int cli_parse(const cli_command *command, int argc, char **argv, cli_args *args)
             return -1;
         }
         if (strcmp(a, "--help-keys") == 0 && command->schema) {
-            printf("preset keys of '%s' (key, type, accepted range, meaning):\n", command->name);
+            printf("preset keys of '%s' (key, type, accepted range, meaning; default):\n",
+                   command->name);
+            if (command->part_schema) sk_schema_print(command->part_schema, stdout);
             sk_schema_print(command->schema, stdout);
+            return -1;
+        }
+        if (strcmp(a, "--help-keys=markdown") == 0 && command->schema) {
+            /* the command's own keys: a second schema's are in its own docs */
+            sk_schema_print_markdown(command->part_schema ? command->part_schema : command->schema,
+                                     stdout);
             return -1;
         }
         const char *name, *inline_value = NULL;
@@ -718,6 +736,27 @@ int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset 
     } else if (sk_preset_create(&preset, &err) != SK_OK) {
         return cli_fail_error(&err);
     }
+    for (int i = 0; i < command->key_option_count; i++) {
+        const cli_key_option *o = &command->key_options[i];
+        if (!cli_has(command, args, o->option)) continue;
+        char json[128], assignment[256];
+        int status =
+            cli_key_option_json(command, o, cli_get(command, args, o->option), json, sizeof json);
+        if (status) {
+            sk_preset_free(preset);
+            return status;
+        }
+        snprintf(assignment, sizeof assignment, "%s=%s", o->key, json);
+        if (sk_preset_set(preset, assignment, &err) != SK_OK) {
+            sk_preset_free(preset);
+            return cli_fail_error(&err);
+        }
+    }
+    int hooked = command->set_option_keys ? command->set_option_keys(command, args, preset) : 0;
+    if (hooked) {
+        sk_preset_free(preset);
+        return hooked;
+    }
     for (int i = 0; i < args->common.set_count; i++) {
         if (sk_preset_set(preset, args->common.sets[i], &err) != SK_OK) {
             sk_preset_free(preset);
@@ -725,8 +764,10 @@ int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset 
         }
     }
     if (args->common.has_seed) {
-        char assignment[64];
-        snprintf(assignment, sizeof assignment, "seed=%llu", (unsigned long long)args->common.seed);
+        char assignment[160];
+        snprintf(assignment, sizeof assignment, "%s=%llu",
+                 command->seed_key ? command->seed_key : "seed",
+                 (unsigned long long)args->common.seed);
         if (sk_preset_set(preset, assignment, &err) != SK_OK) {
             sk_preset_free(preset);
             return cli_fail_error(&err);
@@ -734,6 +775,17 @@ int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset 
     }
     *out = preset;
     return 0;
+}
+
+int cli_bind_params(const cli_command *command, const cli_args *args, void *params)
+{
+    sk_preset *tree = NULL;
+    int status = cli_load_preset(command, args, &tree);
+    if (status) return status;
+    sk_error err = {0};
+    sk_result r = sk_preset_bind(tree, command->schema, params, &err);
+    sk_preset_free(tree);
+    return r == SK_OK ? 0 : cli_fail_error(&err);
 }
 
 void cli_apply_threads(const cli_args *args) { sk_threads_set(args->common.threads); }

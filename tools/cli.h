@@ -72,6 +72,18 @@ typedef struct cli_args {
 struct cli_command;
 typedef int (*cli_run_fn)(const struct cli_command *command, const cli_args *args);
 
+/* An option that is another name for a preset key (the options a command had before its
+ * keys joined the schema): cli_load_preset checks its value against the key's range in the
+ * command's schema, with the option's own message ("--lut-resolution '4' must be an
+ * integer in [8, 1024]"), and sets the key after the preset and before every --set. A
+ * flag (an option without argument) sets `value`. */
+typedef struct cli_key_option {
+    const char *option; /* long name, e.g. "lut-resolution" */
+    const char *key;    /* key path, e.g. "lut.resolution" */
+    const char *value;  /* a flag's value ("left"); NULL: the option's argument */
+    bool integer;       /* a number key taken as a whole number (the option's old form) */
+} cli_key_option;
+
 typedef struct cli_command {
     const char *name;        /* "skin" or a two-word "skin maps" */
     const char *summary;     /* one line for the tool's --help */
@@ -85,6 +97,19 @@ typedef struct cli_command {
     const char *preset_module; /* folder under presets/ for --preset NAME, or NULL */
     const sk_schema *schema;   /* preset schema (for --help-keys), or NULL */
     cli_run_fn run;
+    /* Optional: options that set keys, and the key --seed sets (NULL = "seed"). */
+    const cli_key_option *key_options;
+    int key_option_count;
+    const char *seed_key;
+    /* Optional: sets the keys of options that need more than a range check (one option
+       for two keys, an option whose 0 means "none"), in the tree after the key options
+       and before --set (cli_set_key helps); 0 or the exit status after printing. */
+    int (*set_option_keys)(const struct cli_command *command, const cli_args *args,
+                           sk_preset *tree);
+    /* Optional: a second schema, of the keys under one top-level key of the same preset
+       (the showcase's own keys beside its stage scene); --help-keys lists it first and key
+       options may name its keys. */
+    const sk_schema *part_schema;
 } cli_command;
 
 /* All commands, NULL-terminated (tools/commands.c). */
@@ -141,10 +166,22 @@ int cli_parse_numbers(const char *option, const char *text, int count, double *o
 int cli_parse_region(const char *text, int width, int height, int region[4]);
 
 /* Resolves --preset (a file path, or NAME looked up as presets/<module>/NAME.json in
- * $SHITSUKAN_PRESET_DIR, the installed share folder, then the source tree), applies
- * every --set, and returns the tree (or an empty one without --preset). Errors print
- * and return their exit status. */
+ * $SHITSUKAN_PRESET_DIR, the installed share folder, then the source tree), sets the
+ * keys of the command's key options that were given, applies every --set and --seed, and
+ * returns the tree (or an empty one without --preset). Errors print and return their
+ * exit status. */
 int cli_load_preset(const cli_command *command, const cli_args *args, sk_preset **out);
+/* The same, bound onto `params` (its fields absent from the tree keep their values)
+ * through command->schema. */
+int cli_bind_params(const cli_command *command, const cli_args *args, void *params);
+/* A key option's value as the JSON of its key (checked against the key's range); 0 or the
+ * exit status after printing the error. (cli_keys.c) */
+int cli_key_option_json(const cli_command *command, const cli_key_option *option, const char *text,
+                        char *json, size_t size);
+/* Sets "key=json" in the tree (for set_option_keys); 0 or the exit status. */
+int cli_set_key(sk_preset *tree, const char *key, const char *json);
+/* The schema field of a key path in the command's schemas (part_schema, then schema). */
+const sk_schema_field *cli_find_key(const cli_command *command, const char *key);
 /* Finds a shipped preset file: writes its path and returns true. */
 bool cli_find_preset(const char *module, const char *name, char *path, size_t size);
 /* The folder of the running executable (for the share folder of an installed tool). */

@@ -13,6 +13,7 @@
 #include "cmd_hand_surface.h"
 #include "cmd_hand_prior.h"
 #include "hand_args.h"
+#include "hand_params.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/io.h"
 
@@ -116,8 +117,9 @@ static int write_pose_png(const sk_hand_skeleton *skel, const double *q,
     return r == SK_OK ? 0 : cli_fail_error(&err);
 }
 
-/* Lookup tables from --samples and --pairs (3.2.3). */
-static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut *luts, int *count)
+/* Lookup tables from --samples and --pairs (3.2.3), of the keys `desc` (lut.*). */
+static int build_luts(const cli_command *cmd, const cli_args *args, const sk_hand_lut_desc *desc,
+                      sk_hand_lut *luts, int *count)
 {
     *count = 0;
     const char *samples_path = cli_get(cmd, args, "samples");
@@ -125,9 +127,6 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
     if (!samples_path && !pairs_text) return 0;
     if (!samples_path || !pairs_text)
         return cli_fail(CLI_EXIT_USAGE, "--samples and --pairs go together");
-    sk_hand_lut_desc desc;
-    int rc = hand_lut_options(cmd, args, &desc);
-    if (rc) return rc;
     sk_error err = {0};
     int pairs[16][2], n = 0;
     if (sk_hand_parse_pairs(pairs_text, pairs, 16, &n, &err) != SK_OK) {
@@ -148,7 +147,7 @@ static int build_luts(const cli_command *cmd, const cli_args *args, sk_hand_lut 
                             sk_hand_dof(y)->name);
         }
         if (sk_hand_lut_build(&luts[k], x, y, samples.column[x], samples.column[y], samples.count,
-                              &desc, &err) != SK_OK) {
+                              desc, &err) != SK_OK) {
             sk_hand_samples_free(&samples);
             for (int j = 0; j < *count; j++) sk_hand_lut_free(&luts[j]);
             *count = 0;
@@ -198,6 +197,8 @@ static const cli_option pose_options[] = {
      "line under the picture (default: the inputs and the angles they gave; '' = none)", false},
 };
 
+static const cli_key_option pose_keys[] = {HAND_SKELETON_KEY_OPTIONS, HAND_LUT_KEY_OPTIONS};
+
 static int run_pose(const cli_command *cmd, const cli_args *args)
 {
     static const char *const picture_options[] = {"views", "png-size", "labels",
@@ -210,8 +211,10 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
                                   {"-o", &out, NULL, false},
                                   {"--bvh", &bvh, NULL, false},
                                   {"--positions", &positions, k_positions_formats, false}};
+    hand_params params;
+    if ((rc = hand_load_params(cmd, args, &params))) return rc;
     sk_hand_skeleton skel;
-    rc = hand_build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    rc = hand_build_skeleton(cmd, args, &params.hand, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     if (rc) return rc;
     sk_output_set *written = NULL;
     if ((rc = cli_reserve_outputs(outputs, 4, &written))) return rc;
@@ -220,7 +223,7 @@ static int run_pose(const cli_command *cmd, const cli_args *args)
     if (!rc) rc = hand_parse_inputs(cmd, args, &in);
     sk_hand_lut luts[16];
     int lut_count = 0;
-    if (!rc) rc = build_luts(cmd, args, luts, &lut_count);
+    if (!rc) rc = build_luts(cmd, args, &params.lut, luts, &lut_count);
     sk_error err = {0};
     double q[SK_HAND_DOF_COUNT];
     sk_hand_solve_info info;
@@ -287,10 +290,14 @@ const cli_command cmd_hand_pose = {
                 "I.MCP.flex=50",
     .options = pose_options,
     .option_count = (int)(sizeof pose_options / sizeof pose_options[0]),
-    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET,
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET | CLI_COMMON_PRESET | CLI_COMMON_SET,
     .min_positional = 0,
     .max_positional = 0,
+    .preset_module = "hand",
+    .schema = &hand_pose_schema,
     .run = run_pose,
+    .key_options = pose_keys,
+    .key_option_count = (int)(sizeof pose_keys / sizeof pose_keys[0]),
 };
 
 /* ------------------------------------------------------------ hand animate */
@@ -421,6 +428,8 @@ static int write_frames(const sk_hand_skeleton *skel, const sk_hand_animation *a
     return r == SK_OK ? 0 : cli_fail_error(&err);
 }
 
+static const cli_key_option animate_keys[] = {HAND_SKELETON_KEY_OPTIONS, HAND_SURFACE_KEY_OPTIONS};
+
 static int run_animate(const cli_command *cmd, const cli_args *args)
 {
     const char *bvh = cli_get(cmd, args, "bvh"), *positions = cli_get(cmd, args, "positions");
@@ -471,10 +480,12 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
     if (!anim) rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
     const char *path = args->positional[0];
     if (!rc && sk_hand_animation_load_file(path, anim, &err) != SK_OK) rc = cli_fail_error(&err);
+    hand_params params;
+    if (!rc) rc = hand_load_params(cmd, args, &params);
     sk_hand_skeleton skel;
     if (!rc)
-        rc = hand_build_skeleton(cmd, args, anim->side, anim->hand_length_mm, anim->hand_breadth_mm,
-                                 &skel);
+        rc = hand_build_skeleton(cmd, args, &params.hand, anim->side, anim->hand_length_mm,
+                                 anim->hand_breadth_mm, &skel);
     const char *set = cli_get(cmd, args, "constraints"),
                *potential = cli_get(cmd, args, "potential");
     if (!rc && set && potential)
@@ -493,10 +504,11 @@ static int run_animate(const cli_command *cmd, const cli_args *args)
                               driver);
     }
     /* the surface outputs' options, memory and texture files */
-    if (!rc && surface_outputs) rc = hand_animate_surface_parse(cmd, args, frames, &surface);
+    if (!rc && surface_outputs)
+        rc = hand_animate_surface_parse(cmd, args, &params, frames, &surface);
     if (!rc && (surface.glb || surface.meshes_dir))
         rc = hand_surface_plan_check_memory(args, &surface.plan, &skel,
-                                            surface.glb || surface.plan.texture,
+                                            surface.glb || surface.plan.prefix,
                                             surface.glb ? SK_HAND_LOD_COUNT : 1);
     if (!rc) rc = cli_reserve_outputs(outputs, 8, &written);
     if (!rc && surface_outputs) rc = hand_surface_plan_reserve(&surface.plan, written, NULL);
@@ -564,10 +576,14 @@ const cli_command cmd_hand_animate = {
         "frames",
     .options = animate_options,
     .option_count = (int)(sizeof animate_options / sizeof animate_options[0]),
-    .common = CLI_COMMON_QUIET,
+    .common = CLI_COMMON_QUIET | CLI_COMMON_PRESET | CLI_COMMON_SET,
     .min_positional = 1,
     .max_positional = 1,
+    .preset_module = "hand",
+    .schema = &hand_animate_schema,
     .run = run_animate,
+    .key_options = animate_keys,
+    .key_option_count = (int)(sizeof animate_keys / sizeof animate_keys[0]),
 };
 
 /* ------------------------------------------------------------ hand calibrate */
@@ -597,11 +613,22 @@ static const cli_option calibrate_options[] = {
     {"ignore-columns", 0, "A,B", "CSV columns to skip (besides frame and time)", false},
 };
 
+static const cli_key_option calibrate_keys[] = {
+    {"method", "potential.method", NULL, false},
+    {"components", "potential.components", NULL, false},
+    {"max-pairs", "potential.max_pairs", NULL, false},
+    {"weight-scale", "potential.weight_scale", NULL, false},
+    {"weights", "potential.weight_rule", NULL, false},
+};
+
 static int run_calibrate(const cli_command *cmd, const cli_args *args)
 {
     const char *pairs_text = cli_get(cmd, args, "pairs");
-    const char *method = cli_get(cmd, args, "method");
-    if (method && strcmp(method, "pairs") == 0) return hand_calibrate_potential(cmd, args);
+    hand_params params;
+    int params_rc = hand_load_params(cmd, args, &params);
+    if (params_rc) return params_rc;
+    if (params.potential.method == SK_HAND_POTENTIAL_PAIRS)
+        return hand_calibrate_potential(cmd, args, &params);
     static const char *const selection_only[] = {"weight-scale", "max-pairs", NULL};
     for (int i = 0; selection_only[i]; i++)
         if (cli_has(cmd, args, selection_only[i]))
@@ -609,7 +636,7 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
     if (!pairs_text) {
         static const char *const pair_only[] = {"weights", NULL};
         int rc = require_option(cmd, args, "pairs", pair_only);
-        return rc ? rc : hand_calibrate_potential(cmd, args);
+        return rc ? rc : hand_calibrate_potential(cmd, args, &params);
     }
     static const char *const potential_only[] = {"method", "components", "prior-strength", "base",
                                                  NULL};
@@ -619,9 +646,8 @@ static int run_calibrate(const cli_command *cmd, const cli_args *args)
                             "--%s is for the potential; it does not go with --pairs",
                             potential_only[i]);
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o rows.json is required");
-    sk_hand_weight_rule rule;
-    int rule_rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_THESIS, &rule);
-    if (rule_rc) return rule_rc;
+    sk_hand_weight_rule rule =
+        params.potential.weight_rule ? params.potential.weight_rule : SK_HAND_WEIGHT_THESIS;
     sk_error err = {0};
     int pairs[64][2], n = 0;
     if (sk_hand_parse_pairs(pairs_text, pairs, 64, &n, &err) != SK_OK) {
@@ -679,8 +705,15 @@ const cli_command cmd_hand_calibrate = {
         "-o rows.json",
     .options = calibrate_options,
     .option_count = (int)(sizeof calibrate_options / sizeof calibrate_options[0]),
-    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET | CLI_COMMON_SEED,
+    .common =
+        CLI_COMMON_OUTPUT | CLI_COMMON_QUIET | CLI_COMMON_SEED | CLI_COMMON_PRESET | CLI_COMMON_SET,
     .min_positional = 1,
     .max_positional = 1,
+    .preset_module = "hand",
+    .schema = &hand_calibrate_schema,
     .run = run_calibrate,
+    .key_options = calibrate_keys,
+    .key_option_count = (int)(sizeof calibrate_keys / sizeof calibrate_keys[0]),
+    .seed_key = "potential.seed",
+    .set_option_keys = hand_set_prior_strength,
 };

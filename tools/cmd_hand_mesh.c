@@ -13,6 +13,7 @@
 #include "cmd_hand_prior.h"
 #include "cmd_hand_surface.h"
 #include "hand_args.h"
+#include "hand_params.h"
 #include "shitsukan/hand.h"
 
 static const cli_option mesh_options[] = {
@@ -57,6 +58,11 @@ static int solve_pins(const cli_command *cmd, const cli_args *args, const sk_han
     return rc;
 }
 
+static const cli_key_option mesh_keys[] = {
+    {"left", "hand.side", "left", false},
+    HAND_SURFACE_KEY_OPTIONS,
+};
+
 static int run_mesh(const cli_command *cmd, const cli_args *args)
 {
     const char *out = args->common.output;
@@ -76,13 +82,16 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
         return cli_fail(CLI_EXIT_USAGE, "--texture-size needs --texture (or a .glb)");
     long long lod;
     hand_surface_plan plan;
+    hand_params params;
     rc = cli_get_int(cmd, args, "lod", 0, 0, SK_HAND_LOD_COUNT - 1, &lod);
-    if (!rc) rc = hand_surface_plan_parse(cmd, args, &plan);
+    if (!rc) rc = hand_load_params(cmd, args, &params);
+    if (!rc) rc = hand_surface_plan_parse(cmd, args, &params, &plan);
     if (rc) return rc;
     sk_error err = {0};
     sk_hand_skeleton skel;
-    sk_hand_skeleton_desc sd = {.side = cli_has(cmd, args, "left") ? SK_HAND_SIDE_LEFT
-                                                                   : SK_HAND_SIDE_RIGHT};
+    /* the keys hand.* (--left: hand.side=left) */
+    sk_hand_skeleton_desc sd = params.hand;
+    if (!sd.side) sd.side = SK_HAND_SIDE_RIGHT;
     if (sk_hand_skeleton_init(&skel, &sd, &err) != SK_OK) return cli_fail_error(&err);
     double q[SK_HAND_DOF_COUNT];
     const char *pose = cli_get(cmd, args, "pose");
@@ -90,7 +99,7 @@ static int run_mesh(const cli_command *cmd, const cli_args *args)
     if (!pose && (rc = solve_pins(cmd, args, &skel, q))) return rc;
     /* a .glb holds all three levels of detail, unless --lod chose one */
     int lod_count = glb && !cli_has(cmd, args, "lod") ? SK_HAND_LOD_COUNT : 1;
-    if ((rc = hand_surface_plan_check_memory(args, &plan, &skel, glb || plan.texture,
+    if ((rc = hand_surface_plan_check_memory(args, &plan, &skel, glb || plan.prefix,
                                              lod > 0 ? 2 : lod_count)))
         return rc;
     /* the mesh, its MTL and textures appear together or not at all */
@@ -137,8 +146,13 @@ const cli_command cmd_hand_mesh = {
                 "  shitsukan hand mesh --pose pose.json --lod 1 --left -o left.glb",
     .options = mesh_options,
     .option_count = (int)(sizeof mesh_options / sizeof mesh_options[0]),
-    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET | CLI_COMMON_THREADS,
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_QUIET | CLI_COMMON_THREADS | CLI_COMMON_PRESET |
+              CLI_COMMON_SET,
     .min_positional = 0,
     .max_positional = 0,
+    .preset_module = "hand",
+    .schema = &hand_mesh_schema,
     .run = run_mesh,
+    .key_options = mesh_keys,
+    .key_option_count = (int)(sizeof mesh_keys / sizeof mesh_keys[0]),
 };

@@ -64,37 +64,6 @@ int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_han
     return 0;
 }
 
-int hand_lut_options(const cli_command *cmd, const cli_args *args, sk_hand_lut_desc *out)
-{
-    memset(out, 0, sizeof *out);
-    long long resolution;
-    int rc = cli_get_int(cmd, args, "lut-resolution", 100, 8, 1024, &resolution);
-    if (rc == 0) rc = cli_get_double(cmd, args, "lut-weight", 1.0, 1e-6, 1e6, &out->weight);
-    if (rc) return rc;
-    out->resolution = (int)resolution;
-    const char *interp = cli_get(cmd, args, "lut-interp");
-    if (interp && strcmp(interp, "bilinear") == 0)
-        out->interp = SK_HAND_LUT_INTERP_BILINEAR;
-    else if (interp && strcmp(interp, "hermite") != 0)
-        return cli_fail(CLI_EXIT_USAGE, "--lut-interp '%s' must be hermite or bilinear", interp);
-    return 0;
-}
-
-/* --weights: thesis or inverse-variance (`fallback` when absent). */
-int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weight_rule fallback,
-                     sk_hand_weight_rule *out)
-{
-    const char *w = cli_get(cmd, args, "weights");
-    *out = fallback;
-    if (w && strcmp(w, "thesis") == 0)
-        *out = SK_HAND_WEIGHT_THESIS;
-    else if (w && strcmp(w, "inverse-variance") == 0)
-        *out = SK_HAND_WEIGHT_INVERSE_VARIANCE;
-    else if (w)
-        return cli_fail(CLI_EXIT_USAGE, "--weights '%s' must be thesis or inverse-variance", w);
-    return 0;
-}
-
 int hand_poser_open(hand_poser *poser, const sk_hand_skeleton *skel, const char *potential_path,
                     const char *set_name, const sk_hand_lut *luts, int lut_count)
 {
@@ -134,46 +103,42 @@ void hand_poser_close(hand_poser *poser)
     memset(poser, 0, sizeof *poser);
 }
 
-/* --method, --components, --prior-strength, --seed and, for --method pairs, --pairs (the
- * candidates, parsed into `pairs`), --weights, --weight-scale, --max-pairs into a
- * potential desc. */
-static int potential_options(const cli_command *cmd, const cli_args *args,
-                             sk_hand_potential_desc *d, int (*pairs)[2])
+int hand_set_prior_strength(const cli_command *cmd, const cli_args *args, sk_preset *tree)
 {
-    memset(d, 0, sizeof *d);
-    const char *method = cli_get(cmd, args, "method");
-    if (!method || strcmp(method, "mixture") == 0)
-        d->method = SK_HAND_POTENTIAL_MIXTURE;
-    else if (strcmp(method, "gaussian") == 0)
-        d->method = SK_HAND_POTENTIAL_GAUSSIAN;
-    else if (strcmp(method, "pairs") == 0)
-        d->method = SK_HAND_POTENTIAL_PAIRS;
-    else
-        return cli_fail(CLI_EXIT_USAGE, "--method '%s' must be mixture, gaussian or pairs", method);
-    long long comps = 0, max_pairs = 0;
-    double strength = 0.0;
-    int rc = cli_get_int(cmd, args, "components", 0, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS, &comps);
-    if (!rc && cli_has(cmd, args, "prior-strength")) {
-        rc = cli_get_double(cmd, args, "prior-strength", 0, 0, 1e7, &strength);
-        if (!rc && strength == 0.0) strength = -1.0; /* an explicit 0: no prior */
-    }
+    if (!cli_has(cmd, args, "prior-strength")) return 0;
+    const sk_schema_field *f = cli_find_key(cmd, "potential.prior_strength");
+    double strength;
+    int rc = cli_get_double(cmd, args, "prior-strength", 0, 0, f->max, &strength);
     if (rc) return rc;
-    d->components = (int)comps;
-    d->prior_strength = strength;
-    d->seed = args->common.has_seed ? args->common.seed : 1;
+    char json[64];
+    snprintf(json, sizeof json, "%.17g", strength == 0.0 ? -1.0 : strength); /* 0: no prior */
+    return cli_set_key(tree, "potential.prior_strength", json);
+}
+
+/* The potential desc of the keys potential.* (method, components, prior_strength, seed,
+ * weight_rule, weight_scale, max_pairs) and, for the method pairs, --pairs (the candidates,
+ * parsed into `pairs`). */
+static int potential_options(const cli_command *cmd, const cli_args *args,
+                             const hand_params *params, sk_hand_potential_desc *d, int (*pairs)[2])
+{
+    const sk_hand_potential_desc *p = &params->potential;
+    memset(d, 0, sizeof *d);
+    d->method = p->method ? p->method : SK_HAND_POTENTIAL_MIXTURE;
+    d->components = p->components;
+    d->max_components = p->max_components;
+    d->prior_strength = p->prior_strength;
+    d->seed = p->seed;
     if (d->method != SK_HAND_POTENTIAL_PAIRS) {
         if (cli_has(cmd, args, "max-pairs"))
             return cli_fail(CLI_EXIT_USAGE, "--max-pairs needs --method pairs");
         return 0;
     }
-    if (comps > 1)
+    if (p->components > 1)
         return cli_fail(CLI_EXIT_USAGE,
                         "--components does not go with --method pairs (one component)");
-    rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_INVERSE_VARIANCE, &d->weight_rule);
-    if (!rc) rc = cli_get_double(cmd, args, "weight-scale", 0.0, 1e-6, 1e6, &d->weight_scale);
-    if (!rc) rc = cli_get_int(cmd, args, "max-pairs", 16, 1, 64, &max_pairs);
-    if (rc) return rc;
-    d->max_pairs = (int)max_pairs;
+    d->weight_rule = p->weight_rule ? p->weight_rule : SK_HAND_WEIGHT_INVERSE_VARIANCE;
+    d->weight_scale = p->weight_scale;
+    d->max_pairs = p->max_pairs ? p->max_pairs : (int)cli_find_key(cmd, "potential.max_pairs")->def;
     const char *text = cli_get(cmd, args, "pairs");
     if (text) {
         sk_error err = {0};
@@ -196,13 +161,14 @@ static void print_pair_rows(const sk_hand_potential *pot)
                c->rows[k].weight);
 }
 
-int hand_calibrate_potential(const cli_command *cmd, const cli_args *args)
+int hand_calibrate_potential(const cli_command *cmd, const cli_args *args,
+                             const hand_params *params)
 {
     const char *path = args->positional[0];
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o potential.json is required");
     sk_hand_potential_desc desc;
     int pairs[64][2];
-    int rc = potential_options(cmd, args, &desc, pairs);
+    int rc = potential_options(cmd, args, params, &desc, pairs);
     if (rc) return rc;
     sk_hand_skeleton skel;
     sk_error err = {0};
@@ -288,7 +254,27 @@ static const cli_option evaluate_options[] = {
     {"plot-title", 0, "TEXT", "title of the plot", false},
 };
 
-static int evaluation_model(const cli_command *cmd, const cli_args *args,
+/* --prior-strength, and --weights and --weight-scale: the pair model's (evaluation.*)
+   with --model pairs, else the calibrated potential's (potential.*). */
+static int evaluate_set_option_keys(const cli_command *cmd, const cli_args *args, sk_preset *tree)
+{
+    int rc = hand_set_prior_strength(cmd, args, tree);
+    const char *model = cli_get(cmd, args, "model");
+    bool pair_model = model && strcmp(model, "pairs") == 0;
+    static const char *const options[] = {"weights", "weight-scale"};
+    static const char *const keys[2][2] = {{"potential.weight_rule", "potential.weight_scale"},
+                                           {"evaluation.weight_rule", "evaluation.weight_scale"}};
+    for (int i = 0; i < 2 && !rc; i++) {
+        if (!cli_has(cmd, args, options[i])) continue;
+        cli_key_option o = {options[i], keys[pair_model][i], NULL, false};
+        char json[128];
+        rc = cli_key_option_json(cmd, &o, cli_get(cmd, args, options[i]), json, sizeof json);
+        if (!rc) rc = cli_set_key(tree, o.key, json);
+    }
+    return rc;
+}
+
+static int evaluation_model(const cli_command *cmd, const cli_args *args, const hand_params *params,
                             const sk_hand_skeleton *skel, sk_hand_evaluation_desc *d,
                             sk_hand_constraints *fixed, sk_hand_constraints *base, int (*pairs)[2],
                             const char **model_name)
@@ -297,7 +283,7 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args,
     const char *base_name = cli_get(cmd, args, "base");
     int rc = hand_load_constraints(base_name ? base_name : "natural", skel, base);
     if (rc) return rc;
-    rc = potential_options(cmd, args, &d->potential, pairs);
+    rc = potential_options(cmd, args, params, &d->potential, pairs);
     if (rc) return rc;
     d->potential.base = base;
     *model_name = "model";
@@ -320,13 +306,16 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args,
         if (tables) {
             d->model = SK_HAND_EVAL_MODEL_LUT;
             *model_name = "tables";
-            return hand_lut_options(cmd, args, &d->lut);
+            d->lut = params->lut;
+            return 0;
         }
         d->model = SK_HAND_EVAL_MODEL_PAIRS;
-        rc = hand_weight_rule(cmd, args, SK_HAND_WEIGHT_THESIS, &d->weight_rule);
-        if (!rc) rc = cli_get_double(cmd, args, "weight-scale", 1.0, 1e-6, 1e6, &d->weight_scale);
+        const sk_hand_evaluation_desc *e = &params->evaluation;
+        d->weight_rule = e->weight_rule ? e->weight_rule : SK_HAND_WEIGHT_THESIS;
+        d->weight_scale =
+            e->weight_scale ? e->weight_scale : cli_find_key(cmd, "evaluation.weight_scale")->def;
         *model_name = "pairs";
-        return rc;
+        return 0;
     }
     rc = hand_load_constraints(model, skel, fixed);
     d->model = SK_HAND_EVAL_MODEL_FIXED;
@@ -334,6 +323,15 @@ static int evaluation_model(const cli_command *cmd, const cli_args *args,
     *model_name = strlen(model) <= 10 && !strchr(model, '/') ? model : "fixed set";
     return rc;
 }
+
+static const cli_key_option evaluate_keys[] = {
+    {"folds", "evaluation.folds", NULL, false},
+    {"pca-k", "evaluation.pca_components", NULL, false},
+    {"method", "potential.method", NULL, false},
+    {"components", "potential.components", NULL, false},
+    {"max-pairs", "potential.max_pairs", NULL, false},
+    HAND_LUT_KEY_OPTIONS,
+};
 
 static int run_evaluate(const cli_command *cmd, const cli_args *args)
 {
@@ -352,14 +350,15 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
             sk_error_prefix(&err, err.result, "--pins");
             return cli_fail_error(&err);
         }
-    sk_hand_evaluation_desc desc = {0};
-    long long folds = 0, k = 6;
-    int rc = cli_get_int(cmd, args, "folds", 0, 2, 1000, &folds);
-    if (!rc) rc = cli_get_int(cmd, args, "pca-k", 6, 1, SK_HAND_DOF_COUNT, &k);
+    hand_params params;
+    int rc = hand_load_params(cmd, args, &params);
     if (rc) return rc;
-    desc.folds = (int)folds;
+    sk_hand_evaluation_desc desc = {0};
+    desc.folds = params.evaluation.folds;
     desc.by_group = cli_has(cmd, args, "group");
-    desc.pca_components = (int)k;
+    const sk_schema_field *pca = cli_find_key(cmd, "evaluation.pca_components");
+    desc.pca_components =
+        params.evaluation.pca_components ? params.evaluation.pca_components : (int)pca->def;
     sk_hand_skeleton skel;
     if (sk_hand_skeleton_init(&skel, NULL, &err) != SK_OK) return cli_fail_error(&err);
     /* the report and the plot appear together at the end, or neither */
@@ -375,7 +374,8 @@ static int run_evaluate(const cli_command *cmd, const cli_args *args)
     const char *model_name = "model";
     sk_hand_samples samples = {0};
     if (!fixed || !base || !eval) rc = cli_fail(CLI_EXIT_RUNTIME, "out of memory");
-    if (!rc) rc = evaluation_model(cmd, args, &skel, &desc, fixed, base, pairs, &model_name);
+    if (!rc)
+        rc = evaluation_model(cmd, args, &params, &skel, &desc, fixed, base, pairs, &model_name);
     if (!rc) rc = hand_read_samples(cmd, args, args->positional[0], &samples);
     sk_progress_bar bar;
     if (!rc) {
@@ -451,10 +451,16 @@ const cli_command cmd_hand_evaluate = {
                 "--ignore-columns trial",
     .options = evaluate_options,
     .option_count = (int)(sizeof evaluate_options / sizeof evaluate_options[0]),
-    .common = CLI_COMMON_QUIET | CLI_COMMON_SEED,
+    .common = CLI_COMMON_QUIET | CLI_COMMON_SEED | CLI_COMMON_PRESET | CLI_COMMON_SET,
     .min_positional = 1,
     .max_positional = 1,
+    .preset_module = "hand",
+    .schema = &hand_evaluate_schema,
     .run = run_evaluate,
+    .key_options = evaluate_keys,
+    .key_option_count = (int)(sizeof evaluate_keys / sizeof evaluate_keys[0]),
+    .seed_key = "potential.seed",
+    .set_option_keys = evaluate_set_option_keys,
 };
 
 /* ------------------------------------------------------------ hand synthesize */
@@ -466,22 +472,31 @@ static const cli_option synthesize_options[] = {
     {"noise", 0, "DEG", "glove noise per sample in degrees (default 2; 0 = none)", false},
 };
 
+static const cli_key_option synthesize_keys[] = {
+    {"people", "synthetic.people", NULL, false},
+    {"trials", "synthetic.trials", NULL, false},
+    {"frames", "synthetic.frames", NULL, false},
+};
+
+/* --noise DEG: in [0, the key's maximum], 0 = none (the key's -1). */
+static int synthesize_set_option_keys(const cli_command *cmd, const cli_args *args, sk_preset *tree)
+{
+    if (!cli_has(cmd, args, "noise")) return 0;
+    double noise;
+    int rc = cli_get_double(cmd, args, "noise", 0, 0, cli_find_key(cmd, "synthetic.noise_deg")->max,
+                            &noise);
+    char json[64];
+    snprintf(json, sizeof json, "%.17g", noise > 0 ? noise : -1.0);
+    return rc ? rc : cli_set_key(tree, "synthetic.noise_deg", json);
+}
+
 static int run_synthesize(const cli_command *cmd, const cli_args *args)
 {
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "-o samples.csv is required");
-    sk_hand_synthetic_desc d = {0};
-    long long people, trials, frames;
-    double noise;
-    int rc = cli_get_int(cmd, args, "people", 6, 1, 100, &people);
-    if (!rc) rc = cli_get_int(cmd, args, "trials", 2, 1, 100, &trials);
-    if (!rc) rc = cli_get_int(cmd, args, "frames", 50, 5, 1000, &frames);
-    if (!rc) rc = cli_get_double(cmd, args, "noise", 2.0, 0.0, 20.0, &noise);
+    hand_params params;
+    int rc = hand_load_params(cmd, args, &params);
     if (rc) return rc;
-    d.people = (int)people;
-    d.trials = (int)trials;
-    d.frames = (int)frames;
-    d.noise_deg = noise > 0 ? noise : -1.0;
-    d.seed = args->common.has_seed ? args->common.seed : 1;
+    sk_hand_synthetic_desc d = params.synthetic;
     sk_error err = {0};
     if (sk_hand_synthetic_grasps_write(&d, args->common.output, &err) != SK_OK)
         return cli_fail_error(&err);
@@ -505,8 +520,14 @@ const cli_command cmd_hand_synthesize = {
                 "  shitsukan hand synthesize --people 10 --noise 1 --seed 7 -o grasps.csv",
     .options = synthesize_options,
     .option_count = (int)(sizeof synthesize_options / sizeof synthesize_options[0]),
-    .common = CLI_COMMON_OUTPUT | CLI_COMMON_SEED,
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_SEED | CLI_COMMON_PRESET | CLI_COMMON_SET,
     .min_positional = 0,
     .max_positional = 0,
+    .preset_module = "hand",
+    .schema = &hand_synthesize_schema,
     .run = run_synthesize,
+    .key_options = synthesize_keys,
+    .key_option_count = (int)(sizeof synthesize_keys / sizeof synthesize_keys[0]),
+    .seed_key = "synthetic.seed",
+    .set_option_keys = synthesize_set_option_keys,
 };

@@ -4,6 +4,7 @@
 #define SK_TOOLS_CMD_HAND_PRIOR_H
 
 #include "cli.h"
+#include "hand_params.h"
 #include "shitsukan/hand.h"
 
 /* Reads a samples CSV with the command's --units, --group and --ignore-columns (each
@@ -12,14 +13,12 @@ int hand_read_samples(const cli_command *cmd, const cli_args *args, const char *
                       sk_hand_samples *out);
 /* "natural", "yasumuro-table-3.2", "none" or a file (`out` is zeroed for "none"). */
 int hand_load_constraints(const char *name, const sk_hand_skeleton *skel, sk_hand_constraints *out);
-/* --weights: thesis or inverse-variance (`fallback` when absent). */
-int hand_weight_rule(const cli_command *cmd, const cli_args *args, sk_hand_weight_rule fallback,
-                     sk_hand_weight_rule *out);
-/* --lut-resolution, --lut-weight, --lut-interp into a lookup-table desc. */
-int hand_lut_options(const cli_command *cmd, const cli_args *args, sk_hand_lut_desc *out);
-/* `hand calibrate` without --pairs: the whole potential (--method, --components,
- * --prior-strength, --base, --seed). */
-int hand_calibrate_potential(const cli_command *cmd, const cli_args *args);
+/* `hand calibrate` without --pairs: the whole potential (the keys potential.*, --base). */
+int hand_calibrate_potential(const cli_command *cmd, const cli_args *args,
+                             const hand_params *params);
+/* --prior-strength S into potential.prior_strength: S in [0, its maximum], 0 = none (the
+ * key's -1). A command's set_option_keys. */
+int hand_set_prior_strength(const cli_command *cmd, const cli_args *args, sk_preset *tree);
 
 /* The posture solver of a command: a calibrated potential (--potential FILE of hand
  * calibrate) or a constraint set by name with lookup tables (which must outlive it). */

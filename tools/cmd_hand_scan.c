@@ -12,6 +12,7 @@
 
 #include "cli.h"
 #include "hand_args.h"
+#include "hand_params.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/io.h"
 
@@ -256,36 +257,81 @@ static int scan(const cli_command *cmd, const cli_args *args, const sk_hand_skel
                 const double *q, const sk_hand_scan_desc *scan_desc, const double *bend,
                 const char *dir);
 
+static const cli_key_option scan_keys[] = {
+    HAND_SKELETON_KEY_OPTIONS,
+    {"slices", "scan.slices.count", NULL, false},
+};
+
+/* --lines N, --points N: the scanner's counts, at least 0.3 a mm over its default extent
+   (the markers: see check_marker_spacing); --noise MM: scan.scanner.noise_mm in its range,
+   0 = none (scan.scanner.no_noise). */
+static int scan_set_option_keys(const cli_command *cmd, const cli_args *args, sk_preset *tree)
+{
+    sk_hand_scanner_desc s = sk_hand_scanner_desc_resolved(NULL);
+    const char *options[2] = {"lines", "points"};
+    const char *keys[2] = {"scan.scanner.lines", "scan.scanner.points"};
+    double sizes[2] = {s.size_x_mm, s.size_y_mm};
+    char json[64];
+    int rc = 0;
+    for (int i = 0; i < 2 && !rc; i++) {
+        if (!cli_has(cmd, args, options[i])) continue;
+        const sk_schema_field *f = cli_find_key(cmd, keys[i]);
+        long long n, least = (long long)ceil(0.3 * sizes[i]);
+        rc = cli_get_int(cmd, args, options[i], 0, least > f->min ? least : (long long)f->min,
+                         (long long)f->max, &n);
+        snprintf(json, sizeof json, "%lld", n);
+        if (!rc) rc = cli_set_key(tree, keys[i], json);
+    }
+    if (rc || !cli_has(cmd, args, "noise")) return rc;
+    const sk_schema_field *f = cli_find_key(cmd, "scan.scanner.noise_mm");
+    double noise;
+    rc = cli_get_double(cmd, args, "noise", 0, f->min, f->max, &noise);
+    snprintf(json, sizeof json, "%.17g", noise);
+    if (!rc) rc = cli_set_key(tree, "scan.scanner.noise_mm", json);
+    if (!rc) rc = cli_set_key(tree, "scan.scanner.no_noise", noise == 0 ? "true" : "false");
+    return rc;
+}
+
+/* The markers are 3 sample spacings wide, at most 10 mm: a coarsest scan follows (at least
+   0.3 samples a mm across the lines and along them). */
+static int check_marker_spacing(const cli_command *cmd, const cli_args *args,
+                                const sk_hand_scanner_desc *given)
+{
+    sk_hand_scanner_desc s = sk_hand_scanner_desc_resolved(given);
+    const char *options[2] = {"lines", "points"}, *keys[2] = {"lines", "points"};
+    int counts[2] = {s.lines, s.points};
+    double sizes[2] = {s.size_x_mm, s.size_y_mm};
+    for (int i = 0; i < 2; i++) {
+        long long least = (long long)ceil(0.3 * sizes[i]);
+        if (counts[i] >= least) continue;
+        long long most = (long long)cli_find_key(cmd, "scan.scanner.lines")->max;
+        if (cli_has(cmd, args, options[i]))
+            return cli_fail(CLI_EXIT_USAGE, "--%s '%s' must be an integer in [%lld, %lld]",
+                            options[i], cli_get(cmd, args, options[i]), least, most);
+        return cli_fail(CLI_EXIT_USAGE,
+                        "scan.scanner.%s = %d: the markers need at least %lld over %g mm (0.3 a "
+                        "mm)",
+                        keys[i], counts[i], least, sizes[i]);
+    }
+    return 0;
+}
+
 static int run_scan(const cli_command *cmd, const cli_args *args)
 {
     const char *dir = args->common.output;
     if (!dir)
         return cli_fail(CLI_EXIT_USAGE,
                         "-o DIR is required (the folder for the pictures and files)");
+    hand_params params;
+    int rc = hand_load_params(cmd, args, &params);
+    if (rc) return rc;
     sk_hand_skeleton skel;
-    int rc = hand_build_skeleton(cmd, args, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
+    rc = hand_build_skeleton(cmd, args, &params.hand, SK_HAND_SIDE_RIGHT, 0, 0, &skel);
     double q[SK_HAND_DOF_COUNT];
     if (!rc) rc = read_pose(cmd, args, &skel, q);
-    sk_hand_scan_desc d = {0};
-    long long lines = 512, points = 512, slices = 75;
-    double noise = 0.05;
-    /* the markers are 3 sample spacings wide, at most 10 mm: a coarsest scan follows */
-    sk_hand_scanner_desc scanner = sk_hand_scanner_desc_resolved(&d.scanner);
-    if (!rc)
-        rc = cli_get_int(cmd, args, "lines", 512, (long long)ceil(0.3 * scanner.size_x_mm), 4096,
-                         &lines);
-    if (!rc)
-        rc = cli_get_int(cmd, args, "points", 512, (long long)ceil(0.3 * scanner.size_y_mm), 4096,
-                         &points);
-    if (!rc) rc = cli_get_int(cmd, args, "slices", 75, 2, 2000, &slices);
-    if (!rc) rc = cli_get_double(cmd, args, "noise", 0.05, 0, 10, &noise);
+    if (!rc) rc = check_marker_spacing(cmd, args, &params.scan.scanner);
     if (rc) return rc;
-    d.scanner.lines = (int)lines;
-    d.scanner.points = (int)points;
-    d.scanner.noise_mm = noise;
-    d.scanner.no_noise = noise == 0;
-    d.slices.count = (int)slices;
-    d.seed = args->common.has_seed ? args->common.seed : 0;
+    sk_hand_scan_desc d = params.scan;
     const char *input = cli_get(cmd, args, "input");
     bool pictures = !cli_has(cmd, args, "no-pictures");
     double bend[SK_HAND_DOF_COUNT];
@@ -417,8 +463,15 @@ const cli_command cmd_hand_scan = {
                 "scan --no-pictures",
     .options = scan_options,
     .option_count = (int)(sizeof scan_options / sizeof scan_options[0]),
-    .common = CLI_COMMON_OUTPUT | CLI_COMMON_SEED | CLI_COMMON_THREADS | CLI_COMMON_QUIET,
+    .common = CLI_COMMON_OUTPUT | CLI_COMMON_SEED | CLI_COMMON_THREADS | CLI_COMMON_QUIET |
+              CLI_COMMON_PRESET | CLI_COMMON_SET,
     .min_positional = 0,
     .max_positional = 0,
+    .preset_module = "hand",
+    .schema = &hand_scan_schema,
     .run = run_scan,
+    .key_options = scan_keys,
+    .key_option_count = (int)(sizeof scan_keys / sizeof scan_keys[0]),
+    .seed_key = "scan.seed",
+    .set_option_keys = scan_set_option_keys,
 };

@@ -27,48 +27,29 @@ static const char *base_name(const char *path)
     return slash ? slash + 1 : path;
 }
 
-int hand_parse_skinning(const char *text, sk_hand_skinning *out)
-{
-    if (!text || strcmp(text, "dqs") == 0)
-        *out = SK_HAND_SKINNING_DQS;
-    else if (strcmp(text, "lbs") == 0)
-        *out = SK_HAND_SKINNING_LBS;
-    else if (strcmp(text, "rigid") == 0)
-        *out = SK_HAND_SKINNING_RIGID;
-    else
-        return cli_fail(CLI_EXIT_USAGE, "--skinning '%s' must be rigid, lbs or dqs", text);
-    return 0;
-}
-
-int hand_surface_plan_parse(const cli_command *cmd, const cli_args *args, hand_surface_plan *p)
+int hand_surface_plan_parse(const cli_command *cmd, const cli_args *args, const hand_params *params,
+                            hand_surface_plan *p)
 {
     memset(p, 0, sizeof *p);
-    long long triangles, size;
-    int rc = cli_get_int(cmd, args, "triangles", 8000, 500, 200000, &triangles);
-    if (!rc) rc = cli_get_int(cmd, args, "texture-size", 1024, 64, 8192, &size);
-    if (!rc) rc = hand_parse_skinning(cli_get(cmd, args, "skinning"), &p->method);
-    if (rc) return rc;
-    p->desc.triangles = (int)triangles;
-    p->texture_size = (int)size;
-    const char *material = cli_get(cmd, args, "material");
-    if (!material || strcmp(material, "blend") == 0)
-        p->material = SK_HAND_GLTF_MATERIAL_BLEND;
-    else if (strcmp(material, "pbr") == 0)
-        p->material = SK_HAND_GLTF_MATERIAL_PBR;
-    else
-        return cli_fail(CLI_EXIT_USAGE, "--material '%s' must be blend or pbr", material);
+    /* the keys surface.*, texture.*, skinning, material with their stated defaults */
+    p->desc = params->surface;
+    sk_schema_apply_defaults(&sk_hand_surface_schema, &p->desc);
+    p->texture = params->texture;
+    sk_schema_apply_defaults(&sk_hand_texture_schema, &p->texture);
+    p->method = params->skinning ? params->skinning : SK_HAND_SKINNING_DQS;
+    p->material = params->material ? params->material : SK_HAND_GLTF_MATERIAL_BLEND;
     const char *flesh = cli_get(cmd, args, "flesh");
     sk_error err = {0};
     if (flesh) {
         if (sk_hand_flesh_load_file(flesh, &p->flesh, &err) != SK_OK) return cli_fail_error(&err);
         p->desc.flesh = &p->flesh;
     }
-    p->texture = cli_get(cmd, args, "texture");
-    if (p->texture) {
-        if (!p->texture[0])
+    p->prefix = cli_get(cmd, args, "texture");
+    if (p->prefix) {
+        if (!p->prefix[0])
             return cli_fail(CLI_EXIT_USAGE, "--texture needs a PREFIX for its file names");
-        snprintf(p->albedo, sizeof p->albedo, "%s-albedo.png", p->texture);
-        snprintf(p->normal, sizeof p->normal, "%s-normal.png", p->texture);
+        snprintf(p->albedo, sizeof p->albedo, "%s-albedo.png", p->prefix);
+        snprintf(p->normal, sizeof p->normal, "%s-normal.png", p->prefix);
         p->albedo_out = p->albedo;
         p->normal_out = p->normal;
     }
@@ -82,7 +63,7 @@ int hand_surface_plan_check_memory(const cli_args *args, const hand_surface_plan
     double bytes = sk_hand_surface_memory(skel, &d);
     /* the coarser levels are simplified from the finest: a copy of it each, at most */
     if (lod_count > 1) bytes *= 1.0 + 0.5 * (lod_count - 1);
-    sk_hand_texture_desc td = {.size = p->texture_size};
+    sk_hand_texture_desc td = p->texture;
     if (bake) bytes += sk_hand_texture_memory(&td);
     char driver[160];
     snprintf(driver, sizeof driver, "the hand surface (--triangles %d)%s", p->desc.triangles,
@@ -94,17 +75,17 @@ int hand_surface_plan_reserve(hand_surface_plan *p, sk_output_set *set, const ch
 {
     sk_error err = {0};
     sk_result r = SK_OK;
-    if (p->texture) {
+    if (p->prefix) {
         r = sk_output_set_file(set, p->albedo, &p->albedo_out, &err);
         if (r == SK_OK) r = sk_output_set_file(set, p->normal, &p->normal_out, &err);
     }
     struct stat st;
-    if (r == SK_OK && obj && p->texture && stat(obj, &st) == 0 &&
+    if (r == SK_OK && obj && p->prefix && stat(obj, &st) == 0 &&
         (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)))
         return cli_fail(
             CLI_EXIT_USAGE,
             "--texture with -o '%s' (a device or FIFO): the MTL needs an .obj file name", obj);
-    if (r == SK_OK && obj && p->texture) {
+    if (r == SK_OK && obj && p->prefix) {
         char *mtl = sk_obj_mtl_path(obj);
         if (!mtl) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
         snprintf(p->mtl, sizeof p->mtl, "%s", mtl);
@@ -163,7 +144,9 @@ static int bake_texture(const hand_surface_plan *p, const sk_hand_surface *surfa
         sk_skin_destroy(back);
         return rc;
     }
-    sk_hand_texture_desc d = {.size = p->texture_size, .back_skin = back, .palm_skin = palm};
+    sk_hand_texture_desc d = p->texture;
+    d.back_skin = back;
+    d.palm_skin = palm;
     sk_error err = {0};
     sk_result r = sk_hand_texture_bake(surface, &d, albedo, normal, &err);
     sk_skin_destroy(back);
@@ -198,14 +181,14 @@ int hand_write_posed_mesh(const hand_surface_plan *p, const sk_hand_surface *sur
         sk_hand_surface_export_mesh(surface, posed.positions, posed.normals, ply, &out, &err);
     sk_mesh_free(&posed);
     if (r != SK_OK) return cli_fail_error(&err);
-    int rc = p->texture ? write_texture(p, surface) : 0;
+    int rc = p->prefix ? write_texture(p, surface) : 0;
     if (!rc) {
         if (ply) {
             r = sk_mesh_write_ply(&out, path, &err);
         } else {
             /* the MTL names the albedo relative to the OBJ's folder, by its final name */
             sk_obj_write_desc od = {.material_name = "skin"};
-            if (p->texture) {
+            if (p->prefix) {
                 od.texture_path = base_name(p->albedo);
                 od.mtl_path = p->mtl_out;
                 od.mtl_name = base_name(p->mtl);
@@ -275,14 +258,14 @@ static int parse_frames(const char *text, int frame_count, bool *use)
     return 0;
 }
 
-int hand_animate_surface_parse(const cli_command *cmd, const cli_args *args, int frame_count,
-                               hand_animate_surface *s)
+int hand_animate_surface_parse(const cli_command *cmd, const cli_args *args,
+                               const hand_params *params, int frame_count, hand_animate_surface *s)
 {
     memset(s, 0, sizeof *s);
     s->glb = cli_get(cmd, args, "glb");
     s->landmarks = cli_get(cmd, args, "landmarks");
     s->meshes_dir = cli_get(cmd, args, "meshes-dir");
-    int rc = hand_surface_plan_parse(cmd, args, &s->plan);
+    int rc = hand_surface_plan_parse(cmd, args, params, &s->plan);
     if (rc || !s->meshes_dir) return rc;
     s->use = malloc((size_t)frame_count * sizeof *s->use);
     if (!s->use) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
@@ -311,7 +294,7 @@ int hand_animate_surface_write(const hand_animate_surface *s, const sk_hand_skel
     if (!rc && s->glb)
         rc = hand_write_glb(&s->plan, surface, dofs, frame_count, fps, true, SK_HAND_LOD_COUNT,
                             s->glb);
-    if (!rc && s->meshes_dir && s->plan.texture) rc = write_texture(&s->plan, surface);
+    if (!rc && s->meshes_dir && s->plan.prefix) rc = write_texture(&s->plan, surface);
     for (int f = 0; f < frame_count && !rc && s->meshes_dir; f++) {
         if (!s->use[f]) continue;
         char path[PATH_MAX];

@@ -7,27 +7,27 @@
 #include <limits.h>
 
 #include "cli.h"
+#include "hand_params.h"
 #include "shitsukan/hand.h"
 #include "shitsukan/io.h"
 
-/* "rigid", "lbs", "dqs" (NULL = dqs); prints the error and returns 2 on another. */
-int hand_parse_skinning(const char *text, sk_hand_skinning *out);
-
-/* The surface's options, every one checked before any work: --triangles, --flesh (read
- * now), --skinning, --texture-size, --material, --texture's file names. */
+/* The surface's keys and options, every one checked before any work: surface.*,
+ * texture.*, skinning, material (hand_params.h; --triangles, --texture-size, --skinning,
+ * --material), --flesh (read now), --texture's file names. */
 typedef struct hand_surface_plan {
-    sk_hand_surface_desc desc;
+    sk_hand_surface_desc desc; /* resolved: the stated defaults */
     sk_hand_flesh flesh;
-    sk_hand_skinning method;
-    sk_hand_gltf_material material;
-    int texture_size;
-    const char *texture;                     /* --texture PREFIX, or NULL */
+    sk_hand_skinning method;                 /* resolved */
+    sk_hand_gltf_material material;          /* resolved */
+    sk_hand_texture_desc texture;            /* the bake's size and relief (resolved; no skins) */
+    const char *prefix;                      /* --texture PREFIX, or NULL */
     char albedo[PATH_MAX], normal[PATH_MAX]; /* its files' final names */
     const char *albedo_out, *normal_out;     /* where they are written (staged, once reserved) */
     char mtl[PATH_MAX];                      /* a textured OBJ's MTL: final name ... */
     const char *mtl_out;                     /* ... and where it is written */
 } hand_surface_plan;
-int hand_surface_plan_parse(const cli_command *cmd, const cli_args *args, hand_surface_plan *plan);
+int hand_surface_plan_parse(const cli_command *cmd, const cli_args *args, const hand_params *params,
+                            hand_surface_plan *plan);
 /* Refuses (exit 2, naming --triangles and --texture-size) a plan whose surface, its levels
  * of detail (lod_count) and, when `bake`, its texture need more than --max-memory. */
 int hand_surface_plan_check_memory(const cli_args *args, const hand_surface_plan *plan,
@@ -62,8 +62,8 @@ typedef struct hand_animate_surface {
 } hand_animate_surface;
 /* Parses and checks them against `frame_count` frames (before any work); free with
  * hand_animate_surface_free. */
-int hand_animate_surface_parse(const cli_command *cmd, const cli_args *args, int frame_count,
-                               hand_animate_surface *s);
+int hand_animate_surface_parse(const cli_command *cmd, const cli_args *args,
+                               const hand_params *params, int frame_count, hand_animate_surface *s);
 void hand_animate_surface_free(hand_animate_surface *s);
 int hand_animate_surface_write(const hand_animate_surface *s, const sk_hand_skeleton *skel,
                                const double *dofs, int frame_count, double fps);

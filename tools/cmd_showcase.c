@@ -51,7 +51,46 @@ static int load_melody(const char *path, double duration, sk_melody *melody)
     return 0;
 }
 
-static int load_stage(const cli_command *command, const cli_args *args, sk_render_scene_desc *stage)
+/* The showcase's own keys: the object "showcase" of the stage preset (--set showcase.fps=30),
+   beside the stage scene's keys. */
+static const sk_schema_field k_part_fields[] = {
+    {.key = "showcase",
+     .type = SK_FIELD_OBJECT,
+     .offset = 0,
+     .schema = &sk_showcase_schema,
+     .doc = "the frames, the hand, the keyboard, how it is played and the tone"},
+};
+static const sk_schema k_part_schema = {"showcase", k_part_fields, 1, NULL};
+
+static const cli_key_option k_keys[] = {
+    {"spp", "showcase.samples", NULL, false},
+    {"fps", "showcase.fps", NULL, true},
+    {"texture-size", "showcase.texture_size", NULL, false},
+    {"hand-triangles", "showcase.hand_triangles", NULL, false},
+};
+
+/* --size WxH: showcase.width and showcase.height. */
+static int set_size(const cli_command *command, const cli_args *args, sk_preset *tree)
+{
+    if (!cli_has(command, args, "size")) return 0;
+    const sk_schema_field *w = cli_find_key(command, "showcase.width");
+    int width, height;
+    int status = cli_get_size(command, args, "size", 0, 0, (int)w->max, &width, &height);
+    if (status) return status;
+    if (width < w->min || height < w->min)
+        return cli_fail(CLI_EXIT_USAGE, "--size %dx%d: at least %gx%g", width, height, w->min,
+                        w->min);
+    char json[32];
+    snprintf(json, sizeof json, "%d", width);
+    if ((status = cli_set_key(tree, "showcase.width", json))) return status;
+    snprintf(json, sizeof json, "%d", height);
+    return cli_set_key(tree, "showcase.height", json);
+}
+
+/* The stage scene (--preset, default presets/showcase/stage.json) and the showcase's own
+   keys of the same tree (its "showcase" object, the key options, --set). */
+static int load_stage(const cli_command *command, const cli_args *args, sk_render_scene_desc *stage,
+                      sk_showcase_desc *numbers)
 {
     cli_args stage_args = *args;
     if (!stage_args.common.preset) stage_args.common.preset = "stage";
@@ -61,12 +100,18 @@ static int load_stage(const cli_command *command, const cli_args *args, sk_rende
         snprintf(path, sizeof path, "%s", name);
     else if (!cli_find_preset("showcase", name, path, sizeof path))
         snprintf(path, sizeof path, "%s", name);
-    sk_preset *tree = NULL;
+    sk_preset *tree = NULL, *part = NULL;
     int status = cli_load_preset(command, &stage_args, &tree);
     if (status) return status;
     sk_error err = {0};
+    memset(numbers, 0, sizeof *numbers);
+    sk_result r = sk_preset_detach(tree, "showcase", &part, &err);
+    if (r == SK_OK) r = sk_preset_bind(part, &k_part_schema, numbers, &err);
+    sk_preset_free(part);
+    /* the stated defaults (the showcase resolves the same) */
+    sk_schema_apply_defaults(&sk_showcase_schema, numbers);
     sk_render_load_desc load = {.scene_path = path, .find_preset = find_preset};
-    sk_result r = sk_render_scene_desc_bind(tree, &load, stage, &err);
+    if (r == SK_OK) r = sk_render_scene_desc_bind(tree, &load, stage, &err);
     sk_preset_free(tree);
     if (r != SK_OK) return cli_fail_error(&err);
     return 0;
@@ -184,17 +229,11 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
         return cli_fail(CLI_EXIT_USAGE,
                         "no melody: give --melody FILE (e.g. presets/showcase/twinkle.txt)");
     if (!args->common.output) return cli_fail(CLI_EXIT_USAGE, "no output folder: give -o DIR");
-    int status, width, height;
-    long long spp, fps;
+    int status;
     double duration;
-    if ((status = cli_get_size(command, args, "size", 1280, 720, 8192, &width, &height)) ||
-        (status = cli_get_int(command, args, "spp", 16, 1, 1024, &spp)) ||
-        (status = cli_get_int(command, args, "fps", 24, 1, 240, &fps)) ||
-        (status =
+    if ((status =
              cli_get_double(command, args, "duration", 0, 0.001, SK_MELODY_MAX_SECONDS, &duration)))
         return status;
-    if (width < 16 || height < 16)
-        return cli_fail(CLI_EXIT_USAGE, "--size %dx%d: at least 16x16", width, height);
     int first = 0, last = -1;
     const char *frames = cli_get(command, args, "frames");
     if (frames && (status = parse_frames(frames, &first, &last))) return status;
@@ -217,32 +256,25 @@ static int run(const cli_command *command, const cli_args *args, run_state *s)
     s->stage = calloc(1, sizeof *s->stage);
     s->constraints = calloc(1, sizeof *s->constraints);
     if (!s->stage || !s->constraints) return cli_fail(CLI_EXIT_RUNTIME, "out of memory");
-    if ((status = load_stage(command, args, s->stage))) return status;
+    sk_showcase_desc desc;
+    if ((status = load_stage(command, args, s->stage, &desc))) return status;
     sk_hand_skeleton skeleton;
     if (sk_hand_skeleton_init(&skeleton, NULL, &err) != SK_OK) return cli_fail_error(&err);
     if ((status = load_constraints(command, args, &skeleton, s->constraints))) return status;
     if ((status = load_forearm(command, args, &s->forearm))) return status;
     cli_apply_threads(args);
-    long long texture, triangles;
-    if ((status = cli_get_int(command, args, "texture-size", 1024, 64, 8192, &texture)) ||
-        (status = cli_get_int(command, args, "hand-triangles", 8000, 500, 200000, &triangles)))
-        return status;
-    if ((status = check_memory(args, &skeleton, s->forearm, width, height, (int)texture,
-                               (int)triangles)))
+    if ((status = check_memory(args, &skeleton, s->forearm, desc.width, desc.height,
+                               desc.texture_size, desc.hand_triangles)))
         return status;
     if ((status = hand_load_skin("back-of-hand", &s->back_skin)) ||
         (status = hand_load_skin("palm", &s->palm_skin)))
         return status;
-    sk_showcase_desc desc = {0};
     desc.back_skin = s->back_skin;
     desc.palm_skin = s->palm_skin;
-    desc.texture_size = (int)texture;
-    desc.hand_triangles = (int)triangles;
     desc.melody = &s->melody;
     desc.stage = s->stage;
     desc.constraints = s->constraints;
     desc.forearm = s->forearm;
-    desc.width = width, desc.height = height, desc.samples = (int)spp, desc.fps = (double)fps;
     if (sk_showcase_create(&desc, &s->showcase, &err) != SK_OK) return cli_fail_error(&err);
     int count = sk_showcase_frame_count(s->showcase);
     if (last >= count || first >= count)
@@ -317,6 +349,10 @@ const cli_command cmd_showcase = {
     .preset_module = "showcase",
     .schema = &sk_render_schema,
     .run = run_showcase,
+    .key_options = k_keys,
+    .key_option_count = (int)(sizeof k_keys / sizeof k_keys[0]),
+    .set_option_keys = set_size,
+    .part_schema = &k_part_schema,
 };
 
 /* ------------------------------------------------------------ showcase midi */

@@ -1,6 +1,6 @@
-/* Options shared by the `shitsukan hand ...` commands: the skeleton from --side,
- * --hand-length, --hand-breadth and --anatomy, and "DOF=value" assignments. Argument
- * parsing only. */
+/* Options shared by the `shitsukan hand ...` commands: the skeleton from its keys
+ * (hand.side, hand.hand_length_mm, hand.hand_breadth_mm: hand_params.h) and --anatomy, and
+ * "DOF=value" assignments. Argument parsing only. */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -9,19 +9,9 @@
 
 #include "hand_args.h"
 
-static int parse_side(const char *text, sk_hand_side *side)
-{
-    if (!text || strcmp(text, "right") == 0)
-        *side = SK_HAND_SIDE_RIGHT;
-    else if (strcmp(text, "left") == 0)
-        *side = SK_HAND_SIDE_LEFT;
-    else
-        return cli_fail(CLI_EXIT_USAGE, "--side '%s' must be right or left", text);
-    return 0;
-}
-
-int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_side side,
-                        double length_mm, double breadth_mm, sk_hand_skeleton *skel)
+int hand_build_skeleton(const cli_command *cmd, const cli_args *args,
+                        const sk_hand_skeleton_desc *given, sk_hand_side side, double length_mm,
+                        double breadth_mm, sk_hand_skeleton *skel)
 {
     sk_error err = {0};
     sk_hand_anatomy anatomy;
@@ -32,15 +22,10 @@ int hand_build_skeleton(const cli_command *cmd, const cli_args *args, sk_hand_si
             return cli_fail_error(&err);
         desc.anatomy = &anatomy;
     }
-    double hl = length_mm, hb = breadth_mm;
-    int rc = cli_get_double(cmd, args, "hand-length", hl, 60, 400, &hl);
-    if (rc == 0) rc = cli_get_double(cmd, args, "hand-breadth", hb, 30, 200, &hb);
-    if (rc) return rc;
-    const char *side_text = cli_get(cmd, args, "side");
-    if (side_text && (rc = parse_side(side_text, &side))) return rc;
-    desc.side = side;
-    desc.hand_length_mm = hl;
-    desc.hand_breadth_mm = hb;
+    /* the keys given (options, presets, --set), else the fallbacks (e.g. an animation's) */
+    desc.side = given->side ? given->side : side;
+    desc.hand_length_mm = given->hand_length_mm ? given->hand_length_mm : length_mm;
+    desc.hand_breadth_mm = given->hand_breadth_mm ? given->hand_breadth_mm : breadth_mm;
     if (sk_hand_skeleton_init(skel, &desc, &err) != SK_OK) return cli_fail_error(&err);
     return 0;
 }

@@ -26,6 +26,7 @@
 
 #include "shitsukan/bvh.h"
 #include "shitsukan/core.h"
+#include "shitsukan/schema.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -224,7 +225,7 @@ typedef struct sk_hand_lut_desc {
     int resolution;            /* grid nodes per axis; 0 = 100; range [8, 1024] */
     double margin;             /* grid extends this fraction of the sample range beyond it on
                                   every side; 0 = 0.25; range [0, 4] */
-    double weight;             /* multiplies the potential; 0 = 1; range (0, 1e6] */
+    double weight;             /* multiplies the potential; 0 = 1; range [1e-6, 1e6] */
     sk_hand_lut_interp interp; /* 0 = Hermite */
 } sk_hand_lut_desc;
 
@@ -415,7 +416,7 @@ typedef struct sk_hand_potential_desc {
     int components;        /* mixture: 0 = chosen on held-out samples; else fixed [1, 16] */
     double prior_strength; /* pseudo-samples of the base set's Gaussian that the mean and
                               covariance shrink toward; 0 = chosen by held-out
-                              likelihood from 1, 4, 16, 64, 256; range [0, 1e7] (a
+                              likelihood from 1, 4, 16, 64, 256; range [-1, 1e7] (a
                               negative value means none) */
     uint64_t seed;         /* mixture initialisation */
     const sk_hand_constraints *base; /* shrinkage target and the set kept on DOFs outside
@@ -433,7 +434,7 @@ typedef struct sk_hand_potential_desc {
                                         is a spring's, 20 degrees, weighs 1); THESIS = eq.
                                         3.18 over the chosen rows */
     double weight_scale;             /* multiplies the fitted rows' weights; 0 = chosen on held-out
-                                        samples from 1/4, 1/2, 1, ..., 64; range [0, 1e6] */
+                                        samples from 1/4, 1/2, 1, ..., 64; range [1e-6, 1e6] */
     int max_pairs;                   /* fitted rows at most; 0 = 16; range [1, 64] */
 } sk_hand_potential_desc;
 
@@ -573,7 +574,7 @@ typedef struct sk_hand_evaluation_desc {
     int pair_count;
     sk_hand_lut_desc lut;              /* LUT */
     sk_hand_weight_rule weight_rule;   /* PAIRS */
-    double weight_scale;               /* PAIRS: 0 = 1; range (0, 1e6] */
+    double weight_scale;               /* PAIRS: 0 = 1; range [1e-6, 1e6] */
     const sk_hand_solver_desc *solver; /* NULL = defaults */
     sk_progress progress;
 } sk_hand_evaluation_desc;
@@ -634,7 +635,7 @@ typedef struct sk_hand_synthetic_desc {
     int people;       /* 0 = 6; range [1, 100] */
     int trials;       /* trials per person and grasp type; 0 = 2; range [1, 100] */
     int frames;       /* frames per trial; 0 = 50; range [5, 1000] */
-    double noise_deg; /* glove noise per sample; 0 = 2; range [0, 20] (negative = 0) */
+    double noise_deg; /* glove noise per sample; 0 = 2; [-1, 20], negative = none */
     uint64_t seed;
 } sk_hand_synthetic_desc;
 
@@ -722,6 +723,13 @@ sk_result sk_hand_pose_write_json(const sk_hand_skeleton *skeleton,
 
 /* DOFs that an animation drives: pinned, or given a non-zero torque, in some key. */
 void sk_hand_animation_driven(const sk_hand_animation *anim, bool driven[SK_HAND_DOF_COUNT]);
+
+/* ------------------------------------------------------------- schemas */
+/* Preset schemas of the descs above (keys, ranges and defaults, stated once; the checks
+ * read them): sk_hand_skeleton_desc, sk_hand_lut_desc, sk_hand_solver_desc, the scalar keys
+ * of sk_hand_potential_desc and sk_hand_evaluation_desc, sk_hand_synthetic_desc. */
+extern const sk_schema sk_hand_skeleton_schema, sk_hand_lut_schema, sk_hand_solver_schema,
+    sk_hand_potential_schema, sk_hand_evaluation_schema, sk_hand_synthetic_schema;
 
 #ifdef __cplusplus
 }

@@ -250,7 +250,7 @@ typedef struct sk_hand_slices_desc {
                                  the default cast: 10 points per segment then give the thesis's
                                  about 4000 vertices); range [2, 2000] */
     double half_thickness_mm; /* points this near a plane are projected onto it; 0 = 0.5;
-                                 range (0, 50] */
+                                 range [1e-6, 50] */
 } sk_hand_slices_desc;
 
 /* One projected point of a slice: its link and its polar coordinates in the slice plane
@@ -336,7 +336,7 @@ typedef struct sk_hand_patch_fit_desc {
     double
         tolerance; /* stop when no parameter moves more than this; 0 = 1e-3; range [1e-12, 0.1] */
     double min_improvement; /* ... or when a correction lowers the RMS error by less than this
-                               fraction; 0 = 1e-3; range [0, 0.5] (negative = never) */
+                               fraction; 0 = 1e-3; range [-1, 0.5] (negative = never) */
     bool no_correction;     /* true = the least-squares fit of the chord-length parameters only */
 } sk_hand_patch_fit_desc;
 
@@ -573,6 +573,9 @@ sk_result sk_hand_draw_patches_posed(const sk_hand_patch_set *set, const sk_hand
                                      const sk_hand_frames *pose,
                                      const sk_hand_patch_weights *weights, sk_image *out,
                                      sk_error *err);
+
+/* Preset schemas (src/models/hand_scan/schema.c): sk_hand_scan_desc and its scanner. */
+extern const sk_schema sk_hand_scan_schema, sk_hand_scanner_schema;
 
 #ifdef __cplusplus
 }

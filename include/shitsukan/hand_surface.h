@@ -272,7 +272,7 @@ typedef struct sk_hand_texture_desc {
     double relief_scale;      /* multiplies the microrelief's height; 0 = 1; [0, 100] */
     double crease_depth_mm;   /* depth of the joint and palm creases; 0 = 0.25; [0, 5] */
     double seam_width;        /* palm and back blend where |normal.z| < this; 0 = 0.3;
-                                 (0, 1] */
+                                 [1e-3, 1] */
 } sk_hand_texture_desc;
 
 /* Bakes the albedo (RGB, linear) and the tangent-space normal map (RGB, components
@@ -282,6 +282,13 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *surface, const sk_hand_tex
 /* The memory the bake peaks at (bytes; desc may be NULL): the texels being baked and the
  * two maps, 88 bytes a texel of the atlas (measured: 1.1 GB peak at 4096 x 4096). */
 double sk_hand_texture_memory(const sk_hand_texture_desc *desc);
+
+/* Preset schemas (src/models/hand_surface/schema.c) of sk_hand_surface_desc and
+ * sk_hand_texture_desc, and the preset names of sk_hand_skinning and sk_hand_gltf_material
+ * ("rigid", "lbs", "dqs"; "blend", "pbr"; index = value, NULL-terminated). */
+extern const sk_schema sk_hand_surface_schema, sk_hand_texture_schema;
+extern const char *const sk_hand_skinning_names[];
+extern const char *const sk_hand_gltf_material_names[];
 
 #ifdef __cplusplus
 }

@@ -15,10 +15,10 @@ extern "C" {
 #endif
 
 typedef struct sk_noise_map_desc {
-    uint64_t seed;   /* default 0 */
-    int width;       /* full map width in pixels; 0 = 512; range 1..65536 */
-    int height;      /* full map height in pixels; 0 = width; range 1..65536 */
-    float cells;     /* noise lattice cells across the width (base frequency); 0 = 8; (0, 4096] */
+    uint64_t seed; /* default 0 */
+    int width;     /* full map width in pixels; 0 = 512; range 1..65536 */
+    int height;    /* full map height in pixels; 0 = width; range 1..65536 */
+    float cells;   /* noise lattice cells across the width (base frequency); 0 = 8; [1e-3, 4096] */
     sk_fbm_desc fbm; /* octaves, lacunarity, gain; zero fields = 5, 2, 0.5 */
     bool seamless;   /* wrap the lattice so the map tiles; default false (presets turn it on) */
     sk_progress progress;

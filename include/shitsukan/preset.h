@@ -1,7 +1,7 @@
 /* shitsukan presets: JSON parameter sets bound to a module's desc struct through a
- * schema (a table of fields with types, ranges and docs), with command-line overrides
- * ("--set key.path=value"). Errors name the full key path, e.g.
- * "levels[1].profile[0].points[2][0] = 12 is out of range [0, 10]".
+ * schema (shitsukan/schema.h: a table of fields with types, ranges, defaults and docs),
+ * with command-line overrides ("--set key.path=value"). Errors name the full key path,
+ * e.g. "levels[1].profile[0].points[2][0] = 12 is out of range [0, 10]".
  *
  * Thread-safety: a schema is immutable data; an sk_preset belongs to one thread. */
 #ifndef SHITSUKAN_PRESET_H
@@ -11,52 +11,11 @@
 #include <stdio.h>
 
 #include "shitsukan/core.h"
+#include "shitsukan/schema.h" /* the schema types (sk_schema, sk_schema_field) */
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-typedef enum sk_field_type {
-    SK_FIELD_FLOAT = 1, /* float; JSON number in [min, max], stored times `scale` */
-    SK_FIELD_DOUBLE,    /* double; as FLOAT */
-    SK_FIELD_INT,       /* int; JSON integer in [min, max] */
-    SK_FIELD_SEED,      /* uint64_t; JSON integer in [0, 2^53] */
-    SK_FIELD_BOOL,      /* bool; JSON true/false */
-    SK_FIELD_ENUM,      /* int; JSON string, one of `names` (index = stored value) */
-    SK_FIELD_STRING,    /* char[count]; JSON string shorter than count */
-    SK_FIELD_FLOATS,    /* float[count]; JSON array of numbers, each in [min, max]; with a
-                           count_offset the length may be min_count..count and is stored
-                           as an int there, otherwise it must be exactly count */
-    SK_FIELD_OBJECT,    /* nested struct described by `schema` */
-    SK_FIELD_ARRAY      /* struct[count] of `elem_size` bytes, each described by `schema`;
-                           length min_count..count stored as an int at count_offset */
-} sk_field_type;
-
-struct sk_schema;
-
-typedef struct sk_schema_field {
-    const char *key; /* JSON key; NULL for the single field of an array element that
-                        is itself a value (e.g. a point [x, z] in a list of points) */
-    sk_field_type type;
-    size_t offset;       /* offsetof(desc, field) */
-    double min, max;     /* accepted range of numbers (as written in JSON, before scale) */
-    double scale;        /* stored = JSON value * scale (e.g. SK_DEG_TO_RAD); 0 = 1 */
-    int count;           /* STRING: buffer size; FLOATS/ARRAY: maximum length */
-    int min_count;       /* FLOATS/ARRAY with count_offset: minimum length */
-    size_t count_offset; /* FLOATS/ARRAY: offsetof the int length; SK_FIELD_FIXED = fixed */
-    size_t elem_size;    /* ARRAY: sizeof one element */
-    const struct sk_schema *schema; /* OBJECT / ARRAY element */
-    const char *const *names;       /* ENUM: value names, NULL-terminated */
-    const char *doc;                /* one line: meaning, unit and default */
-} sk_schema_field;
-
-#define SK_FIELD_FIXED ((size_t)-1)
-
-typedef struct sk_schema {
-    const char *name; /* e.g. "skin" */
-    const sk_schema_field *fields;
-    int field_count;
-} sk_schema;
 
 /* Keys accepted (and ignored) in every JSON object for documentation: "description",
  * "source", "notes", "figure" (strings or arrays of strings). Modules that read their own
@@ -87,6 +46,10 @@ sk_result sk_preset_set(sk_preset *preset, const char *assignment, sk_error *err
 sk_result sk_preset_bind(const sk_preset *preset, const sk_schema *schema, void *desc,
                          sk_error *err);
 
+/* Moves the top-level `key` (if present) of `preset` into a new preset `out` holding only
+ * it (an empty one when absent), so that two schemas bind the two parts. */
+sk_result sk_preset_detach(sk_preset *preset, const char *key, sk_preset **out, sk_error *err);
+
 /* Top-level string value of `key` (e.g. "description"), or NULL. */
 const char *sk_preset_get_string(const sk_preset *preset, const char *key);
 
@@ -96,13 +59,13 @@ char *sk_schema_to_json(const sk_schema *schema, const void *desc);
 /* The schema as JSON (free with free()), for interfaces that build a control per key:
  * {"name": ..., "fields": [{"key", "type" (float double int seed bool enum string floats
  * object array), "min", "max" (numbers, as written in JSON), "min_count", "max_count"
- * (floats, arrays), "max_length" (strings), "names" (enums), "doc", "fields" (objects,
- * array elements; an element field with "key": null is the element itself)}]}. */
+ * (floats, arrays), "max_length" (strings), "names" (enums), "doc", "default" (in words,
+ * e.g. "0 = 150"), "fields" (objects, array elements; an element field with "key": null
+ * is the element itself)}]}. "min" is the least a JSON value may be (0 for a key whose 0
+ * means its default). */
 char *sk_schema_describe_json(const sk_schema *schema);
 
-/* Writes one line per key path with its type, range and doc ("levels[].jitter  float
- * [0, 1]  maximum jitter as a fraction of the spacing; default 0"). */
-void sk_schema_print(const sk_schema *schema, FILE *out);
+/* sk_schema_print, sk_schema_print_markdown (--help-keys): in shitsukan/schema.h. */
 
 #ifdef __cplusplus
 }

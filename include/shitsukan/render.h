@@ -121,7 +121,7 @@ typedef struct sk_render_camera_desc {
     float target[3];                 /* point looked at (the image centre) */
     float up[3];                     /* a direction that is up in the image; all 0 = +y */
     float fov;          /* perspective: vertical field of view in radians (key "fov_deg");
-                           0 = 40 degrees; (0, 179] degrees */
+                           0 = 40 degrees; [0.001, 179] degrees */
     float ortho_height; /* orthographic: height of the view in scene units; 0 = what the
                            perspective fov sees at the target's distance */
 } sk_render_camera_desc;

@@ -220,8 +220,8 @@ sk_result sk_melody_choose_fingers(sk_melody *melody, const sk_piano *piano,
  * Weinreich 1977) until the damper ends it after the note's release. Deterministic. */
 typedef struct sk_synth_desc {
     int sample_rate;      /* 0 = 44100; [8000, 192000] */
-    double gain;          /* level of a note of velocity 127; 0 = 0.25; (0, 1] */
-    double inharmonicity; /* B at C4 (scaled by pitch); 0 = 0.0004; [0, 0.01] (negative = 0) */
+    double gain;          /* level of a note of velocity 127; 0 = 0.25; [1e-6, 1] */
+    double inharmonicity; /* B at C4 (scaled by pitch); 0 = 0.0004; [-1, 0.01], negative = 0 */
     double decay_s;       /* aftersound time constant at C4; 0 = 3; [0.1, 60] */
     double release_s;     /* damper time constant; 0 = 0.1; [0.005, 5] */
     double tail_s;        /* sound kept after the last note ends; 0 = 1; [0, 30] */
@@ -256,7 +256,7 @@ typedef struct sk_performance_desc {
                                 after (Gaussian width of the blend of their positions);
                                 0 = 0.04; [0.01, 2] */
     double strike_drop_mm;   /* the wrist gives way this much at a strike and recovers;
-                                0 = 1.5; [0, 10] (negative = none) */
+                                0 = 1.5; [-1, 10], negative = none */
     double tip_radius_mm[5]; /* fingertip pads (spheres at the ends of the distal links);
                                all 0 = measured on the hand surface: the largest distance
                                of its flesh from the distal link's axis near the tip, so
@@ -419,6 +419,10 @@ sk_result sk_showcase_run(sk_showcase *showcase, const sk_showcase_run_desc *des
 /* Writes the whole melody's sound as a WAV (44.1 kHz by default, 16-bit mono) of the
  * showcase's length. */
 sk_result sk_showcase_write_wav(const sk_showcase *showcase, const char *path, sk_error *err);
+
+/* Preset schema of the numbers of sk_showcase_desc (src/products/showcase/schema.c): the
+ * frames, the hand's surface and texture, piano, fingering, performance and synth. */
+extern const sk_schema sk_showcase_schema;
 
 #ifdef __cplusplus
 }

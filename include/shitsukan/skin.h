@@ -59,7 +59,7 @@ typedef struct sk_skin_level {
     sk_skin_jitter jitter; /* default uniform */
     float jitter_rate;     /* maximum jitter / spacing, [0, 1]; default 0 (exact lattice) */
     float spacing_mm;      /* lattice spacing before stretch, (0, 1000]; 0 = default: level 1
-                              0.5 mm, each deeper level 0.4 x the level above */
+                              0.8 mm, each deeper level 0.4 x the level above */
     /* Edge perturbation by midpoint displacement (parameter 2): at division depth n the
        midpoint moves by V = A 2^(-n h) Rnd L. */
     float perturb_rate;  /* A, [0, 1]; default 0 (straight edges) */
@@ -104,7 +104,7 @@ typedef struct sk_skin_shading {
     float sun_fraction;    /* share of the directional light in the lighting, the rest
                               is uniform sky light; (0, 1]; 0 = default 0.85 */
     float specular;        /* specular strength, [0, 1]; 0 = default 0.06 */
-    float shininess;       /* Blinn-Phong exponent, [1, 1000]; 0 = default 24 */
+    float shininess;       /* Blinn-Phong exponent, (0, 1000]; 0 = default 24 */
     bool no_specular;      /* true: Lambert only */
 } sk_skin_shading;
 
@@ -147,8 +147,10 @@ typedef struct sk_skin_desc {
 /* The desc with every zero field replaced by its default (the values the model uses). */
 sk_skin_desc sk_skin_desc_resolved(const sk_skin_desc *desc);
 
-/* Checks a desc (resolved or not). Errors name the key path as in presets, e.g.
- * "levels[1].segments[0].points[2][0] = 12 is out of range [0, 10]". */
+/* Checks a desc (resolved or not): every range of sk_skin_schema, then the rules it
+ * cannot state (a profile's x from 0 to 10, non-decreasing, its segments chained; pores
+ * on an existing level). Errors name the key path as in presets, e.g.
+ * "levels[1].profile[0].points[2][0] = 12 is out of range [0, 10]". */
 sk_result sk_skin_desc_validate(const sk_skin_desc *desc, sk_error *err);
 
 /* Preset schema of sk_skin_desc (keys as in presets/skin/ *.json). */

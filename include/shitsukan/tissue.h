@@ -148,7 +148,7 @@ typedef struct sk_tissue_skin_desc {
     float spacing_mm;         /* grid spacing; 0 = 4; [0.5, 50] */
     int dilations;            /* the paper's dilation passes; 0 = 3; [1, 32] */
     float dilation_radius_mm; /* reach of one pass; 0 = 1.5 spacings; [spacing, 10 spacings] */
-    float threshold;          /* isosurface level; 0 = 0.3; (0, 1) */
+    float threshold;          /* isosurface level; 0 = 0.3; (0, 0.999] */
     int smooth_iterations;    /* optional smoothing of the rest skin (the paper's
                                  future work), kept outside the tissue; 0 = none:
                                  every vertex on a grid point; [0, 200] */

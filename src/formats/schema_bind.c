@@ -114,7 +114,9 @@ static sk_result bind_number(const cJSON *item, const sk_schema_field *f, const 
 {
     if (!cJSON_IsNumber(item)) return type_error(err, path, "a number", item);
     *value = item->valuedouble;
-    return sk_check_range_f(err, path, *value, f->min, f->max);
+    double lo, hi;
+    sk_schema_field_json_range(f, &lo, &hi);
+    return sk_check_range_f(err, path, *value, lo, hi);
 }
 
 static sk_result bind_count(const sk_schema_field *f, const cJSON *item, const char *path,

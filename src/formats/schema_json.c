@@ -1,5 +1,4 @@
-/* The inverse of binding: a desc written back as JSON through its schema, and the
- * schema printed as a table of key paths, types, ranges and docs (for --help-keys) or
+/* The inverse of binding: a desc written back as JSON through its schema, and the schema
  * described as JSON (for interfaces that build a control per key). */
 #include <stdlib.h>
 #include <string.h>
@@ -103,88 +102,6 @@ char *sk_schema_to_json(const sk_schema *schema, const void *desc)
     return text;
 }
 
-static const char *type_name(const sk_schema_field *f)
-{
-    switch (f->type) {
-    case SK_FIELD_FLOAT:
-    case SK_FIELD_DOUBLE:
-        return "number";
-    case SK_FIELD_INT:
-        return "integer";
-    case SK_FIELD_SEED:
-        return "integer";
-    case SK_FIELD_BOOL:
-        return "boolean";
-    case SK_FIELD_ENUM:
-        return "string";
-    case SK_FIELD_STRING:
-        return "string";
-    case SK_FIELD_FLOATS:
-        return "numbers";
-    case SK_FIELD_OBJECT:
-        return "object";
-    case SK_FIELD_ARRAY:
-        return "array";
-    }
-    return "?";
-}
-
-static void print_fields(const sk_schema *schema, const char *prefix, FILE *out)
-{
-    for (int i = 0; i < schema->field_count; i++) {
-        const sk_schema_field *f = &schema->fields[i];
-        char path[256];
-        if (f->key)
-            snprintf(path, sizeof path, "%s%s%s", prefix, prefix[0] ? "." : "", f->key);
-        else
-            snprintf(path, sizeof path, "%s", prefix);
-        char range[160] = "";
-        switch (f->type) {
-        case SK_FIELD_FLOAT:
-        case SK_FIELD_DOUBLE:
-        case SK_FIELD_INT:
-            snprintf(range, sizeof range, "[%g, %g]", f->min, f->max);
-            break;
-        case SK_FIELD_FLOATS:
-            if (f->count_offset == SK_FIELD_FIXED)
-                snprintf(range, sizeof range, "%d x [%g, %g]", f->count, f->min, f->max);
-            else
-                snprintf(range, sizeof range, "%d..%d x [%g, %g]", f->min_count, f->count, f->min,
-                         f->max);
-            break;
-        case SK_FIELD_ENUM: {
-            size_t used = 0;
-            for (int k = 0; f->names && f->names[k]; k++) {
-                int n =
-                    snprintf(range + used, sizeof range - used, "%s%s", k ? "|" : "", f->names[k]);
-                if (n < 0 || (size_t)n >= sizeof range - used) break;
-                used += (size_t)n;
-            }
-            break;
-        }
-        case SK_FIELD_ARRAY:
-            snprintf(range, sizeof range, "%d..%d elements", f->min_count, f->count);
-            break;
-        default:
-            break;
-        }
-        if (f->type == SK_FIELD_OBJECT) {
-            print_fields(f->schema, path, out);
-        } else if (f->type == SK_FIELD_ARRAY) {
-            fprintf(out, "  %-36s %-8s %-22s %s\n", path, type_name(f), range,
-                    f->doc ? f->doc : "");
-            char elem[sizeof path + 4];
-            snprintf(elem, sizeof elem, "%s[]", path);
-            print_fields(f->schema, elem, out);
-        } else {
-            fprintf(out, "  %-36s %-8s %-22s %s\n", path, type_name(f), range,
-                    f->doc ? f->doc : "");
-        }
-    }
-}
-
-void sk_schema_print(const sk_schema *schema, FILE *out) { print_fields(schema, "", out); }
-
 static const char *field_kind(const sk_schema_field *f)
 {
     switch (f->type) {
@@ -223,13 +140,15 @@ static cJSON *describe_fields(const sk_schema *schema)
         else
             cJSON_AddNullToObject(o, "key");
         cJSON_AddStringToObject(o, "type", field_kind(f));
+        double lo, hi;
+        sk_schema_field_json_range(f, &lo, &hi);
         switch (f->type) {
         case SK_FIELD_FLOAT:
         case SK_FIELD_DOUBLE:
         case SK_FIELD_INT:
         case SK_FIELD_FLOATS:
-            cJSON_AddNumberToObject(o, "min", f->min);
-            cJSON_AddNumberToObject(o, "max", f->max);
+            cJSON_AddNumberToObject(o, "min", lo);
+            cJSON_AddNumberToObject(o, "max", hi);
             break;
         case SK_FIELD_SEED:
             cJSON_AddNumberToObject(o, "min", 0);
@@ -251,6 +170,9 @@ static cJSON *describe_fields(const sk_schema *schema)
             cJSON_AddItemToObject(o, "names", names);
         }
         if (f->doc) cJSON_AddStringToObject(o, "doc", f->doc);
+        char deflt[160];
+        sk_schema_field_default_text(f, deflt, sizeof deflt);
+        if (deflt[0]) cJSON_AddStringToObject(o, "default", deflt);
         if (f->type == SK_FIELD_OBJECT || f->type == SK_FIELD_ARRAY)
             cJSON_AddItemToObject(o, "fields", describe_fields(f->schema));
         cJSON_AddItemToArray(list, o);

@@ -211,4 +211,10 @@ void sk__join_path(const char *base, const char *name, char *out, size_t size);
 /* True if `path` ends in `ext` (".png"), ignoring case. */
 bool sk__has_extension(const char *path, const char *ext);
 
+/* ---- the parts of sk_render_schema (render_schema.c), each checked and resolved on its
+   own (the whole desc is large) */
+extern const sk_schema sk__render_object_schema, sk__render_material_schema,
+    sk__render_light_schema, sk__render_camera_schema, sk__render_environment_schema,
+    sk__render_image_schema, sk__render_film_schema;
+
 #endif

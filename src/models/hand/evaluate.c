@@ -193,6 +193,26 @@ typedef struct sums {
 
 static double rms(double sum, long long n) { return n > 0 ? sqrt(sum / (double)n) : 0.0; }
 
+/* The folds, the PCA baseline's k and the pair model's scale within the ranges
+   sk_hand_evaluation_schema states (with groups, 0 folds: one per group). */
+static sk_result resolve_counts(sk_hand_evaluation_desc *desc, int pin_set_count, sk_error *err)
+{
+    const sk_schema *schema = &sk_hand_evaluation_schema;
+    const sk_schema_field *folds = sk_schema_find(schema, "folds");
+    const sk_schema_field *pca = sk_schema_find(schema, "pca_components");
+    if (desc->folds == 0 && !desc->by_group) desc->folds = 5;
+    if (desc->pca_components == 0) desc->pca_components = (int)pca->def;
+    sk_result r =
+        sk_check_range_i(err, "folds", desc->folds, desc->by_group ? 0 : (long long)folds->min,
+                         (long long)folds->max);
+    if (r == SK_OK) r = sk_check_range_i(err, "pin sets", pin_set_count, 1, NP_MAX);
+    if (r == SK_OK) r = sk_schema_check_field(pca, desc, "pca_components", err);
+    if (r == SK_OK && desc->model == SK_HAND_EVAL_MODEL_PAIRS)
+        r = sk_schema_check_field(sk_schema_find(schema, "weight_scale"), desc, "weight_scale",
+                                  err);
+    return r;
+}
+
 /* The evaluation's settings: the description with its defaults filled in, checked. */
 static sk_result eval_settings(const sk_hand_evaluation_desc *desc_in, int pin_set_count,
                                sk_hand_evaluation_desc *out, bool *pairs_model, sk_error *err)
@@ -212,14 +232,7 @@ static sk_result eval_settings(const sk_hand_evaluation_desc *desc_in, int pin_s
     if (with_pairs && desc.pair_count > SK_HAND_EVAL_MAX_LUTS)
         return sk_fail(err, SK_ERROR_LIMIT, "%d pairs; at most %d", desc.pair_count,
                        SK_HAND_EVAL_MAX_LUTS);
-    if (desc.folds == 0 && !desc.by_group) desc.folds = 5;
-    if (desc.pca_components == 0) desc.pca_components = 6;
-    sk_result r = sk_check_range_i(err, "folds", desc.folds, desc.by_group ? 0 : 2, 1000);
-    if (r == SK_OK) r = sk_check_range_i(err, "pin sets", pin_set_count, 1, NP_MAX);
-    if (r == SK_OK)
-        r = sk_check_range_i(err, "pca_components", desc.pca_components, 1, SK_HAND_DOF_COUNT);
-    if (r == SK_OK && desc.model == SK_HAND_EVAL_MODEL_PAIRS && desc.weight_scale != 0.0)
-        r = sk_check_range_f(err, "weight_scale", desc.weight_scale, 1e-9, 1e6);
+    sk_result r = resolve_counts(&desc, pin_set_count, err);
     if (r != SK_OK) return r;
     *out = desc;
     *pairs_model = with_pairs;

@@ -24,16 +24,11 @@ sk_result sk_hand_lut_build(sk_hand_lut *lut, int dof_x, int dof_y, const double
     memset(lut, 0, sizeof *lut);
     sk_hand_lut_desc d = {0};
     if (desc) d = *desc;
-    if (d.resolution == 0) d.resolution = 100;
-    if (d.margin == 0.0) d.margin = 0.25;
-    if (d.weight == 0.0) d.weight = 1.0;
-    if (d.interp == SK_HAND_LUT_INTERP_DEFAULT) d.interp = SK_HAND_LUT_INTERP_HERMITE;
+    sk_schema_apply_defaults(&sk_hand_lut_schema, &d);
     if (d.interp != SK_HAND_LUT_INTERP_HERMITE && d.interp != SK_HAND_LUT_INTERP_BILINEAR)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "interp = %d is not a lookup interpolation",
                        (int)d.interp);
-    sk_result r = sk_check_range_i(err, "resolution", d.resolution, 8, 1024);
-    if (r == SK_OK) r = sk_check_range_f(err, "margin", d.margin, 0.0, 4.0);
-    if (r == SK_OK) r = sk_check_range_f(err, "weight", d.weight, 1e-12, 1e6);
+    sk_result r = sk_schema_check(&sk_hand_lut_schema, &d, "", err);
     if (r == SK_OK) r = sk_check_range_i(err, "sample count", count, 1, 10000000);
     if (r != SK_OK) return r;
     if (!sk_hand_dof(dof_x) || !sk_hand_dof(dof_y) || dof_x == dof_y)

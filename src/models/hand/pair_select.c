@@ -191,11 +191,15 @@ sk_result sk__hand_pairs_fit(sk_hand_potential *out, const sk_hand_skeleton *ske
         desc->weight_rule ? desc->weight_rule : SK_HAND_WEIGHT_INVERSE_VARIANCE;
     if (rule != SK_HAND_WEIGHT_THESIS && rule != SK_HAND_WEIGHT_INVERSE_VARIANCE)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "weight rule %d is unknown", (int)rule);
-    int max_pairs = desc->max_pairs ? desc->max_pairs : 16;
-    sk_result r = sk_check_range_i(err, "max_pairs", max_pairs, 1, 64);
+    const sk_schema *schema = &sk_hand_potential_schema;
+    const sk_schema_field *pairs_field = sk_schema_find(schema, "max_pairs");
+    sk_hand_potential_desc dd = *desc;
+    if (dd.max_pairs == 0) dd.max_pairs = (int)pairs_field->def;
+    int max_pairs = dd.max_pairs;
+    sk_result r = sk_schema_check_field(pairs_field, &dd, "max_pairs", err);
     if (r == SK_OK) r = sk_check_range_i(err, "pair_count", desc->pair_count, 0, 256);
-    if (r == SK_OK && desc->weight_scale != 0.0)
-        r = sk_check_range_f(err, "weight_scale", desc->weight_scale, 1e-9, 1e6);
+    if (r == SK_OK)
+        r = sk_schema_check_field(sk_schema_find(schema, "weight_scale"), &dd, "weight_scale", err);
     if (r != SK_OK) return r;
     int at[SK_HAND_DOF_COUNT];
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) at[i] = -1;

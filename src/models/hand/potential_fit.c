@@ -162,6 +162,12 @@ static sk_result to_thesis_form(const sk_hand_skeleton *skel, const sk_hand_cons
 
 static const double PRIOR_GRID[] = {1, 4, 16, 64, 256};
 
+/* One key of the desc within the range sk_hand_potential_schema states. */
+static sk_result check_key(const sk_hand_potential_desc *d, const char *key, sk_error *err)
+{
+    return sk_schema_check_field(sk_schema_find(&sk_hand_potential_schema, key), d, key, err);
+}
+
 void sk__hand_fit_data_free(sk__hand_fit_data *fd)
 {
     free(fd->x);
@@ -174,11 +180,7 @@ sk_result sk__hand_fit_prepare(sk__hand_fit_data *fd, const sk_hand_skeleton *sk
 {
     memset(fd, 0, sizeof *fd);
     const sk_hand_potential_desc dd = *desc;
-    sk_result r = SK_OK;
-    if (!isnan(dd.prior_strength) && dd.prior_strength > 1e7)
-        r = sk_check_range_f(err, "prior_strength", dd.prior_strength, -INFINITY, 1e7);
-    if (r == SK_OK && isnan(dd.prior_strength))
-        r = sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "prior_strength is not a number");
+    sk_result r = check_key(&dd, "prior_strength", err);
     if (r == SK_OK)
         r = sk_check_range_i(err, "pin_set_count", dd.pin_set_count, 0, SK_HAND_EVAL_MAX_PIN_SETS);
     if (r != SK_OK) return r;
@@ -349,11 +351,10 @@ sk_result sk_hand_potential_fit(sk_hand_potential *out, const sk_hand_skeleton *
         dd.method != SK_HAND_POTENTIAL_PAIRS)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "method = %d is not gaussian, mixture or pairs", (int)dd.method);
-    if (dd.max_components == 0) dd.max_components = 12;
-    sk_result r = sk_check_range_i(err, "max_components", dd.max_components, 1,
-                                   SK_HAND_POTENTIAL_MAX_COMPONENTS);
-    if (r == SK_OK)
-        r = sk_check_range_i(err, "components", dd.components, 0, SK_HAND_POTENTIAL_MAX_COMPONENTS);
+    if (dd.max_components == 0)
+        dd.max_components = (int)sk_schema_find(&sk_hand_potential_schema, "max_components")->def;
+    sk_result r = check_key(&dd, "max_components", err);
+    if (r == SK_OK) r = check_key(&dd, "components", err);
     if (r != SK_OK) return r;
     if (dd.method != SK_HAND_POTENTIAL_MIXTURE) dd.components = 1;
     sk__hand_fit_data *fd = malloc(sizeof *fd);

@@ -36,8 +36,11 @@ sk_result sk_hand_skeleton_init(sk_hand_skeleton *s, const sk_hand_skeleton_desc
                        (int)d.side);
     double hl = d.hand_length_mm != 0.0 ? d.hand_length_mm : a->hand_length_mm;
     double hb = d.hand_breadth_mm != 0.0 ? d.hand_breadth_mm : a->hand_breadth_mm;
-    sk_result r = sk_check_range_f(err, "hand_length_mm", hl, 60.0, 400.0);
-    if (r == SK_OK) r = sk_check_range_f(err, "hand_breadth_mm", hb, 30.0, 200.0);
+    /* the sizes (the anatomy's when 0) within the ranges of sk_hand_skeleton_schema */
+    sk_hand_skeleton_desc sized = d;
+    sized.hand_length_mm = hl;
+    sized.hand_breadth_mm = hb;
+    sk_result r = sk_schema_check(&sk_hand_skeleton_schema, &sized, "", err);
     if (r != SK_OK) return r;
     for (int i = 0; i < SK_HAND_DOF_COUNT; i++) {
         const sk_hand_dof_data *dd = &a->dof[i];

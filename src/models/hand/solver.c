@@ -11,9 +11,7 @@ static sk_hand_solver_desc resolve_desc(const sk_hand_solver_desc *desc)
 {
     sk_hand_solver_desc d = {0};
     if (desc) d = *desc;
-    if (d.max_newton_iterations == 0) d.max_newton_iterations = 500;
-    if (d.tolerance == 0.0) d.tolerance = 1e-6;
-    if (d.cache_size == 0) d.cache_size = 8;
+    sk_schema_apply_defaults(&sk_hand_solver_schema, &d);
     return d;
 }
 
@@ -23,9 +21,7 @@ sk_result sk_hand_solver_create(sk_hand_solver **out, const sk_hand_skeleton *sk
 {
     *out = NULL;
     sk_hand_solver_desc d = resolve_desc(desc);
-    sk_result r = sk_check_range_i(err, "max_newton_iterations", d.max_newton_iterations, 1, 10000);
-    if (r == SK_OK) r = sk_check_range_f(err, "tolerance", d.tolerance, 1e-15, 1.0);
-    if (r == SK_OK) r = sk_check_range_i(err, "cache_size", d.cache_size, 1, SK_HAND_MAX_CACHE);
+    sk_result r = sk_schema_check(&sk_hand_solver_schema, &d, "", err);
     if (r == SK_OK) r = sk_check_range_i(err, "lut_count", lut_count, 0, 64);
     if (r != SK_OK) return r;
     if (lut_count > 0 && !luts)

@@ -101,15 +101,9 @@ sk_result sk_hand_synthetic_grasps_csv(const sk_hand_synthetic_desc *desc, char 
     *length = 0;
     sk_hand_synthetic_desc d = {0};
     if (desc) d = *desc;
-    if (d.people == 0) d.people = 6;
-    if (d.trials == 0) d.trials = 2;
-    if (d.frames == 0) d.frames = 50;
-    if (d.noise_deg == 0.0) d.noise_deg = 2.0;
+    sk_schema_apply_defaults(&sk_hand_synthetic_schema, &d);
     if (d.noise_deg < 0.0) d.noise_deg = 0.0;
-    sk_result r = sk_check_range_i(err, "people", d.people, 1, 100);
-    if (r == SK_OK) r = sk_check_range_i(err, "trials", d.trials, 1, 100);
-    if (r == SK_OK) r = sk_check_range_i(err, "frames", d.frames, 5, 1000);
-    if (r == SK_OK) r = sk_check_range_f(err, "noise_deg", d.noise_deg, 0.0, 20.0);
+    sk_result r = sk_schema_check(&sk_hand_synthetic_schema, &d, "", err);
     if (r != SK_OK) return r;
     sk_hand_anatomy anatomy;
     sk_hand_anatomy_default(&anatomy);

@@ -130,13 +130,10 @@ sk_result sk_hand_patch_fit(const sk_vec3d *points, size_t count, double *u, dou
                             sk_hand_patch_fit_info *info, double *rms_history, sk_error *err)
 {
     sk_hand_patch_fit_desc d = desc ? *desc : (sk_hand_patch_fit_desc){0};
-    if (d.max_iterations == 0) d.max_iterations = 30;
-    if (d.tolerance == 0) d.tolerance = 1e-3;
-    if (d.min_improvement == 0) d.min_improvement = 1e-3;
+    const sk_schema *schema = sk_schema_find(&sk_hand_scan_schema, "fit")->schema;
+    sk_schema_apply_defaults(schema, &d);
     if (d.min_improvement < 0) d.min_improvement = 0;
-    sk_result r = sk_check_range_i(err, "fit.max_iterations", d.max_iterations, 1, 10000);
-    if (r == SK_OK) r = sk_check_range_f(err, "fit.tolerance", d.tolerance, 1e-12, 0.1);
-    if (r == SK_OK) r = sk_check_range_f(err, "fit.min_improvement", d.min_improvement, 0, 0.5);
+    sk_result r = sk_schema_check(schema, &d, "fit", err);
     if (r != SK_OK) return r;
     if (count < 16)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "patch fit: %zu points (16 or more needed)",

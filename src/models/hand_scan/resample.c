@@ -371,15 +371,9 @@ static sk_result resample_settings(const sk_hand_resample_desc *desc, sk_hand_re
                                    sk_error *err)
 {
     *d = desc ? *desc : (sk_hand_resample_desc){0};
-    if (d->mode == SK_HAND_RESAMPLE_DEFAULT) d->mode = SK_HAND_RESAMPLE_NEIGHBOURS;
-    if (d->points_per_segment == 0) d->points_per_segment = 10;
-    if (d->arc_gap_deg == 0) d->arc_gap_deg = 45;
-    sk_result r = sk_check_range_i(err, "resample.mode", d->mode, SK_HAND_RESAMPLE_NEIGHBOURS,
-                                   SK_HAND_RESAMPLE_THESIS);
-    if (r == SK_OK)
-        r = sk_check_range_i(err, "resample.points_per_segment", d->points_per_segment, 3, 256);
-    if (r == SK_OK) r = sk_check_range_f(err, "resample.arc_gap_deg", d->arc_gap_deg, 5, 180);
-    return r;
+    const sk_schema *schema = sk_schema_find(&sk_hand_scan_schema, "resample")->schema;
+    sk_schema_apply_defaults(schema, d);
+    return sk_schema_check(schema, d, "resample", err);
 }
 
 /* Every slice's points split into rings and arcs; false when out of memory. */

@@ -140,8 +140,9 @@ sk_result sk_hand_scan_run(const sk_hand_scan_input *in, const sk_hand_scan_desc
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "pose: %s is not a finite number",
                            sk_hand_dof(i)->name);
     sk_hand_scan_desc d = desc ? *desc : (sk_hand_scan_desc){0};
-    if (d.facet_splits == 0) d.facet_splits = 100;
-    sk_result r = sk_check_range_i(err, "facet_splits", d.facet_splits, 1, 1024);
+    const sk_schema_field *splits = sk_schema_find(&sk_hand_scan_schema, "facet_splits");
+    if (d.facet_splits == 0) d.facet_splits = (int)splits->def;
+    sk_result r = sk_schema_check_field(splits, &d, "facet_splits", err);
     if (r != SK_OK) return r;
     double start = sk_time_seconds();
     sk_hand_forward(in->skeleton, in->dofs, &out->frames);

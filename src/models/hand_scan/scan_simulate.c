@@ -13,37 +13,14 @@
 sk_hand_scanner_desc sk_hand_scanner_desc_resolved(const sk_hand_scanner_desc *desc)
 {
     sk_hand_scanner_desc d = desc ? *desc : (sk_hand_scanner_desc){0};
-    if (d.lines == 0) d.lines = 512;
-    if (d.points == 0) d.points = 512;
-    if (d.size_x_mm == 0) d.size_x_mm = 250;
-    if (d.size_y_mm == 0) d.size_y_mm = 200;
-    if (d.size_z_mm == 0) d.size_z_mm = 200;
-    if (d.depth_step_mm == 0) d.depth_step_mm = 0.2;
-    if (d.noise_mm == 0 && !d.no_noise) d.noise_mm = 0.05;
+    sk_schema_apply_defaults(&sk_hand_scanner_schema, &d);
     if (d.no_noise) d.noise_mm = 0;
-    if (d.triangulation_deg == 0) d.triangulation_deg = 30;
-    if (d.grazing_deg == 0) d.grazing_deg = 80;
-    if (d.table_threshold_mm == 0) d.table_threshold_mm = 1.0;
     return d;
 }
 
 sk_result sk_hand_scanner_desc_validate(const sk_hand_scanner_desc *d, sk_error *err)
 {
-    sk_result r;
-    if ((r = sk_check_range_i(err, "scanner.lines", d->lines, 8, 4096)) != SK_OK) return r;
-    if ((r = sk_check_range_i(err, "scanner.points", d->points, 8, 4096)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "scanner.size_x_mm", d->size_x_mm, 10, 2000)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "scanner.size_y_mm", d->size_y_mm, 10, 2000)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "scanner.size_z_mm", d->size_z_mm, 10, 2000)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "scanner.depth_step_mm", d->depth_step_mm, 1e-4, 10)) != SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "scanner.noise_mm", d->noise_mm, 0, 10)) != SK_OK) return r;
-    if ((r = sk_check_range_f(err, "scanner.triangulation_deg", d->triangulation_deg, 1, 80)) !=
-        SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "scanner.grazing_deg", d->grazing_deg, 10, 89.9)) != SK_OK)
-        return r;
-    return sk_check_range_f(err, "scanner.table_threshold_mm", d->table_threshold_mm, 0.01, 100);
+    return sk_schema_check(&sk_hand_scanner_schema, d, "scanner", err);
 }
 
 /* Bounds of the target's vertices after a rotation. */

@@ -34,11 +34,9 @@ sk_result sk_hand_slices_build(const sk_hand_cloud *cloud, const sk_hand_link_ge
 {
     memset(out, 0, sizeof *out);
     sk_hand_slices_desc d = desc ? *desc : (sk_hand_slices_desc){0};
-    if (d.count == 0) d.count = 75;
-    if (d.half_thickness_mm == 0) d.half_thickness_mm = 0.5;
-    sk_result r = sk_check_range_i(err, "slices.count", d.count, 2, 2000);
-    if (r == SK_OK)
-        r = sk_check_range_f(err, "slices.half_thickness_mm", d.half_thickness_mm, 1e-6, 50);
+    const sk_schema *schema = sk_schema_find(&sk_hand_scan_schema, "slices")->schema;
+    sk_schema_apply_defaults(schema, &d);
+    sk_result r = sk_schema_check(schema, &d, "slices", err);
     if (r != SK_OK) return r;
     if (cloud->count == 0)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "slices: the point cloud is empty");

@@ -178,9 +178,10 @@ sk_result sk_hand_surface_create(sk_hand_surface **out, const sk_hand_skeleton *
     sk_hand_surface_desc d = {0};
     if (desc) d = *desc;
     if (!skeleton) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skeleton is NULL");
-    int triangles = d.triangles ? d.triangles : 8000;
-    sk_result r = sk_check_range_i(err, "triangles", triangles, 500, 200000);
-    if (r == SK_OK && d.cell_mm != 0.0) r = sk_check_range_f(err, "cell_mm", d.cell_mm, 0.2, 4.0);
+    sk_hand_surface_desc sized = d;
+    sk_schema_apply_defaults(&sk_hand_surface_schema, &sized);
+    int triangles = sized.triangles;
+    sk_result r = sk_schema_check(&sk_hand_surface_schema, &sized, "", err);
     if (r != SK_OK) return r;
     sk_hand_surface *s = calloc(1, sizeof *s);
     if (!s) return sk_fail(err, SK_ERROR_OUT_OF_MEMORY, "out of memory for the hand surface");

@@ -6,10 +6,9 @@
 
 #include "models/skin/skin_internal.h"
 
-#define SK__DEFAULT_SIZE_MM 10.0f
+/* The defaults computed from other keys (the others are stated in schema.c). */
 #define SK__DEFAULT_SPACING_MM 0.8f
 #define SK__DEFAULT_SPACING_RATIO 0.4f
-#define SK__DEFAULT_DEPTH 4
 
 static void set_segment(sk_skin_segment *s, const float p[4][2])
 {
@@ -44,42 +43,21 @@ sk_skin_desc sk_skin_desc_resolved(const sk_skin_desc *desc)
         d = *desc;
     else
         memset(&d, 0, sizeof d);
-    for (int i = 0; i < 2; i++)
-        if (d.size_mm[i] == 0.0f) d.size_mm[i] = SK__DEFAULT_SIZE_MM;
     if (d.level_count == 0) default_skin_levels(&d);
+    /* the stated defaults (sk_skin_schema), of every level, and those computed here */
+    sk_schema_apply_defaults(&sk_skin_schema, &d);
     float spacing = SK__DEFAULT_SPACING_MM;
     for (int k = 0; k < SK_SKIN_MAX_LEVELS; k++) {
         sk_skin_level *lv = &d.levels[k];
-        if (lv->layout == SK_SKIN_LAYOUT_DEFAULT) lv->layout = SK_SKIN_LAYOUT_TRIANGULAR;
-        if (lv->jitter == SK_SKIN_JITTER_DEFAULT) lv->jitter = SK_SKIN_JITTER_UNIFORM;
+        sk_schema_apply_defaults(&sk__skin_level_schema, lv);
         if (lv->spacing_mm == 0.0f) lv->spacing_mm = spacing;
         spacing = lv->spacing_mm * SK__DEFAULT_SPACING_RATIO;
-        if (lv->perturb_depth == 0) lv->perturb_depth = SK__DEFAULT_DEPTH;
-        for (int i = 0; i < 2; i++)
-            if (lv->stretch[i] == 0.0f) lv->stretch[i] = 1.0f;
         if (lv->segment_count == 0) {
             static const float fig13c[4][2] = {{0, 3.0f}, {5, 3.0f}, {8, 2.5f}, {10, 0}};
             lv->segment_count = 1;
             set_segment(&lv->segments[0], fig13c);
         }
     }
-    if (d.normal_model == SK_SKIN_NORMAL_DEFAULT) d.normal_model = SK_SKIN_NORMAL_GRADIENT;
-    sk_skin_pore_kind *kinds[2] = {&d.pores.hair, &d.pores.sweat};
-    for (int i = 0; i < 2; i++) {
-        if (kinds[i]->radius_mm == 0.0f) kinds[i]->radius_mm = 0.03f;
-        if (kinds[i]->density == 0.0f) kinds[i]->density = 0.5f;
-    }
-    if (d.pores.sweat_level == 0) d.pores.sweat_level = 1;
-    sk_skin_shading *sh = &d.shading;
-    if (sh->light_elevation == 0.0f) sh->light_elevation = (float)(SK_PI / 4.0);
-    if (sh->albedo[0] == 0.0f && sh->albedo[1] == 0.0f && sh->albedo[2] == 0.0f) {
-        sh->albedo[0] = 0.80f;
-        sh->albedo[1] = 0.52f;
-        sh->albedo[2] = 0.42f;
-    }
-    if (sh->sun_fraction == 0.0f) sh->sun_fraction = 0.85f;
-    if (sh->specular == 0.0f) sh->specular = 0.06f;
-    if (sh->shininess == 0.0f) sh->shininess = 24.0f;
     return d;
 }
 
@@ -104,21 +82,16 @@ static const char *key(char buf[160], const char *fmt, ...)
         if (r_ != SK_OK) return r_;                                                                \
     } while (0)
 
-/* Parameter 5: a chain of cubic Bezier segments whose x runs monotonically from 0 to 10,
- * so Bx(t) = x' has one solution (sec. 3.2.1 (2)). */
+/* Parameter 5: a chain of cubic Bezier segments whose x runs monotonically from 0 to 10
+ * (centre to boundary), so Bx(t) = x' has one solution (sec. 3.2.1 (2)). */
 static sk_result validate_profile(const sk_skin_level *lv, int k, sk_error *err)
 {
     char name[160];
-    TRY(sk_check_range_i(err, key(name, "levels[%d].profile", k), lv->segment_count, 0,
-                         SK_SKIN_MAX_SEGMENTS));
-    if (lv->segment_count == 0) return SK_OK;
     for (int s = 0; s < lv->segment_count; s++)
-        for (int i = 0; i < 4; i++) {
+        for (int i = 0; i < 4; i++)
             TRY(sk_check_range_f(err, key(name, "levels[%d].profile[%d].points[%d][0]", k, s, i),
                                  lv->segments[s].points[i][0], 0, 10));
-            TRY(sk_check_range_f(err, key(name, "levels[%d].profile[%d].points[%d][1]", k, s, i),
-                                 lv->segments[s].points[i][1], -1000, 1000));
-        }
+    if (lv->segment_count == 0) return SK_OK;
     const sk_skin_segment *seg = lv->segments;
     if (seg[0].points[0][0] != 0.0f)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
@@ -154,60 +127,19 @@ static sk_result validate_profile(const sk_skin_level *lv, int k, sk_error *err)
     return SK_OK;
 }
 
-static sk_result validate_level(const sk_skin_level *lv, int k, sk_error *err)
-{
-    char name[160];
-    TRY(sk_check_range_i(err, key(name, "levels[%d].layout", k), lv->layout, SK_SKIN_LAYOUT_DEFAULT,
-                         SK_SKIN_LAYOUT_RANDOM));
-    TRY(sk_check_range_i(err, key(name, "levels[%d].jitter", k), lv->jitter, SK_SKIN_JITTER_DEFAULT,
-                         SK_SKIN_JITTER_NORMAL));
-    TRY(sk_check_range_f(err, key(name, "levels[%d].jitter_rate", k), lv->jitter_rate, 0, 1));
-    TRY(sk_check_range_f(err, key(name, "levels[%d].spacing_mm", k), lv->spacing_mm, 0, 1000));
-    TRY(sk_check_range_f(err, key(name, "levels[%d].perturb_rate", k), lv->perturb_rate, 0, 1));
-    TRY(sk_check_range_f(err, key(name, "levels[%d].perturb_decay", k), lv->perturb_decay, 0, 4));
-    TRY(sk_check_range_i(err, key(name, "levels[%d].perturb_depth", k), lv->perturb_depth, 0, 10));
-    for (int i = 0; i < 2; i++)
-        TRY(sk_check_range_f(err, key(name, "levels[%d].stretch[%d]", k, i), lv->stretch[i], 0,
-                             100));
-    TRY(sk_check_range_f(err, key(name, "levels[%d].stretch_angle", k), lv->stretch_angle,
-                         -2 * SK_PI, 2 * SK_PI));
-    TRY(validate_profile(lv, k, err));
-    TRY(sk_check_range_f(err, key(name, "levels[%d].roundness", k), lv->roundness, 0, 1));
-    return SK_OK;
-}
-
-static sk_result validate_pore(const sk_skin_pore_kind *p, const char *kind, sk_error *err)
-{
-    char name[160];
-    TRY(sk_check_range_f(err, key(name, "pores.%s.depth_mm", kind), p->depth_mm, 0, 10));
-    TRY(sk_check_range_f(err, key(name, "pores.%s.radius_mm", kind), p->radius_mm, 0, 10));
-    TRY(sk_check_range_f(err, key(name, "pores.%s.density", kind), p->density, 0, 1));
-    return SK_OK;
-}
-
 sk_result sk_skin_desc_validate(const sk_skin_desc *desc, sk_error *err)
 {
     char name[160];
     if (!desc) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin desc is NULL");
-    for (int i = 0; i < 2; i++)
-        TRY(sk_check_range_f(err, key(name, "size_mm[%d]", i), desc->size_mm[i], 0, 1000));
     TRY(sk_check_range_i(err, key(name, "level_count"), desc->level_count, 0, SK_SKIN_MAX_LEVELS));
-    for (int k = 0; k < desc->level_count; k++) TRY(validate_level(&desc->levels[k], k, err));
-    TRY(sk_check_range_i(err, key(name, "normal_model"), desc->normal_model, SK_SKIN_NORMAL_DEFAULT,
-                         SK_SKIN_NORMAL_PROFILE));
-    TRY(validate_pore(&desc->pores.hair, "hair", err));
-    TRY(validate_pore(&desc->pores.sweat, "sweat", err));
+    for (int k = 0; k < desc->level_count; k++)
+        TRY(sk_check_range_i(err, key(name, "levels[%d].profile", k), desc->levels[k].segment_count,
+                             0, SK_SKIN_MAX_SEGMENTS));
+    /* every range, as sk_skin_schema states it */
+    TRY(sk_schema_check(&sk_skin_schema, desc, "", err));
+    /* the rules between keys */
+    for (int k = 0; k < desc->level_count; k++) TRY(validate_profile(&desc->levels[k], k, err));
     int levels = desc->level_count ? desc->level_count : 3;
     TRY(sk_check_range_i(err, key(name, "pores.sweat_level"), desc->pores.sweat_level, 0, levels));
-    const sk_skin_shading *sh = &desc->shading;
-    TRY(sk_check_range_f(err, key(name, "shading.light_azimuth"), sh->light_azimuth, -2 * SK_PI,
-                         2 * SK_PI));
-    TRY(sk_check_range_f(err, key(name, "shading.light_elevation"), sh->light_elevation, 0,
-                         SK_PI / 2 + 1e-6));
-    for (int i = 0; i < 3; i++)
-        TRY(sk_check_range_f(err, key(name, "shading.albedo[%d]", i), sh->albedo[i], 0, 1));
-    TRY(sk_check_range_f(err, key(name, "shading.sun_fraction"), sh->sun_fraction, 0, 1));
-    TRY(sk_check_range_f(err, key(name, "shading.specular"), sh->specular, 0, 1));
-    TRY(sk_check_range_f(err, key(name, "shading.shininess"), sh->shininess, 0, 1000));
     return SK_OK;
 }

@@ -1,215 +1,114 @@
 /* Preset schema of the skin (keys of presets/skin/ *.json): the paper's six parameters per
- * level (Table 1 columns), tiling, pores and shading, with ranges and one-line docs. */
+ * level (Ishii et al. 1991, sec. 4.2, Table 1 columns), tiling, pores and shading, each key
+ * with its range, default and one-line doc, stated once: sk_skin_desc_validate and
+ * sk_skin_desc_resolved read them from here. */
 #include <stddef.h>
 
 #include "models/skin/skin_internal.h"
-
-#define F(key_, type_, field, lo, hi, doc_)                                                        \
-    {                                                                                              \
-        .key = key_, .type = type_, .offset = offsetof(STRUCT, field), .min = lo, .max = hi,       \
-        .doc = doc_                                                                                \
-    }
 
 static const char *const layout_names[] = {"default", "triangular", "square", "random", NULL};
 static const char *const jitter_names[] = {"default", "uniform", "normal", NULL};
 static const char *const normal_model_names[] = {"default", "gradient", "profile", NULL};
 
-#define STRUCT float
 static const sk_schema_field point_fields[] = {
-    {.key = NULL,
-     .type = SK_FIELD_FLOATS,
-     .offset = 0,
-     .min = -1000,
-     .max = 1000,
-     .count = 2,
-     .count_offset = SK_FIELD_FIXED,
-     .doc = "control point [x, z]: x in [0, 10] from centre to boundary, z in tenths of the "
-            "nominal cell radius"},
+    SK_SCHEMA_ELEMENT_FLOATS(2, -1000, 1000,
+                             .doc = "control point [x, z]: x in [0, 10] from centre to boundary, z "
+                                    "in tenths of the nominal cell radius"),
 };
-static const sk_schema point_schema = {"point", point_fields, 1};
-#undef STRUCT
+static const sk_schema point_schema = {"point", point_fields, 1, NULL};
 
-#define STRUCT sk_skin_segment
 static const sk_schema_field segment_fields[] = {
-    {.key = "points",
-     .type = SK_FIELD_ARRAY,
-     .offset = offsetof(sk_skin_segment, points),
-     .count = 4,
-     .min_count = 4,
-     .count_offset = SK_FIELD_FIXED,
-     .elem_size = sizeof(float[2]),
-     .schema = &point_schema,
-     .doc = "the 4 control points of one cubic Bezier segment"},
+    SK_SCHEMA_FIXED_ARRAY(sk_skin_segment, points, "points", point_schema,
+                          .doc = "the 4 control points of one cubic Bezier segment"),
 };
-static const sk_schema segment_schema = {"segment", segment_fields, 1};
-#undef STRUCT
+static const sk_schema segment_schema = SK_SCHEMA_OF("segment", sk_skin_segment, segment_fields);
 
-#define STRUCT sk_skin_level
+/* Sec. 3.2 / Fig. 11: (1) centre points, (2) perturbation, (3) stretch, (5) profile,
+ * (6) roundness; (4), the levels, is the length of `levels`. */
 static const sk_schema_field level_fields[] = {
-    {.key = "layout",
-     .type = SK_FIELD_ENUM,
-     .offset = offsetof(STRUCT, layout),
-     .names = layout_names,
-     .doc = "centre-point layout: triangular (default), square or random"},
-    {.key = "jitter",
-     .type = SK_FIELD_ENUM,
-     .offset = offsetof(STRUCT, jitter),
-     .names = jitter_names,
-     .doc = "lattice jitter: uniform (default) or normal"},
-    F("jitter_rate", SK_FIELD_FLOAT, jitter_rate, 0, 1,
-      "maximum jitter as a fraction of the spacing; default 0"),
-    F("spacing_mm", SK_FIELD_FLOAT, spacing_mm, 0, 1000,
-      "lattice spacing in mm before stretch; 0 = 0.8 mm at level 1, 0.4 x the level above"),
-    F("perturb_rate", SK_FIELD_FLOAT, perturb_rate, 0, 1,
-      "edge perturbation A of V = A 2^(-n h) Rnd L; default 0"),
-    F("perturb_decay", SK_FIELD_FLOAT, perturb_decay, 0, 4,
-      "decay h of the displacement with division depth n; default 0"),
-    F("perturb_depth", SK_FIELD_INT, perturb_depth, 0, 10,
-      "midpoint division depths (2^depth segments per edge); 0 = 4"),
-    {.key = "stretch",
-     .type = SK_FIELD_FLOATS,
-     .offset = offsetof(STRUCT, stretch),
-     .min = 0,
-     .max = 100,
-     .count = 2,
-     .count_offset = SK_FIELD_FIXED,
-     .doc = "[Sx, Sy] stretch of this level's polygons; 0 = 1"},
-    {.key = "stretch_angle_deg",
-     .type = SK_FIELD_FLOAT,
-     .offset = offsetof(STRUCT, stretch_angle),
-     .min = -360,
-     .max = 360,
-     .scale = SK_DEG_TO_RAD,
-     .doc = "direction of Sx, degrees counter-clockwise from +x; default 0"},
-    {.key = "profile",
-     .type = SK_FIELD_ARRAY,
-     .offset = offsetof(STRUCT, segments),
-     .count = SK_SKIN_MAX_SEGMENTS,
-     .min_count = 1,
-     .count_offset = offsetof(STRUCT, segment_count),
-     .elem_size = sizeof(sk_skin_segment),
-     .schema = &segment_schema,
-     .doc = "section profile: chained cubic Bezier segments, x from 0 to 10; default "
-            "(0,3)(5,3)(8,2.5)(10,0)"},
-    F("roundness", SK_FIELD_FLOAT, roundness, 0, 1,
-      "0: contours similar to the polygon, 1: nearly circular; default 0"),
+    SK_SCHEMA_ENUM(sk_skin_level, layout, "layout", layout_names, .def = SK_SKIN_LAYOUT_TRIANGULAR,
+                   .doc = "centre-point layout (sec. 3.2 (1))"),
+    SK_SCHEMA_ENUM(sk_skin_level, jitter, "jitter", jitter_names, .def = SK_SKIN_JITTER_UNIFORM,
+                   .doc = "lattice jitter distribution"),
+    SK_SCHEMA_FLOAT(sk_skin_level, jitter_rate, "jitter_rate", 0, 1,
+                    .doc = "maximum jitter as a fraction of the spacing"),
+    SK_SCHEMA_FLOAT(sk_skin_level, spacing_mm, "spacing_mm", 0, 1000,
+                    .def_text = "0.8 mm at level 1, 0.4 x the level above",
+                    .doc = "lattice spacing in mm before stretch"),
+    SK_SCHEMA_FLOAT(sk_skin_level, perturb_rate, "perturb_rate", 0, 1,
+                    .doc = "edge perturbation A of V = A 2^(-n h) Rnd L"),
+    SK_SCHEMA_FLOAT(sk_skin_level, perturb_decay, "perturb_decay", 0, 4,
+                    .doc = "decay h of the displacement with division depth n"),
+    SK_SCHEMA_INT(sk_skin_level, perturb_depth, "perturb_depth", 0, 10, .def = 4,
+                  .doc = "midpoint division depths (2^depth segments per edge)"),
+    SK_SCHEMA_FLOATS(sk_skin_level, stretch, "stretch", 2, 0, 100, .def = 1,
+                     .doc = "[Sx, Sy] stretch of this level's polygons"),
+    SK_SCHEMA_DEG(sk_skin_level, stretch_angle, "stretch_angle_deg", -360, 360,
+                  .doc = "direction of Sx, degrees counter-clockwise from +x"),
+    SK_SCHEMA_ARRAY(sk_skin_level, segments, "profile", segment_count, 1, segment_schema,
+                    .def_text = "(0,3)(5,3)(8,2.5)(10,0), Fig. 13c",
+                    .doc = "section profile: chained cubic Bezier segments, x from 0 to 10"),
+    SK_SCHEMA_FLOAT(sk_skin_level, roundness, "roundness", 0, 1,
+                    .doc = "0: contours similar to the polygon, 1: nearly circular"),
 };
-static const sk_schema level_schema = {"level", level_fields,
-                                       (int)(sizeof level_fields / sizeof level_fields[0])};
-#undef STRUCT
+const sk_schema sk__skin_level_schema = SK_SCHEMA_OF("level", sk_skin_level, level_fields);
 
-#define STRUCT sk_skin_pore_kind
 static const sk_schema_field pore_fields[] = {
-    F("depth_mm", SK_FIELD_FLOAT, depth_mm, 0, 10, "pit depth in mm; default 0 = none"),
-    F("radius_mm", SK_FIELD_FLOAT, radius_mm, 0, 10, "pit radius in mm; 0 = 0.03"),
-    F("density", SK_FIELD_FLOAT, density, 0, 1,
-      "fraction of the candidate places that get a pore; 0 = 0.5"),
+    SK_SCHEMA_FLOAT(sk_skin_pore_kind, depth_mm, "depth_mm", 0, 10,
+                    .def_text = "no pores of this kind", .doc = "pit depth in mm"),
+    SK_SCHEMA_FLOAT(sk_skin_pore_kind, radius_mm, "radius_mm", 0, 10, .def = 0.03,
+                    .doc = "pit radius in mm"),
+    SK_SCHEMA_FLOAT(sk_skin_pore_kind, density, "density", 0, 1, .def = 0.5,
+                    .doc = "fraction of the candidate places that get a pore"),
 };
-static const sk_schema pore_schema = {"pore", pore_fields, 3};
-#undef STRUCT
+static const sk_schema pore_schema = SK_SCHEMA_OF("pore", sk_skin_pore_kind, pore_fields);
 
-#define STRUCT sk_skin_pores
 static const sk_schema_field pores_fields[] = {
-    {.key = "hair",
-     .type = SK_FIELD_OBJECT,
-     .offset = offsetof(STRUCT, hair),
-     .schema = &pore_schema,
-     .doc = "hair pores at the junctions of level-1 furrows"},
-    {.key = "sweat",
-     .type = SK_FIELD_OBJECT,
-     .offset = offsetof(STRUCT, sweat),
-     .schema = &pore_schema,
-     .doc = "sweat pores at ridge centres"},
-    F("sweat_level", SK_FIELD_INT, sweat_level, 0, SK_SKIN_MAX_LEVELS,
-      "level whose ridges get sweat pores; 0 = 1"),
+    SK_SCHEMA_OBJECT(sk_skin_pores, hair, "hair", pore_schema,
+                     .doc = "hair pores at the junctions of level-1 furrows"),
+    SK_SCHEMA_OBJECT(sk_skin_pores, sweat, "sweat", pore_schema,
+                     .doc = "sweat pores at ridge centres"),
+    SK_SCHEMA_INT(sk_skin_pores, sweat_level, "sweat_level", 0, SK_SKIN_MAX_LEVELS, .def = 1,
+                  .doc = "level whose ridges get sweat pores, at most the level count"),
 };
-static const sk_schema pores_schema = {"pores", pores_fields, 3};
-#undef STRUCT
+static const sk_schema pores_schema = SK_SCHEMA_OF("pores", sk_skin_pores, pores_fields);
 
-#define STRUCT sk_skin_shading
+static const double default_albedo[3] = {0.80, 0.52, 0.42};
+
 static const sk_schema_field shading_fields[] = {
-    {.key = "light_azimuth_deg",
-     .type = SK_FIELD_FLOAT,
-     .offset = offsetof(STRUCT, light_azimuth),
-     .min = -360,
-     .max = 360,
-     .scale = SK_DEG_TO_RAD,
-     .doc = "where the light comes from: 0 = top of the image, counter-clockwise; default 0"},
-    {.key = "light_elevation_deg",
-     .type = SK_FIELD_FLOAT,
-     .offset = offsetof(STRUCT, light_elevation),
-     .min = 0,
-     .max = 90,
-     .scale = SK_DEG_TO_RAD,
-     .doc = "light elevation above the surface in degrees; 0 = 45"},
-    {.key = "albedo",
-     .type = SK_FIELD_FLOATS,
-     .offset = offsetof(STRUCT, albedo),
-     .min = 0,
-     .max = 1,
-     .count = 3,
-     .count_offset = SK_FIELD_FIXED,
-     .doc = "linear RGB albedo; [0,0,0] = skin tone (0.80, 0.52, 0.42)"},
-    F("sun_fraction", SK_FIELD_FLOAT, sun_fraction, 0, 1,
-      "share of directional light (the rest is sky light); 0 = 0.85"),
-    F("specular", SK_FIELD_FLOAT, specular, 0, 1, "soft highlight strength; 0 = 0.06"),
-    F("shininess", SK_FIELD_FLOAT, shininess, 0, 1000, "Blinn-Phong exponent; 0 = 24"),
-    {.key = "no_specular",
-     .type = SK_FIELD_BOOL,
-     .offset = offsetof(STRUCT, no_specular),
-     .doc = "true: Lambert only; default false"},
+    SK_SCHEMA_DEG(sk_skin_shading, light_azimuth, "light_azimuth_deg", -360, 360,
+                  .doc = "where the light comes from: 0 = top of the image, counter-clockwise"),
+    SK_SCHEMA_DEG(sk_skin_shading, light_elevation, "light_elevation_deg", 0, 90, .def = 45,
+                  .doc = "light elevation above the surface in degrees"),
+    SK_SCHEMA_FLOATS(sk_skin_shading, albedo, "albedo", 3, 0, 1, .defs = default_albedo,
+                     .doc = "linear RGB albedo (the default: a skin tone)"),
+    SK_SCHEMA_FLOAT(sk_skin_shading, sun_fraction, "sun_fraction", 0, 1, .def = 0.85,
+                    .doc = "share of directional light (the rest is sky light)"),
+    SK_SCHEMA_FLOAT(sk_skin_shading, specular, "specular", 0, 1, .def = 0.06,
+                    .doc = "soft highlight strength"),
+    SK_SCHEMA_FLOAT(sk_skin_shading, shininess, "shininess", 0, 1000, .def = 24,
+                    .doc = "Blinn-Phong exponent"),
+    SK_SCHEMA_BOOL(sk_skin_shading, no_specular, "no_specular", .doc = "true: Lambert only"),
 };
-static const sk_schema shading_schema = {"shading", shading_fields,
-                                         (int)(sizeof shading_fields / sizeof shading_fields[0])};
-#undef STRUCT
+static const sk_schema shading_schema = SK_SCHEMA_OF("shading", sk_skin_shading, shading_fields);
 
-#define STRUCT sk_skin_desc
 static const sk_schema_field skin_fields[] = {
-    {.key = "seed",
-     .type = SK_FIELD_SEED,
-     .offset = offsetof(STRUCT, seed),
-     .min = 0,
-     .max = 9007199254740992.0,
-     .doc = "random seed; default 0"},
-    {.key = "size_mm",
-     .type = SK_FIELD_FLOATS,
-     .offset = offsetof(STRUCT, size_mm),
-     .min = 0,
-     .max = 1000,
-     .count = 2,
-     .count_offset = SK_FIELD_FIXED,
-     .doc = "[width, height] of the tile in mm; 0 = 10"},
-    {.key = "aperiodic",
-     .type = SK_FIELD_BOOL,
-     .offset = offsetof(STRUCT, aperiodic),
-     .doc = "true: no seamless wrap; default false (tileable)"},
-    {.key = "levels",
-     .type = SK_FIELD_ARRAY,
-     .offset = offsetof(STRUCT, levels),
-     .count = SK_SKIN_MAX_LEVELS,
-     .min_count = 1,
-     .count_offset = offsetof(STRUCT, level_count),
-     .elem_size = sizeof(sk_skin_level),
-     .schema = &level_schema,
-     .doc = "hierarchy levels, largest ridges first; absent = the default 3-level skin"},
-    {.key = "normal_model",
-     .type = SK_FIELD_ENUM,
-     .offset = offsetof(STRUCT, normal_model),
-     .names = normal_model_names,
-     .doc = "gradient (default: the height's exact normal, for maps) or profile (the paper's "
-            "Fig. 7: the profile's slope along the ray from the cell centre)"},
-    {.key = "pores",
-     .type = SK_FIELD_OBJECT,
-     .offset = offsetof(STRUCT, pores),
-     .schema = &pores_schema,
-     .doc = "hair and sweat pores (off by default)"},
-    {.key = "shading",
-     .type = SK_FIELD_OBJECT,
-     .offset = offsetof(STRUCT, shading),
-     .schema = &shading_schema,
-     .doc = "light and material of the shaded preview"},
+    SK_SCHEMA_SEED(sk_skin_desc, seed, "seed", .doc = "random seed"),
+    SK_SCHEMA_FLOATS(sk_skin_desc, size_mm, "size_mm", 2, 0, 1000, .def = 10,
+                     .doc = "[width, height] of the tile in mm"),
+    SK_SCHEMA_BOOL(sk_skin_desc, aperiodic, "aperiodic",
+                   .doc = "true: no seamless wrap (false: the tile wraps)"),
+    SK_SCHEMA_ARRAY(sk_skin_desc, levels, "levels", level_count, 1, sk__skin_level_schema,
+                    .def_text = "the 3 levels of Fig. 19a",
+                    .doc = "hierarchy levels, largest ridges first"),
+    SK_SCHEMA_ENUM(sk_skin_desc, normal_model, "normal_model", normal_model_names,
+                   .def = SK_SKIN_NORMAL_GRADIENT,
+                   .doc = "gradient (the height's exact normal, for maps) or profile (the paper's "
+                          "Fig. 7: the profile's slope along the ray from the cell centre)"),
+    SK_SCHEMA_OBJECT(sk_skin_desc, pores, "pores", pores_schema,
+                     .doc = "hair and sweat pores (off by default)"),
+    SK_SCHEMA_OBJECT(sk_skin_desc, shading, "shading", shading_schema,
+                     .doc = "light and material of the shaded preview"),
 };
-#undef STRUCT
 
-const sk_schema sk_skin_schema = {"skin", skin_fields,
-                                  (int)(sizeof skin_fields / sizeof skin_fields[0])};
+const sk_schema sk_skin_schema = SK_SCHEMA_OF("skin", sk_skin_desc, skin_fields);

@@ -374,4 +374,9 @@ size_t sk__cell_polygon(const sk_skin *skin, int level, uint32_t cell, sk_vec2d 
 /* Distance from p (frame of cell c, F(k-1)) to the perturbed boundary of c (furrow.c). */
 float sk__furrow_distance(const sk__level *lv, uint32_t c, float px, float py);
 
+/* ---- schema */
+/* The keys of one level (schema.c): the defaults of every level, also those beyond
+ * level_count, come from it. */
+extern const sk_schema sk__skin_level_schema;
+
 #endif /* SK_SKIN_INTERNAL_H */

@@ -33,42 +33,22 @@ static float or_default(float v, float fallback) { return v == 0.0f ? fallback :
 
 void sk_tissue_character_desc_resolve(sk_tissue_character_desc *d)
 {
-    d->motion_unit_mm = or_default(d->motion_unit_mm, 10.0f);
+    /* the defaults sk_tissue_character_schema states, then those computed from other keys */
+    sk_schema_apply_defaults(&sk_tissue_character_schema, d);
     for (int i = 0; i < d->bone_count; i++) {
         sk_tissue_bone_desc *b = &d->bones[i];
-        b->shaft_ratio = or_default(b->shaft_ratio, 0.6f);
-        b->depth_ratio = or_default(b->depth_ratio, 1.0f);
         b->end_length_mm = or_default(b->end_length_mm, b->radius_mm);
-    }
-    for (int i = 0; i < d->muscle_count; i++) {
-        sk_tissue_muscle_desc *m = &d->muscles[i];
-        m->width_ratio = or_default(m->width_ratio, 1.0f);
-        m->belly_fraction = or_default(m->belly_fraction, 0.8f);
     }
     for (int i = 0; i < d->fat_count; i++) {
         sk_tissue_fat_desc *f = &d->fat[i];
         if (f->from == 0.0f && f->to == 0.0f) f->to = 1.0f;
-        f->spread_deg = or_default(f->spread_deg, 90.0f);
     }
     sk_tissue_skin_desc *s = &d->skin;
-    s->spacing_mm = or_default(s->spacing_mm, 4.0f);
-    if (s->dilations == 0) s->dilations = 3;
     s->dilation_radius_mm = or_default(s->dilation_radius_mm, 1.5f * s->spacing_mm);
-    s->threshold = or_default(s->threshold, 0.3f);
-    if (s->neighbourhood == 0) s->neighbourhood = 18;
     sk_tissue_material_desc *m = &d->material;
-    m->fat_stiffness = or_default(m->fat_stiffness, 5.0f);
     m->anchor_stiffness = or_default(m->anchor_stiffness, m->fat_stiffness);
     m->skin_stiffness = or_default(m->skin_stiffness, 5.0f * m->fat_stiffness);
     m->tether_stiffness = or_default(m->tether_stiffness, 0.4f * m->fat_stiffness);
-    m->fat_density = or_default(m->fat_density, 900.0f);
-    m->skin_density = or_default(m->skin_density, 1100.0f);
-    m->skin_thickness_mm = or_default(m->skin_thickness_mm, 1.5f);
-    m->damping_ratio = or_default(m->damping_ratio, 0.1f);
-    sk_tissue_simulation_desc *sim = &d->simulation;
-    if (sim->step_hz == 0) sim->step_hz = 240;
-    if (sim->iterations == 0) sim->iterations = 1;
-    sim->teleport_speed_m_s = or_default(sim->teleport_speed_m_s, 50.0f);
 }
 
 /* "a, b, c" of `count` names `stride` bytes apart, cut with ", ..." to fit `size`. */
@@ -100,14 +80,6 @@ static sk_result not_a(sk_error *err, const char *path, const char *value, const
         list_names(names, sizeof names, d->muscle_count, d->muscles[0].name, sizeof d->muscles[0]);
     return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = \"%s\" is not a %s (%ss: %s)", path, value,
                    what, what, names);
-}
-
-static sk_result check_positive(sk_error *err, const char *path, double v, double hi)
-{
-    if (!(v > 0.0) || v > hi)
-        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "%s = %g is out of range (0, %g]%s", path, v,
-                       hi, v == 0.0 ? " (required)" : "");
-    return SK_OK;
 }
 
 static sk_result check_name(sk_error *err, const char *path, const char *name)
@@ -199,14 +171,6 @@ static sk_result check_body(const sk_tissue_character_desc *d, sk_error *err)
         if (sk__joint_find(d, b->joint) < 0) return not_a(err, path, b->joint, "joint", d);
         snprintf(path, sizeof path, "bones[%d].end", i);
         if (b->end[0] && sk__joint_find(d, b->end) < 0) return not_a(err, path, b->end, "joint", d);
-        snprintf(path, sizeof path, "bones[%d].radius_mm", i);
-        if ((r = check_positive(err, path, b->radius_mm, 1000)) != SK_OK) return r;
-        snprintf(path, sizeof path, "bones[%d].shaft_ratio", i);
-        if ((r = check_positive(err, path, b->shaft_ratio, 1)) != SK_OK) return r;
-        snprintf(path, sizeof path, "bones[%d].depth_ratio", i);
-        if ((r = check_positive(err, path, b->depth_ratio, 4)) != SK_OK) return r;
-        snprintf(path, sizeof path, "bones[%d].end_length_mm", i);
-        if ((r = check_positive(err, path, b->end_length_mm, 1000)) != SK_OK) return r;
     }
     if ((r = check_unique(err, "muscles", d->muscle_count, d->muscles[0].name,
                           sizeof d->muscles[0])) != SK_OK)
@@ -222,12 +186,6 @@ static sk_result check_body(const sk_tissue_character_desc *d, sk_error *err)
         if ((r = check_attachment(d, &m->origin, path, err)) != SK_OK) return r;
         snprintf(path, sizeof path, "muscles[%d].insertion", i);
         if ((r = check_attachment(d, &m->insertion, path, err)) != SK_OK) return r;
-        snprintf(path, sizeof path, "muscles[%d].thickness_mm", i);
-        if ((r = check_positive(err, path, m->thickness_mm, 1000)) != SK_OK) return r;
-        snprintf(path, sizeof path, "muscles[%d].width_ratio", i);
-        if ((r = check_positive(err, path, m->width_ratio, 8)) != SK_OK) return r;
-        snprintf(path, sizeof path, "muscles[%d].belly_fraction", i);
-        if ((r = check_positive(err, path, m->belly_fraction, 1.5)) != SK_OK) return r;
     }
     return SK_OK;
 }
@@ -249,13 +207,9 @@ static sk_result check_extras(const sk_tissue_character_desc *d, sk_error *err)
                            "%s = \"%s\" is neither a bone (%s) nor a muscle (%s)", path, f->around,
                            bones, muscles);
         }
-        snprintf(path, sizeof path, "fat[%d].thickness_mm", i);
-        if ((r = check_positive(err, path, f->thickness_mm, 500)) != SK_OK) return r;
         if (!(f->from < f->to))
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "fat[%d]: from = %g must be less than to = %g", i, f->from, f->to);
-        snprintf(path, sizeof path, "fat[%d].spread_deg", i);
-        if ((r = check_positive(err, path, f->spread_deg, 180)) != SK_OK) return r;
     }
     for (int i = 0; i < d->joint_map_count; i++) {
         snprintf(path, sizeof path, "joint_map[%d].motion", i);
@@ -280,55 +234,20 @@ static sk_result check_extras(const sk_tissue_character_desc *d, sk_error *err)
     return SK_OK;
 }
 
-static sk_result check_parameters(const sk_tissue_character_desc *d, sk_error *err)
+/* The rules between keys of the skin (sec. 4) beyond the schema's ranges. */
+static sk_result check_skin_rules(const sk_tissue_character_desc *d, sk_error *err)
 {
     const sk_tissue_skin_desc *s = &d->skin;
-    const sk_tissue_material_desc *m = &d->material;
     sk_result r;
-    if ((r = sk_check_range_f(err, "motion_unit_mm", d->motion_unit_mm, 1e-3, 1e4)) != SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "skin.spacing_mm", s->spacing_mm, 0.5, 50)) != SK_OK) return r;
-    if ((r = sk_check_range_i(err, "skin.dilations", s->dilations, 1, 32)) != SK_OK) return r;
     if ((r = sk_check_range_f(err, "skin.dilation_radius_mm", s->dilation_radius_mm, s->spacing_mm,
                               10.0 * s->spacing_mm)) != SK_OK)
         return r;
     if (!(s->threshold > 0.0f && s->threshold < 1.0f))
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin.threshold = %g is out of range (0, 1)",
                        s->threshold);
-    if ((r = sk_check_range_i(err, "skin.smooth_iterations", s->smooth_iterations, 0, 200)) !=
-        SK_OK)
-        return r;
     if (s->neighbourhood != 18 && s->neighbourhood != 26)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "skin.neighbourhood = %d must be 18 or 26",
                        s->neighbourhood);
-    if ((r = sk_check_range_f(err, "material.fat_stiffness", m->fat_stiffness, 1e-3, 1e6)) != SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "material.anchor_stiffness", m->anchor_stiffness, 1e-3, 1e6)) !=
-        SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "material.skin_stiffness", m->skin_stiffness, 1e-3, 1e6)) !=
-        SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "material.tether_stiffness", m->tether_stiffness, 1e-4, 1e6)) !=
-        SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "material.fat_density", m->fat_density, 100, 20000)) != SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "material.skin_density", m->skin_density, 100, 20000)) != SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "material.skin_thickness_mm", m->skin_thickness_mm, 0, 20)) !=
-        SK_OK)
-        return r;
-    if ((r = check_positive(err, "material.damping_ratio", m->damping_ratio, 4)) != SK_OK) return r;
-    if ((r = sk_check_range_i(err, "simulation.step_hz", d->simulation.step_hz, 60, 20000)) !=
-        SK_OK)
-        return r;
-    if ((r = sk_check_range_i(err, "simulation.iterations", d->simulation.iterations, 1, 64)) !=
-        SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "simulation.teleport_speed_m_s",
-                              d->simulation.teleport_speed_m_s, 0.1, 1e6)) != SK_OK)
-        return r;
     return SK_OK;
 }
 
@@ -338,6 +257,8 @@ sk_result sk_tissue_character_desc_validate(const sk_tissue_character_desc *d, s
     sk_result r = check_joints(d, err);
     if (r == SK_OK) r = check_body(d, err);
     if (r == SK_OK) r = check_extras(d, err);
-    if (r == SK_OK) r = check_parameters(d, err);
+    /* every range, as sk_tissue_character_schema states it */
+    if (r == SK_OK) r = sk_schema_check(&sk_tissue_character_schema, d, "", err);
+    if (r == SK_OK) r = check_skin_rules(d, err);
     return r;
 }

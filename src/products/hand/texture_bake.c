@@ -310,19 +310,15 @@ sk_result sk_hand_texture_bake(const sk_hand_surface *s, const sk_hand_texture_d
 {
     sk_hand_texture_desc d = {0};
     if (desc) d = *desc;
-    int N = d.size ? d.size : 1024;
-    sk_result r = sk_check_range_i(err, "size", N, 64, 8192);
-    if (r == SK_OK && d.relief_scale != 0)
-        r = sk_check_range_f(err, "relief_scale", d.relief_scale, 0, 100);
-    if (r == SK_OK && d.crease_depth_mm != 0)
-        r = sk_check_range_f(err, "crease_depth_mm", d.crease_depth_mm, 0, 5);
-    if (r == SK_OK && d.seam_width != 0)
-        r = sk_check_range_f(err, "seam_width", d.seam_width, 1e-3, 1);
+    /* the defaults and ranges sk_hand_texture_schema states */
+    sk_schema_apply_defaults(&sk_hand_texture_schema, &d);
+    int N = d.size;
+    sk_result r = sk_schema_check(&sk_hand_texture_schema, &d, "", err);
     if (r != SK_OK) return r;
     bake_ctx c = {.s = s,
-                  .relief = d.relief_scale ? d.relief_scale : 1.0,
-                  .crease = d.crease_depth_mm ? d.crease_depth_mm : 0.25,
-                  .seam = d.seam_width ? d.seam_width : 0.3,
+                  .relief = d.relief_scale,
+                  .crease = d.crease_depth_mm,
+                  .seam = d.seam_width,
                   .lo = {s->atlas_lo[0], s->atlas_lo[1]},
                   .hi = {s->atlas_hi[0], s->atlas_hi[1]}};
     double q[SK_HAND_DOF_COUNT];

@@ -61,22 +61,13 @@ static sk_result fingering_settings(const sk_fingering_desc *desc, const sk_pian
 {
     *d = desc ? *desc : (sk_fingering_desc){0};
     if (d->pitch_mm == 0) d->pitch_mm = piano->desc.white_pitch_mm;
-    if (d->reach_mm == 0) d->reach_mm = 30;
-    if (d->spacing_mm == 0) d->spacing_mm = 17;
-    if (d->busy_before_s == 0) d->busy_before_s = 0.12;
-    if (d->busy_after_s == 0) d->busy_after_s = 0.14;
-    if (d->move_gap_s == 0) d->move_gap_s = 0.05;
+    sk_schema_apply_defaults(&sk__fingering_schema, d);
     bool any = false;
     for (int f = 0; f < 5; f++) any = any || d->finger_x_mm[f] != 0;
     if (!any)
         for (int f = 0; f < 5; f++) d->finger_x_mm[f] = f * d->pitch_mm;
-    sk_result r;
-    if ((r = sk_check_range_f(err, "fingering.reach_mm", d->reach_mm, 0, 200)) != SK_OK ||
-        (r = sk_check_range_f(err, "fingering.pitch_mm", d->pitch_mm, 1, 100)) != SK_OK ||
-        (r = sk_check_range_f(err, "fingering.spacing_mm", d->spacing_mm, 0, 50)) != SK_OK ||
-        (r = sk_check_range_f(err, "fingering.busy_before_s", d->busy_before_s, 0, 2)) != SK_OK ||
-        (r = sk_check_range_f(err, "fingering.busy_after_s", d->busy_after_s, 0, 2)) != SK_OK)
-        return r;
+    sk_result r = sk_schema_check(&sk__fingering_schema, d, "fingering", err);
+    if (r != SK_OK) return r;
     for (int f = 0; f < 5; f++)
         if ((r = sk_check_range_f(err, "fingering.finger_x_mm", d->finger_x_mm[f], -500, 500)) !=
             SK_OK)

@@ -31,32 +31,15 @@
 sk_performance_desc sk__performance_desc_resolved(const sk_performance_desc *desc)
 {
     sk_performance_desc d = desc ? *desc : (sk_performance_desc){0};
-    if (d.approach_s == 0) d.approach_s = 0.12;
-    if (d.descent_s == 0) d.descent_s = 0.04;
-    if (d.lift_s == 0) d.lift_s = 0.12;
-    if (d.hover_mm == 0) d.hover_mm = 6;
-    if (d.clearance_mm == 0) d.clearance_mm = 1;
-    if (d.press_pip_ratio == 0) d.press_pip_ratio = 0.5 / 0.9;
-    if (d.travel_s == 0) d.travel_s = 0.04;
-    if (d.strike_drop_mm == 0) d.strike_drop_mm = 1.5;
+    sk_schema_apply_defaults(&sk__performance_schema, &d);
     if (d.strike_drop_mm < 0) d.strike_drop_mm = 0;
     return d; /* tip_radius_mm all 0: measured on the hand surface (hand_mesh.c) */
 }
 
 sk_result sk__performance_desc_validate(const sk_performance_desc *d, sk_error *err)
 {
-    sk_result r;
-    if ((r = sk_check_range_f(err, "performance.approach_s", d->approach_s, 0.02, 1)) != SK_OK ||
-        (r = sk_check_range_f(err, "performance.descent_s", d->descent_s, 0.005, 0.2)) != SK_OK ||
-        (r = sk_check_range_f(err, "performance.lift_s", d->lift_s, 0.02, 1)) != SK_OK ||
-        (r = sk_check_range_f(err, "performance.hover_mm", d->hover_mm, 2, 40)) != SK_OK ||
-        (r = sk_check_range_f(err, "performance.clearance_mm", d->clearance_mm, 0, 10)) != SK_OK ||
-        (r = sk_check_range_f(err, "performance.press_pip_ratio", d->press_pip_ratio, 0, 4)) !=
-            SK_OK ||
-        (r = sk_check_range_f(err, "performance.travel_s", d->travel_s, 0.01, 2)) != SK_OK ||
-        (r = sk_check_range_f(err, "performance.strike_drop_mm", d->strike_drop_mm, 0, 10)) !=
-            SK_OK)
-        return r;
+    sk_result r = sk_schema_check(&sk__performance_schema, d, "performance", err);
+    if (r != SK_OK) return r;
     if (d->approach_s <= 0.5 * d->descent_s)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "performance.approach_s = %g must exceed half of performance.descent_s = %g",

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "shitsukan/showcase.h"
+#include "products/showcase/showcase_internal.h"
 
 #define REFERENCE_PITCH_MM 23.5
 #define WHITE_GAP_MM 1.2      /* between white keys (22.3 mm wide at 23.5 mm pitch) */
@@ -19,11 +19,6 @@
 #define NOTCH_GAP_MM 0.8   /* white key's back part to a black key's side */
 #define WHITE_KEY_COUNT 52
 
-static sk_result check(sk_error *err, const char *name, double v, double lo, double hi)
-{
-    return sk_check_range_f(err, name, v, lo, hi);
-}
-
 static int white_index(int key) /* white keys from A0 up to and including key */
 {
     int n = 0;
@@ -34,18 +29,9 @@ static int white_index(int key) /* white keys from A0 up to and including key */
 sk_result sk_piano_init(sk_piano *piano, const sk_piano_desc *desc, sk_error *err)
 {
     sk_piano_desc d = desc ? *desc : (sk_piano_desc){0};
-    if (d.white_pitch_mm == 0) d.white_pitch_mm = REFERENCE_PITCH_MM;
-    if (d.dip_mm == 0) d.dip_mm = 10;
-    if (d.pivot_mm == 0) d.pivot_mm = 250;
-    if (d.white_top_mm == 0) d.white_top_mm = 747;
-    if (d.front_mm == 0) d.front_mm = 275;
-    sk_result r;
-    if ((r = check(err, "piano.white_pitch_mm", d.white_pitch_mm, 15, 30)) != SK_OK ||
-        (r = check(err, "piano.dip_mm", d.dip_mm, 2, 20)) != SK_OK ||
-        (r = check(err, "piano.pivot_mm", d.pivot_mm, 100, 600)) != SK_OK ||
-        (r = check(err, "piano.white_top_mm", d.white_top_mm, 0, 5000)) != SK_OK ||
-        (r = check(err, "piano.front_mm", d.front_mm, -5000, 5000)) != SK_OK)
-        return r;
+    sk_schema_apply_defaults(&sk__piano_schema, &d);
+    sk_result r = sk_schema_check(&sk__piano_schema, &d, "piano", err);
+    if (r != SK_OK) return r;
     memset(piano, 0, sizeof *piano);
     piano->desc = d;
     piano->pivot_z_mm = d.front_mm - d.pivot_mm;

@@ -20,18 +20,11 @@ static sk_result resolve_desc(const sk_showcase_desc *in, sk_showcase_desc *d, s
     if (!d->stage) return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase: no stage scene");
     if (!d->constraints)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "showcase: no coupling constraints");
-    if (d->fps == 0) d->fps = 24;
-    if (d->width == 0) d->width = 1280;
-    if (d->height == 0) d->height = 720;
-    if (d->samples == 0) d->samples = 16;
-    if (d->texture_size == 0) d->texture_size = 1024;
+    /* the frame keys' defaults and ranges (sk_showcase_schema) */
+    sk_schema_apply_defaults(&sk__showcase_frame_schema, d);
     d->performance = sk__performance_desc_resolved(&d->performance);
     sk_result r;
-    if ((r = sk_check_range_f(err, "fps", d->fps, 1, 240)) != SK_OK ||
-        (r = sk_check_range_i(err, "width", d->width, 16, 8192)) != SK_OK ||
-        (r = sk_check_range_i(err, "height", d->height, 16, 8192)) != SK_OK ||
-        (r = sk_check_range_i(err, "samples", d->samples, 1, 1024)) != SK_OK ||
-        (r = sk_check_range_i(err, "texture_size", d->texture_size, 64, 8192)) != SK_OK ||
+    if ((r = sk_schema_check(&sk__showcase_frame_schema, d, "", err)) != SK_OK ||
         (r = sk__performance_desc_validate(&d->performance, err)) != SK_OK)
         return r;
     /* the synth desc is checked by rendering nothing */

@@ -88,6 +88,11 @@ typedef struct sk__performance {
     double hover_y;           /* wrist height that puts the pads at the hover height */
 } sk__performance;
 
+/* The parts of sk_showcase_schema (schema.c): the frame keys (its first fields), the
+   piano, fingering, performance and synth. */
+extern const sk_schema sk__showcase_frame_schema, sk__piano_schema, sk__fingering_schema,
+    sk__performance_schema, sk__synth_schema;
+
 sk_performance_desc sk__performance_desc_resolved(const sk_performance_desc *desc);
 sk_result sk__performance_desc_validate(const sk_performance_desc *desc, sk_error *err);
 /* Finger intents and the wrist's position at time t: a function of t alone. */

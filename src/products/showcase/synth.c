@@ -22,27 +22,14 @@
 static sk_synth_desc resolved(const sk_synth_desc *desc)
 {
     sk_synth_desc d = desc ? *desc : (sk_synth_desc){0};
-    if (d.sample_rate == 0) d.sample_rate = 44100;
-    if (d.gain == 0) d.gain = 0.25;
-    if (d.inharmonicity == 0) d.inharmonicity = 0.0004;
+    sk_schema_apply_defaults(&sk__synth_schema, &d);
     if (d.inharmonicity < 0) d.inharmonicity = 0;
-    if (d.decay_s == 0) d.decay_s = 3;
-    if (d.release_s == 0) d.release_s = 0.1;
-    if (d.tail_s == 0) d.tail_s = 1;
     return d;
 }
 
 static sk_result validate(const sk_synth_desc *d, sk_error *err)
 {
-    sk_result r;
-    if ((r = sk_check_range_i(err, "synth.sample_rate", d->sample_rate, 8000, 192000)) != SK_OK ||
-        (r = sk_check_range_f(err, "synth.gain", d->gain, 1e-6, 1)) != SK_OK ||
-        (r = sk_check_range_f(err, "synth.inharmonicity", d->inharmonicity, 0, 0.01)) != SK_OK ||
-        (r = sk_check_range_f(err, "synth.decay_s", d->decay_s, 0.1, 60)) != SK_OK ||
-        (r = sk_check_range_f(err, "synth.release_s", d->release_s, 0.005, 5)) != SK_OK ||
-        (r = sk_check_range_f(err, "synth.tail_s", d->tail_s, 0, 30)) != SK_OK)
-        return r;
-    return SK_OK;
+    return sk_schema_check(&sk__synth_schema, d, "synth", err);
 }
 
 size_t sk_synth_length(const sk_melody *melody, const sk_synth_desc *desc)

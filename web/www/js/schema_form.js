@@ -116,7 +116,7 @@ export class SchemaForm {
   control(f, path) {
     const { v, set } = this.value(path);
     const name = path.split('.').pop();
-    const row = el('div', { className: 'ctl' + (set ? '' : ' default'), title: `${path}: ${f.doc || ''}` });
+    const row = el('div', { className: 'ctl' + (set ? '' : ' default'), title: `${path}: ${f.doc || ''}${f.default ? `; ${f.default}` : ''}` });
     row.dataset.key = path;
     const label = el('label', { textContent: name });
     const reset = el('button', { className: 'reset', textContent: '×', title: 'back to the default' });
