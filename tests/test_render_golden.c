@@ -116,8 +116,8 @@ static void check_scene(const char *name)
     sk_image_free(&ref);
 }
 
-static const char *const k_scenes[] = {"wrist", "piano", "wood-turntable", "fig9-board",
-                                       "hand-blend"};
+static const char *const k_scenes[] = {"wrist",      "piano",      "wood-turntable",
+                                       "fig9-board", "hand-blend", "path-lights"};
 #define SCENE_COUNT ((int)(sizeof k_scenes / sizeof k_scenes[0]))
 
 static void test_scene(void **state) { check_scene((const char *)*state); }

@@ -133,13 +133,17 @@ typedef enum sk_render_light_type {
     SK_RENDER_LIGHT_DIRECTIONAL = 0, /* "directional": parallel light (sun) */
     SK_RENDER_LIGHT_POINT,           /* "point" */
     SK_RENDER_LIGHT_RECT,            /* "rect": one-sided rectangle, soft shadows */
+    SK_RENDER_LIGHT_SPHERE,          /* "sphere": a sphere emitting from its whole surface */
+    SK_RENDER_LIGHT_DISC,            /* "disc": one-sided disc */
     SK_RENDER_LIGHT_COUNT
 } sk_render_light_type;
 
 /* `intensity` 0 means: the value that gives a surface at the camera target facing the
  * light an irradiance of pi (so a white Lambertian surface there has radiance 1 and shows
  * as white at exposure 0): E = pi (directional), I = pi d^2 (point), Le = pi d^2 / area
- * (rect), d = distance from the light to the camera target. */
+ * (rect), Le = d^2 / radius^2 (sphere, disc), d = distance from the light to the camera
+ * target. Area lights (rect, sphere, disc) are not scene geometry: they cast no shadows on
+ * each other, and the path integrator's camera and bounce rays see their radiance. */
 typedef struct sk_render_light_desc {
     sk_render_light_type type; /* preset key "type" */
     float color[3];            /* linear RGB tint multiplying `intensity`; all 0 = (1, 1, 1) */
@@ -149,9 +153,12 @@ typedef struct sk_render_light_desc {
                                   rect: the direction it emits towards; all 0 = towards the camera
                                   target */
     float size[2];             /* rect: width and height in scene units; all 0 = (1, 1) */
+    float radius;              /* sphere, disc: radius in scene units; 0 = 0.5 */
     float up[3];               /* rect: the direction of its height edge (projected on its plane);
                                   all 0 = +y (or +z when it faces along y) */
-    int samples;               /* rect: shadow rays per camera sample; 0 = 1; [1, 256] */
+    int samples;               /* rect, sphere, disc: shadow rays per camera sample (preview
+                                  integrator; the path integrator takes one per vertex);
+                                  0 = 1; [1, 256] */
     bool no_shadows;           /* skip shadow rays; default false */
 } sk_render_light_desc;
 
@@ -161,11 +168,34 @@ typedef struct sk_render_light_desc {
  * fraction of cosine-weighted rays that escape within `ao_distance`, which is the exact
  * one-bounce environment light when the blocker is black. The Blinn-Phong lobe gets
  * ks L_env (its directional albedo) times the same visibility. */
+typedef enum sk_render_environment_type {
+    SK_RENDER_ENVIRONMENT_DEFAULT = 0, /* = UNIFORM */
+    SK_RENDER_ENVIRONMENT_UNIFORM = 0, /* "uniform": `radiance` from every direction */
+    SK_RENDER_ENVIRONMENT_MAP,         /* "map": a lat-long EXR image (`map`) */
+    SK_RENDER_ENVIRONMENT_SKY,         /* "sky": a procedural gradient sky with a sun */
+    SK_RENDER_ENVIRONMENT_COUNT
+} sk_render_environment_type;
+
+/* The lat-long map's centre column looks along -z, its top row is +y; `rotate` turns it
+ * about +y. The sky is a gradient (ground below the horizon, horizon to zenith above) plus
+ * a sun disc. Both are importance sampled by the path integrator; the preview integrator
+ * lights with their mean radiance as a uniform environment. */
 typedef struct sk_render_environment_desc {
-    float radiance[3];      /* linear RGB; default 0 (no environment light) */
-    bool ambient_occlusion; /* trace occlusion rays; default false */
-    float ao_distance;      /* length of occlusion rays in scene units; 0 = unlimited */
-    int ao_samples;         /* occlusion rays per camera sample; 0 = 1; [1, 256] */
+    sk_render_environment_type type; /* preset key "type"; default uniform */
+    float radiance[3];               /* uniform: linear RGB; default 0 (no environment light) */
+    bool ambient_occlusion;          /* trace occlusion rays; default false */
+    float ao_distance;               /* length of occlusion rays in scene units; 0 = unlimited */
+    int ao_samples;                  /* occlusion rays per camera sample; 0 = 1; [1, 256] */
+    char map[SK_RENDER_PATH_SIZE];   /* map: lat-long EXR file, relative to the scene file */
+    float strength;                  /* map, sky: multiplies the radiance; 0 = 1; [0, 1e9] */
+    float rotate;                    /* map: turn about +y in radians (key "rotate_deg") */
+    float sun_direction[3];          /* sky: towards the sun; all 0 = (0.4, 0.7, 0.3) */
+    float sun_irradiance;            /* sky: irradiance of the sun disc; 0 = 5 W m^-2 */
+    float sun_size;                  /* sky: angular diameter in radians (key "sun_size_deg");
+                                        0 = 3 degrees; [0.5, 45] degrees */
+    float zenith[3];                 /* sky: radiance at the zenith; all 0 = (0.2, 0.35, 0.8) */
+    float horizon[3];                /* sky: radiance at the horizon; all 0 = (0.8, 0.85, 0.9) */
+    float ground[3]; /* sky: radiance below the horizon; all 0 = (0.2, 0.18, 0.16) */
 } sk_render_environment_desc;
 
 /* ------------------------------------------------------------------ materials */
@@ -297,15 +327,29 @@ typedef struct sk_render_image_desc {
 
 /* From linear radiance to the PNG: radiance * 2^exposure -> tone curve -> sRGB transfer
  * curve (applied by the PNG writer) -> 8 bits. The EXR keeps the linear radiance. */
+typedef enum sk_render_integrator {
+    SK_RENDER_INTEGRATOR_DEFAULT = 0, /* = PREVIEW */
+    SK_RENDER_INTEGRATOR_PREVIEW = 0, /* "preview": direct light + uniform environment / AO */
+    SK_RENDER_INTEGRATOR_PATH,        /* "path": unidirectional path tracing with next-event
+                                         estimation and multiple importance sampling */
+    SK_RENDER_INTEGRATOR_PATH_BSDF,   /* "path_bsdf": path tracing by BSDF sampling alone
+                                         (area lights and the environment found by chance; a
+                                         reference for "path") */
+    SK_RENDER_INTEGRATOR_COUNT
+} sk_render_integrator;
+
 typedef struct sk_render_film_desc {
-    float exposure;                 /* stops; default 0; [-30, 30] */
-    sk_render_tonemap_mode tonemap; /* preset key "tonemap"; default clamp */
-    float white;                    /* reinhard: exposed radiance that maps to white; 0 = no
-                                       white point (L / (1 + L)); [0, 1e6] */
-    bool opaque;                    /* true: `background` fills the background with alpha 1;
-                                       default false: the background is transparent (alpha 0;
-                                       the EXR holds premultiplied RGBA) */
-    float background[3];            /* radiance behind the objects when opaque; default 0 */
+    float exposure;                  /* stops; default 0; [-30, 30] */
+    sk_render_tonemap_mode tonemap;  /* preset key "tonemap"; default clamp */
+    float white;                     /* reinhard: exposed radiance that maps to white; 0 = no
+                                        white point (L / (1 + L)); [0, 1e6] */
+    bool opaque;                     /* true: `background` fills the background with alpha 1;
+                                        default false: the background is transparent (alpha 0;
+                                        the EXR holds premultiplied RGBA) */
+    float background[3];             /* radiance behind the objects when opaque; default 0 */
+    sk_render_integrator integrator; /* preset key "integrator"; default preview */
+    int max_bounces; /* path: surface scatterings per path (1 = direct light only); 0 = 8;
+                        [1, 1024] */
 } sk_render_film_desc;
 
 /* ------------------------------------------------------------------ scene */
@@ -421,6 +465,8 @@ typedef struct sk_render_stats {
 typedef struct sk_render_options {
     sk_progress progress; /* fraction of tiles done */
     bool timing;          /* measure intersection vs shading time (costs a few percent) */
+    int tile_size;        /* pixels per side of the tiles threads take; 0 = 16; the image does
+                             not depend on it */
 } sk_render_options;
 
 /* Renders the scene into `image` (allocated here: RGBA float, width x height of the desc's
@@ -507,6 +553,8 @@ extern const char *const sk_render_projection_names[];
 extern const char *const sk_render_light_type_names[];
 extern const char *const sk_render_material_type_names[];
 extern const char *const sk_render_tonemap_names[];
+extern const char *const sk_render_integrator_names[];
+extern const char *const sk_render_environment_type_names[];
 
 #ifdef __cplusplus
 }

@@ -10,38 +10,6 @@
 #include "render/ray_offset.h"
 #include "render/sampling.h"
 
-static bool trace(const sk_render_scene *scene, sk__worker *w, struct RTCRayHit *rh)
-{
-    if (!w->timing) return sk__trace(scene, rh);
-    double t0 = sk_time_seconds();
-    bool hit = sk__trace(scene, rh);
-    w->intersect_seconds += sk_time_seconds() - t0;
-    return hit;
-}
-
-static bool occluded(const sk_render_scene *scene, sk__worker *w, sk_vec3f o, sk_vec3f d,
-                     float tfar)
-{
-    w->shadow_rays++;
-    if (!w->timing) return sk__occluded(scene, o, d, tfar);
-    double t0 = sk_time_seconds();
-    bool blocked = sk__occluded(scene, o, d, tfar);
-    w->intersect_seconds += sk_time_seconds() - t0;
-    return blocked;
-}
-
-/* Bumped and interpolated normals are lit right up to the geometric terminator, where
- * the shadow ray is cut off by the surface itself: a hard edge of light (the "shadow
- * terminator" problem). The light is faded out over the last few degrees before the
- * terminator (geometric cosine 0.15 .. 0) so the edge is soft. Where the shading normal
- * is the geometric one nothing changes, so flat and exactly tilted surfaces keep their
- * exact radiance. */
-static inline float terminator_fade(float cos_geometric, sk_vec3f ns, sk_vec3f ng)
-{
-    if (ns.x == ng.x && ns.y == ng.y && ns.z == ng.z) return 1.0f;
-    return sk_smoothstepf(0.0f, 0.15f, cos_geometric);
-}
-
 /* Direct light from every light source. */
 static sk_vec3f direct_light(const sk_render_scene *scene, sk__worker *w, const sk__shading *sh,
                              const sk__sample_id *id)
@@ -53,7 +21,7 @@ static sk_vec3f direct_light(const sk_render_scene *scene, sk__worker *w, const 
         uint32_t n = (uint32_t)l->samples;
         sk_vec3f light_sum = sk_v3f(0, 0, 0);
         for (uint32_t j = 0; j < n; j++) {
-            sk_vec2f u = l->type == SK_RENDER_LIGHT_RECT
+            sk_vec2f u = sk__light_is_area(l->type)
                              ? sk__pattern_point(&id->lights[li], id->sample * n + j)
                              : sk_v2f(0.5f, 0.5f);
             sk_vec3f wi, weight;
@@ -62,12 +30,12 @@ static sk_vec3f direct_light(const sk_render_scene *scene, sk__worker *w, const 
             float cos_g = sk_v3f_dot(ng, wi);
             if (cos_g <= 0) continue; /* behind the actual surface */
             sk_vec3f f = sk_v3f_scale(sk__material_reflect(sh, wi),
-                                      terminator_fade(cos_g, sh->shading_normal, ng));
+                                      sk__terminator_fade(cos_g, sh->shading_normal, ng));
             if (f.x == 0 && f.y == 0 && f.z == 0) continue;
             if (l->shadows) {
                 sk_vec3f o = sk__offset_origin(p, ng, wi);
                 float tfar = isinf(dist) ? INFINITY : dist * (1.0f - 1e-4f);
-                if (occluded(scene, w, o, wi, tfar)) continue;
+                if (sk__worker_occluded(scene, w, o, wi, tfar)) continue;
             }
             light_sum = sk_v3f_add(light_sum, sk_v3f_mul(f, weight));
         }
@@ -81,7 +49,7 @@ static sk_vec3f environment_light(const sk_render_scene *scene, sk__worker *w,
                                   const sk__shading *sh, const sk__sample_id *id)
 {
     const sk_render_environment_desc *env = &scene->desc.environment;
-    sk_vec3f radiance = sk__v3f_from(env->radiance);
+    sk_vec3f radiance = scene->env.uniform; /* a map's or sky's mean radiance */
     if (radiance.x == 0 && radiance.y == 0 && radiance.z == 0) return radiance;
     float visible = 1.0f;
     if (env->ambient_occlusion) {
@@ -93,7 +61,7 @@ static sk_vec3f environment_light(const sk_render_scene *scene, sk__worker *w,
             sk_vec2f u = sk__pattern_point(&id->ao, id->sample * n + k);
             sk_vec3f d = sk__cosine_hemisphere(sh->shading_normal, u);
             if (sk_v3f_dot(d, ng) <= 0) continue; /* into the surface itself */
-            if (!occluded(scene, w, sk__offset_origin(p, ng, d), d, tfar)) open++;
+            if (!sk__worker_occluded(scene, w, sk__offset_origin(p, ng, d), d, tfar)) open++;
         }
         visible = (float)open / (float)n;
     }
@@ -109,7 +77,7 @@ void sk__sample_id_init(const sk_render_scene *scene, uint64_t pixel, sk__sample
         id->ao = sk__pattern_make(d->seed, pixel, SK__SAMPLE_AO,
                                   spp * (uint32_t)d->environment.ao_samples);
     for (int li = 0; li < scene->light_count; li++)
-        if (scene->lights[li].type == SK_RENDER_LIGHT_RECT)
+        if (sk__light_is_area(scene->lights[li].type))
             id->lights[li] = sk__pattern_make(d->seed, pixel, SK__SAMPLE_LIGHT + (uint32_t)li,
                                               spp * (uint32_t)scene->lights[li].samples);
 }
@@ -121,7 +89,7 @@ float sk__camera_sample(const sk_render_scene *scene, sk__worker *w, const sk__s
     sk__camera_ray(&scene->camera, x, y, &o, &d);
     struct RTCRayHit rh;
     sk__rtc_ray(&rh.ray, o, d, 0.0f, INFINITY);
-    if (!trace(scene, w, &rh)) {
+    if (!sk__worker_trace(scene, w, &rh)) {
         const sk_render_film_desc *film = &scene->desc.film;
         *radiance = film->opaque ? sk__v3f_from(film->background) : sk_v3f(0, 0, 0);
         return film->opaque ? 1.0f : 0.0f;

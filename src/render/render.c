@@ -9,8 +9,9 @@
 
 #include "base/loop_progress.h"
 #include "render/integrator.h"
+#include "render/sequence.h"
 
-#define TILE 16
+#define TILE 16 /* default tile size */
 
 /* Embree recommends flushing denormals to zero in rendering threads (a large speed-up
  * when they occur); every thread of the loop sets the same mode, so results stay equal. */
@@ -34,17 +35,39 @@ static void fast_float_end(unsigned saved)
 #endif
 }
 
-static void render_tile(const sk_render_scene *scene, sk__worker *w, sk_image *image, int tile)
+/* One pixel of the path integrator: its samples' positions are the first Sobol pair. */
+static void path_pixel(const sk_render_scene *scene, sk__worker *w, uint64_t pixel, int x, int y,
+                       double sum[4])
+{
+    const sk_render_scene_desc *d = &scene->desc;
+    for (uint32_t s = 0; s < (uint32_t)d->image.samples; s++) {
+        sk_vec2f u = sk__sobol_pair(d->seed, pixel, s, 0);
+        sk_vec3f L;
+        float alpha = sk__path_sample(scene, w, pixel, s, (float)x + u.x, (float)y + u.y, &L);
+        sum[0] += L.x, sum[1] += L.y, sum[2] += L.z, sum[3] += alpha;
+    }
+}
+
+static void render_tile(const sk_render_scene *scene, sk__worker *w, sk_image *image, int tile,
+                        int ts)
 {
     const sk_render_scene_desc *d = &scene->desc;
     int width = d->image.width, height = d->image.height;
-    int tiles_x = (width + TILE - 1) / TILE;
-    int x0 = (tile % tiles_x) * TILE, y0 = (tile / tiles_x) * TILE;
-    int x1 = x0 + TILE < width ? x0 + TILE : width, y1 = y0 + TILE < height ? y0 + TILE : height;
+    int tiles_x = (width + ts - 1) / ts;
+    int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
+    int x1 = x0 + ts < width ? x0 + ts : width, y1 = y0 + ts < height ? y0 + ts : height;
     uint32_t spp = (uint32_t)d->image.samples;
+    bool path = d->film.integrator != SK_RENDER_INTEGRATOR_PREVIEW;
     for (int y = y0; y < y1; y++) {
         for (int x = x0; x < x1; x++) {
             uint64_t pixel = (uint64_t)y * (uint64_t)width + (uint64_t)x;
+            if (path) {
+                double sum[4] = {0, 0, 0, 0};
+                path_pixel(scene, w, pixel, x, y, sum);
+                float *px = sk_image_pixel(image, x, y);
+                for (int c = 0; c < 4; c++) px[c] = (float)(sum[c] / spp);
+                continue;
+            }
             sk__sample_id id;
             sk__sample_id_init(scene, pixel, &id);
             sk__pattern position = sk__pattern_make(d->seed, pixel, SK__SAMPLE_PIXEL, spp);
@@ -70,7 +93,8 @@ sk_result sk_render_scene_render(const sk_render_scene *scene, const sk_render_o
     if (r != SK_OK) return r;
     sk_render_options opt = {0};
     if (options) opt = *options;
-    int tiles_x = (d->image.width + TILE - 1) / TILE, tiles_y = (d->image.height + TILE - 1) / TILE;
+    int ts = opt.tile_size > 0 ? opt.tile_size : TILE;
+    int tiles_x = (d->image.width + ts - 1) / ts, tiles_y = (d->image.height + ts - 1) / ts;
     int tiles = tiles_x * tiles_y;
     sk__loop_progress progress;
     sk__loop_progress_init(&progress, &opt.progress, tiles);
@@ -84,7 +108,7 @@ sk_result sk_render_scene_render(const sk_render_scene *scene, const sk_render_o
         double t0 = opt.timing ? sk_time_seconds() : 0;
 #pragma omp for schedule(dynamic, 1)
         for (int t = 0; t < tiles; t++) {
-            render_tile(scene, &w, image, t);
+            render_tile(scene, &w, image, t, ts);
             sk__loop_progress_tick(&progress);
         }
         if (opt.timing) busy_seconds += sk_time_seconds() - t0;

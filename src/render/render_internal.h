@@ -63,11 +63,32 @@ typedef struct sk__light {
     sk_vec3f power;          /* color * intensity */
     sk_vec3f position;       /* point: the light; rect: its centre */
     sk_vec3f direction;      /* directional: unit travel direction; rect: unit normal */
-    sk_vec3f edge_u, edge_v; /* rect: full edge vectors (width, height) */
+    sk_vec3f edge_u, edge_v; /* rect: full edge vectors (width, height); disc: unit */
     float area;
+    float radius; /* sphere, disc */
     int samples;
     bool shadows;
 } sk__light;
+
+/* A piecewise-constant density over [0, 1)^2 (distribution.c). */
+typedef struct sk__distribution2d {
+    int width, height;
+    float *func;         /* width x height, row-major, row 0 at v = 0 */
+    float *conditional;  /* height rows of width + 1 CDF values */
+    float *row_integral; /* height */
+    float *marginal;     /* height + 1 CDF values */
+    float integral;      /* of func over [0, 1)^2 */
+} sk__distribution2d;
+
+/* The environment light (environment.c). */
+typedef struct sk__environment {
+    sk_render_environment_type type;
+    sk_vec3f uniform;  /* uniform: its radiance; map, sky: the mean radiance */
+    int width, height; /* map, sky: lat-long table */
+    float *rgb;        /* map, sky: radiance, strength applied */
+    sk__distribution2d distribution;
+    float cos_rot, sin_rot;
+} sk__environment;
 
 struct sk_render_scene {
     sk_render_scene_desc desc; /* resolved, camera framing included */
@@ -84,6 +105,7 @@ struct sk_render_scene {
     sk__camera camera;
     sk__light lights[SK_RENDER_MAX_LIGHTS];
     int light_count;
+    sk__environment env;
     bool has_bounds;
     sk_vec3f lo, hi;
     enum RTCError rtc_error; /* first error Embree reported while building */
@@ -161,6 +183,12 @@ sk_vec3f sk__material_reflect(const sk__shading *sh, sk_vec3f wi);
 /* K(n) normalising the Blinn-Phong lobe K (N.H)^n to directional albedo 1 at normal
  * incidence. */
 float sk__blinn_phong_norm(float n);
+/* Samples a direction wi (unit) by the reflection at the shading point (material_sample.c)
+ * with two uniform numbers for the direction and one for the lobe; *pdf per solid angle.
+ * False: no direction above the shading horizon. */
+bool sk__material_sample(const sk__shading *sh, sk_vec2f u, float u_lobe, sk_vec3f *wi, float *pdf);
+/* The density sk__material_sample gives wi. */
+float sk__material_pdf(const sk__shading *sh, sk_vec3f wi);
 /* Albedo seen by the uniform environment (diffuse part + the lobe's directional albedo). */
 sk_vec3f sk__material_ambient_albedo(const sk__shading *sh);
 
@@ -197,6 +225,38 @@ void sk__lights_setup(sk_render_scene *scene);
  * reflected radiance is reflect(wi) * weight). False if the sample carries no light. */
 bool sk__light_sample(const sk__light *l, sk_vec3f p, sk_vec2f u, sk_vec3f *wi, float *dist,
                       sk_vec3f *weight);
+
+static inline bool sk__light_is_area(sk_render_light_type t)
+{
+    return t == SK_RENDER_LIGHT_RECT || t == SK_RENDER_LIGHT_SPHERE || t == SK_RENDER_LIGHT_DISC;
+}
+
+/* ---- area lights (area_lights.c) */
+/* Samples a point of area light `l` seen from p: direction, distance and the solid-angle
+ * density of the sample (the incident radiance is l->power). False: no light this way. */
+bool sk__area_light_sample(const sk__light *l, sk_vec3f p, sk_vec2f u, sk_vec3f *wi, float *dist,
+                           float *pdf);
+/* The solid-angle density sk__area_light_sample gives direction wi from p when the ray
+ * p + t wi reaches the light at t. */
+float sk__area_light_pdf(const sk__light *l, sk_vec3f p, sk_vec3f wi, float t);
+/* True if the ray o + t d (d unit) meets the light's emitting side at 0 < t < tmax. */
+bool sk__area_light_hit(const sk__light *l, sk_vec3f o, sk_vec3f d, float tmax, float *t);
+
+/* ---- environment (environment.c, distribution.c) */
+sk_result sk__environment_build(sk_render_scene *scene, sk_error *err);
+void sk__environment_destroy(sk_render_scene *scene);
+bool sk__environment_is_black(const sk__environment *env);
+/* Radiance arriving from direction d (unit, towards the environment). */
+sk_vec3f sk__environment_eval(const sk__environment *env, sk_vec3f d);
+/* Samples a direction by the environment's radiance; *pdf per solid angle. */
+sk_vec3f sk__environment_sample(const sk__environment *env, sk_vec2f u, float *pdf);
+float sk__environment_pdf(const sk__environment *env, sk_vec3f d);
+sk_result sk__distribution2d_build(sk__distribution2d *d, const float *func, int w, int h,
+                                   sk_error *err);
+void sk__distribution2d_free(sk__distribution2d *d);
+/* A point in [0, 1)^2 by the density, with the density there. */
+sk_vec2f sk__distribution2d_sample(const sk__distribution2d *d, sk_vec2f u, float *pdf);
+float sk__distribution2d_pdf(const sk__distribution2d *d, sk_vec2f uv);
 
 /* ---- small helpers */
 static inline sk_vec3f sk__v3f_from(const float a[3]) { return sk_v3f_load(a); }

@@ -11,13 +11,20 @@ const char *const sk_render_shape_names[] = {"mesh",     "plane",   "box", "sphe
                                              "cylinder", "capsule", NULL};
 const char *const sk_render_uv_mode_names[] = {"length", "unit", NULL};
 const char *const sk_render_projection_names[] = {"perspective", "orthographic", NULL};
-const char *const sk_render_light_type_names[] = {"directional", "point", "rect", NULL};
+const char *const sk_render_light_type_names[] = {"directional", "point", "rect",
+                                                  "sphere",      "disc",  NULL};
+const char *const sk_render_integrator_names[] = {"preview", "path", "path_bsdf", NULL};
+const char *const sk_render_environment_type_names[] = {"uniform", "map", "sky", NULL};
 const char *const sk_render_material_type_names[] = {"standard", "skin", "wood", NULL};
 const char *const sk_render_tonemap_names[] = {"clamp", "reinhard", "filmic", NULL};
 
 static const double ones[3] = {1, 1, 1};
 static const double up_y[3] = {0, 1, 0};
 static const double grey[3] = {0.8, 0.8, 0.8};
+static const double sun_direction[3] = {0.4, 0.7, 0.3};
+static const double sky_zenith[3] = {0.2, 0.35, 0.8};
+static const double sky_horizon[3] = {0.8, 0.85, 0.9};
+static const double sky_ground[3] = {0.2, 0.18, 0.16};
 
 /* ---- transform */
 static const sk_schema_field transform_fields[] = {
@@ -111,24 +118,26 @@ const sk_schema sk__render_material_schema =
 /* ---- lights */
 static const sk_schema_field light_fields[] = {
     SK_SCHEMA_ENUM(sk_render_light_desc, type, "type", sk_render_light_type_names,
-                   .doc = "directional, point or rect"),
+                   .doc = "directional, point, rect, sphere or disc"),
     SK_SCHEMA_FLOATS(sk_render_light_desc, color, "color", 3, 0, BIG, .defs = ones,
                      .doc = "linear RGB tint"),
-    SK_SCHEMA_FLOAT(
-        sk_render_light_desc, intensity, "intensity", 0, BIG,
-        .def_text = "irradiance pi at the camera target",
-        .doc = "irradiance W/m2 (directional), intensity W/sr (point), radiance W/(sr m2) (rect)"),
+    SK_SCHEMA_FLOAT(sk_render_light_desc, intensity, "intensity", 0, BIG,
+                    .def_text = "irradiance pi at the camera target",
+                    .doc = "irradiance W/m2 (directional), intensity W/sr (point), radiance W/(sr "
+                           "m2) (rect, sphere, disc)"),
     SK_SCHEMA_FLOATS(sk_render_light_desc, position, "position", 3, -BIG, BIG,
-                     .doc = "point: position; rect: centre"),
+                     .doc = "point: position; rect, sphere, disc: centre"),
     SK_SCHEMA_FLOATS(sk_render_light_desc, direction, "direction", 3, -BIG, BIG,
-                     .def_text = "down (directional), towards the target (rect)",
-                     .doc = "directional: direction of travel; rect: emitting side"),
+                     .def_text = "down (directional), towards the target (rect, disc)",
+                     .doc = "directional: direction of travel; rect, disc: emitting side"),
     SK_SCHEMA_FLOATS(sk_render_light_desc, size, "size", 2, 0, BIG, .defs = ones,
                      .doc = "rect: width and height"),
+    SK_SCHEMA_FLOAT(sk_render_light_desc, radius, "radius", 1e-30, BIG, .flags = SK_FIELD_ZERO,
+                    .def = 0.5, .doc = "sphere, disc: radius"),
     SK_SCHEMA_FLOATS(sk_render_light_desc, up, "up", 3, -BIG, BIG, .defs = up_y,
                      .doc = "rect: direction of the height edge"),
     SK_SCHEMA_INT(sk_render_light_desc, samples, "samples", 1, 256, .def = 1,
-                  .doc = "rect: shadow rays per camera sample"),
+                  .doc = "rect, sphere, disc: shadow rays per camera sample (preview)"),
     SK_SCHEMA_BOOL(sk_render_light_desc, no_shadows, "no_shadows", .doc = "skip shadow rays"),
 };
 const sk_schema sk__render_light_schema = SK_SCHEMA_OF("light", sk_render_light_desc, light_fields);
@@ -153,8 +162,30 @@ const sk_schema sk__render_camera_schema =
     SK_SCHEMA_OF("camera", sk_render_camera_desc, camera_fields);
 
 static const sk_schema_field environment_fields[] = {
+    SK_SCHEMA_ENUM(sk_render_environment_desc, type, "type", sk_render_environment_type_names,
+                   .doc = "uniform (radiance), map (lat-long EXR) or sky (procedural)"),
     SK_SCHEMA_FLOATS(sk_render_environment_desc, radiance, "radiance", 3, 0, BIG,
                      .doc = "uniform sky radiance, linear RGB"),
+    SK_SCHEMA_STRING(
+        sk_render_environment_desc, map, "map",
+        .doc = "map: lat-long EXR (centre column -z, top row +y), relative to the scene file"),
+    SK_SCHEMA_FLOAT(sk_render_environment_desc, strength, "strength", 0, BIG, .def = 1,
+                    .doc = "map, sky: multiplies the radiance"),
+    SK_SCHEMA_DEG(sk_render_environment_desc, rotate, "rotate_deg", -3600, 3600,
+                  .doc = "map: turn about +y in degrees"),
+    SK_SCHEMA_FLOATS(sk_render_environment_desc, sun_direction, "sun_direction", 3, -BIG, BIG,
+                     .defs = sun_direction, .doc = "sky: towards the sun"),
+    SK_SCHEMA_FLOAT(sk_render_environment_desc, sun_irradiance, "sun_irradiance", 0, BIG, .def = 5,
+                    .doc = "sky: irradiance W/m2 of the sun on a surface facing it"),
+    SK_SCHEMA_DEG(sk_render_environment_desc, sun_size, "sun_size_deg", 0.5, 45,
+                  .flags = SK_FIELD_ZERO, .def = 3,
+                  .doc = "sky: angular diameter of the sun in degrees"),
+    SK_SCHEMA_FLOATS(sk_render_environment_desc, zenith, "zenith", 3, 0, BIG, .defs = sky_zenith,
+                     .doc = "sky: radiance at the zenith"),
+    SK_SCHEMA_FLOATS(sk_render_environment_desc, horizon, "horizon", 3, 0, BIG, .defs = sky_horizon,
+                     .doc = "sky: radiance at the horizon"),
+    SK_SCHEMA_FLOATS(sk_render_environment_desc, ground, "ground", 3, 0, BIG, .defs = sky_ground,
+                     .doc = "sky: radiance below the horizon"),
     SK_SCHEMA_BOOL(sk_render_environment_desc, ambient_occlusion, "ambient_occlusion",
                    .doc = "trace occlusion rays"),
     SK_SCHEMA_FLOAT(sk_render_environment_desc, ao_distance, "ao_distance", 0, BIG,
@@ -185,6 +216,11 @@ static const sk_schema_field film_fields[] = {
                    .doc = "fill the background with `background` (false: transparent)"),
     SK_SCHEMA_FLOATS(sk_render_film_desc, background, "background", 3, 0, BIG,
                      .doc = "background radiance when opaque"),
+    SK_SCHEMA_ENUM(sk_render_film_desc, integrator, "integrator", sk_render_integrator_names,
+                   .doc = "preview (direct light + AO), path (path tracing, NEE + MIS) or "
+                          "path_bsdf (BSDF sampling only, a reference)"),
+    SK_SCHEMA_INT(sk_render_film_desc, max_bounces, "max_bounces", 1, 1024, .def = 8,
+                  .doc = "path: surface scatterings per path (1 = direct light only)"),
 };
 const sk_schema sk__render_film_schema = SK_SCHEMA_OF("film", sk_render_film_desc, film_fields);
 

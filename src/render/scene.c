@@ -34,8 +34,10 @@ sk_result sk_render_scene_create(const sk_render_scene_desc *desc, sk_render_sce
         (r = sk__geometry_build(scene, err)) == SK_OK) {
         sk__camera_setup(scene);
         sk__lights_setup(scene);
-        *out = scene;
-        return SK_OK;
+        if ((r = sk__environment_build(scene, err)) == SK_OK) {
+            *out = scene;
+            return SK_OK;
+        }
     }
     sk_render_scene_destroy(scene);
     return r;
@@ -44,6 +46,7 @@ sk_result sk_render_scene_create(const sk_render_scene_desc *desc, sk_render_sce
 void sk_render_scene_destroy(sk_render_scene *scene)
 {
     if (!scene) return;
+    sk__environment_destroy(scene);
     sk__geometry_destroy(scene);
     sk__materials_destroy(scene);
     free(scene);

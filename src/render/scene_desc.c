@@ -27,6 +27,11 @@ static void light_resolve(sk_render_light_desc *l)
     sk_schema_apply_defaults(&sk__render_light_schema, l);
 }
 
+static void film_resolve(sk_render_film_desc *film)
+{
+    sk_schema_apply_defaults(&sk__render_film_schema, film);
+}
+
 static void image_resolve(sk_render_image_desc *image)
 {
     sk_schema_apply_defaults(&sk__render_image_schema, image);
@@ -49,6 +54,7 @@ void sk_render_scene_desc_resolve(const sk_render_scene_desc *desc, sk_render_sc
     if (out->unit_mm == 0) out->unit_mm = (float)unit->def;
     image_resolve(&out->image);
     camera_resolve(&out->camera);
+    film_resolve(&out->film);
     environment_resolve(&out->environment);
     for (int i = 0; i < out->material_count && i < SK_RENDER_MAX_MATERIALS; i++)
         sk__material_desc_resolve(&out->materials[i]);
@@ -186,6 +192,19 @@ static sk_result validate_light(const sk_render_light_desc *given, int i, sk_err
     return SK_OK;
 }
 
+/* The rules between the map and sky keys (resolved; their ranges are the schema's). */
+static sk_result validate_environment(const sk_render_environment_desc *e, sk_error *err)
+{
+    if (!bounded_string(e->map, sizeof e->map))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "environment.map is not terminated");
+    if (e->type == SK_RENDER_ENVIRONMENT_MAP && e->map[0] == '\0')
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
+                       "environment.map is empty: type \"map\" needs a lat-long EXR file");
+    if (e->type == SK_RENDER_ENVIRONMENT_SKY && sk__v3f_is_zero(e->sun_direction))
+        return sk_fail(err, SK_ERROR_INVALID_ARGUMENT, "environment.sun_direction is zero");
+    return SK_OK;
+}
+
 sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_error *err)
 {
     /* resolved part by part on the stack (the whole desc is large) */
@@ -194,14 +213,16 @@ sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_err
     sk_render_image_desc image = d->image;
     sk_render_camera_desc camera = d->camera;
     sk_render_environment_desc environment = d->environment;
+    sk_render_film_desc film = d->film;
     image_resolve(&image);
     camera_resolve(&camera);
     environment_resolve(&environment);
+    film_resolve(&film);
     /* every range, as sk_render_schema states it */
     const sk_schema_field *unit = sk_schema_find(&sk_render_schema, "unit_mm");
     TRY(sk_check_range_f(err, "unit_mm", unit_mm, unit->min, unit->max));
     TRY(sk_schema_check(&sk__render_image_schema, &image, "image", err));
-    TRY(sk_schema_check(&sk__render_film_schema, &d->film, "film", err));
+    TRY(sk_schema_check(&sk__render_film_schema, &film, "film", err));
 
     const sk_render_camera_desc *c = &camera;
     TRY(sk_schema_check(&sk__render_camera_schema, c, "camera", err));
@@ -222,6 +243,7 @@ sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_err
 
     const sk_render_environment_desc *e = &environment;
     TRY(sk_schema_check(&sk__render_environment_schema, e, "environment", err));
+    TRY(validate_environment(e, err));
 
     TRY(sk_check_range_i(err, "materials (count)", d->material_count, 0, SK_RENDER_MAX_MATERIALS));
     TRY(sk_check_range_i(err, "objects (count)", d->object_count, 0, SK_RENDER_MAX_OBJECTS));
