@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 #include "shitsukan/core.h"
+#include "base/fbm_fields.h"
 
 /* 64 unit vectors evenly spaced in angle (2D gradients). */
 static const float k_grad2[64][2] = {
@@ -160,35 +161,35 @@ float sk_noise3(uint64_t seed, float x, float y, float z)
 
 /* ------------------------------------------------------------------ fBm */
 
+static const sk_schema_field fbm_fields[] = {
+    SK__FBM_FIELDS(sk_fbm_desc, octaves, lacunarity, gain),
+};
+const sk_schema sk__fbm_schema = SK_SCHEMA_OF("fbm", sk_fbm_desc, fbm_fields);
+
 sk_fbm_desc sk_fbm_desc_resolved(const sk_fbm_desc *desc)
 {
     sk_fbm_desc d = {0};
     if (desc) d = *desc;
-    if (d.octaves == 0) d.octaves = 5;
-    if (d.lacunarity == 0.0f) d.lacunarity = 2.0f;
-    if (d.gain == 0.0f) d.gain = 0.5f;
+    sk_schema_apply_defaults(&sk__fbm_schema, &d);
     return d;
 }
 
 sk_result sk_fbm_desc_validate(const sk_fbm_desc *desc, const char *name, sk_error *err)
 {
-    char key[160];
-    snprintf(key, sizeof key, "%s.octaves", name);
-    sk_result r = sk_check_range_i(err, key, desc->octaves, 1, 16);
-    if (r != SK_OK) return r;
-    snprintf(key, sizeof key, "%s.lacunarity", name);
-    r = sk_check_range_f(err, key, desc->lacunarity, 1.0001, 8.0);
-    if (r != SK_OK) return r;
-    snprintf(key, sizeof key, "%s.gain", name);
-    return sk_check_range_f(err, key, desc->gain, 0.0001, 0.9999);
+    return sk_schema_check(&sk__fbm_schema, desc, name, err);
 }
 
+/* The fBm parameters of one sample: zeros at the schema's defaults, clamped to its ranges
+   (read from the fields directly: this runs per sample, sk_fbm_desc_resolved per desc). */
 static inline void fbm_params(const sk_fbm_desc *desc, int *octaves, float *lac, float *gain)
 {
-    sk_fbm_desc d = sk_fbm_desc_resolved(desc);
-    *octaves = d.octaves < 1 ? 1 : (d.octaves > 16 ? 16 : d.octaves);
-    *lac = sk_clampf(d.lacunarity, 1.0001f, 8.0f);
-    *gain = sk_clampf(d.gain, 0.0001f, 0.9999f);
+    const sk_schema_field *fo = &fbm_fields[0], *fl = &fbm_fields[1], *fg = &fbm_fields[2];
+    int o = desc && desc->octaves ? desc->octaves : (int)fo->def;
+    float l = desc && desc->lacunarity != 0.0f ? desc->lacunarity : (float)fl->def;
+    float g = desc && desc->gain != 0.0f ? desc->gain : (float)fg->def;
+    *octaves = o < (int)fo->min ? (int)fo->min : (o > (int)fo->max ? (int)fo->max : o);
+    *lac = sk_clampf(l, (float)fl->min, (float)fl->max);
+    *gain = sk_clampf(g, (float)fg->min, (float)fg->max);
 }
 
 /* Per-octave seed and offset, so octaves are independent and not all zero at the origin. */

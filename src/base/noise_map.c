@@ -5,25 +5,25 @@
 
 #include "base/loop_progress.h"
 #include "shitsukan/noise_map.h"
+#include "base/fbm_fields.h"
 
 sk_noise_map_desc sk_noise_map_desc_resolved(const sk_noise_map_desc *desc)
 {
     sk_noise_map_desc d = *desc;
-    if (d.width == 0) d.width = 512;
+    sk_schema_apply_defaults(&sk_noise_map_schema, &d);
     if (d.height == 0) d.height = d.width;
-    if (d.cells == 0.0f) d.cells = 8.0f;
-    d.fbm = sk_fbm_desc_resolved(&desc->fbm);
     return d;
 }
 
 sk_result sk_noise_map_desc_validate(const sk_noise_map_desc *d, sk_error *err)
 {
-    sk_result r;
-    if ((r = sk_check_range_i(err, "width", d->width, 1, SK_IMAGE_MAX_DIMENSION)) != SK_OK)
-        return r;
-    if ((r = sk_check_range_i(err, "height", d->height, 1, SK_IMAGE_MAX_DIMENSION)) != SK_OK)
-        return r;
-    if ((r = sk_check_range_f(err, "cells", d->cells, 1e-3, 4096.0)) != SK_OK) return r;
+    /* the map's own keys, then its fBm under "fbm" as the C struct names it */
+    static const char *const own[] = {"width", "height", "cells"};
+    for (int i = 0; i < 3; i++) {
+        sk_result r =
+            sk_schema_check_field(sk_schema_find(&sk_noise_map_schema, own[i]), d, own[i], err);
+        if (r != SK_OK) return r;
+    }
     return sk_fbm_desc_validate(&d->fbm, "fbm", err);
 }
 
@@ -82,11 +82,7 @@ static const sk_schema_field k_fields[] = {
                   .def_text = "width", .doc = "map height in pixels"),
     SK_SCHEMA_FLOAT(sk_noise_map_desc, cells, "cells", 1e-3, 4096, .def = 8,
                     .doc = "noise cells across the width (base frequency)"),
-    SK_SCHEMA_INT(sk_noise_map_desc, fbm.octaves, "octaves", 1, 16, .def = 5, .doc = "fBm octaves"),
-    SK_SCHEMA_FLOAT(sk_noise_map_desc, fbm.lacunarity, "lacunarity", 1.0001, 8, .def = 2,
-                    .doc = "frequency ratio between octaves"),
-    SK_SCHEMA_FLOAT(sk_noise_map_desc, fbm.gain, "gain", 0.0001, 0.9999, .def = 0.5,
-                    .doc = "amplitude ratio between octaves"),
+    SK__FBM_FIELDS(sk_noise_map_desc, fbm.octaves, fbm.lacunarity, fbm.gain),
     SK_SCHEMA_BOOL(sk_noise_map_desc, seamless, "seamless",
                    .doc = "tileable map (whole-cell periods)"),
 };
