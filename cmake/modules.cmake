@@ -19,6 +19,8 @@
 #   products  draw (plots, contact sheets), maps (the map sets of skin and wood: layout,
 #             store, encodings), hand-products, tissue-products, showcase
 set(SK_MODULES "")
+# the source tree this table describes, whichever project includes it
+get_filename_component(SK_SOURCE_ROOT ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
 macro(sk_module name)
   cmake_parse_arguments(SKM "" "DIR" "MODULES;PACKAGES" ${ARGN})
   list(APPEND SK_MODULES ${name})
@@ -55,7 +57,7 @@ sk_module(showcase DIR products/showcase
 
 # The .c (and .cpp) files of a module.
 function(sk_module_sources name out)
-  file(GLOB srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${SK_MODULE_${name}_DIR}/*.c
-       ${PROJECT_SOURCE_DIR}/src/${SK_MODULE_${name}_DIR}/*.cpp)
+  file(GLOB srcs CONFIGURE_DEPENDS ${SK_SOURCE_ROOT}/src/${SK_MODULE_${name}_DIR}/*.c
+       ${SK_SOURCE_ROOT}/src/${SK_MODULE_${name}_DIR}/*.cpp)
   set(${out} ${srcs} PARENT_SCOPE)
 endfunction()

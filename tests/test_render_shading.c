@@ -409,7 +409,7 @@ static void test_no_self_shadowing(void **state)
         sk_v3f_add(sk_v3f_scale(n, (float)cos(grazing)), sk_v3f_scale(t, (float)sin(grazing)));
     add_directional(d, to_light, 1);
     /* look at the plane's centre along its normal */
-    sk_vec3f c = sk__v3f_from(o->transform.translate);
+    sk_vec3f c = sk_v3f_load(o->transform.translate);
     sk_vec3f eye = sk_v3f_add(c, sk_v3f_scale(n, 10));
     memcpy(d->camera.position, &eye, sizeof eye);
     memcpy(d->camera.target, &c, sizeof c);

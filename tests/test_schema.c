@@ -374,23 +374,6 @@ static void test_header_comments_agree(void **state)
 
 /* ---------------------------------------------------------------- docs key tables */
 
-static char *read_file_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = malloc((size_t)n + 1);
-    if (text && fread(text, 1, (size_t)n, f) != (size_t)n) {
-        free(text);
-        text = NULL;
-    }
-    if (text) text[n] = '\0';
-    fclose(f);
-    return text;
-}
-
 /* Each block of a doc between "<!-- keys: COMMAND -->" and "<!-- end keys -->" against
  * `shitsukan COMMAND --help-keys=markdown`; returns the number of blocks, -1 on a
  * difference (printed). */
@@ -398,7 +381,7 @@ static int check_doc_tables(const char *name)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/docs/%s", SK_TEST_SOURCE_DIR, name);
-    char *text = read_file_text(path);
+    char *text = sk_test_read_file(path);
     assert_non_null(text);
     static const char open_tag[] = "<!-- keys: ", close_tag[] = "<!-- end keys -->";
     int blocks = 0;

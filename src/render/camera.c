@@ -34,10 +34,10 @@ void sk__camera_setup(sk_render_scene *scene)
     sk__camera *cam = &scene->camera;
     float width = (float)scene->desc.image.width, height = (float)scene->desc.image.height;
     cam->projection = c->projection;
-    cam->position = sk__v3f_from(c->position);
-    sk_vec3f view = sk_v3f_sub(sk__v3f_from(c->target), cam->position);
+    cam->position = sk_v3f_load(c->position);
+    sk_vec3f view = sk_v3f_sub(sk_v3f_load(c->target), cam->position);
     cam->forward = sk_v3f_normalize(view);
-    cam->right = sk_v3f_normalize(sk_v3f_cross(cam->forward, sk__v3f_from(c->up)));
+    cam->right = sk_v3f_normalize(sk_v3f_cross(cam->forward, sk_v3f_load(c->up)));
     cam->up = sk_v3f_cross(cam->right, cam->forward);
     cam->width = width;
     cam->height = height;

@@ -43,9 +43,9 @@ static sk_vec3f lat_long_direction(sk_vec2f uv, float *sin_theta)
 /* The procedural sky in the scene frame, without the sun. */
 static sk_vec3f sky_gradient(const sk_render_environment_desc *e, sk_vec3f d)
 {
-    if (d.y < 0) return sk__v3f_from(e->ground);
+    if (d.y < 0) return sk_v3f_load(e->ground);
     float t = sqrtf(d.y);
-    sk_vec3f h = sk__v3f_from(e->horizon), z = sk__v3f_from(e->zenith);
+    sk_vec3f h = sk_v3f_load(e->horizon), z = sk_v3f_load(e->zenith);
     return sk_v3f_add(h, sk_v3f_scale(sk_v3f_sub(z, h), t));
 }
 
@@ -53,7 +53,7 @@ static sk_vec3f sky_gradient(const sk_render_environment_desc *e, sk_vec3f d)
  * gives exactly sun_irradiance over the solid angle the tabulated disc covers. */
 static void tabulate_sky(sk__environment *env, const sk_render_environment_desc *e)
 {
-    sk_vec3f sun = sk_v3f_normalize(sk__v3f_from(e->sun_direction));
+    sk_vec3f sun = sk_v3f_normalize(sk_v3f_load(e->sun_direction));
     float cos_sun = cosf(0.5f * e->sun_size);
     double sun_solid_angle = 0;
     float texel = 2.0f * SK_PI_F * SK_PI_F / (float)(SKY_WIDTH * SKY_HEIGHT);
@@ -134,7 +134,7 @@ sk_result sk__environment_build(sk_render_scene *scene, sk_error *err)
     sk__environment *env = &scene->env;
     memset(env, 0, sizeof *env);
     env->type = e->type;
-    env->uniform = sk__v3f_from(e->radiance);
+    env->uniform = sk_v3f_load(e->radiance);
     env->cos_rot = cosf(e->rotate), env->sin_rot = sinf(e->rotate);
     if (e->type == SK_RENDER_ENVIRONMENT_UNIFORM) return SK_OK;
     if (e->type == SK_RENDER_ENVIRONMENT_MAP) {

@@ -46,7 +46,7 @@ static sk_vec3f object_scale(const sk_render_scene *scene, int object)
 /* Vertex i of the mesh in the wood's object frame, in mm. */
 static sk_vec3f object_point(const sk_mesh *m, uint32_t i, sk_vec3f scale, float mm)
 {
-    return sk_v3f_scale(sk_v3f_mul(sk__v3f_from(m->positions + 3 * i), scale), mm);
+    return sk_v3f_scale(sk_v3f_mul(sk_v3f_load(m->positions + 3 * i), scale), mm);
 }
 
 /* The wood's albedo at barycentric point b of triangle t (footprint in mm, 0 = a point). */
@@ -60,7 +60,7 @@ static sk_vec3f wood_at(const sk_render_scene *scene, int object, size_t t, cons
     sk_vec3f p[3], n = sk_v3f(0, 0, 0);
     for (int k = 0; k < 3; k++) {
         p[k] = object_point(m, ix[k], s, scene->desc.unit_mm);
-        if (m->normals) n = sk_v3f_add(n, sk_v3f_scale(sk__v3f_from(m->normals + 3 * ix[k]), b[k]));
+        if (m->normals) n = sk_v3f_add(n, sk_v3f_scale(sk_v3f_load(m->normals + 3 * ix[k]), b[k]));
     }
     /* normals transform with the inverse scale; without any, the triangle's own */
     n = m->normals ? sk_v3f_mul(n, sk_v3f(1 / s.x, 1 / s.y, 1 / s.z))

@@ -26,13 +26,13 @@ static void append_object(const sk_render_scene *scene, const sk__export *e, int
     float metres = scene->desc.unit_mm / 1000.0f;
     for (size_t v = 0; v < m->vertex_count; v++) {
         size_t o = *v0 + v;
-        sk_vec3f p = sk_m4f_apply_point(in->to_world, sk__v3f_from(m->positions + 3 * v));
+        sk_vec3f p = sk_m4f_apply_point(in->to_world, sk_v3f_load(m->positions + 3 * v));
         out->positions[3 * o] = p.x * metres;
         out->positions[3 * o + 1] = p.y * metres;
         out->positions[3 * o + 2] = p.z * metres;
         if (out->normals) {
             sk_vec3f n =
-                sk_v3f_normalize(sk_m3f_apply(in->normal_matrix, sk__v3f_from(m->normals + 3 * v)));
+                sk_v3f_normalize(sk_m3f_apply(in->normal_matrix, sk_v3f_load(m->normals + 3 * v)));
             memcpy(out->normals + 3 * o, &n, 3 * sizeof(float));
         }
         if (out->uvs && m->uvs) memcpy(out->uvs + 2 * o, m->uvs + 2 * v, 2 * sizeof(float));

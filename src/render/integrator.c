@@ -91,7 +91,7 @@ float sk__camera_sample(const sk_render_scene *scene, sk__worker *w, const sk__s
     sk__rtc_ray(&rh.ray, o, d, 0.0f, INFINITY);
     if (!sk__worker_trace(scene, w, &rh)) {
         const sk_render_film_desc *film = &scene->desc.film;
-        *radiance = film->opaque ? sk__v3f_from(film->background) : sk_v3f(0, 0, 0);
+        *radiance = film->opaque ? sk_v3f_load(film->background) : sk_v3f(0, 0, 0);
         return film->opaque ? 1.0f : 0.0f;
     }
     sk__shading sh;

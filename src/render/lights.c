@@ -11,11 +11,11 @@
  * full-length for a rect, unit for a disc. */
 static void facing_frame(const sk_render_light_desc *d, sk_vec3f target, sk__light *l)
 {
-    sk_vec3f n = sk__v3f_is_zero(d->direction) ? sk_v3f_sub(target, l->position)
-                                               : sk__v3f_from(d->direction);
+    sk_vec3f n =
+        sk__v3f_is_zero(d->direction) ? sk_v3f_sub(target, l->position) : sk_v3f_load(d->direction);
     n = sk_v3f_normalize(n);
     if (sk_v3f_dot(n, n) == 0) n = sk_v3f(0, -1, 0);
-    sk_vec3f up = sk__v3f_from(d->up);
+    sk_vec3f up = sk_v3f_load(d->up);
     sk_vec3f ev = sk_v3f_sub(up, sk_v3f_scale(n, sk_v3f_dot(n, up)));
     if (sk_v3f_length(ev) < 1e-6f * sk_v3f_length(up)) {
         /* facing along `up`: take +z (or +x) as the height direction */
@@ -32,13 +32,13 @@ static void facing_frame(const sk_render_light_desc *d, sk_vec3f target, sk__lig
 
 void sk__lights_setup(sk_render_scene *scene)
 {
-    sk_vec3f target = sk__v3f_from(scene->desc.camera.target);
+    sk_vec3f target = sk_v3f_load(scene->desc.camera.target);
     scene->light_count = scene->desc.light_count;
     for (int i = 0; i < scene->light_count; i++) {
         sk_render_light_desc *d = &scene->desc.lights[i];
         sk__light *l = &scene->lights[i];
         l->type = d->type;
-        l->position = sk__v3f_from(d->position);
+        l->position = sk_v3f_load(d->position);
         l->samples = sk__light_is_area(d->type) ? d->samples : 1;
         l->shadows = !d->no_shadows;
         float distance = sk_v3f_length(sk_v3f_sub(target, l->position));
@@ -60,11 +60,11 @@ void sk__lights_setup(sk_render_scene *scene)
             if (d->intensity == 0) d->intensity = distance * distance / (d->radius * d->radius);
             break;
         default:
-            l->direction = sk_v3f_normalize(sk__v3f_from(d->direction));
+            l->direction = sk_v3f_normalize(sk_v3f_load(d->direction));
             if (d->intensity == 0) d->intensity = SK_PI_F;
             break;
         }
-        l->power = sk_v3f_scale(sk__v3f_from(d->color), d->intensity);
+        l->power = sk_v3f_scale(sk_v3f_load(d->color), d->intensity);
     }
 }
 

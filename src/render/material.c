@@ -109,7 +109,7 @@ void sk__material_eval(const sk_render_scene *scene, sk__shading *sh)
     s->st_per_mm = sk_v2f(sh->du_len > 0 ? d->uv_scale[0] / (sh->du_len * unit) : 0.0f,
                           sh->dv_len > 0 ? d->uv_scale[1] / (sh->dv_len * unit) : 0.0f);
     sk_render_texel *tx = &sh->texel;
-    tx->albedo = sk__v3f_from(d->albedo);
+    tx->albedo = sk_v3f_load(d->albedo);
     tx->specular = d->specular;
     tx->shininess = d->shininess;
     tx->slope = sk_v2f(0, 0);

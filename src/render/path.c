@@ -162,7 +162,7 @@ float sk__path_sample(const sk_render_scene *scene, sk__worker *w, uint64_t pixe
         if (!hit) {
             if (vertex == 0) {
                 const sk_render_film_desc *film = &desc->film;
-                if (film->opaque) L = sk_v3f_add(L, sk__v3f_from(film->background)), alpha = 1;
+                if (film->opaque) L = sk_v3f_add(L, sk_v3f_load(film->background)), alpha = 1;
             } else if (!sk__environment_is_black(&scene->env)) {
                 float weight =
                     c.nee ? power_heuristic(pdf_bsdf, sk__environment_pdf(&scene->env, d)) : 1.0f;

@@ -34,11 +34,10 @@ static size_t add_vertex(builder *b, sk_vec3f p, sk_vec3f n, sk_vec3f t, float u
 static void add_triangle(builder *b, size_t a, size_t c, size_t d)
 {
     const float *p = b->mesh->positions, *n = b->mesh->normals;
-    sk_vec3f pa = sk__v3f_from(p + 3 * a), pc = sk__v3f_from(p + 3 * c),
-             pd = sk__v3f_from(p + 3 * d);
+    sk_vec3f pa = sk_v3f_load(p + 3 * a), pc = sk_v3f_load(p + 3 * c), pd = sk_v3f_load(p + 3 * d);
     sk_vec3f face = sk_v3f_cross(sk_v3f_sub(pc, pa), sk_v3f_sub(pd, pa));
-    sk_vec3f ns = sk_v3f_add(sk_v3f_add(sk__v3f_from(n + 3 * a), sk__v3f_from(n + 3 * c)),
-                             sk__v3f_from(n + 3 * d));
+    sk_vec3f ns = sk_v3f_add(sk_v3f_add(sk_v3f_load(n + 3 * a), sk_v3f_load(n + 3 * c)),
+                             sk_v3f_load(n + 3 * d));
     uint32_t *ix = b->mesh->indices + 3 * b->nt++;
     ix[0] = (uint32_t)a;
     if (sk_v3f_dot(face, ns) >= 0.0f) {

@@ -259,7 +259,6 @@ sk_vec2f sk__distribution2d_sample(const sk__distribution2d *d, sk_vec2f u, floa
 float sk__distribution2d_pdf(const sk__distribution2d *d, sk_vec2f uv);
 
 /* ---- small helpers */
-static inline sk_vec3f sk__v3f_from(const float a[3]) { return sk_v3f_load(a); }
 static inline bool sk__v3f_is_zero(const float a[3]) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
 /* Fills a material desc's zero defaults in place. */
 void sk__material_desc_resolve(sk_render_material_desc *m);

@@ -227,14 +227,14 @@ sk_result sk_render_scene_desc_validate(const sk_render_scene_desc *desc, sk_err
     const sk_render_camera_desc *c = &camera;
     TRY(sk_schema_check(&sk__render_camera_schema, c, "camera", err));
     bool auto_frame = sk__v3f_is_zero(c->position) && sk__v3f_is_zero(c->target);
-    sk_vec3f forward = sk_v3f_sub(sk__v3f_from(c->target), sk__v3f_from(c->position));
+    sk_vec3f forward = sk_v3f_sub(sk_v3f_load(c->target), sk_v3f_load(c->position));
     if (!auto_frame && sk_v3f_length(forward) == 0)
         return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                        "camera.position = camera.target = [%g, %g, %g]: the camera has no view "
                        "direction",
                        c->position[0], c->position[1], c->position[2]);
     if (!auto_frame) {
-        sk_vec3f f = sk_v3f_normalize(forward), up = sk_v3f_normalize(sk__v3f_from(c->up));
+        sk_vec3f f = sk_v3f_normalize(forward), up = sk_v3f_normalize(sk_v3f_load(c->up));
         if (sk_v3f_length(sk_v3f_cross(f, up)) < 1e-6f)
             return sk_fail(err, SK_ERROR_INVALID_ARGUMENT,
                            "camera.up = [%g, %g, %g] is parallel to the view direction", c->up[0],

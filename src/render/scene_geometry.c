@@ -26,7 +26,7 @@ sk_mat4f sk__transform_matrix(const sk_render_transform *t)
         lin.m[i][1] *= sy;
         lin.m[i][2] *= sz;
     }
-    return sk_m4f_from_rt(lin, sk__v3f_from(t->translate));
+    return sk_m4f_from_rt(lin, sk_v3f_load(t->translate));
 }
 
 static sk_vec3f apply_linear(const sk_mat4f *m, sk_vec3f v) { return sk_m4f_apply_dir(*m, v); }
@@ -261,17 +261,17 @@ void sk__geometry_hit(const sk_render_scene *scene, unsigned instance, unsigned 
     const uint32_t *ix = mesh->indices + 3 * (size_t)triangle;
     float b0 = 1.0f - u - v;
     const float *P = mesh->positions;
-    sk_vec3f p0 = sk__v3f_from(P + 3 * ix[0]), p1 = sk__v3f_from(P + 3 * ix[1]),
-             p2 = sk__v3f_from(P + 3 * ix[2]);
+    sk_vec3f p0 = sk_v3f_load(P + 3 * ix[0]), p1 = sk_v3f_load(P + 3 * ix[1]),
+             p2 = sk_v3f_load(P + 3 * ix[2]);
     sk_vec3f e1 = sk_v3f_sub(p1, p0), e2 = sk_v3f_sub(p2, p0);
     sk_vec3f p_obj = sk_v3f_add(p0, sk_v3f_add(sk_v3f_scale(e1, u), sk_v3f_scale(e2, v)));
     sk_vec3f ng_obj = sk_v3f_normalize(sk_v3f_cross(e1, e2));
     sk_vec3f n_obj = ng_obj;
     if (mesh->normals) {
         const float *N = mesh->normals;
-        sk_vec3f n = sk_v3f_add(sk_v3f_scale(sk__v3f_from(N + 3 * ix[0]), b0),
-                                sk_v3f_add(sk_v3f_scale(sk__v3f_from(N + 3 * ix[1]), u),
-                                           sk_v3f_scale(sk__v3f_from(N + 3 * ix[2]), v)));
+        sk_vec3f n = sk_v3f_add(sk_v3f_scale(sk_v3f_load(N + 3 * ix[0]), b0),
+                                sk_v3f_add(sk_v3f_scale(sk_v3f_load(N + 3 * ix[1]), u),
+                                           sk_v3f_scale(sk_v3f_load(N + 3 * ix[2]), v)));
         if (sk_v3f_dot(n, n) > 0) n_obj = sk_v3f_normalize(n);
     }
     sk_vec2f uv = sk_v2f(0, 0);
@@ -295,9 +295,9 @@ void sk__geometry_hit(const sk_render_scene *scene, unsigned instance, unsigned 
         }
     }
     const float *TG = m->tangents;
-    sk_vec3f t_obj = sk_v3f_add(sk_v3f_scale(sk__v3f_from(TG + 4 * ix[0]), b0),
-                                sk_v3f_add(sk_v3f_scale(sk__v3f_from(TG + 4 * ix[1]), u),
-                                           sk_v3f_scale(sk__v3f_from(TG + 4 * ix[2]), v)));
+    sk_vec3f t_obj = sk_v3f_add(sk_v3f_scale(sk_v3f_load(TG + 4 * ix[0]), b0),
+                                sk_v3f_add(sk_v3f_scale(sk_v3f_load(TG + 4 * ix[1]), u),
+                                           sk_v3f_scale(sk_v3f_load(TG + 4 * ix[2]), v)));
     float w = TG[4 * ix[0] + 3];
 
     sk_render_surface *s = &sh->surface;

@@ -9,23 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static char *read_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = malloc((size_t)n + 1);
-    if (text && fread(text, 1, (size_t)n, f) != (size_t)n) {
-        free(text);
-        text = NULL;
-    }
-    if (text) text[n] = '\0';
-    fclose(f);
-    return text;
-}
+#include "test_support.h"
 
 /* The text of the header holding "typedef struct c_type {", from just after the brace. */
 static char *find_struct(const char *c_type, char **start)
@@ -42,7 +26,7 @@ static char *find_struct(const char *c_type, char **start)
         if (len < 3 || strcmp(e->d_name + len - 2, ".h") != 0) continue;
         char path[2048];
         snprintf(path, sizeof path, "%s/%s", folder, e->d_name);
-        char *text = read_text(path);
+        char *text = sk_test_read_file(path);
         char *at = text ? strstr(text, needle) : NULL;
         if (at) {
             found = text;

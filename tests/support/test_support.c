@@ -119,3 +119,9 @@ bool sk_test_same_file(const char *a, const char *b)
     free(db);
     return same;
 }
+
+char *sk_test_read_file(const char *path)
+{
+    char *text = NULL;
+    return sk_read_file(path, 0, &text, NULL, NULL) == SK_OK ? text : NULL;
+}

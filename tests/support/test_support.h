@@ -37,6 +37,8 @@ bool sk_test_file_exists(const char *path);
 bool sk_test_same_file(const char *a, const char *b);
 /* Writes `size` bytes to path (for malformed-input tests). */
 void sk_test_write_file(const char *path, const void *data, size_t size);
+/* The whole text of a file, NUL-terminated (free()), or NULL if it cannot be read. */
+char *sk_test_read_file(const char *path);
 /* Lists names in folder containing `needle` (e.g. ".tmp"), returns the count. */
 int sk_test_count_files_containing(const char *folder, const char *needle);
 /* Sends `signal_number` to `child`, waits for it and asserts it ended by that signal. */
